@@ -1,0 +1,134 @@
+#include "Commands.h"
+
+#include "core/settings/SettingsJson.h"
+#include "gl/Context.h"
+#include "gl/TextureIo.h"
+#include "io/ImageIO.h"
+#include "pipeline/Pipeline.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+namespace photopic::cli {
+
+namespace fs = std::filesystem;
+
+Settings resolveSettings(const SettingsSources& sources) {
+    Settings settings;
+    if (!sources.file.empty()) {
+        settings = loadSettingsFile(sources.file);
+    }
+    if (!sources.tonemap.empty()) {
+        applySettingsOverride(settings, "tonemapping.mode=" + sources.tonemap);
+    }
+    if (sources.exposure) {
+        applySettingsOverride(settings, fmt::format("tonemapping.exposure={}", *sources.exposure));
+    }
+    for (const auto& o : sources.overrides) {
+        applySettingsOverride(settings, o);
+    }
+    return settings;
+}
+
+int runInfo(bool forceLdr) {
+    HeadlessContext context;
+    const ContextInfo& info = context.info();
+    const Capabilities caps = detectCapabilities(forceLdr);
+    std::printf("GL vendor:    %s\n", info.vendor.c_str());
+    std::printf("GL renderer:  %s\n", info.renderer.c_str());
+    std::printf("GL version:   %s\n", info.version.c_str());
+    std::printf("GLSL version: %s\n", info.glslVersion.c_str());
+    std::printf("platform:     %s\n", info.platform.c_str());
+    std::printf("colour path:  %s (%s)\n", caps.path == ColorPath::Hdr ? "HDR, RGBA16F" : "LDR, RGBA8",
+                caps.pathReason.c_str());
+    std::printf("RGBA16F renderable: %s, RGBA32F renderable: %s, compute: %s, timer queries: %s\n",
+                caps.rgba16fRenderable ? "yes" : "no", caps.rgba32fRenderable ? "yes" : "no",
+                caps.computeShaders ? "yes" : "no", caps.timerQueries ? "yes" : "no");
+    return kOk;
+}
+
+namespace {
+
+std::string lowerExtension(const fs::path& p) {
+    std::string ext = p.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+ImageF readInput(const fs::path& path) {
+    try {
+        return readImage(path);
+    } catch (const IoError& e) {
+        throw InputError(e.what());
+    }
+}
+
+} // namespace
+
+int runImage(const ImageOptions& options) {
+    const Settings settings = resolveSettings(options.settings);
+
+    std::vector<fs::path> inputs = options.inputs;
+    std::sort(inputs.begin(), inputs.end());
+    const std::string outExt = lowerExtension(options.output);
+    const bool toFolder = inputs.size() > 1 || fs::is_directory(options.output) || outExt.empty();
+    if (!toFolder && outExt != ".png" && outExt != ".exr") {
+        throw InputError(
+            fmt::format("output {}: unsupported extension '{}' (use .png for the display image or "
+                        ".exr for the scene-referred image)",
+                        options.output.string(), outExt));
+    }
+    if (toFolder) {
+        std::error_code ec;
+        fs::create_directories(options.output, ec);
+        if (ec) {
+            throw std::runtime_error(
+                fmt::format("cannot create output folder {}: {}", options.output.string(), ec.message()));
+        }
+    }
+    // Read every input first: a bad input fails the run before any output is written.
+    std::vector<ImageF> images;
+    images.reserve(inputs.size());
+    for (const auto& in : inputs) {
+        images.push_back(readInput(in));
+    }
+
+    HeadlessContext context;
+    Pipeline pipeline({.settings = settings, .forceLdr = options.forceLdr});
+    const float dt = 1.0f / options.fps;
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        const Texture input = makeTexture(images[i], inputs[i].filename().string());
+        const Texture& display = pipeline.execute({.color = &input}, {.dt = dt, .frameIndex = i});
+        const std::string ext = toFolder ? "." + options.format : outExt;
+        const fs::path out = toFolder ? options.output / (inputs[i].stem().string() + ext) : options.output;
+        if (ext == ".exr") {
+            writeExr(out, readTextureF(pipeline.sceneReferred()));
+        } else {
+            writePng(out, readTexture8(display));
+        }
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        std::printf("%s -> %s (%dx%d, %.1f ms)\n", inputs[i].string().c_str(), out.string().c_str(),
+                    images[i].width, images[i].height, ms);
+    }
+    return kOk;
+}
+
+int runSettingsDefaults() {
+    std::fputs(settingsToJson(Settings{}).c_str(), stdout);
+    return kOk;
+}
+
+int runSettingsCheck(const fs::path& file) {
+    const Settings settings = loadSettingsFile(file); // throws SettingsError listing every issue -> exit 2
+    (void)settings;
+    std::printf("%s: valid\n", file.string().c_str());
+    return kOk;
+}
+
+} // namespace photopic::cli

@@ -1,0 +1,73 @@
+// `photopic demo`: every image in the data folder through three tone curves, as a labelled contact sheet.
+// (The tabletop scene replaces this as the main demo once it exists.)
+
+#include "Commands.h"
+
+#include "core/Metering.h"
+#include "core/ToneCurves.h"
+#include "gl/Context.h"
+#include "io/ImageIO.h"
+#include "io/Raster.h"
+#include "pipeline/Pipeline.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace photopic::cli {
+
+namespace fs = std::filesystem;
+
+int runDemo(const fs::path& dataDir, const fs::path& outDir) {
+    if (!fs::is_directory(dataDir)) {
+        throw InputError(fmt::format("data folder {} does not exist (pass --data DIR)", dataDir.string()));
+    }
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(dataDir)) {
+        const auto ext = entry.path().extension().string();
+        if (ext == ".exr" || ext == ".hdr") {
+            files.push_back(entry.path());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    if (files.empty()) {
+        throw InputError(fmt::format("no .exr or .hdr images in {}", dataDir.string()));
+    }
+    std::error_code ec;
+    fs::create_directories(outDir, ec);
+    if (ec) {
+        throw std::runtime_error(fmt::format("cannot create {}: {}", outDir.string(), ec.message()));
+    }
+
+    HeadlessContext context;
+    Pipeline pipeline;
+    const ToneMapper curves[] = {ToneMapper::Aces, ToneMapper::Agx, ToneMapper::Neutral};
+    std::vector<std::pair<std::string, Image8>> tiles;
+    for (const auto& file : files) {
+        const ImageF image = readImage(file);
+        // Expose each image so its geometric-mean luminance lands on middle grey (key 0.18).
+        const float mean = meterAverage(image);
+        const float ev = mean > 0 ? std::log2(0.18f / mean) : 0.0f;
+        for (ToneMapper curve : curves) {
+            Settings settings;
+            settings.tonemapping.mode = curve;
+            settings.tonemapping.exposure = std::clamp(ev, -20.0f, 20.0f);
+            pipeline.setSettings(settings);
+            tiles.emplace_back(fmt::format("{}  {}  {:+.1f} EV", file.filename().string(),
+                                           toneMapperName(curve), settings.tonemapping.exposure),
+                               processImage(pipeline, image));
+        }
+        std::printf("%s: %dx%d, geometric mean luminance %.4f -> exposure %+.2f EV\n",
+                    file.filename().string().c_str(), image.width, image.height, double(mean), double(ev));
+    }
+    const Image8 sheet = makeContactSheet(tiles, 3, 420);
+    const fs::path out = outDir / "contact_sheet.png";
+    writePng(out, sheet);
+    std::printf("wrote %s (%dx%d): %zu images x 3 tone curves\n", out.string().c_str(), sheet.width,
+                sheet.height, files.size());
+    return kOk;
+}
+
+} // namespace photopic::cli

@@ -1,0 +1,99 @@
+// photopic: the command-line front end. Exit codes: 0 ok, 2 bad usage or input, 1 other failure.
+
+#include "Commands.h"
+
+#include "core/Log.h"
+#include "core/settings/SettingsJson.h"
+#include "gl/Gl.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+
+using namespace photopic;
+using namespace photopic::cli;
+
+namespace {
+
+void addSettingsOptions(CLI::App* cmd, SettingsSources& s) {
+    cmd->add_option("--settings", s.file, "settings JSON file ({\"version\": 1, \"postEffects\": {...}})")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--tonemap", s.tonemap, "tone curve (same as --set tonemapping.mode=NAME)");
+    cmd->add_option("--exposure", s.exposure,
+                    "manual exposure in EV (same as --set tonemapping.exposure=EV)");
+    cmd->add_option("--set", s.overrides, "override one setting: path=value, e.g. tonemapping.mode=agx")
+        ->take_first();
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"Photopic: HDR post-processing and eye adaptation on OpenGL 4.5"};
+    app.require_subcommand(1);
+    bool forceLdr = false;
+
+    auto* info =
+        app.add_subcommand("info", "GL vendor, renderer, version, and whether the HDR or LDR path runs");
+    info->add_flag("--force-ldr", forceLdr, "report as if the LDR path were forced");
+
+    ImageOptions image;
+    auto* imageCmd =
+        app.add_subcommand("image", "process HDR images (EXR, HDR, PNG) into PNG (display) or EXR "
+                                    "(scene-referred, before tone mapping)");
+    imageCmd
+        ->add_option("inputs", image.inputs, "input images; several are frames of a sequence in name order")
+        ->required();
+    imageCmd->add_option("-o,--output", image.output, "output file (.png/.exr) or folder (several inputs)")
+        ->required();
+    imageCmd->add_option("--format", image.format, "file type written into an output folder")
+        ->check(CLI::IsMember({"png", "exr"}));
+    imageCmd->add_option("--fps", image.fps, "frame rate of a sequence")->check(CLI::Range(0.001f, 10000.0f));
+    imageCmd->add_flag("--force-ldr", image.forceLdr, "run the LDR (RGBA8) path");
+    addSettingsOptions(imageCmd, image.settings);
+
+    auto* settingsCmd = app.add_subcommand("settings", "print the default settings or check a settings file");
+    bool defaults = false;
+    std::filesystem::path checkFile;
+    auto* defaultsFlag = settingsCmd->add_flag("--defaults", defaults, "print the full default JSON");
+    auto* checkOption = settingsCmd->add_option("--check", checkFile, "validate FILE and list every issue");
+    defaultsFlag->excludes(checkOption);
+    settingsCmd->require_option(1);
+
+    std::filesystem::path demoOut = "out/demo";
+    std::filesystem::path demoData = "../shared/data";
+    auto* demo = app.add_subcommand("demo", "the main demo: renders into out/demo (or -o DIR)");
+    demo->add_option("-o,--output", demoOut, "output folder");
+    demo->add_option("--data", demoData, "folder of HDR images (../shared/data)");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? kOk : kBadInput;
+    }
+
+    try {
+        if (*info) {
+            return runInfo(forceLdr);
+        }
+        if (*imageCmd) {
+            return runImage(image);
+        }
+        if (*settingsCmd) {
+            return defaults ? runSettingsDefaults() : runSettingsCheck(checkFile);
+        }
+        if (*demo) {
+            return runDemo(demoData, demoOut);
+        }
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "photopic: %s\n", e.what());
+        return kBadInput;
+    } catch (const SettingsError& e) {
+        std::fprintf(stderr, "photopic: invalid settings in %s", e.what());
+        return kBadInput;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "photopic: %s\n", e.what());
+        return kFailure;
+    }
+    return kFailure;
+}

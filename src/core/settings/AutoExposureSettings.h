@@ -1,0 +1,162 @@
+#pragma once
+// Auto exposure (eye adaptation): metering -> target -> adaptation, all in log2 (EV) space.
+// DESIGN.md "Exposure"; the math is in core/ExposureController.h and core/Metering.h.
+//
+// Seed 002's keys stay readable: "enabled" and "keyValue" are fields; "speed" (sets speedUp and speedDown),
+// "min" and "max" (exposure multipliers: minEV = log2(min), maxEV = log2(max)) are aliases, read but never
+// written. Defaults follow seed 000 (key 0.18, multipliers 0.25..4 = -2..+2 EV, tauBrighten 1 s, tauDarken
+// 0.3 s), the big engines for speeds (3 / 1 EV/s) and percentiles (10 / 90), seed 002 for `enabled` (off).
+
+#include "core/settings/Reflect.h"
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace photopic {
+
+/// Most points a compensation curve may have: the shader holds them in a fixed-size uniform array.
+inline constexpr std::size_t kMaxCompensationCurvePoints = 16;
+
+/// How the luminance that drives exposure is measured (core/Metering.h implements each on the CPU).
+enum class MeteringMode {
+    Average,   ///< geometric mean of every pixel's luminance
+    Histogram, ///< log2 histogram, mean of the [lowPercent, highPercent] window
+    Spot,      ///< geometric mean of 1/5/9/13 taps on a disc (kSpotTaps in core/Metering.h)
+    Center,    ///< geometric mean weighted by a Gaussian around the image centre (centerWeight)
+    Mask,      ///< geometric mean weighted by a grey mask image
+};
+
+/// How exposure follows its target (core/ExposureController.h implements each).
+enum class AdaptationMode {
+    Exponential, ///< seed 000: alpha = 1 - exp(-dt / tau), tau per direction
+    Speed,       ///< seed 002: alpha = 1 - exp(-speed * dt), speed per direction
+    Hybrid,      ///< Unreal: linear speed EV/s far from the target, exponential within transitionEV
+};
+
+/// JSON names, in enum order.
+inline std::span<const std::string_view> meteringModeNames() {
+    static constexpr std::array<std::string_view, 5> kNames{"average", "histogram", "spot", "center", "mask"};
+    return kNames;
+}
+inline std::span<const std::string_view> adaptationModeNames() {
+    static constexpr std::array<std::string_view, 3> kNames{"exponential", "speed", "hybrid"};
+    return kNames;
+}
+
+struct AutoExposureSettings {
+    /// Spot metering: a disc in image UV (u right, v down, (0, 0) = top-left of the image).
+    struct SpotMetering {
+        float u = 0.5f;      ///< UV, [0, 1], default 0.5: disc centre, horizontal
+        float v = 0.5f;      ///< UV, [0, 1], default 0.5: disc centre, vertical (v = 0: top row)
+        float radius = 0.1f; ///< image heights, [0, 1], default 0.1: disc radius
+        int taps = 9;        ///< 1, 5, 9 or 13, default 9: the first `taps` entries of kSpotTaps
+
+        template <class V>
+        void visit(V& vis) { // not `v`: that is a field here
+            vis.field("u", u, Range{0, 1});
+            vis.field("v", v, Range{0, 1});
+            vis.field("radius", radius, Range{0, 1});
+            vis.field("taps", taps, Range{1, 13});
+            vis.require(taps == 1 || taps == 5 || taps == 9 || taps == 13, "taps", "must be 1, 5, 9 or 13");
+        }
+    };
+
+    /// Mask metering: per-pixel weights from a grey image (its Rec.709 luma; negative, non-finite -> 0).
+    struct MaskMetering {
+        std::string path; ///< file, default empty: grey image stretched over the frame, sampled nearest
+
+        template <class V>
+        void visit(V& v) {
+            v.field("path", path);
+        }
+    };
+
+    bool enabled = false; ///< default off (seed 002); off: exposure = 2^tonemapping.exposure
+    MeteringMode metering = MeteringMode::Average;           ///< what is measured, default average
+    AdaptationMode adaptation = AdaptationMode::Exponential; ///< how exposure follows, default exponential
+
+    float keyValue = 0.18f;      ///< scene-linear, [0.001, 10], default 0.18: what the metered L maps to
+    float compensationEV = 0.0f; ///< EV, [-10, 10], default 0: added to the target before clamping
+    float minEV = -2.0f;         ///< EV, [-20, 20], default -2 (x0.25, seed 000): lowest, <= maxEV
+    float maxEV = 2.0f;          ///< EV, [-20, 20], default 2 (x4, seed 000): highest auto exposure
+    /// [log2 L, EV] points, x and y in [-32, 32], x strictly increasing, at most 16, default empty (none):
+    /// piecewise linear, flat past the ends; its EV at log2 L is added to the target.
+    CurvePoints compensationCurve;
+
+    // Rates by direction. Exposure rises when the scene darkens, falls when it brightens; the eye adapts to
+    // light faster than to dark (seed 000's 1 s / 0.3 s; Unreal "Speed Up"/"Speed Down" and Bevy's
+    // speed_brighten/speed_darken, 3 / 1 EV/s, are named after the scene, as speedUp/speedDown are here).
+    float tauBrighten = 1.0f;  ///< s, [0.001, 30], default 1: time constant while exposure rises
+    float tauDarken = 0.3f;    ///< s, [0.001, 30], default 0.3: time constant while exposure falls
+    float speedUp = 3.0f;      ///< 1/s (speed), EV/s (hybrid), [0.001, 100], default 3: scene brightens
+    float speedDown = 1.0f;    ///< 1/s (speed), EV/s (hybrid), [0.001, 100], default 1: scene darkens
+    float transitionEV = 1.5f; ///< EV, [0.01, 20], default 1.5: hybrid turns exponential this close
+    float deadbandEV = 0.02f;  ///< EV, [0, 4], default 0.02: adapt beyond it, stop below a tenth of it
+    float maxDt = 0.1f;        ///< s, [0.001, 10], default 0.1: frame time is clamped to [0, maxDt]
+
+    float histogramLog2Min = -12.0f; ///< log2 L, [-32, 32], default -12: low edge of bin 1, < log2Max
+    float histogramLog2Max = 16.0f;  ///< log2 L, [-32, 32], default 16: high edge of bin 254
+    float lowPercent = 10.0f;        ///< %, [0, 100], default 10: darkest share left out of the mean
+    float highPercent = 90.0f;       ///< %, [0, 100], default 90: window top, > lowPercent
+
+    SpotMetering spot; ///< disc for metering = spot
+    MaskMetering mask; ///< weight image for metering = mask
+
+    /// True when x increases strictly from point to point and the count fits. y may take any shape: metering
+    /// reads the image before exposure, so the target stays a function of the scene and cannot oscillate.
+    [[nodiscard]] bool compensationCurveValid() const {
+        if (compensationCurve.size() > kMaxCompensationCurvePoints) {
+            return false;
+        }
+        for (std::size_t i = 1; i < compensationCurve.size(); ++i) {
+            if (!(compensationCurve[i].x > compensationCurve[i - 1].x)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    template <class V>
+    void visit(V& v) {
+        v.field("enabled", enabled);
+        v.field("metering", metering, meteringModeNames());
+        v.field("adaptation", adaptation, adaptationModeNames());
+        // Seed 002's aliases come before the fields they feed: a file holding both keeps the new key.
+        v.alias("speed", Range{0.001, 100}, [&](float s) {
+            speedUp = s;
+            speedDown = s;
+        });
+        // 2^-20 .. 2^20: the multipliers whose log2 lies in minEV/maxEV's range.
+        v.alias("min", Range{9.5367431640625e-07, 1048576.0}, [&](float m) { minEV = std::log2(m); });
+        v.alias("max", Range{9.5367431640625e-07, 1048576.0}, [&](float m) { maxEV = std::log2(m); });
+        v.field("keyValue", keyValue, Range{0.001, 10});
+        v.field("compensationEV", compensationEV, Range{-10, 10});
+        v.field("minEV", minEV, Range{-20, 20});
+        v.field("maxEV", maxEV, Range{-20, 20});
+        v.field("compensationCurve", compensationCurve, Range{-32, 32});
+        v.field("tauBrighten", tauBrighten, Range{0.001, 30});
+        v.field("tauDarken", tauDarken, Range{0.001, 30});
+        v.field("speedUp", speedUp, Range{0.001, 100});
+        v.field("speedDown", speedDown, Range{0.001, 100});
+        v.field("transitionEV", transitionEV, Range{0.01, 20});
+        v.field("deadbandEV", deadbandEV, Range{0, 4});
+        v.field("maxDt", maxDt, Range{0.001, 10});
+        v.field("histogramLog2Min", histogramLog2Min, Range{-32, 32});
+        v.field("histogramLog2Max", histogramLog2Max, Range{-32, 32});
+        v.field("lowPercent", lowPercent, Range{0, 100});
+        v.field("highPercent", highPercent, Range{0, 100});
+        v.object("spot", spot);
+        v.object("mask", mask);
+        v.require(minEV <= maxEV, "minEV", "must not exceed maxEV");
+        v.require(histogramLog2Min < histogramLog2Max, "histogramLog2Min", "must be below histogramLog2Max");
+        v.require(lowPercent < highPercent, "lowPercent", "must be below highPercent");
+        v.require(compensationCurveValid(), "compensationCurve",
+                  "x (log2 luminance) must increase strictly from point to point, at most 16 points");
+    }
+};
+
+} // namespace photopic

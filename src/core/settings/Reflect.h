@@ -1,0 +1,61 @@
+#pragma once
+// Settings reflection: every settings struct lists its fields once, in a `visit(V&)` member template, and the
+// JSON reader, the JSON writer and the `--set` override are visitors over that one list (so a new field
+// cannot be forgotten by one of them). A field states its JSON key, its range and, for enums, the allowed
+// names.
+//
+//     template <class V> void visit(V& v) {
+//         v.field("exposure", exposure, Range{-20, 20});
+//         v.field("mode", mode, toneMapperNames());
+//         v.require(tauDarken > 0, "tauDarken", "must be positive");
+//     }
+//
+// `v.alias("speed", Range{...}, [&](float s) { ... })` keeps an older key readable (seed 002) without writing
+// it.
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace photopic {
+
+/// Closed numeric range [min, max] a field must lie in; also printed in error messages.
+struct Range {
+    double min;
+    double max;
+};
+
+/// Every settings issue code, in one list (X-macro): tests assert on the code, users read the message.
+#define PHOTOPIC_SETTINGS_ISSUES(X)                                                                          \
+    X(ParseError, "the text is not valid JSON")                                                              \
+    X(BadVersion, "unsupported settings version")                                                            \
+    X(UnknownKey, "unknown key")                                                                             \
+    X(WrongType, "wrong value type")                                                                         \
+    X(OutOfRange, "value out of range")                                                                      \
+    X(BadEnum, "value not among the allowed names")                                                          \
+    X(Constraint, "values break a rule between fields")                                                      \
+    X(BadOverride, "a --set override is not of the form path=value")
+
+enum class SettingsIssueCode {
+#define PHOTOPIC_X(name, text) name,
+    PHOTOPIC_SETTINGS_ISSUES(PHOTOPIC_X)
+#undef PHOTOPIC_X
+};
+
+std::string_view settingsIssueCodeName(SettingsIssueCode);
+
+/// One problem found while reading settings: what, where (JSON path such as "postEffects.bloom.intensity"),
+/// why.
+struct SettingsIssue {
+    SettingsIssueCode code;
+    std::string path;
+    std::string message;
+};
+
+using CurvePoints = std::vector<glm::vec2>;
+
+} // namespace photopic

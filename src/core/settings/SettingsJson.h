@@ -1,0 +1,45 @@
+#pragma once
+// JSON form of the settings: {"version": 1, "postEffects": {...}} with seed 002's keys kept where they exist.
+
+#include "core/Settings.h"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string_view>
+#include <vector>
+
+namespace photopic {
+
+inline constexpr int kSettingsVersion = 1;
+
+/// Thrown at set-up boundaries when settings cannot be used; holds every issue found, not just the first.
+class SettingsError : public std::runtime_error {
+public:
+    SettingsError(std::string source, std::vector<SettingsIssue> issues);
+    [[nodiscard]] const std::vector<SettingsIssue>& issues() const { return mIssues; }
+
+private:
+    std::vector<SettingsIssue> mIssues;
+};
+
+/// Reads JSON text over `settings` (keys that are absent keep their current values). Returns the issues
+/// found; fields with issues are left unchanged.
+std::vector<SettingsIssue> readSettingsJson(std::string_view text, Settings& settings);
+
+/// Loads a file over the defaults; throws SettingsError naming the file and every issue.
+Settings loadSettingsFile(const std::filesystem::path& file);
+
+/// Full JSON of every field (what `photopic settings --defaults` prints). Save then load is lossless.
+std::string settingsToJson(const Settings& settings);
+nlohmann::json settingsToJsonValue(const Settings& settings);
+
+/// Applies "path=value" (path below postEffects, e.g. "tonemapping.mode=agx"). The value is parsed as JSON
+/// when it is valid JSON, else taken as a string. Throws SettingsError naming the override.
+void applySettingsOverride(Settings& settings, std::string_view assignment);
+
+/// "postEffects.a.b: message (allowed ...)" lines, one per issue.
+std::string formatSettingsIssues(const std::vector<SettingsIssue>& issues);
+
+} // namespace photopic

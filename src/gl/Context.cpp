@@ -1,0 +1,173 @@
+#include "gl/Context.h"
+
+#include "core/Log.h"
+#include "gl/Debug.h"
+
+#include <epoxy/egl.h>
+
+#include <fmt/format.h>
+
+#include <vector>
+
+namespace photopic {
+
+struct HeadlessContext::Egl {
+    EGLDisplay display = EGL_NO_DISPLAY;
+    EGLContext context = EGL_NO_CONTEXT;
+};
+
+namespace {
+
+std::string glString(GLenum name) {
+    const auto* s = reinterpret_cast<const char*>(glGetString(name));
+    return s ? s : "";
+}
+
+bool isSoftware(const std::string& renderer) {
+    return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos ||
+           renderer.find("SwiftShader") != std::string::npos;
+}
+
+/// Initialises `display` and creates a current GL 4.5 core context on it; returns false (and cleans up) on
+/// failure.
+bool createOn(EGLDisplay display, bool debug, HeadlessContext::Egl& out, std::string& why) {
+    EGLint major = 0, minor = 0;
+    if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor)) {
+        why = fmt::format("eglInitialize failed (0x{:x})", eglGetError());
+        return false;
+    }
+    if (!eglBindAPI(EGL_OPENGL_API)) {
+        why = "eglBindAPI(EGL_OPENGL_API) failed";
+        eglTerminate(display);
+        return false;
+    }
+    const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    EGLConfig config = nullptr;
+    EGLint count = 0;
+    const bool noConfig = epoxy_has_egl_extension(display, "EGL_KHR_no_config_context");
+    if (!noConfig && (!eglChooseConfig(display, configAttribs, &config, 1, &count) || count == 0)) {
+        why = "no EGL config with EGL_OPENGL_BIT";
+        eglTerminate(display);
+        return false;
+    }
+    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                     4,
+                                     EGL_CONTEXT_MINOR_VERSION,
+                                     5,
+                                     EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                     EGL_CONTEXT_OPENGL_DEBUG,
+                                     debug ? EGL_TRUE : EGL_FALSE,
+                                     EGL_NONE};
+    EGLContext context =
+        eglCreateContext(display, noConfig ? EGL_NO_CONFIG_KHR : config, EGL_NO_CONTEXT, contextAttribs);
+    if (context == EGL_NO_CONTEXT) {
+        why = fmt::format("no OpenGL 4.5 core context (0x{:x})", eglGetError());
+        eglTerminate(display);
+        return false;
+    }
+    if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
+        why = fmt::format("eglMakeCurrent without a surface failed (0x{:x})", eglGetError());
+        eglDestroyContext(display, context);
+        eglTerminate(display);
+        return false;
+    }
+    out.display = display;
+    out.context = context;
+    return true;
+}
+
+void destroy(HeadlessContext::Egl& egl) {
+    if (egl.display != EGL_NO_DISPLAY) {
+        eglMakeCurrent(egl.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        if (egl.context != EGL_NO_CONTEXT) {
+            eglDestroyContext(egl.display, egl.context);
+        }
+        eglTerminate(egl.display);
+    }
+    egl = {};
+}
+
+} // namespace
+
+ContextInfo currentContextInfo() {
+    return {glString(GL_VENDOR), glString(GL_RENDERER), glString(GL_VERSION),
+            glString(GL_SHADING_LANGUAGE_VERSION), ""};
+}
+
+HeadlessContext::HeadlessContext(const HeadlessContextCreateInfo& info)
+    : mEgl(std::make_unique<Egl>()) {
+    std::vector<std::string> tried;
+    Egl softwareDevice;
+    std::string softwarePlatform;
+
+    const bool hasDeviceEnumeration = epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_device_enumeration") ||
+                                      epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_device_base");
+    if (info.preferHardware && hasDeviceEnumeration) {
+        EGLint count = 0;
+        eglQueryDevicesEXT(0, nullptr, &count);
+        std::vector<EGLDeviceEXT> devices(std::size_t(std::max(count, 0)));
+        if (count > 0 && eglQueryDevicesEXT(count, devices.data(), &count)) {
+            for (EGLint i = 0; i < count; ++i) {
+                Egl candidate;
+                std::string why;
+                EGLDisplay display =
+                    eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[std::size_t(i)], nullptr);
+                if (!createOn(display, info.debug, candidate, why)) {
+                    tried.push_back(fmt::format("EGL device {}: {}", i, why));
+                    continue;
+                }
+                if (!isSoftware(glString(GL_RENDERER))) {
+                    *mEgl = candidate;
+                    mInfo = currentContextInfo();
+                    mInfo.platform = fmt::format("EGL device {} (hardware)", i);
+                    break;
+                }
+                tried.push_back(fmt::format("EGL device {}: software renderer {}", i, glString(GL_RENDERER)));
+                if (softwareDevice.display == EGL_NO_DISPLAY) {
+                    softwareDevice = candidate;
+                    softwarePlatform = fmt::format("EGL device {} (software)", i);
+                } else {
+                    destroy(candidate);
+                }
+            }
+        }
+    }
+    if (mEgl->display == EGL_NO_DISPLAY && softwareDevice.display != EGL_NO_DISPLAY) {
+        *mEgl = softwareDevice;
+        eglMakeCurrent(mEgl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, mEgl->context);
+        mInfo = currentContextInfo();
+        mInfo.platform = softwarePlatform;
+    }
+    if (mEgl->display == EGL_NO_DISPLAY) {
+        std::string why;
+        EGLDisplay display = EGL_NO_DISPLAY;
+        if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless")) {
+            display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        }
+        if (!createOn(display, info.debug, *mEgl, why)) {
+            tried.push_back("Mesa surfaceless: " +
+                            (display == EGL_NO_DISPLAY ? std::string("not available") : why));
+            std::string all;
+            for (const auto& t : tried) {
+                all += "\n  " + t;
+            }
+            throw GlError("cannot create a headless OpenGL 4.5 core context; tried:" + all);
+        }
+        mInfo = currentContextInfo();
+        mInfo.platform = "Mesa surfaceless";
+    }
+    if (info.debug) {
+        installDebugOutput();
+    }
+}
+
+HeadlessContext::~HeadlessContext() {
+    destroy(*mEgl);
+}
+
+void HeadlessContext::makeCurrent() const {
+    eglMakeCurrent(mEgl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, mEgl->context);
+}
+
+} // namespace photopic

@@ -1,0 +1,82 @@
+#pragma once
+// N-buffered GPU timestamps around each pass: results are collected frames later, when the driver says they
+// are available, so timing never stalls the pipeline.
+
+#include "gl/Objects.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace photopic {
+
+struct PassTiming {
+    std::string name;
+    double gpuMs = 0;      ///< GPU time between the pass's start and end timestamps
+    double bytesMoved = 0; ///< estimated bytes read + written by the pass (formats x sizes)
+};
+
+class GpuTimers {
+public:
+    static constexpr int kFramesInFlight = 4;
+
+    GpuTimers() = default;
+    /// Starts a frame: harvests the oldest frame's queries if they are available (never waits).
+    void beginFrame();
+    /// Brackets one pass. Passes must not nest. `bytesMoved` is the pass's estimated traffic.
+    void begin(std::string_view name, double bytesMoved = 0);
+    void end();
+    void endFrame();
+
+    /// The most recent frame whose results have arrived (empty until one has).
+    [[nodiscard]] const std::vector<PassTiming>& latest() const { return mLatest; }
+    /// Frame number (0-based count of endFrame calls) `latest()` belongs to, or -1.
+    [[nodiscard]] std::int64_t latestFrame() const { return mLatestFrame; }
+    /// Blocks until every outstanding frame has reported (benchmarks and tests only), returning each frame's
+    /// passes.
+    std::vector<std::vector<PassTiming>> drain();
+
+private:
+    struct Slot {
+        std::vector<Query> starts, ends;
+        std::vector<std::string> names;
+        std::vector<double> bytes;
+        int used = 0;
+        std::int64_t frame = -1;
+        bool pending = false;
+    };
+    bool harvest(Slot& slot, bool wait);
+    Query& queryAt(std::vector<Query>& queries, int index);
+
+    std::array<Slot, kFramesInFlight> mSlots;
+    int mCurrent = 0;
+    std::int64_t mFrameCounter = 0;
+    bool mOpen = false;
+    std::vector<PassTiming> mLatest;
+    std::int64_t mLatestFrame = -1;
+    std::vector<std::vector<PassTiming>> mHarvested;
+};
+
+/// Scoped begin/end on a possibly-null timer set.
+class ScopedGpuTimer {
+public:
+    ScopedGpuTimer(GpuTimers* timers, std::string_view name, double bytesMoved = 0)
+        : mTimers(timers) {
+        if (mTimers) {
+            mTimers->begin(name, bytesMoved);
+        }
+    }
+    ~ScopedGpuTimer() {
+        if (mTimers) {
+            mTimers->end();
+        }
+    }
+    ScopedGpuTimer(const ScopedGpuTimer&) = delete;
+    ScopedGpuTimer& operator=(const ScopedGpuTimer&) = delete;
+
+private:
+    GpuTimers* mTimers;
+};
+
+} // namespace photopic

@@ -1,0 +1,204 @@
+#include "gl/Objects.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace photopic {
+
+namespace {
+void label(GLenum type, GLuint id, std::string_view name) {
+    if (!name.empty()) {
+        glObjectLabel(type, id, GLsizei(name.size()), name.data());
+    }
+}
+} // namespace
+
+Texture::Texture(const TextureCreateInfo& info)
+    : mExtent(info.extent)
+    , mFormat(info.format)
+    , mLevels(info.levels) {
+    if (info.extent.empty() || info.levels < 1) {
+        throw GlError("texture '" + std::string(info.debugName) + "': empty extent or no levels");
+    }
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &id);
+    mObject = GlObject<detail::TextureDeleter>(id);
+    glTextureStorage2D(id, info.levels, info.format, info.extent.width, info.extent.height);
+    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GLint(info.minFilter));
+    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GLint(info.magFilter));
+    glTextureParameteri(id, GL_TEXTURE_WRAP_S, GLint(info.wrap));
+    glTextureParameteri(id, GL_TEXTURE_WRAP_T, GLint(info.wrap));
+    glTextureParameteri(id, GL_TEXTURE_MAX_LEVEL, info.levels - 1);
+    label(GL_TEXTURE, id, info.debugName);
+}
+
+Texture Texture::adopt(GLuint id, Extent extent, GLenum format) {
+    Texture t;
+    t.mObject = GlObject<detail::TextureDeleter>(id, /*owned=*/false);
+    t.mExtent = extent;
+    t.mFormat = format;
+    t.mLevels = 1;
+    return t;
+}
+
+Extent Texture::levelExtent(int level) const {
+    return {std::max(1, mExtent.width >> level), std::max(1, mExtent.height >> level)};
+}
+
+void Texture::uploadRgba32f(const float* rgba) const {
+    const std::size_t row = std::size_t(mExtent.width) * 4;
+    std::vector<float> flipped(row * std::size_t(mExtent.height));
+    for (int y = 0; y < mExtent.height; ++y) {
+        std::copy_n(rgba + std::size_t(mExtent.height - 1 - y) * row, row,
+                    flipped.data() + std::size_t(y) * row);
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage2D(id(), 0, 0, 0, mExtent.width, mExtent.height, GL_RGBA, GL_FLOAT, flipped.data());
+}
+
+Buffer::Buffer(const BufferCreateInfo& info)
+    : mSize(info.size) {
+    GLuint id = 0;
+    glCreateBuffers(1, &id);
+    mObject = GlObject<detail::BufferDeleter>(id);
+    glNamedBufferStorage(id, GLsizeiptr(info.size), info.data, info.flags);
+    label(GL_BUFFER, id, info.debugName);
+}
+
+void Buffer::update(const void* data, std::size_t bytes, std::size_t offset) const {
+    glNamedBufferSubData(id(), GLintptr(offset), GLsizeiptr(bytes), data);
+}
+
+Framebuffer::Framebuffer(const Texture& colour, int level, std::string_view debugName)
+    : mExtent(colour.levelExtent(level)) {
+    GLuint id = 0;
+    glCreateFramebuffers(1, &id);
+    mObject = GlObject<detail::FramebufferDeleter>(id);
+    glNamedFramebufferTexture(id, GL_COLOR_ATTACHMENT0, colour.id(), level);
+    label(GL_FRAMEBUFFER, id, debugName);
+    const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        throw GlError("framebuffer '" + std::string(debugName) + "' is incomplete with a " +
+                      std::string(formatName(colour.format())) + " attachment (status 0x" +
+                      std::to_string(status) + ")");
+    }
+}
+
+void Framebuffer::bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, id());
+    glViewport(0, 0, mExtent.width, mExtent.height);
+}
+
+VertexArray VertexArray::create(std::string_view debugName) {
+    VertexArray v;
+    GLuint id = 0;
+    glCreateVertexArrays(1, &id);
+    v.mObject = GlObject<detail::VertexArrayDeleter>(id);
+    label(GL_VERTEX_ARRAY, id, debugName);
+    return v;
+}
+
+Query::Query(GLenum target) {
+    GLuint id = 0;
+    glCreateQueries(target, 1, &id);
+    mObject = GlObject<detail::QueryDeleter>(id);
+}
+
+Fence Fence::insert() {
+    Fence f;
+    f.mSync = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    return f;
+}
+
+Fence& Fence::operator=(Fence&& o) noexcept {
+    if (this != &o) {
+        if (mSync) {
+            glDeleteSync(mSync);
+        }
+        mSync = std::exchange(o.mSync, nullptr);
+    }
+    return *this;
+}
+
+Fence::~Fence() {
+    if (mSync) {
+        glDeleteSync(mSync);
+    }
+}
+
+bool Fence::signalled() const {
+    if (!mSync) {
+        return true;
+    }
+    GLint status = GL_UNSIGNALED;
+    glGetSynciv(mSync, GL_SYNC_STATUS, 1, nullptr, &status);
+    return status == GL_SIGNALED;
+}
+
+void Fence::wait() const {
+    if (!mSync) {
+        return;
+    }
+    while (glClientWaitSync(mSync, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000) == GL_TIMEOUT_EXPIRED) {
+    }
+}
+
+DebugGroup::DebugGroup(std::string_view name) {
+    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, GLsizei(name.size()), name.data());
+}
+DebugGroup::~DebugGroup() {
+    glPopDebugGroup();
+}
+
+int bytesPerTexel(GLenum format) {
+    switch (format) {
+    case GL_RGBA32F:
+        return 16;
+    case GL_RGBA16F:
+        return 8;
+    case GL_RG32F:
+        return 8;
+    case GL_R32F:
+    case GL_R32UI:
+    case GL_RGBA8:
+    case GL_SRGB8_ALPHA8:
+    case GL_R11F_G11F_B10F:
+        return 4;
+    case GL_R16F:
+    case GL_RG8:
+        return 2;
+    case GL_R8:
+        return 1;
+    default:
+        return 4;
+    }
+}
+
+std::string_view formatName(GLenum format) {
+    switch (format) {
+    case GL_RGBA32F:
+        return "RGBA32F";
+    case GL_RGBA16F:
+        return "RGBA16F";
+    case GL_RG32F:
+        return "RG32F";
+    case GL_R32F:
+        return "R32F";
+    case GL_R32UI:
+        return "R32UI";
+    case GL_RGBA8:
+        return "RGBA8";
+    case GL_SRGB8_ALPHA8:
+        return "SRGB8_ALPHA8";
+    case GL_R11F_G11F_B10F:
+        return "R11F_G11F_B10F";
+    case GL_R16F:
+        return "R16F";
+    case GL_R8:
+        return "R8";
+    default:
+        return "format";
+    }
+}
+
+} // namespace photopic

@@ -1,0 +1,214 @@
+#pragma once
+// Move-only RAII wrappers over GL 4.5 DSA objects with immutable storage. Objects can exist before a context
+// (default-constructed, id 0); destructors ignore id 0; moves hand the id over with std::exchange.
+// Every object gets a glObjectLabel so a frame capture reads like the frame order.
+
+#include "gl/Gl.h"
+
+#include <cstddef>
+#include <string_view>
+#include <utility>
+
+namespace photopic {
+
+/// Owns one GL name and deletes it with `Deleter` (unless adopted from a host).
+template <class Deleter>
+class GlObject {
+public:
+    GlObject() = default;
+    explicit GlObject(GLuint id, bool owned = true)
+        : mId(id)
+        , mOwned(owned) {}
+    GlObject(GlObject&& o) noexcept
+        : mId(std::exchange(o.mId, 0u))
+        , mOwned(o.mOwned) {}
+    GlObject& operator=(GlObject&& o) noexcept {
+        if (this != &o) {
+            reset();
+            mId = std::exchange(o.mId, 0u);
+            mOwned = o.mOwned;
+        }
+        return *this;
+    }
+    GlObject(const GlObject&) = delete;
+    GlObject& operator=(const GlObject&) = delete;
+    ~GlObject() { reset(); }
+
+    [[nodiscard]] GLuint id() const { return mId; }
+    [[nodiscard]] bool valid() const { return mId != 0; }
+    [[nodiscard]] bool owned() const { return mOwned; }
+    void reset() {
+        if (mId != 0 && mOwned) {
+            Deleter{}(mId);
+        }
+        mId = 0;
+    }
+
+private:
+    GLuint mId = 0;
+    bool mOwned = true;
+};
+
+namespace detail {
+struct TextureDeleter {
+    void operator()(GLuint id) const { glDeleteTextures(1, &id); }
+};
+struct BufferDeleter {
+    void operator()(GLuint id) const { glDeleteBuffers(1, &id); }
+};
+struct FramebufferDeleter {
+    void operator()(GLuint id) const { glDeleteFramebuffers(1, &id); }
+};
+struct ProgramDeleter {
+    void operator()(GLuint id) const { glDeleteProgram(id); }
+};
+struct VertexArrayDeleter {
+    void operator()(GLuint id) const { glDeleteVertexArrays(1, &id); }
+};
+struct QueryDeleter {
+    void operator()(GLuint id) const { glDeleteQueries(1, &id); }
+};
+} // namespace detail
+
+struct TextureCreateInfo {
+    Extent extent;
+    GLenum format = GL_RGBA16F; ///< sized internal format
+    int levels = 1;
+    GLenum minFilter = GL_LINEAR;
+    GLenum magFilter = GL_LINEAR;
+    GLenum wrap = GL_CLAMP_TO_EDGE;
+    std::string_view debugName;
+};
+
+/// A 2D texture with immutable storage, or a host's texture adopted by id (not deleted by us).
+class Texture {
+public:
+    Texture() = default;
+    explicit Texture(const TextureCreateInfo& info);
+    /// Wraps a texture the host owns; Photopic never deletes it. `format` is its sized internal format.
+    static Texture adopt(GLuint id, Extent extent, GLenum format);
+
+    [[nodiscard]] GLuint id() const { return mObject.id(); }
+    [[nodiscard]] bool valid() const { return mObject.valid(); }
+    [[nodiscard]] bool owned() const { return mObject.owned(); }
+    [[nodiscard]] Extent extent() const { return mExtent; }
+    [[nodiscard]] GLenum format() const { return mFormat; }
+    [[nodiscard]] int levels() const { return mLevels; }
+    /// Size of mip `level` (at least 1x1).
+    [[nodiscard]] Extent levelExtent(int level) const;
+
+    /// Uploads RGBA float pixels (rows top to bottom) into level 0; GL's origin is bottom-left, so rows are
+    /// flipped to keep texel (x, y) == image pixel (x, y) with v = 0 at the bottom of the texture.
+    void uploadRgba32f(const float* rgba) const;
+
+private:
+    GlObject<detail::TextureDeleter> mObject;
+    Extent mExtent;
+    GLenum mFormat = 0;
+    int mLevels = 0;
+};
+
+struct BufferCreateInfo {
+    std::size_t size = 0;
+    GLbitfield flags = GL_DYNAMIC_STORAGE_BIT; ///< glNamedBufferStorage flags
+    const void* data = nullptr;
+    std::string_view debugName;
+};
+
+class Buffer {
+public:
+    Buffer() = default;
+    explicit Buffer(const BufferCreateInfo& info);
+    [[nodiscard]] GLuint id() const { return mObject.id(); }
+    [[nodiscard]] std::size_t size() const { return mSize; }
+    [[nodiscard]] bool valid() const { return mObject.valid(); }
+    void update(const void* data, std::size_t bytes, std::size_t offset = 0) const;
+
+private:
+    GlObject<detail::BufferDeleter> mObject;
+    std::size_t mSize = 0;
+};
+
+/// A framebuffer with one colour attachment (what every full-screen pass needs).
+class Framebuffer {
+public:
+    Framebuffer() = default;
+    Framebuffer(const Texture& colour, int level, std::string_view debugName);
+    [[nodiscard]] GLuint id() const { return mObject.id(); }
+    /// Binds it, sets the viewport to the attachment's size.
+    void bind() const;
+
+private:
+    GlObject<detail::FramebufferDeleter> mObject;
+    Extent mExtent;
+};
+
+class Program {
+public:
+    Program() = default;
+    explicit Program(GLuint id)
+        : mObject(id) {}
+    [[nodiscard]] GLuint id() const { return mObject.id(); }
+    [[nodiscard]] bool valid() const { return mObject.valid(); }
+    void use() const { glUseProgram(mObject.id()); }
+
+private:
+    GlObject<detail::ProgramDeleter> mObject;
+};
+
+class VertexArray {
+public:
+    VertexArray() = default;
+    static VertexArray create(std::string_view debugName);
+    [[nodiscard]] GLuint id() const { return mObject.id(); }
+
+private:
+    GlObject<detail::VertexArrayDeleter> mObject;
+};
+
+class Query {
+public:
+    Query() = default;
+    explicit Query(GLenum target);
+    [[nodiscard]] GLuint id() const { return mObject.id(); }
+
+private:
+    GlObject<detail::QueryDeleter> mObject;
+};
+
+/// A fence sync; moving hands it over, destruction deletes it.
+class Fence {
+public:
+    Fence() = default;
+    static Fence insert();
+    Fence(Fence&& o) noexcept
+        : mSync(std::exchange(o.mSync, nullptr)) {}
+    Fence& operator=(Fence&& o) noexcept;
+    Fence(const Fence&) = delete;
+    Fence& operator=(const Fence&) = delete;
+    ~Fence();
+    [[nodiscard]] bool valid() const { return mSync != nullptr; }
+    /// Non-blocking: true once the GPU has passed the fence.
+    [[nodiscard]] bool signalled() const;
+    /// Blocks until signalled (offline paths only, e.g. draining a ring at the end of a sequence).
+    void wait() const;
+
+private:
+    GLsync mSync = nullptr;
+};
+
+/// Scoped KHR_debug group: a pass's name in frame captures and debug output.
+class DebugGroup {
+public:
+    explicit DebugGroup(std::string_view name);
+    ~DebugGroup();
+    DebugGroup(const DebugGroup&) = delete;
+    DebugGroup& operator=(const DebugGroup&) = delete;
+};
+
+/// Bytes per texel of a sized internal format (for bandwidth estimates and readbacks).
+int bytesPerTexel(GLenum format);
+/// Human name of a sized internal format ("RGBA16F").
+std::string_view formatName(GLenum format);
+
+} // namespace photopic

@@ -1,0 +1,60 @@
+#pragma once
+// Non-blocking GPU -> CPU readback (seeds 002 and 004): N slots, each a persistently mapped buffer and a
+// fence. The GPU copies into a free slot; the CPU takes the newest slot whose fence has signalled. When
+// nothing new has finished, the caller keeps its last result (seed 004's continuity cache). The frame path
+// never waits.
+
+#include "gl/Objects.h"
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace photopic {
+
+class ReadbackRing {
+public:
+    ReadbackRing() = default;
+    /// `slots` buffers of `bytes` each.
+    ReadbackRing(std::size_t bytes, int slots, std::string_view debugName);
+
+    /// Copies `bytes` of `source` at `offset` into a free slot, tagged with `tag` (the frame index), and
+    /// fences. Returns false (nothing queued, `dropped()` counts it) when every slot is still in flight.
+    bool enqueue(const Buffer& source, std::size_t offset, std::uint64_t tag);
+
+    struct Result {
+        std::uint64_t tag = 0;
+        std::span<const std::byte> bytes;
+    };
+    /// The newest finished slot not yet returned, or nothing. Older finished slots are released
+    /// (non-blocking).
+    std::optional<Result> pollNewest();
+    /// Every finished slot not yet returned, oldest first (non-blocking). For consumers that need each frame.
+    std::vector<Result> pollAll();
+    /// Blocks until every slot in flight has finished and returns them oldest first (end of an offline
+    /// sequence).
+    std::vector<Result> drain();
+
+    [[nodiscard]] int inFlight() const;
+    [[nodiscard]] std::uint64_t dropped() const { return mDropped; }
+    [[nodiscard]] int slotCount() const { return int(mSlots.size()); }
+
+private:
+    struct Slot {
+        Buffer buffer;
+        const std::byte* mapped = nullptr;
+        Fence fence;
+        std::uint64_t tag = 0;
+        std::uint64_t order = 0;
+        bool busy = false;
+    };
+    std::vector<Result> collect(bool wait, bool newestOnly);
+
+    std::vector<Slot> mSlots;
+    std::size_t mBytes = 0;
+    std::uint64_t mOrder = 0;
+    std::uint64_t mDropped = 0;
+};
+
+} // namespace photopic

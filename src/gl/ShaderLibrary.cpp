@@ -1,0 +1,152 @@
+#include "gl/ShaderLibrary.h"
+
+#include <fmt/format.h>
+
+#include <set>
+#include <sstream>
+
+namespace photopic {
+
+namespace {
+
+std::string_view findSource(const std::string& name) {
+    const auto& all = embeddedShaders();
+    const auto it = all.find(name);
+    return it == all.end() ? std::string_view{} : it->second;
+}
+
+std::string directoryOf(std::string_view name) {
+    const auto slash = name.rfind('/');
+    return slash == std::string_view::npos ? std::string{} : std::string(name.substr(0, slash + 1));
+}
+
+void expand(const std::string& name, std::set<std::string>& included, std::string& out, int depth) {
+    if (depth > 16) {
+        throw GlError("shader include depth over 16 at " + name);
+    }
+    if (!included.insert(name).second) {
+        return;
+    }
+    const std::string_view source = findSource(name);
+    if (source.data() == nullptr) {
+        throw GlError("shader source not embedded: " + name);
+    }
+    std::istringstream lines{std::string(source)};
+    std::string line;
+    int lineNo = 0;
+    while (std::getline(lines, line)) {
+        ++lineNo;
+        const auto first = line.find_first_not_of(" \t");
+        if (first != std::string::npos && line.compare(first, 8, "#include") == 0) {
+            const auto q1 = line.find('"', first);
+            const auto q2 = q1 == std::string::npos ? q1 : line.find('"', q1 + 1);
+            if (q2 == std::string::npos) {
+                throw GlError(fmt::format("{}:{}: malformed #include", name, lineNo));
+            }
+            const std::string target = line.substr(q1 + 1, q2 - q1 - 1);
+            std::string resolved = directoryOf(name) + target;
+            if (findSource(resolved).data() == nullptr) {
+                resolved = target;
+            }
+            if (findSource(resolved).data() == nullptr) {
+                throw GlError(fmt::format("{}:{}: #include \"{}\" not found", name, lineNo, target));
+            }
+            expand(resolved, included, out, depth + 1);
+            out += fmt::format("#line {}\n", lineNo + 1);
+            continue;
+        }
+        out += line;
+        out += '\n';
+    }
+}
+
+GLuint compile(GLenum stage, std::string_view name, const ShaderDefines& defines) {
+    const std::string source = preprocessShader(name, defines);
+    const GLuint shader = glCreateShader(stage);
+    const char* text = source.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        GLint length = 0;
+        glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+        std::string log(std::size_t(std::max(length, 1)), '\0');
+        glGetShaderInfoLog(shader, length, nullptr, log.data());
+        glDeleteShader(shader);
+        throw GlError(fmt::format("compiling {} failed:\n{}", name, log));
+    }
+    return shader;
+}
+
+Program link(std::initializer_list<GLuint> shaders, std::string_view label) {
+    const GLuint program = glCreateProgram();
+    for (GLuint s : shaders) {
+        glAttachShader(program, s);
+    }
+    glLinkProgram(program);
+    for (GLuint s : shaders) {
+        glDetachShader(program, s);
+        glDeleteShader(s);
+    }
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        GLint length = 0;
+        glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+        std::string log(std::size_t(std::max(length, 1)), '\0');
+        glGetProgramInfoLog(program, length, nullptr, log.data());
+        glDeleteProgram(program);
+        throw GlError(fmt::format("linking {} failed:\n{}", label, log));
+    }
+    glObjectLabel(GL_PROGRAM, program, GLsizei(label.size()), label.data());
+    return Program(program);
+}
+
+} // namespace
+
+std::string preprocessShader(std::string_view name, const ShaderDefines& defines) {
+    std::string out = "#version 450 core\n";
+    for (const auto& [key, value] : defines) {
+        out += fmt::format("#define {} {}\n", key, value);
+    }
+    out += "#line 1\n";
+    std::set<std::string> included;
+    expand(std::string(name), included, out, 0);
+    return out;
+}
+
+Program makeComputeProgram(std::string_view computeName, const ShaderDefines& defines) {
+    return link({compile(GL_COMPUTE_SHADER, computeName, defines)}, computeName);
+}
+
+Program makeGraphicsProgram(std::string_view vertexName, std::string_view fragmentName,
+                            const ShaderDefines& defines) {
+    const GLuint vs = compile(GL_VERTEX_SHADER, vertexName, defines);
+    GLuint fs = 0;
+    try {
+        fs = compile(GL_FRAGMENT_SHADER, fragmentName, defines);
+    } catch (...) {
+        glDeleteShader(vs);
+        throw;
+    }
+    return link({vs, fs}, fragmentName);
+}
+
+void setUniform(const Program& p, const char* name, float v) {
+    glProgramUniform1f(p.id(), glGetUniformLocation(p.id(), name), v);
+}
+void setUniform(const Program& p, const char* name, int v) {
+    glProgramUniform1i(p.id(), glGetUniformLocation(p.id(), name), v);
+}
+void setUniform(const Program& p, const char* name, float x, float y) {
+    glProgramUniform2f(p.id(), glGetUniformLocation(p.id(), name), x, y);
+}
+void setUniform(const Program& p, const char* name, float x, float y, float z) {
+    glProgramUniform3f(p.id(), glGetUniformLocation(p.id(), name), x, y, z);
+}
+void setUniform(const Program& p, const char* name, float x, float y, float z, float w) {
+    glProgramUniform4f(p.id(), glGetUniformLocation(p.id(), name), x, y, z, w);
+}
+
+} // namespace photopic

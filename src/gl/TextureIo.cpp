@@ -1,0 +1,43 @@
+#include "gl/TextureIo.h"
+
+#include <algorithm>
+
+namespace photopic {
+
+namespace {
+template <class T>
+void flipRows(std::vector<T>& data, int width, int height) {
+    const std::size_t row = std::size_t(width) * 4;
+    for (int y = 0; y < height / 2; ++y) {
+        std::swap_ranges(data.begin() + std::ptrdiff_t(std::size_t(y) * row),
+                         data.begin() + std::ptrdiff_t(std::size_t(y + 1) * row),
+                         data.begin() + std::ptrdiff_t(std::size_t(height - 1 - y) * row));
+    }
+}
+} // namespace
+
+Texture makeTexture(const ImageF& image, std::string_view debugName) {
+    Texture t({.extent = {image.width, image.height}, .format = GL_RGBA32F, .debugName = debugName});
+    t.uploadRgba32f(image.rgba.data());
+    return t;
+}
+
+ImageF readTextureF(const Texture& texture) {
+    ImageF image(texture.extent().width, texture.extent().height);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(image.rgba.size() * sizeof(float)),
+                      image.rgba.data());
+    flipRows(image.rgba, image.width, image.height);
+    return image;
+}
+
+Image8 readTexture8(const Texture& texture) {
+    Image8 image(texture.extent().width, texture.extent().height);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(texture.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(image.rgba.size()),
+                      image.rgba.data());
+    flipRows(image.rgba, image.width, image.height);
+    return image;
+}
+
+} // namespace photopic

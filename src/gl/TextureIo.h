@@ -1,0 +1,19 @@
+#pragma once
+// CPU images <-> GL textures. Rows are flipped on the way in and out so image pixel (x, y) (top-left origin)
+// is texel (x, height-1-y) (GL's bottom-left origin) and images read back as they went in.
+
+#include "core/Image.h"
+#include "gl/Objects.h"
+
+#include <string_view>
+
+namespace photopic {
+
+/// RGBA32F texture holding `image` (sampling only; no render-target capability needed).
+Texture makeTexture(const ImageF& image, std::string_view debugName);
+/// Blocking read of level 0 as float RGBA (offline paths: CLI, tests).
+ImageF readTextureF(const Texture& texture);
+/// Blocking read of level 0 as 8-bit RGBA.
+Image8 readTexture8(const Texture& texture);
+
+} // namespace photopic

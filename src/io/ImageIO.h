@@ -1,0 +1,51 @@
+#pragma once
+// Image files in and out: OpenEXR, Radiance RGBE (.hdr) and PNG. Readers dispatch on the file's first bytes,
+// not on its name; writers are atomic (a reader never sees a half-written file).
+
+#include "core/Image.h"
+
+#include <filesystem>
+#include <stdexcept>
+#include <string_view>
+
+namespace photopic {
+
+/// A file could not be read or written. what() always names the file: `"<path>": <what is wrong>`.
+class IoError : public std::runtime_error {
+public:
+    IoError(const std::filesystem::path& path, std::string_view problem);
+};
+
+/// Reads a linear RGBA float image; the format comes from the file's magic bytes.
+/// - OpenEXR, scanline or tiled, any compression (DWAA/DWAB included), half/float/uint channels: R, G, B and
+/// A of
+///   the first part. Missing colour channels read 0 and a missing A reads 1; a luminance-only file (Y) is
+///   copied to R, G and B, and luminance/chroma (Y, RY, BY) is converted to RGB. Returns the pixels of the
+///   *data window*, its top-left corner at (0, 0); the display window is ignored. Values are kept as stored
+///   (negative, huge, NaN).
+/// - Radiance RGBE, "-Y <h> +X <w>" orientation, flat or RLE scanlines; linear values, EXPOSURE lines
+/// ignored.
+/// - PNG, 8 or 16 bit, grey/RGB/palette, with or without alpha: colour decoded by the exact sRGB EOTF, alpha
+/// kept
+///   linear, alpha 1 when absent. gAMA/iCCP chunks are ignored: a PNG is taken to be sRGB.
+/// Throws IoError naming the path for a missing or unreadable file, an unrecognised format, a truncated or
+/// corrupt file, or an image with no pixels.
+[[nodiscard]] ImageF readImage(const std::filesystem::path& path);
+
+/// Reads a PNG's stored 8-bit RGBA values with no colour decoding (alpha 255 when absent; a 16-bit file keeps
+/// the high byte of each sample). For comparing written PNGs byte for byte.
+[[nodiscard]] Image8 readPng8(const std::filesystem::path& path);
+
+/// Writes an 8-bit sRGB PNG, stored as RGB when every alpha is 255 (smaller) and as RGBA otherwise; readPng8
+/// gives back the same RGBA bytes either way. Both writers are atomic: the file is written as
+/// `.<name>.tmp-<pid>-<n>` in the destination folder, flushed to disk, then renamed over `path`. On any
+/// failure the temporary is removed, `path` is left as it was and IoError is thrown. The destination folder
+/// must already exist; it is never created.
+void writePng(const std::filesystem::path& path, const Image8& image);
+
+/// Writes a half-float RGBA OpenEXR, ZIP compressed (lossless for half data), data window = display window =
+/// the image. Values are rounded to half; finite values beyond +-65504 are clamped to it rather than becoming
+/// infinite. Atomic, like writePng.
+void writeExr(const std::filesystem::path& path, const ImageF& image);
+
+} // namespace photopic

@@ -1,0 +1,17 @@
+#include "passes/Bindings.h"
+
+#include <string>
+
+namespace photopic {
+
+ShaderDefines bindingDefines(ShaderDefines extra) {
+    ShaderDefines defines = {
+        {"BINDING_EXPOSURE_STATE", std::to_string(kBindingExposureState)},
+        {"BINDING_HISTOGRAM", std::to_string(kBindingHistogram)},
+        {"BINDING_METERING", std::to_string(kBindingMetering)},
+    };
+    defines.insert(defines.end(), extra.begin(), extra.end());
+    return defines;
+}
+
+} // namespace photopic
