@@ -16,10 +16,10 @@ namespace photopic::cli {
 
 namespace fs = std::filesystem;
 
-Settings resolveSettings(const SettingsSources& sources) {
-    Settings settings;
+Settings resolveSettings(const SettingsSources& sources, Settings base) {
+    Settings settings = std::move(base);
     if (!sources.file.empty()) {
-        settings = loadSettingsFile(sources.file);
+        settings = loadSettingsFile(sources.file, std::move(settings));
     }
     if (!sources.tonemap.empty()) {
         applySettingsOverride(settings, "tonemapping.mode=" + sources.tonemap);

@@ -18,14 +18,14 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-/// Settings from defaults, then --settings FILE, then the shorthand flags, then each --set in order.
+/// Settings from `base`, then --settings FILE over it, then the shorthand flags, then each --set in order.
 struct SettingsSources {
     std::filesystem::path file;
     std::string tonemap;
     std::optional<float> exposure;
     std::vector<std::string> overrides;
 };
-Settings resolveSettings(const SettingsSources& sources);
+Settings resolveSettings(const SettingsSources& sources, Settings base = {});
 
 struct ImageOptions {
     std::vector<std::filesystem::path> inputs;
@@ -36,7 +36,26 @@ struct ImageOptions {
     float fps = 30.0f;
 };
 
+struct SceneOptions {
+    std::string name;
+    std::filesystem::path output; ///< folder; default out/scene-NAME
+    int frames = 60;
+    float fps = 30.0f;
+    std::string size = "640x360"; ///< WxH
+    std::string format = "png";   ///< frames as png (display) or exr (scene-referred)
+    SettingsSources settings; ///< --set NAME.key=value goes to the scene, other paths to the post settings
+    bool forceLdr = false;
+};
+
+/// "1920x1080" -> {1920, 1080}; throws InputError naming the text.
+struct ParsedSize {
+    int width;
+    int height;
+};
+ParsedSize parseSize(const std::string& text);
+
 int runInfo(bool forceLdr);
+int runScene(const SceneOptions& options);
 int runImage(const ImageOptions& options);
 int runSettingsDefaults();
 int runSettingsCheck(const std::filesystem::path& file);

@@ -5,6 +5,7 @@
 #include "core/Log.h"
 #include "core/settings/SettingsJson.h"
 #include "gl/Gl.h"
+#include "scenes/Scene.h"
 
 #include <CLI/CLI.hpp>
 
@@ -59,6 +60,20 @@ int main(int argc, char** argv) {
     defaultsFlag->excludes(checkOption);
     settingsCmd->require_option(1);
 
+    SceneOptions scene;
+    auto* sceneCmd = app.add_subcommand("scene", "render a built-in scene's frames and telemetry.csv");
+    sceneCmd->add_option("name", scene.name, "scene name (photopic scene --list)");
+    bool listScenes = false;
+    sceneCmd->add_flag("--list", listScenes, "list the built-in scenes");
+    sceneCmd->add_option("-o,--output", scene.output, "output folder (default out/scene-NAME)");
+    sceneCmd->add_option("--frames", scene.frames, "number of frames")->check(CLI::Range(1, 100000));
+    sceneCmd->add_option("--fps", scene.fps, "frame rate")->check(CLI::Range(0.001f, 10000.0f));
+    sceneCmd->add_option("--size", scene.size, "WIDTHxHEIGHT");
+    sceneCmd->add_option("--format", scene.format, "frame files: png (display) or exr (scene-referred)")
+        ->check(CLI::IsMember({"png", "exr"}));
+    sceneCmd->add_flag("--force-ldr", scene.forceLdr, "run the LDR (RGBA8) path");
+    addSettingsOptions(sceneCmd, scene.settings);
+
     std::filesystem::path demoOut = "out/demo";
     std::filesystem::path demoData = "../shared/data";
     auto* demo = app.add_subcommand("demo", "the main demo: renders into out/demo (or -o DIR)");
@@ -81,6 +96,18 @@ int main(int argc, char** argv) {
         }
         if (*settingsCmd) {
             return defaults ? runSettingsDefaults() : runSettingsCheck(checkFile);
+        }
+        if (*sceneCmd) {
+            if (listScenes) {
+                for (const auto& s : builtInScenes()) {
+                    std::printf("%-10s %s\n", s.name.c_str(), s.description.c_str());
+                }
+                return kOk;
+            }
+            if (scene.name.empty()) {
+                throw InputError("scene: a scene name is required (photopic scene --list)");
+            }
+            return runScene(scene);
         }
         if (*demo) {
             return runDemo(demoData, demoOut);

@@ -48,4 +48,7 @@ void writePng(const std::filesystem::path& path, const Image8& image);
 /// infinite. Atomic, like writePng.
 void writeExr(const std::filesystem::path& path, const ImageF& image);
 
+/// Writes a text file (CSV, JSON) atomically, like writePng: whole or not at all.
+void writeTextFile(const std::filesystem::path& path, std::string_view text);
+
 } // namespace photopic

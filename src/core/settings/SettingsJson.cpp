@@ -1,5 +1,7 @@
 #include "core/settings/SettingsJson.h"
 
+#include "core/settings/JsonVisitors.h"
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -25,6 +27,8 @@ std::string_view settingsIssueCodeName(SettingsIssueCode code) {
 
 namespace {
 
+using namespace settings_json;
+
 std::string_view issueText(SettingsIssueCode code) {
     switch (code) {
 #define PHOTOPIC_X(name, text)                                                                               \
@@ -35,260 +39,6 @@ std::string_view issueText(SettingsIssueCode code) {
     }
     return "";
 }
-
-std::string joinNames(std::span<const std::string_view> names) {
-    std::string out;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        out += (i ? ", " : "");
-        out += names[i];
-    }
-    return out;
-}
-
-std::string typeName(const json& j) {
-    return j.type_name();
-}
-
-/// Writes every field of a settings struct to JSON.
-class JsonWriter {
-public:
-    explicit JsonWriter(json& out)
-        : mOut(out) {}
-
-    void field(std::string_view key, bool& value) { mOut[std::string(key)] = value; }
-    void field(std::string_view key, float& value, Range) { mOut[std::string(key)] = value; }
-    void field(std::string_view key, int& value, Range) { mOut[std::string(key)] = value; }
-    void field(std::string_view key, std::string& value) { mOut[std::string(key)] = value; }
-    void field(std::string_view key, glm::vec2& value, Range) { mOut[std::string(key)] = {value.x, value.y}; }
-    void field(std::string_view key, glm::vec3& value, Range) {
-        mOut[std::string(key)] = {value.x, value.y, value.z};
-    }
-    void field(std::string_view key, CurvePoints& points, Range) {
-        json arr = json::array();
-        for (const auto& p : points) {
-            arr.push_back({p.x, p.y});
-        }
-        mOut[std::string(key)] = arr;
-    }
-    template <class E>
-    requires std::is_enum_v<E>
-    void field(std::string_view key, E& value, std::span<const std::string_view> names) {
-        mOut[std::string(key)] = std::string(names[static_cast<std::size_t>(value)]);
-    }
-    template <class S>
-    void object(std::string_view key, S& sub) {
-        json child = json::object();
-        JsonWriter writer(child);
-        sub.visit(writer);
-        mOut[std::string(key)] = std::move(child);
-    }
-    template <class F>
-    void alias(std::string_view, Range, F&&) {} // aliases are read, never written
-    void require(bool, std::string_view, std::string_view) {}
-
-private:
-    json& mOut;
-};
-
-/// Reads present keys over a settings struct, validating type and range; records issues by JSON path.
-class JsonReader {
-public:
-    JsonReader(const json& in, std::string path, std::vector<SettingsIssue>& issues)
-        : mIn(in)
-        , mPath(std::move(path))
-        , mIssues(issues) {}
-
-    void field(std::string_view key, bool& value) {
-        if (const json* j = find(key)) {
-            if (!j->is_boolean()) {
-                wrongType(key, *j, "true or false");
-                return;
-            }
-            value = j->get<bool>();
-        }
-    }
-    void field(std::string_view key, float& value, Range range) {
-        if (const json* j = find(key)) {
-            double d = 0;
-            if (number(key, *j, range, d)) {
-                value = static_cast<float>(d);
-            }
-        }
-    }
-    void field(std::string_view key, int& value, Range range) {
-        if (const json* j = find(key)) {
-            if (!j->is_number_integer()) {
-                wrongType(key, *j, fmt::format("an integer in [{}, {}]", range.min, range.max));
-                return;
-            }
-            const auto v = j->get<long long>();
-            if (double(v) < range.min || double(v) > range.max) {
-                add(SettingsIssueCode::OutOfRange, key,
-                    fmt::format("{} is outside [{}, {}]", v, range.min, range.max));
-                return;
-            }
-            value = static_cast<int>(v);
-        }
-    }
-    void field(std::string_view key, std::string& value) {
-        if (const json* j = find(key)) {
-            if (!j->is_string()) {
-                wrongType(key, *j, "a string");
-                return;
-            }
-            value = j->get<std::string>();
-        }
-    }
-    void field(std::string_view key, glm::vec2& value, Range range) { vector(key, &value.x, 2, range); }
-    void field(std::string_view key, glm::vec3& value, Range range) { vector(key, &value.x, 3, range); }
-    void field(std::string_view key, CurvePoints& points, Range range) {
-        const json* j = find(key);
-        if (!j) {
-            return;
-        }
-        if (!j->is_array()) {
-            wrongType(key, *j, "an array of [x, y] pairs");
-            return;
-        }
-        CurvePoints parsed;
-        for (std::size_t i = 0; i < j->size(); ++i) {
-            const json& p = (*j)[i];
-            const std::string at = fmt::format("{}[{}]", key, i);
-            if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number()) {
-                add(SettingsIssueCode::WrongType, at,
-                    fmt::format("expected [x, y] numbers, got {}", p.dump()));
-                return;
-            }
-            const double x = p[0].get<double>(), y = p[1].get<double>();
-            if (!std::isfinite(x) || !std::isfinite(y) || x < range.min || x > range.max || y < range.min ||
-                y > range.max) {
-                add(SettingsIssueCode::OutOfRange, at,
-                    fmt::format("{} has a value outside [{}, {}]", p.dump(), range.min, range.max));
-                return;
-            }
-            parsed.emplace_back(static_cast<float>(x), static_cast<float>(y));
-        }
-        points = std::move(parsed);
-    }
-    template <class E>
-    requires std::is_enum_v<E>
-    void field(std::string_view key, E& value, std::span<const std::string_view> names) {
-        const json* j = find(key);
-        if (!j) {
-            return;
-        }
-        if (!j->is_string()) {
-            wrongType(key, *j, "one of: " + joinNames(names));
-            return;
-        }
-        const auto s = j->get<std::string>();
-        for (std::size_t i = 0; i < names.size(); ++i) {
-            if (names[i] == s) {
-                value = static_cast<E>(i);
-                return;
-            }
-        }
-        add(SettingsIssueCode::BadEnum, key, fmt::format("\"{}\" is not one of: {}", s, joinNames(names)));
-    }
-    template <class S>
-    void object(std::string_view key, S& sub) {
-        const json* j = find(key);
-        if (!j) {
-            return;
-        }
-        if (!j->is_object()) {
-            wrongType(key, *j, "an object");
-            return;
-        }
-        JsonReader reader(*j, childPath(key), mIssues);
-        sub.visit(reader);
-        reader.finish();
-    }
-    /// A key kept for compatibility (seed 002's names): read, range-checked, handed to `set`, never written.
-    template <class F>
-    void alias(std::string_view key, Range range, F&& set) {
-        if (const json* j = find(key)) {
-            double d = 0;
-            if (number(key, *j, range, d)) {
-                set(static_cast<float>(d));
-            }
-        }
-    }
-    void require(bool ok, std::string_view key, std::string_view message) {
-        if (!ok) {
-            add(SettingsIssueCode::Constraint, key, std::string(message));
-        }
-    }
-
-    /// Reports every key in the object that no field claimed.
-    void finish() {
-        for (const auto& [key, value] : mIn.items()) {
-            if (!mSeen.contains(key)) {
-                std::string known;
-                for (const auto& k : mKnown) {
-                    known += (known.empty() ? "" : ", ") + k;
-                }
-                add(SettingsIssueCode::UnknownKey, key, fmt::format("unknown key (known keys: {})", known));
-            }
-        }
-    }
-
-private:
-    const json* find(std::string_view key) {
-        mKnown.emplace_back(key);
-        mSeen.emplace(key);
-        const auto it = mIn.find(std::string(key));
-        return it == mIn.end() ? nullptr : &*it;
-    }
-    std::string childPath(std::string_view key) const {
-        return mPath.empty() ? std::string(key) : mPath + "." + std::string(key);
-    }
-    void add(SettingsIssueCode code, std::string_view key, std::string message) {
-        mIssues.push_back({code, childPath(key), std::move(message)});
-    }
-    void wrongType(std::string_view key, const json& j, const std::string& expected) {
-        add(SettingsIssueCode::WrongType, key,
-            fmt::format("expected {}, got {} {}", expected, typeName(j), j.dump()));
-    }
-    bool number(std::string_view key, const json& j, Range range, double& out) {
-        if (!j.is_number()) {
-            wrongType(key, j, fmt::format("a number in [{}, {}]", range.min, range.max));
-            return false;
-        }
-        out = j.get<double>();
-        if (!std::isfinite(out) || out < range.min || out > range.max) {
-            add(SettingsIssueCode::OutOfRange, key,
-                fmt::format("{} is outside [{}, {}]", j.dump(), range.min, range.max));
-            return false;
-        }
-        return true;
-    }
-    void vector(std::string_view key, float* dst, int n, Range range) {
-        const json* j = find(key);
-        if (!j) {
-            return;
-        }
-        if (!j->is_array() || j->size() != std::size_t(n)) {
-            wrongType(key, *j, fmt::format("an array of {} numbers in [{}, {}]", n, range.min, range.max));
-            return;
-        }
-        float tmp[3] = {};
-        for (int i = 0; i < n; ++i) {
-            double d = 0;
-            if (!number(fmt::format("{}[{}]", key, i), (*j)[std::size_t(i)], range, d)) {
-                return;
-            }
-            tmp[i] = static_cast<float>(d);
-        }
-        std::copy(tmp, tmp + n, dst);
-    }
-
-    const json& mIn;
-    std::string mPath;
-    std::vector<SettingsIssue>& mIssues;
-    std::set<std::string, std::less<>> mSeen;
-    std::vector<std::string> mKnown;
-};
 
 std::vector<SettingsIssue> readDocument(const json& doc, Settings& settings) {
     std::vector<SettingsIssue> issues;
@@ -320,9 +70,8 @@ std::vector<SettingsIssue> readDocument(const json& doc, Settings& settings) {
                           fmt::format("expected an object, got {}", post->type_name())});
         return issues;
     }
-    JsonReader reader(*post, "postEffects", issues);
-    settings.visit(reader);
-    reader.finish();
+    auto found = readObject(*post, "postEffects", settings);
+    issues.insert(issues.end(), found.begin(), found.end());
     return issues;
 }
 
@@ -357,50 +106,42 @@ std::vector<SettingsIssue> readSettingsJson(std::string_view text, Settings& set
     return issues;
 }
 
-Settings loadSettingsFile(const std::filesystem::path& file) {
+Settings loadSettingsFile(const std::filesystem::path& file, Settings base) {
     std::ifstream in(file, std::ios::binary);
     if (!in) {
         throw SettingsError(file.string(), {{SettingsIssueCode::ParseError, "", "cannot open the file"}});
     }
     std::stringstream ss;
     ss << in.rdbuf();
-    Settings settings;
-    auto issues = readSettingsJson(ss.str(), settings);
+    auto issues = readSettingsJson(ss.str(), base);
     if (!issues.empty()) {
         throw SettingsError(file.string(), std::move(issues));
     }
-    return settings;
+    return base;
 }
 
 json settingsToJsonValue(const Settings& settings) {
-    json post = json::object();
-    JsonWriter writer(post);
-    Settings copy = settings; // visit() is non-const by design (one list serves readers and writers)
-    copy.visit(writer);
-    return json{{"version", kSettingsVersion}, {"postEffects", post}};
+    return json{{"version", kSettingsVersion}, {"postEffects", writeObject(settings)}};
 }
 
 std::string settingsToJson(const Settings& settings) {
     return settingsToJsonValue(settings).dump(2) + "\n";
 }
 
-void applySettingsOverride(Settings& settings, std::string_view assignment) {
+namespace settings_json {
+
+bool parseAssignment(std::string_view assignment, json& patch) {
     const auto eq = assignment.find('=');
-    const std::string source = fmt::format("--set {}", assignment);
     if (eq == std::string_view::npos || eq == 0) {
-        throw SettingsError(source, {{SettingsIssueCode::BadOverride, std::string(assignment),
-                                      "expected path=value, e.g. tonemapping.mode=agx"}});
+        return false;
     }
-    const std::string path(assignment.substr(0, eq));
     const std::string valueText(assignment.substr(eq + 1));
-    json value = json::parse(valueText, nullptr, /*allow_exceptions=*/false);
-    if (value.is_discarded()) {
-        value = valueText; // bare words such as agx are strings
+    patch = json::parse(valueText, nullptr, /*allow_exceptions=*/false);
+    if (patch.is_discarded()) {
+        patch = valueText; // bare words such as agx are strings
     }
-    // Build {"postEffects": {"a": {"b": value}}} and read it like a file, so errors carry the same paths.
-    json patch = value;
-    std::string_view rest = path;
     std::vector<std::string> parts;
+    std::string_view rest = assignment.substr(0, eq);
     while (!rest.empty()) {
         const auto dot = rest.find('.');
         parts.emplace_back(rest.substr(0, dot));
@@ -408,6 +149,19 @@ void applySettingsOverride(Settings& settings, std::string_view assignment) {
     }
     for (auto it = parts.rbegin(); it != parts.rend(); ++it) {
         patch = json{{*it, patch}};
+    }
+    return true;
+}
+
+} // namespace settings_json
+
+void applySettingsOverride(Settings& settings, std::string_view assignment) {
+    const std::string source = fmt::format("--set {}", assignment);
+    // Build {"postEffects": {"a": {"b": value}}} and read it like a file, so errors carry the same paths.
+    json patch;
+    if (!parseAssignment(assignment, patch)) {
+        throw SettingsError(source, {{SettingsIssueCode::BadOverride, std::string(assignment),
+                                      "expected path=value, e.g. tonemapping.mode=agx"}});
     }
     Settings candidate = settings;
     auto issues = readDocument(json{{"postEffects", patch}}, candidate);

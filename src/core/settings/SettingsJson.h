@@ -28,8 +28,9 @@ private:
 /// found; fields with issues are left unchanged.
 std::vector<SettingsIssue> readSettingsJson(std::string_view text, Settings& settings);
 
-/// Loads a file over the defaults; throws SettingsError naming the file and every issue.
-Settings loadSettingsFile(const std::filesystem::path& file);
+/// Loads a file over `base` (the defaults unless given); throws SettingsError naming the file and every
+/// issue.
+Settings loadSettingsFile(const std::filesystem::path& file, Settings base = {});
 
 /// Full JSON of every field (what `photopic settings --defaults` prints). Save then load is lossless.
 std::string settingsToJson(const Settings& settings);

@@ -1,0 +1,59 @@
+#pragma once
+// Built-in scenes: procedural, deterministic HDR content that hosts the library through its public API only
+// (DESIGN.md: "A scene is a host of the library"). A scene renders frame N the same way every time, from the
+// caller's FrameTime, into an HDR texture it owns; the caller hands that texture to a Pipeline.
+
+#include "core/Settings.h"
+#include "gl/Objects.h"
+#include "pipeline/Pipeline.h"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace photopic {
+
+class Scene {
+public:
+    virtual ~Scene() = default;
+
+    [[nodiscard]] virtual std::string_view name() const = 0;
+
+    /// Post settings the scene is meant to be seen with (e.g. the tabletop turns auto exposure on). The
+    /// caller applies --settings and --set on top.
+    [[nodiscard]] virtual Settings defaultSettings() const { return {}; }
+
+    /// Applies one "key=value" to the scene's own settings (the CLI's `--set NAME.key=value` with NAME
+    /// removed). Returns issues with JSON paths that start with the scene's name; nothing changes when there
+    /// are issues.
+    virtual std::vector<SettingsIssue> applyOverride(std::string_view assignment) = 0;
+    /// The scene's settings as JSON (for logs and `photopic scene NAME --print-settings`).
+    [[nodiscard]] virtual std::string settingsJson() const = 0;
+
+    virtual void resize(Extent extent) = 0;
+
+    /// Names of the scene's own telemetry columns (written after frame,time_s, before the pipeline's).
+    [[nodiscard]] virtual std::vector<std::string> telemetryColumns() const = 0;
+
+    /// Renders frame `time.frameIndex` into the scene's HDR texture (valid until the next call), prepares the
+    /// pipeline for it (e.g. subjects), and writes one value per telemetry column into `telemetry`.
+    virtual const Texture& render(const FrameTime& time, Pipeline& pipeline,
+                                  std::vector<double>& telemetry) = 0;
+};
+
+struct SceneInfo {
+    std::string name;
+    std::string description;
+    std::function<std::unique_ptr<Scene>()> make;
+};
+
+/// Every built-in scene (scenes/SceneRegistry.cpp lists them).
+const std::vector<SceneInfo>& builtInScenes();
+/// Makes the named scene; throws std::invalid_argument listing the known names.
+std::unique_ptr<Scene> makeScene(std::string_view name);
+
+} // namespace photopic

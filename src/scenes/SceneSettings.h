@@ -1,0 +1,36 @@
+#pragma once
+// Scene settings use the same reflection as the post settings (core/settings/Reflect.h): a struct with
+// visit(V&).
+
+#include "core/settings/JsonVisitors.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace photopic {
+
+/// Applies "key=value" to `settings`, whose JSON path root is `sceneName`; returns the issues (nothing
+/// changes when there are any).
+template <class S>
+std::vector<SettingsIssue> applySceneOverride(S& settings, std::string_view sceneName,
+                                              std::string_view assignment) {
+    nlohmann::json patch;
+    if (!settings_json::parseAssignment(assignment, patch)) {
+        return {{SettingsIssueCode::BadOverride, std::string(sceneName) + "." + std::string(assignment),
+                 "expected " + std::string(sceneName) + ".key=value"}};
+    }
+    S candidate = settings;
+    auto issues = settings_json::readObject(patch, std::string(sceneName), candidate);
+    if (issues.empty()) {
+        settings = std::move(candidate);
+    }
+    return issues;
+}
+
+template <class S>
+std::string sceneSettingsJson(const S& settings) {
+    return settings_json::writeObject(settings).dump(2);
+}
+
+} // namespace photopic

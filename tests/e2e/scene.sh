@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The scene runner: frames, telemetry.csv, scene settings through --set NAME.key=value, errors.
+source "$(dirname "$0")/lib.bash"
+S="$SCRATCH"
+
+expect 0 "scene --list" -- "$PHOTOPIC" scene --list
+check "lists the gradient scene" contains "gradient"
+expect 0 "gradient scene renders" -- "$PHOTOPIC" scene gradient -o "$S/grad" --frames 4 --size 96x54 --set gradient.period=2
+check "frames written" test -s "$S/grad/frame_0000.png" -a -s "$S/grad/frame_0003.png"
+check "telemetry written" test -s "$S/grad/telemetry.csv"
+check "telemetry has one row per frame plus the header" test "$(wc -l < "$S/grad/telemetry.csv")" -eq 5
+check "telemetry starts with frame,time_s" test "$(head -c 12 "$S/grad/telemetry.csv")" = "frame,time_s"
+expect 0 "EXR frames" -- "$PHOTOPIC" scene gradient -o "$S/grad-exr" --frames 1 --size 64x36 --format exr
+check "EXR frame written" test -s "$S/grad-exr/frame_0000.exr"
+expect 2 "unknown scene" -- "$PHOTOPIC" scene nowhere -o "$S/x" --frames 1
+check "known scenes listed" contains "known scenes"
+expect 2 "bad scene setting" -- "$PHOTOPIC" scene gradient -o "$S/y" --frames 1 --set gradient.period=0
+check "scene setting named by path" contains "gradient.period"
+expect 2 "bad size" -- "$PHOTOPIC" scene gradient -o "$S/z" --size 12by7
+check "size named" contains "12by7"
+check "nothing written for bad input" test ! -e "$S/y/frame_0000.png" -a ! -e "$S/z/frame_0000.png"
+
+finish
