@@ -60,6 +60,16 @@ void expand(const std::string& name, std::set<std::string>& included, std::strin
     }
 }
 
+/// The info log of a shader or program (`getiv`/`getLog` are the matching GL queries).
+template <class GetIv, class GetLog>
+std::string infoLog(GLuint object, GetIv getiv, GetLog getLog) {
+    GLint length = 0;
+    getiv(object, GL_INFO_LOG_LENGTH, &length);
+    std::string log(std::size_t(std::max(length, 1)), '\0');
+    getLog(object, length, nullptr, log.data());
+    return log;
+}
+
 GLuint compile(GLenum stage, std::string_view name, const ShaderDefines& defines) {
     const std::string source = preprocessShader(name, defines);
     const GLuint shader = glCreateShader(stage);
@@ -69,10 +79,7 @@ GLuint compile(GLenum stage, std::string_view name, const ShaderDefines& defines
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (ok != GL_TRUE) {
-        GLint length = 0;
-        glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-        std::string log(std::size_t(std::max(length, 1)), '\0');
-        glGetShaderInfoLog(shader, length, nullptr, log.data());
+        const std::string log = infoLog(shader, glGetShaderiv, glGetShaderInfoLog);
         glDeleteShader(shader);
         throw GlError(fmt::format("compiling {} failed:\n{}", name, log));
     }
@@ -92,10 +99,7 @@ Program link(std::initializer_list<GLuint> shaders, std::string_view label) {
     GLint ok = GL_FALSE;
     glGetProgramiv(program, GL_LINK_STATUS, &ok);
     if (ok != GL_TRUE) {
-        GLint length = 0;
-        glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-        std::string log(std::size_t(std::max(length, 1)), '\0');
-        glGetProgramInfoLog(program, length, nullptr, log.data());
+        const std::string log = infoLog(program, glGetProgramiv, glGetProgramInfoLog);
         glDeleteProgram(program);
         throw GlError(fmt::format("linking {} failed:\n{}", label, log));
     }

@@ -1,5 +1,7 @@
 #include "io/ImageIO.h"
 
+#include "core/Color.h"
+
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -414,11 +416,6 @@ std::unique_ptr<T, StbiFree> decodePng(const fs::path& path, std::span<const uns
     return owned;
 }
 
-/// The sRGB EOTF (IEC 61966-2-1), exact piecewise form.
-float srgbToLinear(float encoded) {
-    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
-}
-
 ImageF readPngLinear(const fs::path& path, std::span<const unsigned char> bytes) {
     int width = 0;
     int height = 0;
@@ -428,13 +425,13 @@ ImageF readPngLinear(const fs::path& path, std::span<const unsigned char> bytes)
         image = ImageF(width, height);
         for (std::size_t i = 0; i < image.rgba.size(); ++i) {
             const float v = float(pixels.get()[i]) / 65535.0f;
-            image.rgba[i] = i % 4 == 3 ? v : srgbToLinear(v);
+            image.rgba[i] = i % 4 == 3 ? v : srgbDecode(v);
         }
     } else {
         const auto pixels = decodePng<stbi_uc>(path, bytes, width, height);
         std::array<float, 256> decode{};
         for (std::size_t v = 0; v < decode.size(); ++v)
-            decode[v] = srgbToLinear(float(v) / 255.0f);
+            decode[v] = srgbDecode(float(v) / 255.0f);
         image = ImageF(width, height);
         for (std::size_t i = 0; i < image.rgba.size(); ++i) {
             const unsigned char v = pixels.get()[i];

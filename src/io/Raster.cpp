@@ -1,5 +1,7 @@
 #include "io/Raster.h"
 
+#include "core/Color.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -43,23 +45,20 @@ bool clipSegment(double& x0, double& y0, double& x1, double& y1, double lo, doub
     return true;
 }
 
-// sRGB transfer (IEC 61966-2-1) for resampling in linear light.
+// Resampling happens in linear light (core/Color.h's exact sRGB transfer).
 const std::array<float, 256>& srgbDecodeTable() {
     static const std::array<float, 256> table = [] {
         std::array<float, 256> t{};
         for (std::size_t i = 0; i < t.size(); ++i) {
-            const float v = float(i) / 255.0f;
-            t[i] = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+            t[i] = srgbDecode(float(i) / 255.0f);
         }
         return t;
     }();
     return table;
 }
 
-std::uint8_t srgbEncode(float linear) {
-    const float v = std::clamp(linear, 0.0f, 1.0f);
-    const float encoded = v <= 0.0031308f ? v * 12.92f : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-    return std::uint8_t(std::lround(encoded * 255.0f));
+std::uint8_t encode8(float linear) {
+    return std::uint8_t(std::lround(srgbEncode(linear) * 255.0f));
 }
 
 struct Tap {
@@ -178,7 +177,7 @@ void blitScaled(Image8& dst, const Image8& src, int x, int y, int w, int h) {
             }
             std::uint8_t* out = dst.at(x + i, y + j);
             for (std::size_t c = 0; c < 3; ++c)
-                out[c] = srgbEncode(sum[c]);
+                out[c] = encode8(sum[c]);
             out[3] = std::uint8_t(std::lround(std::clamp(sum[3], 0.0f, 255.0f)));
         }
     }
