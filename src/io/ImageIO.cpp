@@ -458,6 +458,9 @@ Bytes encodePng(const fs::path& path, const Image8& image) {
     png.width = png_uint_32(image.width);
     png.height = png_uint_32(image.height);
     png.format = opaque ? PNG_FORMAT_RGB : PNG_FORMAT_RGBA;
+    // Fast deflate: a 1080p frame encodes ~10x faster than at the default level for ~10-20% more bytes, which is
+    // what sequences of hundreds of frames need.
+    png.flags = PNG_IMAGE_FLAG_FAST;
     const void* pixels =
         opaque ? static_cast<const void*>(rgb.data()) : static_cast<const void*>(image.rgba.data());
     const auto stride = png_int_32(std::size_t(image.width) * channels);
