@@ -19,6 +19,8 @@ uniform float uLog2Max;
 shared uint sBins[256];
 shared float sSum[256];
 shared float sWeight[256];
+shared float sRowSum[16];
+shared float sRowWeight[16];
 shared uint sMinBits;
 shared uint sMaxBits;
 
@@ -67,15 +69,20 @@ void main() {
     if (uBuildHistogram != 0 && sBins[li] != 0u) {
         atomicAdd(gBins[li], sBins[li]);
     }
-    if (uWeights >= 0) {
-        for (uint stride = 128u; stride > 0u; stride >>= 1) {
-            if (li < stride) {
-                sSum[li] += sSum[li + stride];
-                sWeight[li] += sWeight[li + stride];
-            }
-            barrier();
+    // Two-level sum (16 rows of 16, then the 16 row sums): two barriers instead of a tree's eight. Barriers are
+    // what costs on CPU rasterisers (llvmpipe), and 16-term serial float sums keep
+    // the precision of a tree.
+    if (uWeights >= 0 && li < 16u) {
+        float rowSum = 0.0;
+        float rowWeight = 0.0;
+        for (uint i = 0u; i < 16u; ++i) {
+            rowSum += sSum[li * 16u + i];
+            rowWeight += sWeight[li * 16u + i];
         }
+        sRowSum[li] = rowSum;
+        sRowWeight[li] = rowWeight;
     }
+    barrier();
     if (li == 0u) {
         if (sMaxBits != 0u) {
             atomicMin(gMinBits, sMinBits);
@@ -83,7 +90,11 @@ void main() {
         }
         if (uWeights >= 0) {
             uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-            gPartials[group] = vec2(sSum[0], sWeight[0]);
+            vec2 total = vec2(0.0);
+            for (uint i = 0u; i < 16u; ++i) {
+                total += vec2(sRowSum[i], sRowWeight[i]);
+            }
+            gPartials[group] = total;
         }
     }
 }
