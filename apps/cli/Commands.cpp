@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <memory>
 
 namespace photopic::cli {
 
@@ -26,6 +27,9 @@ Settings resolveSettings(const SettingsSources& sources, Settings base) {
     }
     if (sources.exposure) {
         applySettingsOverride(settings, fmt::format("tonemapping.exposure={}", *sources.exposure));
+    }
+    if (!sources.debugView.empty()) {
+        applySettingsOverride(settings, "debug.view=" + sources.debugView);
     }
     for (const auto& o : sources.overrides) {
         applySettingsOverride(settings, o);
@@ -67,6 +71,21 @@ ImageF readInput(const fs::path& path) {
     }
 }
 
+/// The telemetry CSV: the six columns first, then what the histogram and metering add.
+std::string telemetryCsv(const std::vector<ExposureTelemetry>& rows, float dt) {
+    std::string csv = "frame,time_s,measured_luma,target_log2,applied_log2,exposure,manual_ev,metered_luma,"
+                      "min_luma,max_luma,histogram_count,histogram_low_log2,histogram_high_log2,"
+                      "histogram_average_log2\n";
+    for (const ExposureTelemetry& t : rows) {
+        csv += fmt::format(
+            "{},{:.6f},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g}\n",
+            t.frame, double(t.frame) * double(dt), t.frameLuminance, t.targetLog2, t.appliedLog2, t.exposure,
+            t.manualEV, t.meteredLuminance, t.minLuminance, t.maxLuminance, t.histogramCount,
+            t.histogramLowLog2, t.histogramHighLog2, t.histogramAverageLog2);
+    }
+    return csv;
+}
+
 } // namespace
 
 int runImage(const ImageOptions& options) {
@@ -98,7 +117,16 @@ int runImage(const ImageOptions& options) {
     }
 
     HeadlessContext context;
-    Pipeline pipeline({.settings = settings, .forceLdr = options.forceLdr});
+    const PipelineCreateInfo createInfo{.settings = settings,
+                                        .forceLdr = options.forceLdr,
+                                        .keepTelemetryHistory = !options.telemetry.empty()};
+    std::unique_ptr<Pipeline> pipelinePtr;
+    try {
+        pipelinePtr = std::make_unique<Pipeline>(createInfo);
+    } catch (const IoError& e) { // the metering mask named in the settings
+        throw InputError(fmt::format("autoExposure.mask.path: {}", e.what()));
+    }
+    Pipeline& pipeline = *pipelinePtr;
     const float dt = 1.0f / options.fps;
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         const auto start = std::chrono::steady_clock::now();
@@ -115,6 +143,16 @@ int runImage(const ImageOptions& options) {
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         std::printf("%s -> %s (%dx%d, %.1f ms)\n", inputs[i].string().c_str(), out.string().c_str(),
                     images[i].width, images[i].height, ms);
+    }
+    if (!options.telemetry.empty()) {
+        // Offline: drain the ring so every frame has its own row.
+        const std::vector<ExposureTelemetry> rows = pipeline.drainTelemetry();
+        if (rows.size() != inputs.size()) {
+            throw std::runtime_error(fmt::format("telemetry: {} of {} frames came back ({} dropped)",
+                                                 rows.size(), inputs.size(), pipeline.droppedTelemetry()));
+        }
+        writeTextFile(options.telemetry, telemetryCsv(rows, dt));
+        std::printf("telemetry -> %s (%zu frames)\n", options.telemetry.string().c_str(), rows.size());
     }
     return kOk;
 }

@@ -23,6 +23,7 @@ struct SettingsSources {
     std::filesystem::path file;
     std::string tonemap;
     std::optional<float> exposure;
+    std::string debugView; ///< same as --set debug.view=NAME
     std::vector<std::string> overrides;
 };
 Settings resolveSettings(const SettingsSources& sources, Settings base = {});
@@ -34,6 +35,7 @@ struct ImageOptions {
     SettingsSources settings;
     bool forceLdr = false;
     float fps = 30.0f;
+    std::filesystem::path telemetry; ///< CSV, one row per frame; empty: none
 };
 
 struct SceneOptions {

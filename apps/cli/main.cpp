@@ -22,6 +22,9 @@ void addSettingsOptions(CLI::App* cmd, SettingsSources& s) {
     cmd->add_option("--tonemap", s.tonemap, "tone curve (same as --set tonemapping.mode=NAME)");
     cmd->add_option("--exposure", s.exposure,
                     "manual exposure in EV (same as --set tonemapping.exposure=EV)");
+    cmd->add_option(
+        "--debug", s.debugView,
+        "debug view: none, exposure, luma, ev, metering, histogram, bloom (same as --set debug.view=NAME)");
     cmd->add_option("--set", s.overrides, "override one setting: path=value, e.g. tonemapping.mode=agx")
         ->take_first();
 }
@@ -50,6 +53,9 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"png", "exr"}));
     imageCmd->add_option("--fps", image.fps, "frame rate of a sequence")->check(CLI::Range(0.001f, 10000.0f));
     imageCmd->add_flag("--force-ldr", image.forceLdr, "run the LDR (RGBA8) path");
+    imageCmd->add_option("--telemetry", image.telemetry,
+                         "write exposure telemetry as CSV, one row per frame (frame,time_s,measured_luma,"
+                         "target_log2,applied_log2,exposure,...)");
     addSettingsOptions(imageCmd, image.settings);
 
     auto* settingsCmd = app.add_subcommand("settings", "print the default settings or check a settings file");

@@ -3,6 +3,7 @@
 // JSON: {"version": 1, "postEffects": {<key>: {...}}} with the keys below.
 
 #include "core/settings/AutoExposureSettings.h"
+#include "core/settings/DebugSettings.h"
 #include "core/settings/OutputSettings.h"
 #include "core/settings/ToneMappingSettings.h"
 
@@ -12,12 +13,14 @@ struct Settings {
     ToneMappingSettings tonemapping;
     OutputSettings output;
     AutoExposureSettings autoExposure;
+    DebugSettings debug;
 
     template <class V>
     void visit(V& v) {
         v.object("tonemapping", tonemapping);
         v.object("output", output);
         v.object("autoExposure", autoExposure);
+        v.object("debug", debug);
     }
 };
 

@@ -28,6 +28,9 @@ bool ReadbackRing::enqueue(const Buffer& source, std::size_t offset, std::uint64
     // Persistent coherent mapping: the copy's writes become visible to the client once the fence signals.
     glMemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
     it->fence = Fence::insert();
+    // Flushed so the fence signals on its own: a non-blocking status query never flushes, and without it a
+    // driver may hold the copy until something else submits (llvmpipe does).
+    glFlush();
     it->tag = tag;
     it->order = mOrder++;
     it->busy = true;
@@ -36,6 +39,9 @@ bool ReadbackRing::enqueue(const Buffer& source, std::size_t offset, std::uint64
 
 std::vector<ReadbackRing::Result> ReadbackRing::collect(bool wait, bool newestOnly) {
     std::vector<Slot*> ready;
+    if (!wait && mReadyOverride && !mReadyOverride()) {
+        return {};
+    }
     for (auto& slot : mSlots) {
         if (!slot.busy) {
             continue;

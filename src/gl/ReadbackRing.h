@@ -7,8 +7,10 @@
 #include "gl/Objects.h"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace photopic {
@@ -36,6 +38,10 @@ public:
     /// sequence).
     std::vector<Result> drain();
 
+    /// Test hook (seed 004's continuity test): while set, a non-blocking poll also needs `ready()` to return
+    /// true before it takes a signalled slot, so a test can hold results "in flight". drain() ignores it.
+    void setReadyOverride(std::function<bool()> ready) { mReadyOverride = std::move(ready); }
+
     [[nodiscard]] int inFlight() const;
     [[nodiscard]] std::uint64_t dropped() const { return mDropped; }
     [[nodiscard]] int slotCount() const { return int(mSlots.size()); }
@@ -55,6 +61,7 @@ private:
     std::size_t mBytes = 0;
     std::uint64_t mOrder = 0;
     std::uint64_t mDropped = 0;
+    std::function<bool()> mReadyOverride;
 };
 
 } // namespace photopic

@@ -533,6 +533,10 @@ void requirePixels(const fs::path& path, const Image& image) {
 
 } // namespace
 
+void writeTextFile(const fs::path& path, std::string_view text) {
+    writeAtomically(path, {reinterpret_cast<const unsigned char*>(text.data()), text.size()});
+}
+
 ImageF readImage(const fs::path& path) {
     requireRegularFile(path);
     const Bytes head = readBytes(path, 16);

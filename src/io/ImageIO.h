@@ -43,6 +43,9 @@ public:
 /// must already exist; it is never created.
 void writePng(const std::filesystem::path& path, const Image8& image);
 
+/// Writes a text file (CSV telemetry, JSON) atomically, like writePng.
+void writeTextFile(const std::filesystem::path& path, std::string_view text);
+
 /// Writes a half-float RGBA OpenEXR, ZIP compressed (lossless for half data), data window = display window =
 /// the image. Values are rounded to half; finite values beyond +-65504 are clamped to it rather than becoming
 /// infinite. Atomic, like writePng.

@@ -5,27 +5,67 @@
 #include "gl/ShaderLibrary.h"
 
 #include <cstddef>
+#include <cstdint>
 
 namespace photopic {
 
 inline constexpr unsigned kBindingExposureState = 0; ///< SSBO: GpuExposureState
-inline constexpr unsigned kBindingHistogram = 1;     ///< SSBO: histogram bins
-inline constexpr unsigned kBindingMetering = 2;      ///< SSBO: metering scratch
+inline constexpr unsigned kBindingHistogram = 1; ///< SSBO: 256 uint histogram bins (core/Metering.h binning)
+inline constexpr unsigned kBindingMetering = 2;  ///< SSBO: GpuMeteringHeader + per-workgroup partial sums
 
-/// std430 mirror of passes/common/exposure.h.glsl.
+/// std430 mirror of passes/common/exposure.h.glsl. The first six fields are core's ExposureState
+/// (core/ExposureController.h) in the same order; the rest is what the pipeline and its readers add.
 struct GpuExposureState {
-    float appliedLog2 = 0;
-    float targetLog2 = 0;
-    float meteredLuminance = 0;
-    float exposure = 1;
-    int adapting = 0;
-    int initialized = 0;
-    float manualEV = 0;
-    float pad0 = 0;
+    float appliedLog2 = 0;      ///< EV, adapted auto exposure (without manual EV)
+    float targetLog2 = 0;       ///< EV, target of the last valid reading
+    float meteredLuminance = 0; ///< last valid metered luminance (0 before the first)
+    float exposure = 1;         ///< total multiplier applied to the frame: 2^(manualEV + appliedLog2)
+    int adapting = 0;           ///< deadband hysteresis state
+    int initialized = 0;        ///< 0: the next valid reading snaps
+    float manualEV = 0;         ///< EV, tonemapping.exposure of this frame
+    int autoEnabled = 0;        ///< autoExposure.enabled of this frame
+    float frameLuminance = 0;   ///< this frame's own reading, 0 when none (not metered, nothing meterable)
+    float minLuminance = 0;     ///< smallest meterable pixel luminance of this frame, 0 when not metered
+    float maxLuminance = 0;     ///< largest meterable pixel luminance of this frame, 0 when not metered
+    std::uint32_t histogramCount = 0; ///< pixels in the histogram this frame, 0 when it was not built
+    float histogramLowLog2 = 0;       ///< percentile window's low edge (bin centre), core HistogramStats
+    float histogramHighLog2 = 0;      ///< percentile window's high edge (bin centre)
+    float histogramAverageLog2 = 0;   ///< mean log2 L over the window
+    std::uint32_t histogramPeak = 0;  ///< largest bin count (scales the overlay)
 };
-static_assert(sizeof(GpuExposureState) == 32);
-static_assert(offsetof(GpuExposureState, exposure) == 12);
-static_assert(offsetof(GpuExposureState, manualEV) == 24);
+static_assert(sizeof(GpuExposureState) == 64);
+static_assert(offsetof(GpuExposureState, appliedLog2) == 0 && offsetof(GpuExposureState, targetLog2) == 4 &&
+              offsetof(GpuExposureState, meteredLuminance) == 8 &&
+              offsetof(GpuExposureState, exposure) == 12 && offsetof(GpuExposureState, adapting) == 16 &&
+              offsetof(GpuExposureState, initialized) == 20 && offsetof(GpuExposureState, manualEV) == 24 &&
+              offsetof(GpuExposureState, autoEnabled) == 28);
+static_assert(offsetof(GpuExposureState, frameLuminance) == 32 &&
+              offsetof(GpuExposureState, minLuminance) == 36 &&
+              offsetof(GpuExposureState, maxLuminance) == 40 &&
+              offsetof(GpuExposureState, histogramCount) == 44 &&
+              offsetof(GpuExposureState, histogramLowLog2) == 48 &&
+              offsetof(GpuExposureState, histogramHighLog2) == 52 &&
+              offsetof(GpuExposureState, histogramAverageLog2) == 56 &&
+              offsetof(GpuExposureState, histogramPeak) == 60);
+
+inline constexpr int kGpuHistogramBins = 256;
+inline constexpr std::size_t kGpuHistogramBytes = kGpuHistogramBins * sizeof(std::uint32_t);
+
+/// std430 mirror of the header of passes/metering/metering.h.glsl's buffer; `vec2 partials[]` follows it
+/// (x = sum of w log2 L, y = sum of w, one per metering workgroup).
+struct GpuMeteringHeader {
+    std::uint32_t minBits = 0; ///< float bits of the smallest meterable L (positive floats order as uints)
+    std::uint32_t maxBits = 0; ///< float bits of the largest meterable L; 0: none this frame
+    std::uint32_t groups = 0;  ///< partial sums written by the metering dispatch
+    std::uint32_t pad0 = 0;
+    float reading = 0;   ///< the weighted mean luminance (reduce dispatch), 0: no reading
+    float weightSum = 0; ///< sum of weights that entered it (diagnostics)
+    float pad1 = 0;
+    float pad2 = 0;
+};
+static_assert(sizeof(GpuMeteringHeader) == 32);
+static_assert(offsetof(GpuMeteringHeader, groups) == 8 && offsetof(GpuMeteringHeader, reading) == 16 &&
+              offsetof(GpuMeteringHeader, weightSum) == 20);
 
 /// #defines every shader gets: the binding indices above.
 ShaderDefines bindingDefines(ShaderDefines extra = {});

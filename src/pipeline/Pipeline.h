@@ -7,25 +7,33 @@
 //   [x] 1. sanitise the host's colour (NaN, +-Inf, negatives -> 0; clamp below the half-float maximum)
 //   [ ] 2. scene-space effects (SSAO, contact shadows, SSR, volumetric light)
 //   [ ] 3. TAA
-//   [ ] 4. metering and exposure adaptation (GPU-resident; manual exposure is written to the same state)
+//   [x] 4. metering and exposure adaptation (GPU-resident, same frame; with auto exposure off the adaptation
+//   pass
+//          writes 2^manualEV to the same state; the state, histogram and min/max go into the readback ring)
 //   [ ] 5. depth of field, motion blur
 //   [ ] 6. bloom on exposed colour
 //   [x] 7. composite: colour x exposure (+ bloom, grading)
-//   [ ] 8. scene-value debug views
+//   [x] 8. scene-value debug views (exposure, luma, ev, metering, bloom): they replace the image and skip 9
 //   Display domain:
 //   [x] 9. tone mapping, exactly once, + sRGB output transform + dither
 //   [ ] 10. FXAA
 //   [ ] 11. lens flare, vignette, chromatic aberration, grain, dazzle
-//   [ ] 12. overlays
+//   [x] 12. overlays (histogram)
 
 #include "core/Image.h"
 #include "core/Settings.h"
 #include "gl/Capabilities.h"
 #include "gl/GpuTimers.h"
 #include "gl/Objects.h"
+#include "gl/ReadbackRing.h"
 
+#include <array>
 #include <cstdint>
+#include <deque>
+#include <functional>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace photopic {
 
@@ -43,6 +51,31 @@ struct FrameTime {
 struct PipelineCreateInfo {
     Settings settings;
     bool forceLdr = false; ///< take the LDR path whatever the GPU can do
+    /// Keep every frame's telemetry until drainTelemetry() (offline sequences: one CSV row per frame). Off
+    /// for interactive hosts, which read only the newest through telemetry().
+    bool keepTelemetryHistory = false;
+};
+
+/// One frame's exposure as the GPU computed it, read back through the ring (never blocking the frame).
+struct ExposureTelemetry {
+    bool valid = false;         ///< false until the first frame's record has arrived
+    std::uint64_t frame = 0;    ///< FrameTime::frameIndex of the frame it came from
+    float frameLuminance = 0;   ///< this frame's metered luminance, 0 when it had no reading
+    float meteredLuminance = 0; ///< the last valid reading (what the target follows)
+    float targetLog2 = 0;       ///< EV, auto exposure's target
+    float appliedLog2 = 0;      ///< EV, auto exposure's adapted value
+    float exposure = 1;         ///< total multiplier applied to the frame (manual x auto)
+    float manualEV = 0;
+    bool autoEnabled = false;
+    bool adapting = false;
+    bool initialized = false;
+    float minLuminance = 0; ///< smallest meterable pixel luminance (0 when nothing was metered)
+    float maxLuminance = 0;
+    std::uint32_t histogramCount = 0; ///< pixels binned (0: no histogram this frame)
+    float histogramLowLog2 = 0;       ///< percentile window, bin centres
+    float histogramHighLog2 = 0;
+    float histogramAverageLog2 = 0;
+    std::array<std::uint32_t, 256> histogram{}; ///< this frame's bins (replaced whole, never accumulated)
 };
 
 class Pipeline {
@@ -66,14 +99,43 @@ public:
     /// Per-pass GPU timings, collected without stalling.
     [[nodiscard]] GpuTimers& timers() { return mTimers; }
 
+    /// Camera cut, teleport: the next frame's exposure snaps to its target (resize does the same).
+    void resetExposure() { mResetExposure = true; }
+
+    /// The newest exposure telemetry that has arrived, without blocking. When nothing new has finished, the
+    /// last result is returned again (seed 004's continuity cache); `valid` is false before the first.
+    const ExposureTelemetry& telemetry();
+    /// Blocks until every frame in flight has reported; returns every frame's record not yet drained, oldest
+    /// first (with keepTelemetryHistory, one per frame since the last drain; else only those still in
+    /// flight).
+    std::vector<ExposureTelemetry> drainTelemetry();
+    /// Frames whose telemetry was dropped because every ring slot was in flight.
+    [[nodiscard]] std::uint64_t droppedTelemetry() const { return mRing.dropped(); }
+    /// Test hook (seed 004): while `ready` returns false, finished readbacks stay in flight.
+    void setTelemetryReadyOverride(std::function<bool()> ready) { mRing.setReadyOverride(std::move(ready)); }
+
+    /// The GPU exposure state buffer (GpuExposureState), for passes a host adds after the pipeline's.
+    [[nodiscard]] const Buffer& exposureState() const { return mExposureState; }
+
 private:
     struct Passes;
     void resize(Extent extent);
+    void loadMask();
+    void pollTelemetry();
+    void keep(const ExposureTelemetry& record);
 
     Settings mSettings;
     Capabilities mCaps;
     std::unique_ptr<Passes> mPasses;
     Buffer mExposureState;
+    Buffer mTelemetryRecord; ///< GpuExposureState + bins, copied on the GPU, then into the ring
+    ReadbackRing mRing;
+    ExposureTelemetry mTelemetry;
+    std::deque<ExposureTelemetry> mHistory;
+    bool mKeepHistory = false;
+    bool mResetExposure = true;
+    Texture mMask;
+    std::string mMaskPath;
     GpuTimers mTimers;
     Extent mExtent;
     const Texture* mLastScene = nullptr;

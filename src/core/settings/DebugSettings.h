@@ -1,0 +1,38 @@
+#pragma once
+// Debug views (DESIGN.md frame order steps 8 and 12): what the pipeline shows instead of, or over, the image.
+
+#include "core/settings/Reflect.h"
+
+#include <array>
+#include <span>
+#include <string_view>
+
+namespace photopic {
+
+enum class DebugView {
+    None,      ///< the normal image
+    Exposure,  ///< false colour of exposed scene values (seed 001 bands; REFERENCES.md "Debug views")
+    Luma,      ///< exposed Rec.709 luma as grey
+    Ev,        ///< stops around middle grey, log2(Y exposure / 0.18), one colour per stop -6..+6
+    Metering,  ///< the weight each pixel gets in the metering mode
+    Histogram, ///< overlay over the normal image: 256 bins, percentile window, average, target, current
+    Bloom,     ///< the bloom texture alone (black when the pipeline has no bloom)
+};
+
+inline std::span<const std::string_view> debugViewNames() {
+    static constexpr std::array<std::string_view, 7> kNames{"none",     "exposure",  "luma", "ev",
+                                                            "metering", "histogram", "bloom"};
+    return kNames;
+}
+
+struct DebugSettings {
+    DebugView view =
+        DebugView::None; ///< default none; scene-value views replace the image before tone mapping
+
+    template <class V>
+    void visit(V& v) {
+        v.field("view", view, debugViewNames());
+    }
+};
+
+} // namespace photopic

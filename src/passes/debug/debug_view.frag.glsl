@@ -1,0 +1,107 @@
+// Scene-value debug views (DESIGN.md frame order step 8): they replace the image before tone mapping and are shown
+// as they are, never tone mapped. Values are exposed scene values (colour x gExposure.exposure).
+// References: seed 001 and REFERENCES.md "Debug views" (false-colour bands: blue ramp below 1, yellow >= 1,
+// orange >= 2, magenta >= 4, white >= 8; stops log2(Y exposure / 0.18), one colour per stop -6..+6, as in the
+// EL Zone System); core/Metering.h for the metering weights.
+#include "passes/common/color.h.glsl"
+#include "passes/common/exposure.h.glsl"
+#include "passes/common/sanitize.h.glsl"
+#include "passes/metering/metering.h.glsl"
+
+layout(binding = 0) uniform sampler2D uScene;
+layout(binding = 1) uniform sampler2D uMask;
+layout(binding = 2) uniform sampler2D uBloom;
+
+uniform int uView; // DebugView: 1 exposure, 2 luma, 3 ev, 4 metering, 6 bloom
+uniform int uHasBloom;
+uniform int uHasMask;
+uniform int uMeteringMode;
+uniform float uLog2Min;
+uniform float uLog2Max;
+uniform vec2 uSpotUv;
+uniform float uSpotRadius;
+
+layout(location = 0) out vec4 oColor;
+
+// Display colours (sRGB-encoded, written as they are).
+vec3 falseColour(float y) {
+    if (y >= 8.0) {
+        return vec3(1.0);
+    }
+    if (y >= 4.0) {
+        return vec3(1.0, 0.0, 1.0);
+    }
+    if (y >= 2.0) {
+        return vec3(1.0, 0.5, 0.0);
+    }
+    if (y >= 1.0) {
+        return vec3(1.0, 1.0, 0.0);
+    }
+    return mix(vec3(0.0, 0.0, 0.15), vec3(0.35, 0.65, 1.0), clamp(y, 0.0, 1.0));
+}
+
+// One colour per stop from -6 to +6 around middle grey: cold to hot, middle grey itself grey.
+const vec3 kStopColours[13] = vec3[](vec3(0.10, 0.00, 0.25), vec3(0.25, 0.00, 0.55), vec3(0.20, 0.15, 0.85),
+                                     vec3(0.00, 0.40, 1.00), vec3(0.00, 0.70, 0.90), vec3(0.00, 0.75, 0.45),
+                                     vec3(0.50, 0.50, 0.50), vec3(0.55, 0.85, 0.10), vec3(0.95, 0.90, 0.00),
+                                     vec3(1.00, 0.65, 0.00), vec3(1.00, 0.35, 0.00), vec3(0.90, 0.00, 0.10),
+                                     vec3(1.00, 1.00, 1.00));
+
+vec3 stopColour(float y) {
+    if (!(y > 0.0)) {
+        return kStopColours[0];
+    }
+    float stops = log2(y / 0.18);
+    return kStopColours[clamp(int(floor(stops + 0.5)), -6, 6) + 6];
+}
+
+// The weight this pixel gets in the current metering mode (core/Metering.h); 0 for luminance no mean takes.
+float meteringWeight(ivec2 texel, ivec2 size, float lum) {
+    if (!isMeterable(lum) && uMeteringMode != kMeterHistogram) {
+        return 0.0;
+    }
+    vec2 uv = imageUv(imagePixel(texel, size), size);
+    float aspect = float(size.x) / float(size.y);
+    if (uMeteringMode == kMeterHistogram) {
+        // Inside the percentile window: the bin's centre lies between the window's edge bins.
+        int bin = histogramBin(lum, uLog2Min, uLog2Max);
+        if (bin < 0 || gExposure.histogramCount == 0u) {
+            return 0.0;
+        }
+        float centre = histogramBinCentreLog2(bin, uLog2Min, uLog2Max);
+        return centre >= gExposure.histogramLowLog2 && centre <= gExposure.histogramHighLog2 ? 1.0 : 0.0;
+    }
+    if (uMeteringMode == kMeterSpot) {
+        return spotWeight(uv, uSpotUv, uSpotRadius, aspect);
+    }
+    if (uMeteringMode == kMeterCenter) {
+        return centerWeight(uv, aspect);
+    }
+    if (uMeteringMode == kMeterMask && uHasMask != 0) {
+        return maskWeight(uMask, uv);
+    }
+    return 1.0;
+}
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 size = textureSize(uScene, 0);
+    vec3 scene = sanitize(texelFetch(uScene, p, 0).rgb);
+    float lum = luma709(scene);
+    float exposed = lum * gExposure.exposure;
+    vec3 c = vec3(0.0);
+    if (uView == 1) {
+        c = falseColour(exposed);
+    } else if (uView == 2) {
+        c = vec3(srgbEncode(exposed));
+    } else if (uView == 3) {
+        c = stopColour(exposed);
+    } else if (uView == 4) {
+        float w = clamp(meteringWeight(p, size, lum), 0.0, 1.0);
+        // The weight over a dim grey copy of the image, so the metered region reads against the scene.
+        c = mix(vec3(0.3 * srgbEncode(exposed)), vec3(1.0, 0.6, 0.1), w);
+    } else if (uView == 6 && uHasBloom != 0) {
+        c = srgbEncode(sanitize(texelFetch(uBloom, p, 0).rgb));
+    }
+    oColor = vec4(c, 1.0);
+}

@@ -1,0 +1,234 @@
+// Exposure target and adaptation on the GPU (DESIGN.md "Exposure"), one invocation per frame: reads this frame's
+// metering (passes/metering/), writes the exposure state every later pass reads. A line-for-line mirror of
+// core/ExposureController.cpp (target, adaptExposure with deadband hysteresis, dt clamp, snap, exposureMultiplier,
+// ExposureController::update) and core/Metering.cpp (histogramAverage), in float32 with exp, exp2, log2, min, max.
+// References: seed 000 (exponential eye lag, tauBrighten/tauDarken), seed 002 (speed form), Unreal's eye adaptation
+// (hybrid: linear then exponential, REFERENCES.md "Hybrid adaptation"), Tardif 2019 (histogram percentiles).
+#define EXPOSURE_STATE_WRITABLE 1
+#include "passes/common/exposure.h.glsl"
+#include "passes/metering/metering.h.glsl"
+#include "passes/metering/metering_buffers.h.glsl"
+
+layout(local_size_x = 1) in;
+
+const float kExposureMinLuminance = 1e-4; // core: kExposureMinLuminance
+const float kDeadbandExitFraction = 0.1;  // core: kDeadbandExitFraction
+const float kManualEVLimit = 64.0;        // core: kManualEVLimit
+const float kMinDivisor = 1e-6;           // core: kMinDivisor
+const int kAdaptExponential = 0;
+const int kAdaptSpeed = 1;
+const int kAdaptHybrid = 2;
+
+uniform int uAutoEnabled;
+uniform int uMetered;        // 1: metering ran for exposure this frame (a reading may exist)
+uniform int uHistogramBuilt; // 1: gBins holds this frame's histogram
+uniform int uMeteringMode;   // core MeteringMode
+uniform int uReset;          // 1: resetExposure() or resize: the next valid reading snaps
+uniform float uDt;
+uniform float uManualEV;
+
+uniform float uKeyValue;
+uniform float uCompensationEV;
+uniform float uMinEV;
+uniform float uMaxEV;
+uniform vec2 uCurve[16];
+uniform int uCurveCount;
+uniform int uAdaptation;
+uniform float uTauBrighten;
+uniform float uTauDarken;
+uniform float uSpeedUp;
+uniform float uSpeedDown;
+uniform float uTransitionEV;
+uniform float uDeadbandEV;
+uniform float uMaxDt;
+uniform float uLog2Min;
+uniform float uLog2Max;
+uniform float uLowPercent;
+uniform float uHighPercent;
+
+// core: compensationCurveEV.
+float compensationCurveEV(float x) {
+    if (uCurveCount <= 0) {
+        return 0.0;
+    }
+    if (x <= uCurve[0].x) {
+        return uCurve[0].y;
+    }
+    for (int i = 1; i < uCurveCount; ++i) {
+        if (x < uCurve[i].x) {
+            vec2 a = uCurve[i - 1];
+            vec2 b = uCurve[i];
+            float t = (x - a.x) / (b.x - a.x);
+            return a.y + (b.y - a.y) * t;
+        }
+    }
+    return uCurve[uCurveCount - 1].y;
+}
+
+// core: exposureTargetLog2.
+float exposureTargetLog2(float luminance) {
+    float l = luminance > kExposureMinLuminance ? luminance : kExposureMinLuminance;
+    float x = log2(l);
+    float target = log2(uKeyValue) - x + uCompensationEV + compensationCurveEV(x);
+    return min(max(target, uMinEV), uMaxEV);
+}
+
+// core: hybridRemaining.
+float hybridRemaining(float g, float speed, float h) {
+    float s = max(speed, kMinDivisor);
+    float d = max(uTransitionEV, kMinDivisor);
+    float k = s / d;
+    if (g > d) {
+        float tLinear = (g - d) / s;
+        if (h <= tLinear) {
+            return g - s * h;
+        }
+        return d * exp(-k * (h - tLinear));
+    }
+    return g * exp(-k * h);
+}
+
+// core: adaptExposure (the caller has checked the target is finite).
+void adaptExposure(float target, float dt) {
+    float prevApplied = gExposure.appliedLog2;
+    gExposure.targetLog2 = target;
+    if (gExposure.initialized == 0 || !isFiniteBits(prevApplied)) {
+        gExposure.appliedLog2 = target;
+        gExposure.adapting = 0;
+        gExposure.initialized = 1;
+        return;
+    }
+    float h = dt > 0.0 ? min(dt, uMaxDt) : 0.0;
+    float gap = target - prevApplied;
+    float absGap = abs(gap);
+    if (gExposure.adapting == 0 && absGap > uDeadbandEV) {
+        gExposure.adapting = 1;
+    } else if (gExposure.adapting != 0 && absGap < kDeadbandExitFraction * uDeadbandEV) {
+        gExposure.adapting = 0;
+    }
+    if (gExposure.adapting != 0) {
+        bool rising = gap > 0.0; // exposure goes up: the scene got darker
+        if (uAdaptation == kAdaptExponential) {
+            float tau = max(rising ? uTauBrighten : uTauDarken, kMinDivisor);
+            float alpha = clamp(1.0 - exp(-h / tau), 0.0, 1.0);
+            gExposure.appliedLog2 = prevApplied + gap * alpha;
+        } else if (uAdaptation == kAdaptSpeed) {
+            float speed = rising ? uSpeedDown : uSpeedUp;
+            float alpha = clamp(1.0 - exp(-speed * h), 0.0, 1.0);
+            gExposure.appliedLog2 = prevApplied + gap * alpha;
+        } else {
+            float speed = rising ? uSpeedDown : uSpeedUp;
+            float r = hybridRemaining(absGap, speed, h);
+            gExposure.appliedLog2 = rising ? target - r : target + r;
+        }
+    }
+}
+
+// core: exposureMultiplier.
+float exposureMultiplier(float manualEV) {
+    float manual = isFiniteBits(manualEV) ? clamp(manualEV, -kManualEVLimit, kManualEVLimit) : 0.0;
+    if (uAutoEnabled != 0 && gExposure.initialized != 0) {
+        return exp2(manual + gExposure.appliedLog2);
+    }
+    return exp2(manual);
+}
+
+// core: histogramAverage over gBins; writes the histogram fields of the state, returns the average (log2).
+float histogramStatistics() {
+    uint total = 0u;
+    uint peak = 0u;
+    for (int b = 0; b < kHistogramBins; ++b) {
+        total += gBins[b];
+        peak = max(peak, gBins[b]);
+    }
+    gExposure.histogramCount = total;
+    gExposure.histogramPeak = peak;
+    gExposure.histogramLowLog2 = 0.0;
+    gExposure.histogramHighLog2 = 0.0;
+    gExposure.histogramAverageLog2 = 0.0;
+    if (total == 0u) {
+        return 0.0;
+    }
+    float n = float(total);
+    float lo = n * (clamp(uLowPercent, 0.0, 100.0) * 0.01);
+    float hi = n * (clamp(uHighPercent, 0.0, 100.0) * 0.01);
+    float cumulative = 0.0;
+    float sum = 0.0;
+    float weightSum = 0.0;
+    bool lowFound = false;
+    bool highFound = false;
+    float lowLog2 = 0.0;
+    float highLog2 = 0.0;
+    for (int b = 0; b < kHistogramBins; ++b) {
+        float count = float(gBins[b]);
+        float start = cumulative;
+        cumulative += count;
+        float centre = histogramBinCentreLog2(b, uLog2Min, uLog2Max);
+        float w = max(0.0, min(cumulative, hi) - max(start, lo));
+        sum += w * centre;
+        weightSum += w;
+        if (count > 0.0 && !lowFound && cumulative > lo) {
+            lowLog2 = centre;
+            lowFound = true;
+        }
+        if (count > 0.0 && !highFound && cumulative >= hi) {
+            highLog2 = centre;
+            highFound = true;
+        }
+    }
+    float average = weightSum > 0.0 ? sum / weightSum : lowLog2;
+    gExposure.histogramLowLog2 = lowLog2;
+    gExposure.histogramHighLog2 = highLog2;
+    gExposure.histogramAverageLog2 = average;
+    return average;
+}
+
+void main() {
+    if (uReset != 0) {
+        gExposure.adapting = 0;
+        gExposure.initialized = 0;
+    }
+    gExposure.manualEV = uManualEV;
+    gExposure.autoEnabled = uAutoEnabled;
+
+    float histogramAverage = 0.0;
+    if (uHistogramBuilt != 0) {
+        histogramAverage = histogramStatistics();
+    } else {
+        gExposure.histogramCount = 0u;
+        gExposure.histogramPeak = 0u;
+        gExposure.histogramLowLog2 = 0.0;
+        gExposure.histogramHighLog2 = 0.0;
+        gExposure.histogramAverageLog2 = 0.0;
+    }
+    bool anyMeterable = (uMetered != 0 || uHistogramBuilt != 0) && gMaxBits != 0u;
+    gExposure.minLuminance = anyMeterable ? uintBitsToFloat(gMinBits) : 0.0;
+    gExposure.maxLuminance = anyMeterable ? uintBitsToFloat(gMaxBits) : 0.0;
+
+    float reading = 0.0;
+    if (uMetered != 0) {
+        if (uMeteringMode == kMeterHistogram) {
+            reading = gExposure.histogramCount > 0u ? exp2(histogramAverage) : 0.0;
+        } else {
+            reading = gReading;
+        }
+    }
+    // core: ExposureController::update.
+    if (!isMeterable(reading)) {
+        gExposure.frameLuminance = 0.0;
+        gExposure.exposure = exposureMultiplier(uManualEV);
+        return;
+    }
+    gExposure.frameLuminance = reading;
+    float target = exposureTargetLog2(reading);
+    if (uAutoEnabled == 0) {
+        gExposure.meteredLuminance = reading;
+        gExposure.targetLog2 = target;
+        gExposure.adapting = 0;
+        gExposure.initialized = 0;
+    } else if (isFiniteBits(target)) {
+        adaptExposure(target, uDt);
+        gExposure.meteredLuminance = reading;
+    }
+    gExposure.exposure = exposureMultiplier(uManualEV);
+}

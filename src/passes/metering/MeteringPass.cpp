@@ -1,0 +1,91 @@
+#include "passes/metering/MeteringPass.h"
+
+#include "passes/Bindings.h"
+
+#include <cstdint>
+
+namespace photopic {
+
+namespace {
+
+int meteringModeIndex(MeteringPass::Weights w) {
+    switch (w) {
+    case MeteringPass::Weights::Average:
+        return int(MeteringMode::Average);
+    case MeteringPass::Weights::Center:
+        return int(MeteringMode::Center);
+    case MeteringPass::Weights::Mask:
+        return int(MeteringMode::Mask);
+    case MeteringPass::Weights::Spot:
+    case MeteringPass::Weights::None:
+        break;
+    }
+    return -1; // the metering dispatch computes no partials
+}
+
+} // namespace
+
+MeteringPass::MeteringPass()
+    : mMeter(makeComputeProgram("passes/metering/metering.comp.glsl", bindingDefines()))
+    , mReduce(makeComputeProgram("passes/metering/metering_reduce.comp.glsl", bindingDefines()))
+    , mHistogram({.size = kGpuHistogramBytes, .flags = 0, .data = nullptr, .debugName = "histogram bins"}) {}
+
+void MeteringPass::resize(Extent extent) {
+    if (mMetering.valid() && mExtent == extent) {
+        return;
+    }
+    mExtent = extent;
+    mGroupsX = (extent.width + kGroupSize - 1) / kGroupSize;
+    mGroupsY = (extent.height + kGroupSize - 1) / kGroupSize;
+    const std::size_t bytes =
+        sizeof(GpuMeteringHeader) + std::size_t(mGroupsX) * std::size_t(mGroupsY) * 2 * sizeof(float);
+    mMetering = Buffer(
+        {.size = bytes, .flags = GL_DYNAMIC_STORAGE_BIT, .data = nullptr, .debugName = "metering partials"});
+}
+
+MeteringPass::Outputs MeteringPass::execute(const Inputs& in) noexcept {
+    const Extent e = mExtent;
+    const bool weighted = in.weights != Weights::None && in.weights != Weights::Spot;
+    const double bytes = double(e.width) * e.height * bytesPerTexel(in.scene->format());
+    DebugGroup group("metering");
+    ScopedGpuTimer timer(in.timers, "metering", bytes);
+
+    // Every frame starts from empty bins (seed 004: no accumulation) and an empty min/max.
+    const std::uint32_t zero = 0;
+    glClearNamedBufferData(mHistogram.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    GpuMeteringHeader header;
+    header.minBits = 0xffffffffu;
+    mMetering.update(&header, sizeof(header));
+
+    if (!in.histogram && in.weights == Weights::None) {
+        return outputs(); // nothing is metered: the bins stay empty
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingHistogram, mHistogram.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingMetering, mMetering.id());
+    glBindTextureUnit(0, in.scene->id());
+    glBindTextureUnit(1, in.weights == Weights::Mask && in.mask ? in.mask->id() : in.scene->id());
+    const Weights weights = in.weights == Weights::Mask && !in.mask ? Weights::Average : in.weights;
+
+    const AutoExposureSettings& s = *in.settings;
+    setUniform(mMeter, "uBuildHistogram", in.histogram ? 1 : 0);
+    setUniform(mMeter, "uWeights", weighted ? meteringModeIndex(weights) : -1);
+    setUniform(mMeter, "uLog2Min", s.histogramLog2Min);
+    setUniform(mMeter, "uLog2Max", s.histogramLog2Max);
+    mMeter.use();
+    glDispatchCompute(GLuint(mGroupsX), GLuint(mGroupsY), 1);
+
+    if (in.weights != Weights::None) {
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        setUniform(mReduce, "uSpot", in.weights == Weights::Spot ? 1 : 0);
+        setUniform(mReduce, "uGroups", mGroupsX * mGroupsY);
+        setUniform(mReduce, "uSpotUv", s.spot.u, s.spot.v);
+        setUniform(mReduce, "uSpotRadius", s.spot.radius);
+        setUniform(mReduce, "uSpotTaps", s.spot.taps);
+        mReduce.use();
+        glDispatchCompute(1, 1, 1);
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    return outputs();
+}
+
+} // namespace photopic

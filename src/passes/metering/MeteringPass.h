@@ -1,0 +1,51 @@
+#pragma once
+// Metering (DESIGN.md frame order step 4): reads the sanitised HDR image before exposure and leaves, on the
+// GPU, the 256-bin histogram, the frame's min/max meterable luminance and the weighted geometric mean that
+// the adaptation pass (passes/exposure/) turns into exposure. Nothing is read back here.
+
+#include "core/settings/AutoExposureSettings.h"
+#include "gl/GpuTimers.h"
+#include "gl/Objects.h"
+
+namespace photopic {
+
+class MeteringPass {
+public:
+    /// Which weighted mean the pass computes (core/Metering.h). `None` skips it (histogram metering, or auto
+    /// exposure off with only the histogram wanted by a debug view).
+    enum class Weights { None, Average, Spot, Center, Mask };
+
+    struct Inputs {
+        const Texture* scene = nullptr; ///< sanitised HDR colour (any float format)
+        const Texture* mask = nullptr;  ///< grey weight image for Weights::Mask (required then)
+        const AutoExposureSettings* settings = nullptr;
+        bool histogram = false; ///< bin every pixel this frame
+        Weights weights = Weights::None;
+        GpuTimers* timers = nullptr;
+    };
+    struct Outputs {
+        const Buffer* histogram = nullptr; ///< 256 uint bins, cleared and filled this frame
+        const Buffer* metering = nullptr;  ///< GpuMeteringHeader + partials
+    };
+
+    MeteringPass();
+    /// Sizes the partial-sum buffer for `extent` (one vec2 per 16x16 workgroup).
+    void resize(Extent extent);
+    /// Clears the bins and the min/max, then meters: nothing more when neither a histogram nor a mean is
+    /// wanted, else one metering dispatch plus, for a mean, one reduction dispatch.
+    Outputs execute(const Inputs& in) noexcept;
+    [[nodiscard]] Outputs outputs() const { return {&mHistogram, &mMetering}; }
+
+    static constexpr int kGroupSize = 16;
+
+private:
+    Program mMeter;
+    Program mReduce;
+    Buffer mHistogram;
+    Buffer mMetering;
+    Extent mExtent;
+    int mGroupsX = 0;
+    int mGroupsY = 0;
+};
+
+} // namespace photopic

@@ -1,0 +1,204 @@
+// GPU metering (passes/metering/) against the CPU source of truth (core/Metering.h) on small images. The pass
+// reads RGBA32F textures here so the CPU sees exactly the values the GPU reads; pipeline-level tests
+// (half-float sanitised input) are in test_autoexposure_gpu.cpp.
+
+#include "GlTest.h"
+
+#include "core/Metering.h"
+#include "gl/TextureIo.h"
+#include "passes/Bindings.h"
+#include "passes/metering/MeteringPass.h"
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+namespace photopic::test {
+
+namespace {
+
+/// Log-uniform grey-ish luminance in [2^lo, 2^hi], a few exact zeros (underflow bin) and tinted pixels.
+ImageF randomImage(int w, int h, unsigned seed, float lo = -14.0f, float hi = 18.0f) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> stops(lo, hi);
+    std::uniform_real_distribution<float> tint(0.5f, 1.5f);
+    ImageF image(w, h, 1.0f);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            float* p = image.at(x, y);
+            const float v = (x * 7 + y * 3) % 53 == 0 ? 0.0f : std::exp2(stops(rng));
+            p[0] = v * tint(rng);
+            p[1] = v;
+            p[2] = v * tint(rng);
+        }
+    }
+    return image;
+}
+
+struct GpuMetering {
+    Histogram histogram;
+    GpuMeteringHeader header;
+};
+
+GpuMetering meterOnGpu(const ImageF& image, const AutoExposureSettings& settings,
+                       MeteringPass::Weights weights, bool histogram, const ImageF* mask = nullptr) {
+    const Texture texture = makeTexture(image, "metering input");
+    Texture maskTexture;
+    if (mask) {
+        maskTexture = makeTexture(*mask, "metering mask");
+    }
+    MeteringPass pass;
+    pass.resize(texture.extent());
+    const MeteringPass::Outputs out = pass.execute({.scene = &texture,
+                                                    .mask = mask ? &maskTexture : nullptr,
+                                                    .settings = &settings,
+                                                    .histogram = histogram,
+                                                    .weights = weights,
+                                                    .timers = nullptr});
+    GpuMetering result;
+    result.histogram.log2Min = settings.histogramLog2Min;
+    result.histogram.log2Max = settings.histogramLog2Max;
+    glGetNamedBufferSubData(out.histogram->id(), 0, kGpuHistogramBytes, result.histogram.bins.data());
+    glGetNamedBufferSubData(out.metering->id(), 0, sizeof(GpuMeteringHeader), &result.header);
+    return result;
+}
+
+} // namespace
+
+TEST_F(GlTest, GpuHistogramMatchesCoreBinCounts) {
+    AutoExposureSettings settings;
+    settings.histogramLog2Min = -10.0f; // narrower than the image: both underflow and overflow bins fill
+    settings.histogramLog2Max = 12.0f;
+    for (const auto [w, h] : {std::pair{61, 37}, std::pair{200, 130}}) {
+        const ImageF image = randomImage(w, h, 7u + unsigned(w));
+        const GpuMetering gpu = meterOnGpu(image, settings, MeteringPass::Weights::None, true);
+        const Histogram cpu = buildHistogram(image, settings.histogramLog2Min, settings.histogramLog2Max);
+        std::uint64_t total = 0;
+        std::uint64_t moved = 0;
+        for (int b = 0; b < kHistogramBins; ++b) {
+            total += gpu.histogram.bins[std::size_t(b)];
+            const auto g = std::int64_t(gpu.histogram.bins[std::size_t(b)]);
+            const auto c = std::int64_t(cpu.bins[std::size_t(b)]);
+            moved += std::uint64_t(std::max<std::int64_t>(0, g - c));
+            // A pixel whose log2 lies within an ulp of a bin edge may land in the neighbouring bin (GPU log2
+            // is not correctly rounded); anything else is a real difference.
+            EXPECT_LE(std::abs(g - c), 2) << "bin " << b << " at " << w << "x" << h;
+        }
+        EXPECT_EQ(total, std::uint64_t(w) * std::uint64_t(h));
+        EXPECT_LE(moved, std::uint64_t(w) * std::uint64_t(h) / 500 + 1) << "too many boundary flips";
+        EXPECT_GT(gpu.histogram.bins[0], 0u);
+        EXPECT_GT(gpu.histogram.bins[255], 0u);
+    }
+}
+
+TEST_F(GlTest, GpuHistogramIsClearedEachFrame) {
+    const ImageF image = randomImage(40, 24, 3u);
+    const Texture texture = makeTexture(image, "input");
+    AutoExposureSettings settings;
+    MeteringPass pass;
+    pass.resize(texture.extent());
+    std::array<std::uint32_t, 256> bins{};
+    for (int frame = 0; frame < 3; ++frame) {
+        const auto out = pass.execute({.scene = &texture, .settings = &settings, .histogram = true});
+        glGetNamedBufferSubData(out.histogram->id(), 0, kGpuHistogramBytes, bins.data());
+        std::uint64_t total = 0;
+        for (auto c : bins) {
+            total += c;
+        }
+        EXPECT_EQ(total, 40u * 24u) << "frame " << frame;
+    }
+}
+
+TEST_F(GlTest, GpuAverageMatchesMeterAverageEveryPixel) {
+    AutoExposureSettings settings;
+    for (const auto [w, h] : {std::pair{61, 37}, std::pair{333, 190}}) {
+        const ImageF image = randomImage(w, h, 11u + unsigned(h), -8.0f, 8.0f);
+        const GpuMetering gpu = meterOnGpu(image, settings, MeteringPass::Weights::Average, false);
+        const float cpu = meterAverage(image);
+        EXPECT_NEAR(gpu.header.reading / cpu, 1.0f, 1e-3f) << w << "x" << h;
+        // Every meterable pixel weighs 1: the weight sum is the meterable pixel count.
+        int meterable = 0;
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
+                meterable += isMeterableLuminance(pixelLuminance(image, x, y)) ? 1 : 0;
+            }
+        }
+        EXPECT_FLOAT_EQ(gpu.header.weightSum, float(meterable));
+    }
+}
+
+TEST_F(GlTest, GpuMinMaxLuminanceAreTheImagesExtremes) {
+    const ImageF image = randomImage(45, 30, 5u, -6.0f, 6.0f);
+    float lo = 1e30f, hi = 0.0f;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const float l = pixelLuminance(image, x, y);
+            if (isMeterableLuminance(l)) {
+                lo = std::min(lo, l);
+                hi = std::max(hi, l);
+            }
+        }
+    }
+    const GpuMetering gpu = meterOnGpu(image, AutoExposureSettings{}, MeteringPass::Weights::Average, false);
+    EXPECT_NEAR(std::bit_cast<float>(gpu.header.minBits) / lo, 1.0f, 1e-5f);
+    EXPECT_NEAR(std::bit_cast<float>(gpu.header.maxBits) / hi, 1.0f, 1e-5f);
+}
+
+TEST_F(GlTest, GpuCenterAndMaskMeteringMatchCore) {
+    const ImageF image = randomImage(64, 36, 21u, -6.0f, 6.0f);
+    AutoExposureSettings settings;
+    const GpuMetering centre = meterOnGpu(image, settings, MeteringPass::Weights::Center, false);
+    EXPECT_NEAR(centre.header.reading / meterCenter(image), 1.0f, 1e-3f);
+
+    // A mask of a different size: left third weight 0, the rest a ramp; one NaN weight (ignored).
+    ImageF mask(10, 7, 0.0f);
+    for (int y = 0; y < mask.height; ++y) {
+        for (int x = 0; x < mask.width; ++x) {
+            const float w = x < 3 ? 0.0f : float(x + y) / 10.0f;
+            mask.at(x, y)[0] = mask.at(x, y)[1] = mask.at(x, y)[2] = w;
+        }
+    }
+    mask.at(5, 2)[1] = std::nanf("");
+    const GpuMetering masked = meterOnGpu(image, settings, MeteringPass::Weights::Mask, false, &mask);
+    EXPECT_NEAR(masked.header.reading / meterMasked(image, mask), 1.0f, 1e-3f);
+}
+
+TEST_F(GlTest, GpuSpotFollowsItsDisc) {
+    // Dark frame, one bright disc at (0.25, 0.3) in image UV (v down): the spot reads the disc only when it
+    // is over it, whatever the tap count, and always agrees with core's meterSpot.
+    const int w = 96, h = 64;
+    ImageF image(w, h, 0.01f);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const float u = (float(x) + 0.5f) / float(w);
+            const float v = (float(y) + 0.5f) / float(h);
+            const float dx = (u - 0.25f) * float(w) / float(h);
+            const float dy = v - 0.3f;
+            if (dx * dx + dy * dy <= 0.15f * 0.15f) {
+                image.at(x, y)[0] = image.at(x, y)[1] = image.at(x, y)[2] = 4.0f;
+            }
+        }
+    }
+    AutoExposureSettings settings;
+    settings.spot.radius = 0.1f;
+    for (int taps : {1, 5, 9, 13}) {
+        settings.spot.taps = taps;
+        settings.spot.u = 0.25f;
+        settings.spot.v = 0.3f;
+        const GpuMetering on = meterOnGpu(image, settings, MeteringPass::Weights::Spot, false);
+        EXPECT_NEAR(on.header.reading, 4.0f, 4e-3f) << taps << " taps";
+        EXPECT_NEAR(on.header.reading / meterSpot(image, settings.spot), 1.0f, 1e-4f);
+        settings.spot.v = 0.7f; // mirrored below: a v that ran up would land on the disc
+        const GpuMetering off = meterOnGpu(image, settings, MeteringPass::Weights::Spot, false);
+        EXPECT_NEAR(off.header.reading, 0.01f, 1e-5f) << taps << " taps";
+        EXPECT_NEAR(off.header.reading / meterSpot(image, settings.spot), 1.0f, 1e-4f);
+    }
+    // Half on the disc's edge: some taps bright, some dark, still the same geometric mean as core.
+    settings.spot = {.u = 0.25f + 0.15f * float(h) / float(w), .v = 0.3f, .radius = 0.1f, .taps = 13};
+    const GpuMetering edge = meterOnGpu(image, settings, MeteringPass::Weights::Spot, false);
+    EXPECT_NEAR(edge.header.reading / meterSpot(image, settings.spot), 1.0f, 1e-4f);
+    EXPECT_GT(edge.header.reading, 0.02f);
+    EXPECT_LT(edge.header.reading, 3.0f);
+}
+
+} // namespace photopic::test
