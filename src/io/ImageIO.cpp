@@ -583,8 +583,4 @@ void writeExr(const fs::path& path, const ImageF& image) {
     writeAtomically(path, std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
 }
 
-void writeTextFile(const fs::path& path, std::string_view text) {
-    writeAtomically(path, {reinterpret_cast<const unsigned char*>(text.data()), text.size()});
-}
-
 } // namespace photopic

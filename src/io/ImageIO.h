@@ -51,7 +51,4 @@ void writeTextFile(const std::filesystem::path& path, std::string_view text);
 /// infinite. Atomic, like writePng.
 void writeExr(const std::filesystem::path& path, const ImageF& image);
 
-/// Writes a text file (CSV, JSON) atomically, like writePng: whole or not at all.
-void writeTextFile(const std::filesystem::path& path, std::string_view text);
-
 } // namespace photopic
