@@ -15,6 +15,37 @@
 
 namespace photopic::cli {
 
+std::string exposureTelemetryHeader() {
+    return "measured_luma,target_log2,applied_log2,exposure,manual_ev,metered_luma,min_luma,max_luma,"
+           "histogram_count,histogram_low_log2,histogram_high_log2,histogram_average_log2";
+}
+
+std::string exposureTelemetryRow(const ExposureTelemetry& t) {
+    return fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g}",
+                       t.frameLuminance, t.targetLog2, t.appliedLog2, t.exposure, t.manualEV,
+                       t.meteredLuminance, t.minLuminance, t.maxLuminance, t.histogramCount,
+                       t.histogramLowLog2, t.histogramHighLog2, t.histogramAverageLog2);
+}
+
+std::string telemetryCsv(const std::vector<ExposureTelemetry>& rows, float dt,
+                         const std::vector<std::string>& sceneColumns,
+                         const std::vector<std::vector<double>>& sceneValues) {
+    std::string csv = "frame,time_s";
+    for (const auto& c : sceneColumns) {
+        csv += "," + c;
+    }
+    csv += "," + exposureTelemetryHeader() + "\n";
+    for (const ExposureTelemetry& t : rows) {
+        csv += fmt::format("{},{:.6f}", t.frame, double(t.frame) * double(dt));
+        for (std::size_t c = 0; c < sceneColumns.size(); ++c) {
+            const auto& values = t.frame < sceneValues.size() ? sceneValues[t.frame] : std::vector<double>{};
+            csv += fmt::format(",{:.9g}", c < values.size() ? values[c] : 0.0);
+        }
+        csv += "," + exposureTelemetryRow(t) + "\n";
+    }
+    return csv;
+}
+
 namespace fs = std::filesystem;
 
 Settings resolveSettings(const SettingsSources& sources, Settings base) {
@@ -69,21 +100,6 @@ ImageF readInput(const fs::path& path) {
     } catch (const IoError& e) {
         throw InputError(e.what());
     }
-}
-
-/// The telemetry CSV: the six columns first, then what the histogram and metering add.
-std::string telemetryCsv(const std::vector<ExposureTelemetry>& rows, float dt) {
-    std::string csv = "frame,time_s,measured_luma,target_log2,applied_log2,exposure,manual_ev,metered_luma,"
-                      "min_luma,max_luma,histogram_count,histogram_low_log2,histogram_high_log2,"
-                      "histogram_average_log2\n";
-    for (const ExposureTelemetry& t : rows) {
-        csv += fmt::format(
-            "{},{:.6f},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g}\n",
-            t.frame, double(t.frame) * double(dt), t.frameLuminance, t.targetLog2, t.appliedLog2, t.exposure,
-            t.manualEV, t.meteredLuminance, t.minLuminance, t.maxLuminance, t.histogramCount,
-            t.histogramLowLog2, t.histogramHighLog2, t.histogramAverageLog2);
-    }
-    return csv;
 }
 
 } // namespace
@@ -151,7 +167,7 @@ int runImage(const ImageOptions& options) {
             throw std::runtime_error(fmt::format("telemetry: {} of {} frames came back ({} dropped)",
                                                  rows.size(), inputs.size(), pipeline.droppedTelemetry()));
         }
-        writeTextFile(options.telemetry, telemetryCsv(rows, dt));
+        writeTextFile(options.telemetry, telemetryCsv(rows, dt, {}, {}));
         std::printf("telemetry -> %s (%zu frames)\n", options.telemetry.string().c_str(), rows.size());
     }
     return kOk;

@@ -3,6 +3,7 @@
 // failure.
 
 #include "core/Settings.h"
+#include "pipeline/Pipeline.h"
 
 #include <filesystem>
 #include <string>
@@ -55,6 +56,13 @@ struct ParsedSize {
     int height;
 };
 ParsedSize parseSize(const std::string& text);
+
+/// Telemetry CSV: frame,time_s, then the scene's own columns (if any), then the exposure columns, whose first
+/// four are measured_luma,target_log2,applied_log2,exposure. One row per record; `sceneValues[frame]` holds
+/// the scene's values of that frame.
+std::string telemetryCsv(const std::vector<ExposureTelemetry>& rows, float dt,
+                         const std::vector<std::string>& sceneColumns,
+                         const std::vector<std::vector<double>>& sceneValues);
 
 int runInfo(bool forceLdr);
 int runScene(const SceneOptions& options);

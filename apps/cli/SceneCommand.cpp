@@ -67,21 +67,15 @@ int runScene(const SceneOptions& options) {
             fmt::format("cannot create output folder {}: {}", outDir.string(), ec.message()));
     }
 
-    Pipeline pipeline({.settings = resolved, .forceLdr = options.forceLdr});
+    Pipeline pipeline({.settings = resolved, .forceLdr = options.forceLdr, .keepTelemetryHistory = true});
     scene->resize({size.width, size.height});
     const std::vector<std::string> sceneColumns = scene->telemetryColumns();
-    std::string csv = "frame,time_s";
-    for (const auto& c : sceneColumns) {
-        csv += "," + c;
-    }
-    csv += "\n";
+    std::vector<std::vector<double>> sceneValues(std::size_t(options.frames));
 
     const float dt = 1.0f / options.fps;
-    std::vector<double> values;
     for (int i = 0; i < options.frames; ++i) {
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
-        values.clear();
-        const Texture& color = scene->render(time, pipeline, values);
+        const Texture& color = scene->render(time, pipeline, sceneValues[std::size_t(i)]);
         const Texture& display = pipeline.execute({.color = &color}, time);
         const fs::path frame = outDir / fmt::format("frame_{:04d}.{}", i, options.format);
         if (options.format == "exr") {
@@ -89,12 +83,13 @@ int runScene(const SceneOptions& options) {
         } else {
             writePng(frame, readTexture8(display));
         }
-        csv += fmt::format("{},{:.6f}", i, double(i) * double(dt));
-        for (std::size_t c = 0; c < sceneColumns.size(); ++c) {
-            csv += fmt::format(",{:.6g}", c < values.size() ? values[c] : 0.0);
-        }
-        csv += "\n";
     }
+    const std::vector<ExposureTelemetry> rows = pipeline.drainTelemetry();
+    if (rows.size() != std::size_t(options.frames)) {
+        throw std::runtime_error(fmt::format("telemetry: {} of {} frames came back ({} dropped)", rows.size(),
+                                             options.frames, pipeline.droppedTelemetry()));
+    }
+    const std::string csv = telemetryCsv(rows, dt, sceneColumns, sceneValues);
     writeTextFile(outDir / "telemetry.csv", csv);
     std::printf("%s: %d frames at %dx%d, %.3g fps -> %s (frames + telemetry.csv)\n", options.name.c_str(),
                 options.frames, size.width, size.height, double(options.fps), outDir.string().c_str());
