@@ -36,7 +36,8 @@ struct ImageOptions {
     float fps = 30.0f;
 };
 
-int runInfo(bool forceLdr);
+/// GL and capability report; with settings, also the quality tier and the path frames would take.
+int runInfo(bool forceLdr, const SettingsSources& settings);
 int runImage(const ImageOptions& options);
 int runSettingsDefaults();
 int runSettingsCheck(const std::filesystem::path& file);

@@ -3,7 +3,11 @@
 // JSON: {"version": 1, "postEffects": {<key>: {...}}} with the keys below.
 
 #include "core/settings/AutoExposureSettings.h"
+#include "core/settings/BloomSettings.h"
+#include "core/settings/ColorGradingSettings.h"
+#include "core/settings/DisplaySettings.h"
 #include "core/settings/OutputSettings.h"
+#include "core/settings/QualitySettings.h"
 #include "core/settings/ToneMappingSettings.h"
 
 namespace photopic {
@@ -12,12 +16,28 @@ struct Settings {
     ToneMappingSettings tonemapping;
     OutputSettings output;
     AutoExposureSettings autoExposure;
+    Quality quality = Quality::High; ///< tier: ultra, high, medium, low, legacy (LDR path), default high
+    BloomSettings bloom;
+    ColorGradingSettings colorGrading;
+    FxaaSettings fxaa;
+    LensFlareSettings lensFlare;
+    VignetteSettings vignette;
+    GrainSettings grain;
+    DazzleSettings dazzle;
 
     template <class V>
     void visit(V& v) {
         v.object("tonemapping", tonemapping);
         v.object("output", output);
         v.object("autoExposure", autoExposure);
+        v.field("quality", quality, qualityNames());
+        v.object("bloom", bloom);
+        v.object("colorGrading", colorGrading);
+        v.object("fxaa", fxaa);
+        v.object("lensFlare", lensFlare);
+        v.object("vignette", vignette);
+        v.object("grain", grain);
+        v.object("dazzle", dazzle);
     }
 };
 

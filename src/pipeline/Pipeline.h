@@ -9,14 +9,17 @@
 //   [ ] 3. TAA
 //   [ ] 4. metering and exposure adaptation (GPU-resident; manual exposure is written to the same state)
 //   [ ] 5. depth of field, motion blur
-//   [ ] 6. bloom on exposed colour
-//   [x] 7. composite: colour x exposure (+ bloom, grading)
+//   [x] 6. bloom on exposed colour (prefilter + Karis, 13-tap downsample chain, tent upsample chain)
+//   [x] 7. composite: colour x exposure + bloom; colour grading in HDR   } one "uber" pass with step 9
 //   [ ] 8. scene-value debug views
 //   Display domain:
 //   [x] 9. tone mapping, exactly once, + sRGB output transform + dither
-//   [ ] 10. FXAA
-//   [ ] 11. lens flare, vignette, chromatic aberration, grain, dazzle
+//   [x] 10. FXAA
+//   [x] 11. lens flare (its own HDR buffers), then chromatic aberration, flare composite, dazzle, vignette,
+//           grain fused into one pass
 //   [ ] 12. overlays
+// Quality tiers (core/Quality.h) choose sizes and which steps run; `legacy`, and any GPU without RGBA16F
+// render targets, take the LDR path: steps 1, 6 and the lens flare are skipped.
 
 #include "core/Image.h"
 #include "core/Settings.h"
@@ -26,6 +29,8 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace photopic {
 
@@ -38,6 +43,15 @@ struct FrameInputs {
 struct FrameTime {
     float dt = 1.0f / 30.0f;      ///< seconds since the previous frame
     std::uint64_t frameIndex = 0; ///< monotonically increasing; drives dither/grain patterns
+};
+
+/// What the pipeline is doing, for hosts, logs and the CLI (DESIGN.md: degradations are never silent).
+struct PipelineTelemetry {
+    ColorPath path = ColorPath::Hdr; ///< the path frames take now (quality=legacy forces LDR)
+    std::string pathReason;          ///< why
+    Quality quality = Quality::High;
+    int bloomLevels = 0;            ///< levels the last frame's bloom chain ran (0: no bloom)
+    std::vector<PassTiming> passes; ///< the most recent frame with GPU timings available
 };
 
 struct PipelineCreateInfo {
@@ -65,6 +79,7 @@ public:
 
     /// Per-pass GPU timings, collected without stalling.
     [[nodiscard]] GpuTimers& timers() { return mTimers; }
+    [[nodiscard]] PipelineTelemetry telemetry() const;
 
 private:
     struct Passes;
@@ -77,6 +92,8 @@ private:
     GpuTimers mTimers;
     Extent mExtent;
     const Texture* mLastScene = nullptr;
+    const Texture* mLastBloom = nullptr;
+    int mBloomLevels = 0;
     std::uint64_t mLastFrame = 0;
 };
 
