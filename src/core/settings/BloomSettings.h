@@ -27,7 +27,8 @@ struct BloomSettings {
     float intensity = 0.04f; ///< [0, 10], default 0.04: mix factor (energy-conserving, <= 1) or additive gain
     float threshold = 1.0f;  ///< exposed scene-linear, [0, 65000], default 1 (seed 003): threshold mode only
     float knee = 0.5f;       ///< fraction of threshold, [0, 1], default 0.5: soft-knee width, threshold mode
-    float radius = 0.7f;     ///< [0, 1], default 0.7: share each mip hands to the wider mips (spread of glow)
+    float radius =
+        0.85f;        ///< [0, 1], default 0.85: share each level hands to the wider ones (spread, roundness)
     int mipCount = 0; ///< [0, 10], default 0 = the quality tier's count: levels of the chain below half size
 
     template <class V>
