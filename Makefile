@@ -32,6 +32,7 @@ test: build
 
 bench: build
 	@if [ -x build/release/bench/photopic_bench ]; then build/release/bench/photopic_bench; else echo "no benchmarks yet"; fi
+	build/release/photopic bench --size 1920x1080 --frames 60
 
 install: build
 	cmake --install build/release

@@ -4,7 +4,6 @@
 // pixels at 0.05, half at 0.8: geometric mean 0.2).
 
 #include "core/Log.h"
-#include "gl/Context.h"
 #include "gl/GpuTimers.h"
 #include "gl/TextureIo.h"
 #include "passes/Bindings.h"
@@ -25,11 +24,6 @@ constexpr int kHeight = 1080;
 constexpr int kWarmUpFrames = 3;
 constexpr float kExpectedLuminance = 0.2f; // sqrt(0.05 * 0.8)
 
-HeadlessContext& context() {
-    static HeadlessContext ctx;
-    return ctx;
-}
-
 ImageF knownImage() {
     ImageF image(kWidth, kHeight, 1.0f);
     for (int y = 0; y < kHeight; ++y) {
@@ -43,7 +37,6 @@ ImageF knownImage() {
 }
 
 void autoExposure(benchmark::State& state, MeteringMode mode) {
-    context();
     const Texture input = makeTexture(knownImage(), "bench input");
     AutoExposureSettings settings;
     settings.enabled = true;
@@ -116,5 +109,3 @@ BENCHMARK_CAPTURE(autoExposure, histogram_1080p, photopic::MeteringMode::Histogr
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(20);
-
-BENCHMARK_MAIN();

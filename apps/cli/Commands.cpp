@@ -68,7 +68,8 @@ Settings resolveSettings(const SettingsSources& sources, Settings base) {
     return settings;
 }
 
-int runInfo(bool forceLdr) {
+int runInfo(bool forceLdr, const SettingsSources& sources) {
+    const Settings settings = resolveSettings(sources);
     HeadlessContext context;
     const ContextInfo& info = context.info();
     const Capabilities caps = detectCapabilities(forceLdr);
@@ -82,6 +83,11 @@ int runInfo(bool forceLdr) {
     std::printf("RGBA16F renderable: %s, RGBA32F renderable: %s, compute: %s, timer queries: %s\n",
                 caps.rgba16fRenderable ? "yes" : "no", caps.rgba32fRenderable ? "yes" : "no",
                 caps.computeShaders ? "yes" : "no", caps.timerQueries ? "yes" : "no");
+    const Pipeline pipeline({.settings = settings, .forceLdr = forceLdr});
+    const PipelineStatus t = pipeline.status();
+    std::printf("quality:      %s -> %s path (%s)\n",
+                std::string(qualityNames()[std::size_t(settings.quality)]).c_str(),
+                t.path == ColorPath::Hdr ? "HDR" : "LDR, RGBA8", t.pathReason.c_str());
     return kOk;
 }
 

@@ -64,8 +64,9 @@ std::string telemetryCsv(const std::vector<ExposureTelemetry>& rows, float dt,
                          const std::vector<std::string>& sceneColumns,
                          const std::vector<std::vector<double>>& sceneValues);
 
-int runInfo(bool forceLdr);
 int runScene(const SceneOptions& options);
+/// GL and capability report; with settings, also the quality tier and the path frames would take.
+int runInfo(bool forceLdr, const SettingsSources& settings);
 int runImage(const ImageOptions& options);
 int runSettingsDefaults();
 int runSettingsCheck(const std::filesystem::path& file);

@@ -1,5 +1,6 @@
 // photopic: the command-line front end. Exit codes: 0 ok, 2 bad usage or input, 1 other failure.
 
+#include "Bench.h"
 #include "Commands.h"
 
 #include "core/Log.h"
@@ -39,6 +40,8 @@ int main(int argc, char** argv) {
     auto* info =
         app.add_subcommand("info", "GL vendor, renderer, version, and whether the HDR or LDR path runs");
     info->add_flag("--force-ldr", forceLdr, "report as if the LDR path were forced");
+    SettingsSources infoSettings;
+    addSettingsOptions(info, infoSettings);
 
     ImageOptions image;
     auto* imageCmd =
@@ -86,6 +89,20 @@ int main(int argc, char** argv) {
     demo->add_option("-o,--output", demoOut, "output folder");
     demo->add_option("--data", demoData, "folder of HDR images (../shared/data)");
 
+    BenchOptions bench;
+    auto* benchCmd = app.add_subcommand("bench", "per-pass GPU timings (median ms, bytes moved, GB/s) over N "
+                                                 "frames of a synthetic HDR frame or --input FILE");
+    benchCmd->add_option("--size", bench.size, "WxH of the synthetic frame")->capture_default_str();
+    benchCmd->add_option("--frames", bench.frames, "timed frames after the warm-up")
+        ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
+    benchCmd->add_option("--warmup", bench.warmup, "untimed frames first")->check(CLI::Range(0, 1000));
+    benchCmd->add_option("--input", bench.input, "an HDR image (EXR, HDR) instead of the synthetic frame")
+        ->check(CLI::ExistingFile);
+    benchCmd->add_option("--json", bench.json, "also write the table as JSON to FILE (atomically)");
+    benchCmd->add_flag("--force-ldr", bench.forceLdr, "run the LDR (RGBA8) path");
+    addSettingsOptions(benchCmd, bench.settings);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -95,7 +112,7 @@ int main(int argc, char** argv) {
 
     try {
         if (*info) {
-            return runInfo(forceLdr);
+            return runInfo(forceLdr, infoSettings);
         }
         if (*imageCmd) {
             return runImage(image);
@@ -114,6 +131,9 @@ int main(int argc, char** argv) {
                 throw InputError("scene: a scene name is required (photopic scene --list)");
             }
             return runScene(scene);
+        }
+        if (*benchCmd) {
+            return runBench(bench);
         }
         if (*demo) {
             return runDemo(demoData, demoOut);

@@ -4,7 +4,11 @@
 
 #include "core/settings/AutoExposureSettings.h"
 #include "core/settings/DebugSettings.h"
+#include "core/settings/BloomSettings.h"
+#include "core/settings/ColorGradingSettings.h"
+#include "core/settings/DisplaySettings.h"
 #include "core/settings/OutputSettings.h"
+#include "core/settings/QualitySettings.h"
 #include "core/settings/ToneMappingSettings.h"
 
 namespace photopic {
@@ -14,6 +18,14 @@ struct Settings {
     OutputSettings output;
     AutoExposureSettings autoExposure;
     DebugSettings debug;
+    Quality quality = Quality::High; ///< tier: ultra, high, medium, low, legacy (LDR path), default high
+    BloomSettings bloom;
+    ColorGradingSettings colorGrading;
+    FxaaSettings fxaa;
+    LensFlareSettings lensFlare;
+    VignetteSettings vignette;
+    GrainSettings grain;
+    DazzleSettings dazzle;
 
     template <class V>
     void visit(V& v) {
@@ -21,6 +33,14 @@ struct Settings {
         v.object("output", output);
         v.object("autoExposure", autoExposure);
         v.object("debug", debug);
+        v.field("quality", quality, qualityNames());
+        v.object("bloom", bloom);
+        v.object("colorGrading", colorGrading);
+        v.object("fxaa", fxaa);
+        v.object("lensFlare", lensFlare);
+        v.object("vignette", vignette);
+        v.object("grain", grain);
+        v.object("dazzle", dazzle);
     }
 };
 

@@ -8,17 +8,20 @@
 //   [ ] 2. scene-space effects (SSAO, contact shadows, SSR, volumetric light)
 //   [ ] 3. TAA
 //   [x] 4. metering and exposure adaptation (GPU-resident, same frame; with auto exposure off the adaptation
-//   pass
-//          writes 2^manualEV to the same state; the state, histogram and min/max go into the readback ring)
+//          pass writes 2^manualEV to the same state; the state, histogram and min/max go into the readback
+//          ring)
 //   [ ] 5. depth of field, motion blur
-//   [ ] 6. bloom on exposed colour
-//   [x] 7. composite: colour x exposure (+ bloom, grading)
+//   [x] 6. bloom on exposed colour (prefilter + Karis, 13-tap downsample chain, tent upsample chain)
+//   [x] 7. composite: colour x exposure + bloom; colour grading in HDR   } one "uber" pass with step 9
 //   [x] 8. scene-value debug views (exposure, luma, ev, metering, bloom): they replace the image and skip 9
 //   Display domain:
 //   [x] 9. tone mapping, exactly once, + sRGB output transform + dither
-//   [ ] 10. FXAA
-//   [ ] 11. lens flare, vignette, chromatic aberration, grain, dazzle
+//   [x] 10. FXAA
+//   [x] 11. lens flare (its own HDR buffers), then chromatic aberration, flare composite, dazzle, vignette,
+//           grain fused into one pass
 //   [x] 12. overlays (histogram)
+// Quality tiers (core/Quality.h) choose sizes and which steps run; `legacy`, and any GPU without RGBA16F
+// render targets, take the LDR path: steps 1, 6 and the lens flare are skipped.
 
 #include "core/Image.h"
 #include "core/Settings.h"
@@ -46,6 +49,15 @@ struct FrameInputs {
 struct FrameTime {
     float dt = 1.0f / 30.0f;      ///< seconds since the previous frame
     std::uint64_t frameIndex = 0; ///< monotonically increasing; drives dither/grain patterns
+};
+
+/// What the pipeline is doing, for hosts, logs and the CLI (DESIGN.md: degradations are never silent).
+struct PipelineStatus {
+    ColorPath path = ColorPath::Hdr; ///< the path frames take now (quality=legacy forces LDR)
+    std::string pathReason;          ///< why
+    Quality quality = Quality::High;
+    int bloomLevels = 0;            ///< levels the last frame's bloom chain ran (0: no bloom)
+    std::vector<PassTiming> passes; ///< the most recent frame with GPU timings available
 };
 
 struct PipelineCreateInfo {
@@ -98,6 +110,8 @@ public:
 
     /// Per-pass GPU timings, collected without stalling.
     [[nodiscard]] GpuTimers& timers() { return mTimers; }
+    /// The path, tier and latest pass timings (what `photopic info` and the bench report).
+    [[nodiscard]] PipelineStatus status() const;
 
     /// Camera cut, teleport: the next frame's exposure snaps to its target (resize does the same).
     void resetExposure() { mResetExposure = true; }
@@ -139,6 +153,8 @@ private:
     GpuTimers mTimers;
     Extent mExtent;
     const Texture* mLastScene = nullptr;
+    const Texture* mLastBloom = nullptr;
+    int mBloomLevels = 0;
     std::uint64_t mLastFrame = 0;
 };
 

@@ -32,7 +32,10 @@ for view in exposure luma ev metering histogram bloom; do
     expect 0 "--debug $view" -- "$PHOTOPIC" image "$DATA/Desk.hdr" -o "$S/debug-$view.png" --debug "$view" "${AE[@]}"
     check "$view view written" test -s "$S/debug-$view.png"
 done
-check "bloom view without bloom says so once" contains "no bloom"
+check "bloom view with bloom on (the default) does not warn" bash -c '! grep -q "no bloom" <<< "$0"' "$OUTPUT"
+expect 0 "--debug bloom with bloom off" -- "$PHOTOPIC" image "$DATA/Desk.hdr" -o "$S/debug-nobloom.png" \
+    --debug bloom --set bloom.enabled=false
+check "bloom view without bloom says so" contains "no bloom"
 expect 0 "histogram view with auto exposure off" -- "$PHOTOPIC" image "$DATA/Desk.hdr" -o "$S/hist-off.png" \
     --debug histogram --telemetry "$S/t3.csv"
 check "histogram counted with auto exposure off" awk -F, 'NR == 2 { exit !($11 == 644 * 874) }' "$S/t3.csv"

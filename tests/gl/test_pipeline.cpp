@@ -28,6 +28,7 @@ Settings linearNoDither(float exposureEV = 0) {
     s.tonemapping.mode = ToneMapper::Linear;
     s.tonemapping.exposure = exposureEV;
     s.output.dither = false;
+    s.bloom.enabled = false; // on by default; with every optional effect off the chain is exposure + curve
     return s;
 }
 
@@ -152,6 +153,7 @@ TEST_F(GlTest, ForcedLdrPathRendersTheSameImageWithoutHdrTargets) {
     }
     Settings s;
     s.output.dither = false;
+    s.bloom.enabled = false; // the LDR path has no bloom
     Pipeline hdr({.settings = s});
     Pipeline ldr({.settings = s, .forceLdr = true});
     EXPECT_EQ(ldr.capabilities().path, ColorPath::Ldr);

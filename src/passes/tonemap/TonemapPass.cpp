@@ -1,6 +1,9 @@
 #include "passes/tonemap/TonemapPass.h"
 
+#include "core/ColorGrading.h"
 #include "passes/Bindings.h"
+
+#include <glm/gtc/type_ptr.hpp>
 
 namespace photopic {
 
@@ -10,8 +13,11 @@ constexpr const char* kFragment = "passes/tonemap/tonemap.frag.glsl";
 } // namespace
 
 TonemapPass::TonemapPass()
-    : mDisplayProgram(makeGraphicsProgram(kVertex, kFragment, bindingDefines()))
-    , mSceneProgram(makeGraphicsProgram(kVertex, kFragment, bindingDefines({{"OUTPUT_SCENE", "1"}})))
+    : mDisplayProgram{makeGraphicsProgram(kVertex, kFragment, bindingDefines()),
+                      makeGraphicsProgram(kVertex, kFragment, bindingDefines({{"BLOOM", "1"}}))}
+    , mSceneProgram{makeGraphicsProgram(kVertex, kFragment, bindingDefines({{"OUTPUT_SCENE", "1"}})),
+                    makeGraphicsProgram(kVertex, kFragment,
+                                        bindingDefines({{"OUTPUT_SCENE", "1"}, {"BLOOM", "1"}}))}
     , mVao(VertexArray::create("fullscreen")) {}
 
 void TonemapPass::resize(Extent extent) {
@@ -30,6 +36,26 @@ void TonemapPass::draw(const Program& program, const Inputs& in) {
     setUniform(program, "uAgxLook", int(in.tonemapping->agxLook));
     setUniform(program, "uDither", in.output->dither ? 1 : 0);
     glProgramUniform1ui(program.id(), glGetUniformLocation(program.id(), "uFrame"), GLuint(in.frameIndex));
+    if (in.bloom) {
+        const Extent b = in.bloom->extent();
+        setUniform(program, "uBloomTexel", 1.0f / float(b.width), 1.0f / float(b.height));
+        setUniform(program, "uBloomAdditive", in.bloomSettings->mode == BloomMode::Threshold ? 1 : 0);
+        setUniform(program, "uBloomIntensity", in.bloomSettings->intensity);
+        glBindTextureUnit(1, in.bloom->id());
+    }
+    const bool grade = in.grading && in.grading->enabled;
+    setUniform(program, "uGrade", grade ? 1 : 0);
+    if (grade) {
+        const ColorGradingSettings& g = *in.grading;
+        const glm::mat3 wb = whiteBalanceMatrix(g.temperature, g.tint);
+        glProgramUniformMatrix3fv(program.id(), glGetUniformLocation(program.id(), "uWhiteBalance"), 1,
+                                  GL_FALSE, glm::value_ptr(wb));
+        setUniform(program, "uContrast", g.contrast);
+        setUniform(program, "uSaturation", g.saturation);
+        setUniform(program, "uLift", g.lift.x, g.lift.y, g.lift.z);
+        setUniform(program, "uInvGamma", 1.0f / g.gamma.x, 1.0f / g.gamma.y, 1.0f / g.gamma.z);
+        setUniform(program, "uGain", g.gain.x, g.gain.y, g.gain.z);
+    }
     program.use();
     glBindTextureUnit(0, in.scene->id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState, in.exposureState->id());
@@ -40,10 +66,14 @@ void TonemapPass::draw(const Program& program, const Inputs& in) {
 const Texture& TonemapPass::execute(const Inputs& in) {
     const Extent e = mDisplay.extent();
     DebugGroup group("tonemap");
-    ScopedGpuTimer timer(in.timers, "tonemap",
-                         double(e.width) * e.height * (bytesPerTexel(in.scene->format()) + 4));
+    double bytes = double(e.width) * e.height * (bytesPerTexel(in.scene->format()) + 4);
+    if (in.bloom) {
+        bytes +=
+            double(in.bloom->extent().width) * in.bloom->extent().height * bytesPerTexel(in.bloom->format());
+    }
+    ScopedGpuTimer timer(in.timers, "composite + grade + tonemap", bytes);
     mDisplayFbo.bind();
-    draw(mDisplayProgram, in);
+    draw(mDisplayProgram[in.bloom ? 1 : 0], in);
     return mDisplay;
 }
 
@@ -55,7 +85,7 @@ const Texture& TonemapPass::renderScene(const Inputs& in) {
     }
     DebugGroup group("scene-referred output");
     mSceneFbo.bind();
-    draw(mSceneProgram, in);
+    draw(mSceneProgram[in.bloom ? 1 : 0], in);
     return mScene;
 }
 

@@ -8,8 +8,9 @@
 
 namespace photopic {
 
-/// Exposure x tone curve x sRGB x dither -> RGBA8 display image; or, as `renderScene`, the exposed
-/// scene-referred image just before the curve (RGBA32F) for EXR output.
+/// The uber pass: exposure, bloom composite, HDR grading, tone curve, sRGB, dither -> RGBA8 display image;
+/// or, as `renderScene`, the composited and graded scene-referred image just before the curve (RGBA32F) for
+/// EXR output.
 class TonemapPass {
 public:
     struct Inputs {
@@ -17,6 +18,9 @@ public:
         const Buffer* exposureState = nullptr; ///< GpuExposureState
         const ToneMappingSettings* tonemapping = nullptr;
         const OutputSettings* output = nullptr;
+        const Texture* bloom = nullptr; ///< bloom chain result (exposed), or null: no bloom composite
+        const BloomSettings* bloomSettings = nullptr;  ///< mode and intensity, when `bloom` is set
+        const ColorGradingSettings* grading = nullptr; ///< null or disabled: no grading
         std::uint64_t frameIndex = 0;
         GpuTimers* timers = nullptr;
     };
@@ -28,8 +32,8 @@ public:
 private:
     void draw(const Program& program, const Inputs& in);
 
-    Program mDisplayProgram;
-    Program mSceneProgram;
+    Program mDisplayProgram[2]; ///< [bloom composited]
+    Program mSceneProgram[2];
     VertexArray mVao;
     Texture mDisplay;
     Framebuffer mDisplayFbo;

@@ -1,7 +1,10 @@
-// The single tone mapping of the frame (DESIGN.md step 9) with the sRGB output transform and dither.
-// Reads the scene-referred colour, multiplies by the frame's exposure (GPU exposure state), applies the curve
+// The "uber" pass (DESIGN.md "Cost"): composite (step 7), colour grading in HDR (step 7), then the single tone
+// mapping of the frame (step 9) with the sRGB output transform and dither.
+// Reads the scene-referred colour, multiplies by the frame's exposure (GPU exposure state), composites bloom
+// (BLOOM: the bloom chain's result, already exposed; energy-conserving mix or threshold add, REFERENCES.md
+// "Bloom"), grades (core/ColorGrading.cpp is the CPU reference), applies the curve
 // (passes/tonemap/tonecurves.h.glsl mirrors core/ToneCurves.cpp), encodes sRGB, dithers by +-1 LSB (TPDF).
-// With OUTPUT_SCENE defined it stops before the curve and writes the exposed scene-referred value (EXR output).
+// With OUTPUT_SCENE defined it stops before the curve and writes the graded scene-referred value (EXR output).
 #include "passes/common/color.h.glsl"
 #include "passes/common/exposure.h.glsl"
 #include "passes/common/noise.h.glsl"
@@ -14,13 +17,62 @@ uniform float uWhitePoint;
 uniform int uAgxLook;
 uniform int uDither;
 uniform uint uFrame;
+#ifdef BLOOM
+layout(binding = 1) uniform sampler2D uBloom;
+uniform vec2 uBloomTexel;     // 1 / bloom size
+uniform int uBloomAdditive;   // 0: mix(scene, bloom, intensity); 1: scene + intensity * bloom
+uniform float uBloomIntensity;
+#endif
+uniform int uGrade;
+uniform mat3 uWhiteBalance;   // core/ColorGrading.cpp whiteBalanceMatrix
+uniform float uContrast;
+uniform float uSaturation;
+uniform vec3 uLift;
+uniform vec3 uInvGamma;       // 1 / gamma, per channel
+uniform vec3 uGain;
+
+const float kMiddleGrey = 0.18; // core/ColorGrading.h kGradingMiddleGrey
 
 layout(location = 0) out vec4 oColor;
+
+#ifdef BLOOM
+// The bloom image is half or a quarter of the frame: a 3x3 tent (the chain's own upsample filter) brings it
+// up without the blockiness of one bilinear tap.
+vec3 bloomAt(vec2 uv) {
+    vec2 t = uBloomTexel;
+    vec3 s = textureLod(uBloom, uv, 0.0).rgb * 4.0;
+    s += (textureLod(uBloom, uv + vec2(-t.x, 0.0), 0.0).rgb + textureLod(uBloom, uv + vec2(t.x, 0.0), 0.0).rgb +
+          textureLod(uBloom, uv + vec2(0.0, -t.y), 0.0).rgb + textureLod(uBloom, uv + vec2(0.0, t.y), 0.0).rgb) *
+         2.0;
+    s += textureLod(uBloom, uv - t, 0.0).rgb + textureLod(uBloom, uv + t, 0.0).rgb +
+         textureLod(uBloom, uv + vec2(-t.x, t.y), 0.0).rgb + textureLod(uBloom, uv + vec2(t.x, -t.y), 0.0).rgb;
+    return s * (1.0 / 16.0);
+}
+#endif
+
+// Same order as core/ColorGrading.cpp gradeColor: white balance, contrast in log2 around middle grey,
+// saturation around Rec.709 luma, then gain, lift, gamma (ASC CDL slope, offset, power).
+vec3 grade(vec3 c) {
+    c = max(uWhiteBalance * c, vec3(0.0));
+    c = mix(vec3(0.0), kMiddleGrey * pow(max(c, vec3(1e-30)) / kMiddleGrey, vec3(uContrast)),
+            greaterThan(c, vec3(0.0)));
+    float y = luma709(c);
+    c = max(vec3(y) + (c - vec3(y)) * uSaturation, vec3(0.0));
+    c = max(c * uGain + uLift, vec3(0.0));
+    return pow(c, uInvGamma);
+}
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     // Sanitised here as well: on the LDR path this is where the pipeline first reads the host's colour.
     vec3 c = sanitize(texelFetch(uScene, p, 0).rgb) * gExposure.exposure;
+#ifdef BLOOM
+    vec3 bloom = bloomAt(gl_FragCoord.xy / vec2(textureSize(uScene, 0)));
+    c = uBloomAdditive != 0 ? c + uBloomIntensity * bloom : mix(c, bloom, uBloomIntensity);
+#endif
+    if (uGrade != 0) {
+        c = grade(c);
+    }
 #ifdef OUTPUT_SCENE
     oColor = vec4(c, 1.0);
 #else

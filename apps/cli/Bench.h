@@ -1,0 +1,23 @@
+#pragma once
+// `photopic bench`: per-pass GPU timings of the pipeline over N frames.
+
+#include "Commands.h"
+
+#include <filesystem>
+#include <string>
+
+namespace photopic::cli {
+
+struct BenchOptions {
+    std::string size = "1920x1080"; ///< WxH of the synthetic frame (ignored with --input)
+    int frames = 60;                ///< timed frames, after the warm-up
+    int warmup = 5;                 ///< untimed frames first (shader compilation, first-use allocations)
+    std::filesystem::path input;    ///< an HDR image instead of the synthetic frame
+    std::filesystem::path json;     ///< also write the table here (atomically)
+    SettingsSources settings;
+    bool forceLdr = false;
+};
+
+int runBench(const BenchOptions& options);
+
+} // namespace photopic::cli

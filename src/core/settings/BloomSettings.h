@@ -1,0 +1,48 @@
+#pragma once
+// HDR bloom on exposed colour (DESIGN.md frame order step 6; passes/bloom/). Seed 002's keys `enabled`,
+// `threshold`, `intensity` are fields here and keep their meaning; seed 003's "> 1.0" is the threshold
+// default.
+
+#include "core/settings/Reflect.h"
+
+#include <array>
+#include <span>
+#include <string_view>
+
+namespace photopic {
+
+enum class BloomMode {
+    EnergyConserving, ///< mix(scene, bloom, intensity) over the whole image, no threshold (Jimenez 2014)
+    Threshold,        ///< scene + intensity * bloom of what lies above a soft-knee threshold (seeds 002, 003)
+};
+
+inline std::span<const std::string_view> bloomModeNames() {
+    static constexpr std::array<std::string_view, 2> kNames{"energy-conserving", "threshold"};
+    return kNames;
+}
+
+struct BloomSettings {
+    bool enabled = true; ///< default on: a modest energy-conserving glare is part of a photographic look
+    BloomMode mode = BloomMode::EnergyConserving; ///< how bloom joins the scene, default energy-conserving
+    float intensity = 0.04f; ///< [0, 10], default 0.04: mix factor (energy-conserving, <= 1) or additive gain
+    float threshold = 1.0f;  ///< exposed scene-linear, [0, 65000], default 1 (seed 003): threshold mode only
+    float knee = 0.5f;       ///< fraction of threshold, [0, 1], default 0.5: soft-knee width, threshold mode
+    float radius =
+        0.85f;        ///< [0, 1], default 0.85: share each level hands to the wider ones (spread, roundness)
+    int mipCount = 0; ///< [0, 10], default 0 = the quality tier's count: levels of the chain below half size
+
+    template <class V>
+    void visit(V& v) {
+        v.field("enabled", enabled);
+        v.field("mode", mode, bloomModeNames());
+        v.field("intensity", intensity, Range{0, 10});
+        v.field("threshold", threshold, Range{0, 65000});
+        v.field("knee", knee, Range{0, 1});
+        v.field("radius", radius, Range{0, 1});
+        v.field("mipCount", mipCount, Range{0, 10});
+        v.require(mode != BloomMode::EnergyConserving || intensity <= 1.0f, "intensity",
+                  "must lie in [0, 1] in energy-conserving mode (it is a mix factor)");
+    }
+};
+
+} // namespace photopic

@@ -1,0 +1,111 @@
+#include "passes/bloom/BloomPass.h"
+
+#include "core/Bloom.h"
+#include "passes/Bindings.h"
+
+#include <fmt/format.h>
+
+namespace photopic {
+
+namespace {
+constexpr const char* kVertex = "passes/common/fullscreen.vert.glsl";
+constexpr const char* kDown = "passes/bloom/bloom_downsample.frag.glsl";
+constexpr const char* kUp = "passes/bloom/bloom_upsample.frag.glsl";
+constexpr GLenum kFormat = GL_RGBA16F;
+
+double texelBytes(Extent e, GLenum format) {
+    return double(e.width) * double(e.height) * bytesPerTexel(format);
+}
+} // namespace
+
+BloomPass::BloomPass()
+    : mPrefilter(makeGraphicsProgram(kVertex, kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}})))
+    , mDownsample(makeGraphicsProgram(kVertex, kDown, bindingDefines()))
+    , mUpsample(makeGraphicsProgram(kVertex, kUp, bindingDefines()))
+    , mVao(VertexArray::create("bloom fullscreen")) {}
+
+void BloomPass::resize(Extent extent) {
+    if (extent == mExtent) {
+        return;
+    }
+    mExtent = extent;
+    mLevels = 0; // rebuilt on the next execute, at the size and depth that frame asks for
+    mDown.clear();
+    mUp.clear();
+    mDownFbo.clear();
+    mUpFbo.clear();
+}
+
+void BloomPass::ensureChain(int firstDivisor, int levels) {
+    if (levels == mLevels && firstDivisor == mDivisor && !mDown.empty()) {
+        return;
+    }
+    mDivisor = firstDivisor;
+    mLevels = levels;
+    mDown.clear();
+    mUp.clear();
+    mDownFbo.clear();
+    mUpFbo.clear();
+    for (int i = 0; i < levels; ++i) {
+        const glm::ivec2 s = bloomMipSize({mExtent.width, mExtent.height}, firstDivisor, i);
+        const std::string down = fmt::format("bloom down {}", i);
+        mDown.emplace_back(TextureCreateInfo{.extent = {s.x, s.y}, .format = kFormat, .debugName = down});
+        mDownFbo.emplace_back(mDown.back(), 0, down);
+        if (i + 1 < levels) {
+            const std::string up = fmt::format("bloom up {}", i);
+            mUp.emplace_back(TextureCreateInfo{.extent = {s.x, s.y}, .format = kFormat, .debugName = up});
+            mUpFbo.emplace_back(mUp.back(), 0, up);
+        }
+    }
+}
+
+const Texture& BloomPass::execute(const Inputs& in) {
+    const int levels =
+        bloomMipCount({mExtent.width, mExtent.height}, in.firstDivisor, std::max(1, in.mipCount));
+    ensureChain(in.firstDivisor, levels);
+    DebugGroup group("bloom");
+    glBindVertexArray(mVao.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState, in.exposureState->id());
+
+    // Downsample chain; level 0 reads the scene with the prefilter (exposure, Karis, threshold).
+    for (int i = 0; i < levels; ++i) {
+        const Texture& source = i == 0 ? *in.scene : mDown[std::size_t(i - 1)];
+        const Texture& target = mDown[std::size_t(i)];
+        const Program& program = i == 0 ? mPrefilter : mDownsample;
+        const Extent se = source.extent(), te = target.extent();
+        const float step = i == 0 ? float(in.firstDivisor) * 0.5f : 1.0f;
+        ScopedGpuTimer timer(in.timers, i == 0 ? "bloom prefilter" : fmt::format("bloom down {}", i),
+                             texelBytes(se, source.format()) + texelBytes(te, kFormat));
+        setUniform(program, "uTargetTexel", 1.0f / float(te.width), 1.0f / float(te.height));
+        setUniform(program, "uSourceStep", step / float(se.width), step / float(se.height));
+        if (i == 0) {
+            const glm::vec4 knee = bloomKneeConstants(in.settings->threshold, in.settings->knee);
+            setUniform(program, "uThreshold", in.settings->mode == BloomMode::Threshold ? 1 : 0);
+            setUniform(program, "uKnee", knee.x, knee.y, knee.z, knee.w);
+        }
+        program.use();
+        glBindTextureUnit(0, source.id());
+        mDownFbo[std::size_t(i)].bind();
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+
+    // Upsample chain, smallest level first: up[i] = mix(down[i], tent(up[i + 1]), radius).
+    for (int i = levels - 2; i >= 0; --i) {
+        const Texture& coarse = i == levels - 2 ? mDown[std::size_t(levels - 1)] : mUp[std::size_t(i + 1)];
+        const Texture& fine = mDown[std::size_t(i)];
+        const Extent ce = coarse.extent(), te = fine.extent();
+        ScopedGpuTimer timer(in.timers, fmt::format("bloom up {}", i),
+                             texelBytes(ce, kFormat) + 2 * texelBytes(te, kFormat));
+        setUniform(mUpsample, "uTargetTexel", 1.0f / float(te.width), 1.0f / float(te.height));
+        setUniform(mUpsample, "uCoarseTexel", 1.0f / float(ce.width), 1.0f / float(ce.height));
+        setUniform(mUpsample, "uRadius", in.settings->radius);
+        mUpsample.use();
+        glBindTextureUnit(0, coarse.id());
+        glBindTextureUnit(1, fine.id());
+        mUpFbo[std::size_t(i)].bind();
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    return levels == 1 ? mDown[0] : mUp[0];
+}
+
+} // namespace photopic

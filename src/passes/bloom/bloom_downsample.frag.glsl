@@ -1,0 +1,84 @@
+// Bloom downsample: one level of the chain from the level above (or, with PREFILTER, from the scene).
+// Reference: J. Jimenez, "Next Generation Post Processing in Call of Duty: Advanced Warfare", SIGGRAPH 2014,
+// slides 150-163: 13 bilinear taps form five overlapping 2x2 boxes; the centre box weighs 0.5 and the four
+// corner boxes 0.125 each, which removes the pulsing of a plain 2x2 box under motion. With KARIS each box is
+// weighted by 1 / (1 + luma) and the result renormalised ("Karis average"), so a single firefly cannot
+// dominate a whole region; only the first level needs it, the later ones already see averaged colour.
+// With PREFILTER the taps are scene colour multiplied by the frame's exposure (bloom works on exposed colour,
+// DESIGN.md step 6) and, in threshold mode, the soft knee (REFERENCES.md "Bloom"; constants from
+// core/Bloom.cpp) keeps only what lies above the threshold.
+#include "passes/common/color.h.glsl"
+#ifdef PREFILTER
+#include "passes/common/exposure.h.glsl"
+#endif
+
+layout(binding = 0) uniform sampler2D uSource;
+uniform vec2 uTargetTexel; // 1 / target size
+uniform vec2 uSourceStep;  // one source texel in UV (two when level 0 is a quarter of the scene)
+#ifdef PREFILTER
+uniform int uThreshold; // 1: threshold mode
+uniform vec4 uKnee;     // T, T - knee, 2 knee, 1 / (4 knee)
+#endif
+
+layout(location = 0) out vec4 oColor;
+
+vec3 tap(vec2 uv) {
+#ifdef PREFILTER
+    // Exposed before the Karis weights, which must see the luma the viewer will see.
+    return textureLod(uSource, uv, 0.0).rgb * gExposure.exposure;
+#else
+    return textureLod(uSource, uv, 0.0).rgb;
+#endif
+}
+
+#ifdef KARIS
+float karisWeight(vec3 box) {
+    return 1.0 / (1.0 + luma709(box));
+}
+#endif
+
+void main() {
+    vec2 uv = gl_FragCoord.xy * uTargetTexel;
+    vec2 t = uSourceStep;
+    vec3 a = tap(uv + t * vec2(-2.0, 2.0));
+    vec3 b = tap(uv + t * vec2(0.0, 2.0));
+    vec3 c = tap(uv + t * vec2(2.0, 2.0));
+    vec3 d = tap(uv + t * vec2(-1.0, 1.0));
+    vec3 e = tap(uv + t * vec2(1.0, 1.0));
+    vec3 f = tap(uv + t * vec2(-2.0, 0.0));
+    vec3 g = tap(uv);
+    vec3 h = tap(uv + t * vec2(2.0, 0.0));
+    vec3 i = tap(uv + t * vec2(-1.0, -1.0));
+    vec3 j = tap(uv + t * vec2(1.0, -1.0));
+    vec3 k = tap(uv + t * vec2(-2.0, -2.0));
+    vec3 l = tap(uv + t * vec2(0.0, -2.0));
+    vec3 m = tap(uv + t * vec2(2.0, -2.0));
+
+    vec3 centre = (d + e + i + j) * 0.25;
+    vec3 topLeft = (a + b + f + g) * 0.25;
+    vec3 topRight = (b + c + g + h) * 0.25;
+    vec3 bottomLeft = (f + g + k + l) * 0.25;
+    vec3 bottomRight = (g + h + l + m) * 0.25;
+
+#ifdef KARIS
+    float wc = 0.5 * karisWeight(centre);
+    float w0 = 0.125 * karisWeight(topLeft);
+    float w1 = 0.125 * karisWeight(topRight);
+    float w2 = 0.125 * karisWeight(bottomLeft);
+    float w3 = 0.125 * karisWeight(bottomRight);
+    vec3 colour = (centre * wc + topLeft * w0 + topRight * w1 + bottomLeft * w2 + bottomRight * w3) /
+                  (wc + w0 + w1 + w2 + w3);
+#else
+    vec3 colour = centre * 0.5 + (topLeft + topRight + bottomLeft + bottomRight) * 0.125;
+#endif
+
+#ifdef PREFILTER
+    if (uThreshold != 0) {
+        float br = max(colour.r, max(colour.g, colour.b));
+        float rq = clamp(br - uKnee.y, 0.0, uKnee.z);
+        rq = rq * rq * uKnee.w;
+        colour *= max(rq, br - uKnee.x) / max(br, 1e-4);
+    }
+#endif
+    oColor = vec4(colour, 1.0);
+}

@@ -1,0 +1,26 @@
+// Bloom upsample: level i of the result = mix(downsampled level i, tent(result of level i + 1), radius).
+// Reference: J. Jimenez, "Next Generation Post Processing in Call of Duty: Advanced Warfare", SIGGRAPH 2014:
+// a 3x3 tent [1 2 1; 2 4 2; 1 2 1] / 16 on the coarser level, accumulated level by level, so each level is
+// blurred once more per step up and the sum approximates a wide, smooth kernel. Mixing (instead of adding)
+// keeps the weights of all levels summing to 1 (core/Bloom.h bloomLevelWeight), so bloom moves energy
+// around without adding any: what `energy-conserving` needs and what keeps `threshold` mode predictable.
+layout(binding = 0) uniform sampler2D uCoarse; // result of level i + 1 (or the smallest downsampled level)
+layout(binding = 1) uniform sampler2D uFine;   // downsampled level i
+uniform vec2 uTargetTexel;                     // 1 / size of level i
+uniform vec2 uCoarseTexel;                     // 1 / size of level i + 1
+uniform float uRadius;
+
+layout(location = 0) out vec4 oColor;
+
+void main() {
+    vec2 uv = gl_FragCoord.xy * uTargetTexel;
+    vec2 t = uCoarseTexel;
+    vec3 s = textureLod(uCoarse, uv, 0.0).rgb * 4.0;
+    s += (textureLod(uCoarse, uv + vec2(-t.x, 0.0), 0.0).rgb + textureLod(uCoarse, uv + vec2(t.x, 0.0), 0.0).rgb +
+          textureLod(uCoarse, uv + vec2(0.0, -t.y), 0.0).rgb + textureLod(uCoarse, uv + vec2(0.0, t.y), 0.0).rgb) *
+         2.0;
+    s += textureLod(uCoarse, uv - t, 0.0).rgb + textureLod(uCoarse, uv + t, 0.0).rgb +
+         textureLod(uCoarse, uv + vec2(-t.x, t.y), 0.0).rgb + textureLod(uCoarse, uv + vec2(t.x, -t.y), 0.0).rgb;
+    vec3 fine = textureLod(uFine, uv, 0.0).rgb;
+    oColor = vec4(mix(fine, s * (1.0 / 16.0), uRadius), 1.0);
+}

@@ -1,0 +1,79 @@
+#include "passes/lensflare/LensFlarePass.h"
+
+#include "passes/Bindings.h"
+
+#include <algorithm>
+
+namespace photopic {
+
+namespace {
+constexpr const char* kVertex = "passes/common/fullscreen.vert.glsl";
+constexpr GLenum kFormat = GL_RGBA16F;
+} // namespace
+
+LensFlarePass::LensFlarePass()
+    : mPrefilter(
+          makeGraphicsProgram(kVertex, "passes/lensflare/lensflare_prefilter.frag.glsl", bindingDefines()))
+    , mFeatures(
+          makeGraphicsProgram(kVertex, "passes/lensflare/lensflare_features.frag.glsl", bindingDefines()))
+    , mVao(VertexArray::create("lens flare fullscreen")) {}
+
+void LensFlarePass::resize(Extent extent) {
+    if (extent == mExtent) {
+        return;
+    }
+    mExtent = extent;
+    mDivisor = 0;
+}
+
+void LensFlarePass::ensureTargets(int divisor) {
+    if (divisor == mDivisor && mSource.valid()) {
+        return;
+    }
+    mDivisor = divisor;
+    const Extent e{std::max(1, mExtent.width / divisor), std::max(1, mExtent.height / divisor)};
+    mSource = Texture({.extent = e, .format = kFormat, .debugName = "lens flare source"});
+    mSourceFbo = Framebuffer(mSource, 0, "lens flare source");
+    mFlare = Texture({.extent = e, .format = kFormat, .debugName = "lens flare"});
+    mFlareFbo = Framebuffer(mFlare, 0, "lens flare");
+}
+
+const Texture& LensFlarePass::execute(const Inputs& in) {
+    ensureTargets(std::max(1, in.divisor));
+    const Extent e = mSource.extent();
+    const double small = double(e.width) * e.height * bytesPerTexel(kFormat);
+    DebugGroup group("lens flare");
+    glBindVertexArray(mVao.id());
+    {
+        const Extent se = in.scene->extent();
+        ScopedGpuTimer timer(in.timers, "lens flare prefilter",
+                             double(se.width) * se.height * bytesPerTexel(in.scene->format()) + small);
+        // Four bilinear taps a quarter of a target texel from its centre cover the target texel's footprint
+        // when it is 2x2 source texels; for larger divisors they subsample it, so a source smaller than the
+        // gaps can be missed (flares come from suns and lamps, which are larger at these sizes).
+        setUniform(mPrefilter, "uTargetTexel", 1.0f / float(e.width), 1.0f / float(e.height));
+        setUniform(mPrefilter, "uSourceStep", 0.25f / float(e.width), 0.25f / float(e.height));
+        setUniform(mPrefilter, "uThreshold", in.settings->threshold);
+        mPrefilter.use();
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState, in.exposureState->id());
+        glBindTextureUnit(0, in.scene->id());
+        mSourceFbo.bind();
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    {
+        ScopedGpuTimer timer(in.timers, "lens flare features", small * (in.settings->ghosts + 2));
+        setUniform(mFeatures, "uTargetTexel", 1.0f / float(e.width), 1.0f / float(e.height));
+        setUniform(mFeatures, "uGhosts", in.settings->ghosts);
+        setUniform(mFeatures, "uGhostSpacing", in.settings->ghostSpacing);
+        setUniform(mFeatures, "uHaloRadius", in.settings->haloRadius);
+        setUniform(mFeatures, "uIntensity", in.settings->intensity);
+        setUniform(mFeatures, "uAspect", float(mExtent.width) / float(mExtent.height));
+        mFeatures.use();
+        glBindTextureUnit(0, mSource.id());
+        mFlareFbo.bind();
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    return mFlare;
+}
+
+} // namespace photopic

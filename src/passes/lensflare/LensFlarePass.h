@@ -1,0 +1,36 @@
+#pragma once
+// Post lens flare (DESIGN.md step 11; seed 001): thresholded, downsampled exposed HDR -> ghosts + halo, an
+// HDR buffer the display-effects pass adds in the display domain. Independent of bloom and its settings.
+
+#include "core/settings/DisplaySettings.h"
+#include "gl/GpuTimers.h"
+#include "gl/Objects.h"
+
+namespace photopic {
+
+class LensFlarePass {
+public:
+    struct Inputs {
+        const Texture* scene = nullptr;        ///< sanitised scene-referred colour
+        const Buffer* exposureState = nullptr; ///< GpuExposureState
+        const LensFlareSettings* settings = nullptr;
+        int divisor = 4; ///< the flare buffers are the scene / this (the quality tier decides)
+        GpuTimers* timers = nullptr;
+    };
+    LensFlarePass();
+    void resize(Extent extent);
+    const Texture& execute(const Inputs& in);
+
+private:
+    void ensureTargets(int divisor);
+
+    Program mPrefilter;
+    Program mFeatures;
+    VertexArray mVao;
+    Extent mExtent;
+    int mDivisor = 0;
+    Texture mSource, mFlare;
+    Framebuffer mSourceFbo, mFlareFbo;
+};
+
+} // namespace photopic

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# `photopic bench` lists every pass with its median GPU time, bytes and bandwidth, and writes JSON atomically;
+# quality=legacy and --force-ldr runs produce images and say so.
+source "$(dirname "$0")/lib.bash"
+S="$SCRATCH"
+
+ALL=(--set fxaa.enabled=true --set lensFlare.enabled=true --set vignette.enabled=true --set grain.enabled=true
+     --set dazzle.enabled=true --set colorGrading.enabled=true)
+expect 0 "bench at a small size with every effect" -- "$PHOTOPIC" bench --size 256x144 --frames 3 "${ALL[@]}" --json "$S/bench.json"
+for pass in sanitize "bloom prefilter" "bloom down 1" "bloom up 0" "composite + grade + tonemap" fxaa \
+            "lens flare prefilter" "lens flare features" "flare + dazzle + vignette + grain" total; do
+    check "bench lists '$pass'" contains "$pass"
+done
+check "bench prints GB/s" contains "GB/s"
+check "JSON written" test -s "$S/bench.json"
+check "no temporary file left" test ! -e "$S/bench.json.tmp"
+check "JSON has the passes" grep -q '"medianGpuMs"' "$S/bench.json"
+expect 2 "bad size is bad input" -- "$PHOTOPIC" bench --size 12by3
+expect 0 "bench on the legacy tier" -- "$PHOTOPIC" bench --size 64x64 --frames 2 --set quality=legacy
+check "legacy bench reports the LDR path" contains "LDR"
+
+expect 0 "legacy image" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/legacy.png" --set quality=legacy
+check "legacy PNG written" test -s "$S/legacy.png"
+check "legacy warns" contains "LDR"
+expect 0 "forced-LDR image with every effect" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/ldr.png" --force-ldr "${ALL[@]}"
+check "forced-LDR PNG written" test -s "$S/ldr.png"
+check "forced LDR warns" contains "LDR"
+expect 0 "info reports the legacy tier" -- "$PHOTOPIC" info --set quality=legacy
+check "info says legacy runs LDR" contains "legacy -> LDR"
+expect 0 "threshold bloom to EXR" -- "$PHOTOPIC" image "$DATA/Desk.hdr" -o "$S/bloom.exr" --set bloom.mode=threshold --set bloom.intensity=0.5
+check "EXR written" test -s "$S/bloom.exr"
+expect 0 "settings --defaults" -- "$PHOTOPIC" settings --defaults
+for key in bloom colorGrading fxaa lensFlare vignette grain dazzle quality; do
+    check "defaults list $key" contains "\"$key\""
+done
+
+finish
