@@ -1,0 +1,122 @@
+// Canvas scene (seed 003 §5): GPU time of the tiled shading (specular + sparkle only on the tiles with
+// material, indirect dispatch) against the full-screen shading, at 1920x1080 with 30% of the 256 px tiles
+// occupied. Timed with GL_TIME_ELAPSED queries around each dispatch, after warm-up; the output is checked
+// (the two paths must give the same image, and the tiled path must list 30% of the tiles) before anything is
+// timed.
+
+#include "core/Motion.h"
+#include "gl/Context.h"
+#include "gl/TextureIo.h"
+#include "scenes/canvas/CanvasRenderer.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+namespace {
+
+using namespace photopic;
+
+constexpr int kWidth = 1920, kHeight = 1080, kTileSize = 256;
+constexpr double kOccupancy = 0.3;
+
+struct CanvasBench {
+    HeadlessContext context;
+    CanvasRenderer renderer;
+    Query query{GL_TIME_ELAPSED};
+    bool checked = false;
+    std::string error;
+
+    CanvasBench() {
+        renderer.setCanvas(
+            makeProceduralCanvas(
+                {.width = kWidth, .height = kHeight, .tileSize = kTileSize, .occupancy = kOccupancy}),
+            kTileSize);
+    }
+
+    static CanvasLighting lighting(int frame) {
+        const Attitude a = ScriptedTilt{}.at(frame / 30.0);
+        return {.light = canvasLightDirection(a.pitch, a.roll)};
+    }
+
+    /// The bench's own output check: both paths agree to the bit, 30% of the tiles are listed.
+    void check() {
+        if (checked) {
+            return;
+        }
+        checked = true;
+        const int expected = int(std::lround(kOccupancy * renderer.grid().count()));
+        if (renderer.occupiedTiles() != expected) {
+            error = "tiled path lists " + std::to_string(renderer.occupiedTiles()) + " tiles, expected " +
+                    std::to_string(expected);
+            return;
+        }
+        const ImageF tiled = readTextureF(renderer.execute(lighting(45), CanvasShading::Tiled));
+        const ImageF full = readTextureF(renderer.execute(lighting(45), CanvasShading::Fullscreen));
+        if (tiled.rgba != full.rgba) {
+            error = "tiled and full-screen shading differ";
+        }
+    }
+
+    /// GPU milliseconds of one shading pass (blocks on the query: benchmarks only).
+    double timeOnce(CanvasShading shading, int frame) {
+        glBeginQuery(GL_TIME_ELAPSED, query.id());
+        renderer.execute(lighting(frame), shading);
+        glEndQuery(GL_TIME_ELAPSED);
+        GLuint64 ns = 0;
+        glGetQueryObjectui64v(query.id(), GL_QUERY_RESULT, &ns);
+        return double(ns) * 1e-6;
+    }
+};
+
+CanvasBench& bench() {
+    static std::unique_ptr<CanvasBench> instance = std::make_unique<CanvasBench>();
+    return *instance;
+}
+
+void shade(benchmark::State& state, CanvasShading shading) {
+    CanvasBench& b = bench();
+    b.check();
+    if (!b.error.empty()) {
+        state.SkipWithError(b.error.c_str());
+        return;
+    }
+    for (int i = 0; i < 3; ++i) { // warm-up: shader JIT, first-touch of the targets
+        b.timeOnce(shading, i);
+    }
+    int frame = 0;
+    double totalMs = 0;
+    for (auto _ : state) {
+        const double ms = b.timeOnce(shading, frame++);
+        totalMs += ms;
+        state.SetIterationTime(ms * 1e-3);
+    }
+    state.counters["gpu_ms"] = totalMs / double(std::max(frame, 1));
+    state.counters["tiles_shaded"] = b.renderer.tilesShaded(shading);
+    state.counters["tiles_total"] = b.renderer.grid().count();
+}
+
+void BM_CanvasShadeTiled(benchmark::State& state) {
+    shade(state, CanvasShading::Tiled);
+}
+void BM_CanvasShadeFullscreen(benchmark::State& state) {
+    shade(state, CanvasShading::Fullscreen);
+}
+
+BENCHMARK(BM_CanvasShadeTiled)
+    ->Name("canvas_shade/tiled/1920x1080/occupancy:0.3")
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0);
+BENCHMARK(BM_CanvasShadeFullscreen)
+    ->Name("canvas_shade/fullscreen/1920x1080/occupancy:0.3")
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0);
+
+} // namespace
+
+BENCHMARK_MAIN();
