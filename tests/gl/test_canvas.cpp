@@ -109,8 +109,8 @@ TEST_F(GlTest, CanvasHighlightMovesRightWithRollAndUpWithPitch) {
     // The read-back image's rows run top to bottom: "up" is a smaller row.
     EXPECT_LT(centroid[0].x + 10, centroid[1].x) << "roll -0.3 -> 0 must move the highlight right";
     EXPECT_LT(centroid[1].x + 10, centroid[2].x) << "roll 0 -> 0.3 must move the highlight right";
-    // The broad varnish lobe spreads over the whole canvas, so its centroid moves less than the mirror point (8 rows
-    // of 108 measured for pitch, 17 px of 192 per 0.3 rad of roll).
+    // The broad varnish lobe spreads over the whole canvas, so its centroid moves less than the mirror point
+    // (8 rows of 108 measured for pitch, 17 px of 192 per 0.3 rad of roll).
     EXPECT_GT(centroid[3].y, centroid[4].y + 4) << "pitch -0.25 -> 0.25 must move the highlight up";
     EXPECT_GT(centroid[2].x, size.width / 2);
     EXPECT_LT(centroid[4].y, size.height / 2);

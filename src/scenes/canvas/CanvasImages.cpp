@@ -113,7 +113,7 @@ CanvasImages makeProceduralCanvas(const ProceduralCanvasInfo& info) {
     std::vector<float> facetTag(std::size_t(w) * std::size_t(h), 0.0f);
 
     // Ground: a warm underpainting and the canvas weave (a faint bump at ~1/180 of the height per thread).
-    const float weave = 2.0f * std::numbers::pi_v<float> * 180.0f;
+    const float weave = 2.0f * std::numbers::pi_v<float> * 120.0f;
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             const float u = (float(x) + 0.5f) / H, v = (float(y) + 0.5f) / H;
@@ -125,7 +125,7 @@ CanvasImages makeProceduralCanvas(const ProceduralCanvasInfo& info) {
             c[2] = ground.b;
             c[3] = 1.0f;
             normal[std::size_t(y) * std::size_t(w) + std::size_t(x)] =
-                glm::normalize(glm::vec3(0.06f * std::sin(u * weave), 0.06f * std::sin(v * weave), 1.0f));
+                glm::normalize(glm::vec3(0.04f * std::sin(u * weave), 0.04f * std::sin(v * weave), 1.0f));
         }
     }
 
@@ -186,7 +186,7 @@ CanvasImages makeProceduralCanvas(const ProceduralCanvasInfo& info) {
     const TileGrid grid = makeTileGrid(w, h, info.tileSize);
     const std::vector<std::uint8_t> chosen = chooseTiles(grid, info.occupancy, info.seed);
     const int facet = std::max(2, int(std::lround(H / 216.0f))); // glitter flake size, px
-    const std::uint8_t varnish = encodeShininess(12.0f), gloss = encodeShininess(48.0f);
+    const std::uint8_t varnish = encodeShininess(40.0f), gloss = encodeShininess(160.0f);
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             const std::size_t k = std::size_t(y) * std::size_t(w) + std::size_t(x);

@@ -20,7 +20,7 @@ struct CanvasSceneSettings {
     int seed = 3;           ///< [0, 1000000], default 3: the painting's strokes, glitter facets and tiles
     float lightIntensity = 1.0f; ///< scene-linear, [0, 1000], default 1: the lamp
     float ambient = 0.25f;       ///< [0, 10], default 0.25: fill light, a fraction of the lamp
-    float specular = 0.8f;       ///< [0, 100], default 0.8: Blinn-Phong strength ks
+    float specular = 0.6f;       ///< [0, 100], default 0.6: Blinn-Phong strength ks
     float sparkleExposure =
         4.0f;                  ///< [0, 1000], default 4: seed 003's exposure on the sparkle (>1 at the peak)
     float viewDistance = 1.5f; ///< image heights, [0.1, 100], default 1.5: eye in front of the canvas centre
