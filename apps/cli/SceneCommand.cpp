@@ -10,7 +10,10 @@
 
 #include <fmt/format.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cstdio>
+#include <tuple>
 
 namespace photopic::cli {
 
@@ -45,7 +48,21 @@ int runScene(const SceneOptions& options) {
     post.overrides.clear();
     std::vector<SettingsIssue> sceneIssues;
     const std::string prefix = std::string(scene->name()) + ".";
-    for (const auto& o : options.settings.overrides) {
+    // The canvas scene's file flags are shorthands for its settings, applied before the --set overrides.
+    std::vector<std::string> overrides;
+    for (const auto& [flag, key, value] : {std::tuple{"--canvas", "colour", options.canvasColour},
+                                           std::tuple{"--material", "material", options.canvasMaterial},
+                                           std::tuple{"--motion", "motion", options.motion}}) {
+        if (!value.empty()) {
+            if (scene->name() != "canvas") {
+                throw InputError(
+                    fmt::format("{} is an option of the canvas scene, not of '{}'", flag, scene->name()));
+            }
+            overrides.push_back(fmt::format("canvas.{}={}", key, nlohmann::json(value).dump()));
+        }
+    }
+    overrides.insert(overrides.end(), options.settings.overrides.begin(), options.settings.overrides.end());
+    for (const auto& o : overrides) {
         if (o.rfind(prefix, 0) == 0) {
             auto issues = scene->applyOverride(std::string_view(o).substr(prefix.size()));
             sceneIssues.insert(sceneIssues.end(), issues.begin(), issues.end());
@@ -57,6 +74,12 @@ int runScene(const SceneOptions& options) {
         throw SettingsError("--set", std::move(sceneIssues));
     }
     const Settings resolved = resolveSettings(post, scene->defaultSettings());
+    // The scene reads its input files here, before any output exists: a bad one is bad input (exit 2).
+    try {
+        scene->resize({size.width, size.height});
+    } catch (const SceneInputError& e) {
+        throw InputError(e.what());
+    }
 
     const fs::path outDir =
         options.output.empty() ? fs::path("out") / ("scene-" + options.name) : options.output;
@@ -68,7 +91,6 @@ int runScene(const SceneOptions& options) {
     }
 
     Pipeline pipeline({.settings = resolved, .forceLdr = options.forceLdr, .keepTelemetryHistory = true});
-    scene->resize({size.width, size.height});
     const std::vector<std::string> sceneColumns = scene->telemetryColumns();
     std::vector<std::vector<double>> sceneValues(std::size_t(options.frames));
 

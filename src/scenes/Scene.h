@@ -11,11 +11,20 @@
 
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace photopic {
+
+/// A file a scene reads (named by its settings, e.g. --set canvas.motion=FILE) is missing or malformed.
+/// what() names the file (and the line where there is one). Thrown from resize() or render(); the CLI
+/// exits 2.
+class SceneInputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
 
 class Scene {
 public:

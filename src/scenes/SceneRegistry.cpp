@@ -1,5 +1,6 @@
 #include "scenes/Scene.h"
 
+#include "scenes/canvas/CanvasScene.h"
 #include "scenes/gradient/GradientScene.h"
 
 #include <stdexcept>
@@ -11,6 +12,8 @@ const std::vector<SceneInfo>& builtInScenes() {
     static const std::vector<SceneInfo> kScenes = {
         {"gradient", "a drifting HDR gradient with a bright sun disc (smoke test of the scene runner)",
          makeGradientScene},
+        {"canvas", "seed 003: a painted canvas lit by the device's tilt, glitter sparkle, tile-based shading",
+         makeCanvasScene},
     };
     return kScenes;
 }

@@ -1,0 +1,72 @@
+#pragma once
+// The canvas's shading on the GPU, usable without the Scene wrapper (the benchmark and tests drive it
+// directly): uploads a canvas, builds seed 003's tile occupancy and tile lists on the GPU, and shades a frame
+// into an RGBA16F scene-linear target either tile by tile or full screen.
+
+#include "core/CanvasMaterial.h"
+#include "gl/GpuTimers.h"
+#include "gl/Objects.h"
+#include "scenes/canvas/CanvasImages.h"
+
+#include <array>
+#include <span>
+#include <string_view>
+
+namespace photopic {
+
+enum class CanvasShading {
+    Tiled, ///< specular + sparkle only on tiles with material (indirect dispatch), diffuse-only elsewhere
+    Fullscreen, ///< one dispatch, full shading on every pixel (the reference the tiled path must match)
+};
+std::span<const std::string_view> canvasShadingNames(); ///< "tiled", "fullscreen"
+
+/// std430 mirror of the TileLists block in canvas_tiles.comp.glsl / canvas_shade.comp.glsl (followed by
+/// 2 x tiles uints: occupied list, then empty list).
+struct GpuTileListsHeader {
+    std::array<std::uint32_t, 3> occupiedArgs; ///< glDispatchComputeIndirect args at byte 0
+    std::array<std::uint32_t, 3> emptyArgs;    ///< at byte 12
+    std::uint32_t pad0 = 0;
+    std::uint32_t pad1 = 0;
+};
+static_assert(sizeof(GpuTileListsHeader) == 32);
+static_assert(offsetof(GpuTileListsHeader, emptyArgs) == 12);
+
+class CanvasRenderer {
+public:
+    /// Needs a current GL 4.5 context; compiles the programs (throws GlError with the log).
+    CanvasRenderer();
+
+    /// Uploads `images` (their size becomes the output size) and rebuilds the tile lists on the GPU; reads
+    /// the occupied-tile count back once (a set-up stall, not a per-frame one). `tileSize`: a multiple of 16
+    /// in [16, 1024]; throws std::invalid_argument otherwise or when the grid has more than 65535 tiles.
+    void setCanvas(const CanvasImages& images, int tileSize);
+
+    /// Shades one frame. `timers` (optional) brackets the shading as one pass.
+    const Texture& execute(const CanvasLighting& lighting, CanvasShading shading,
+                           GpuTimers* timers = nullptr);
+
+    [[nodiscard]] const Texture& output() const { return mOutput; }
+    [[nodiscard]] const TileGrid& grid() const { return mGrid; }
+    /// Tiles with material, as the GPU's tile pass counted them.
+    [[nodiscard]] int occupiedTiles() const { return mOccupiedTiles; }
+    /// Tiles that get the specular/sparkle shading under `shading`.
+    [[nodiscard]] int tilesShaded(CanvasShading shading) const {
+        return shading == CanvasShading::Tiled ? mOccupiedTiles : mGrid.count();
+    }
+
+private:
+    void setLightingUniforms(const Program& program, const CanvasLighting& lighting) const;
+
+    Program mTilesProgram;
+    Program mFullscreenProgram;
+    Program mTiledSpecularProgram;
+    Program mTiledDiffuseProgram;
+    Texture mColour;
+    Texture mMaterial;
+    Texture mOutput;
+    Buffer mTileLists;
+    TileGrid mGrid;
+    int mOccupiedTiles = 0;
+};
+
+} // namespace photopic
