@@ -4,6 +4,7 @@
 
 #include "core/settings/AutoExposureSettings.h"
 #include "core/settings/OutputSettings.h"
+#include "core/settings/SubjectSettings.h"
 #include "core/settings/ToneMappingSettings.h"
 
 namespace photopic {
@@ -12,12 +13,14 @@ struct Settings {
     ToneMappingSettings tonemapping;
     OutputSettings output;
     AutoExposureSettings autoExposure;
+    SubjectSettings subjects;
 
     template <class V>
     void visit(V& v) {
         v.object("tonemapping", tonemapping);
         v.object("output", output);
         v.object("autoExposure", autoExposure);
+        v.object("subjects", subjects);
     }
 };
 

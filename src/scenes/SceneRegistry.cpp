@@ -1,6 +1,7 @@
 #include "scenes/Scene.h"
 
 #include "scenes/gradient/GradientScene.h"
+#include "scenes/tabletop/TabletopScene.h"
 
 #include <stdexcept>
 
@@ -11,6 +12,9 @@ const std::vector<SceneInfo>& builtInScenes() {
     static const std::vector<SceneInfo> kScenes = {
         {"gradient", "a drifting HDR gradient with a bright sun disc (smoke test of the scene runner)",
          makeGradientScene},
+        {"tabletop",
+         "a battle map: a player token walks from a torch-lit building into the sun and back (seed 000)",
+         makeTabletopScene},
     };
     return kScenes;
 }
