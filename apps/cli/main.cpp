@@ -1,6 +1,7 @@
 // photopic: the command-line front end. Exit codes: 0 ok, 2 bad usage or input, 1 other failure.
 
 #include "Commands.h"
+#include "TabletopDemo.h"
 
 #include "core/Log.h"
 #include "core/settings/SettingsJson.h"
@@ -79,6 +80,9 @@ int main(int argc, char** argv) {
     auto* demo = app.add_subcommand("demo", "the main demo: renders into out/demo (or -o DIR)");
     demo->add_option("-o,--output", demoOut, "output folder");
     demo->add_option("--data", demoData, "folder of HDR images (../shared/data)");
+    bool demoWalk = false;
+    demo->add_flag("--walk", demoWalk,
+                   "the tabletop walk with exposure from a CPU probe under the token (seed 000, phase 1)");
 
     try {
         app.parse(argc, argv);
@@ -110,6 +114,9 @@ int main(int argc, char** argv) {
             return runScene(scene);
         }
         if (*demo) {
+            if (demoWalk) {
+                return runTabletopWalk({.output = demoOut});
+            }
             return runDemo(demoData, demoOut);
         }
     } catch (const InputError& e) {

@@ -66,8 +66,8 @@ constexpr std::array<Token, 6> kTokens{{
 }};
 
 /// The player's walk: (time s, x, y) keyframes, linear between them. Out through the door (x = 1512, the roof
-/// edge) at ~3.9 s, a stroll on the field, back in at ~11.7 s, a pause in the door torch's pool, then to the
-/// middle of the hall and back to the start.
+/// edge) at ~3.9 s, a stroll on the field, back in at ~11.6 s and a stop right inside the door (so the light
+/// under the token holds still while exposure settles), then to the middle of the hall and back to the start.
 struct Key {
     double t, x, y;
 };
@@ -78,8 +78,8 @@ constexpr std::array<Key, 10> kWalk{{
     {6.5, 2050.0, 1000.0},
     {8.5, 2050.0, 1000.0},
     {11.0, 1700.0, 1000.0},
-    {12.0, 1440.0, 1000.0},
-    {15.0, 1440.0, 1000.0},
+    {11.8, 1470.0, 1000.0},
+    {15.0, 1470.0, 1000.0},
     {17.0, 1100.0, 1100.0},
     {22.0, 1100.0, 1100.0},
 }};
