@@ -2,6 +2,7 @@
 
 #include "Bench.h"
 #include "Commands.h"
+#include "TabletopDemo.h"
 
 #include "core/Log.h"
 #include "core/settings/SettingsJson.h"
@@ -92,6 +93,9 @@ int main(int argc, char** argv) {
     auto* demo = app.add_subcommand("demo", "the main demo: renders into out/demo (or -o DIR)");
     demo->add_option("-o,--output", demoOut, "output folder");
     demo->add_option("--data", demoData, "folder of HDR images (../shared/data)");
+    bool demoWalk = false;
+    demo->add_flag("--walk", demoWalk,
+                   "the tabletop walk with exposure from a CPU probe under the token (seed 000, phase 1)");
 
     BenchOptions bench;
     auto* benchCmd = app.add_subcommand("bench", "per-pass GPU timings (median ms, bytes moved, GB/s) over N "
@@ -140,6 +144,9 @@ int main(int argc, char** argv) {
             return runBench(bench);
         }
         if (*demo) {
+            if (demoWalk) {
+                return runTabletopWalk({.output = demoOut});
+            }
             return runDemo(demoData, demoOut);
         }
     } catch (const InputError& e) {

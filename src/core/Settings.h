@@ -9,6 +9,7 @@
 #include "core/settings/DisplaySettings.h"
 #include "core/settings/OutputSettings.h"
 #include "core/settings/QualitySettings.h"
+#include "core/settings/SubjectSettings.h"
 #include "core/settings/ToneMappingSettings.h"
 
 namespace photopic {
@@ -26,6 +27,7 @@ struct Settings {
     VignetteSettings vignette;
     GrainSettings grain;
     DazzleSettings dazzle;
+    SubjectSettings subjects;
 
     template <class V>
     void visit(V& v) {
@@ -41,6 +43,7 @@ struct Settings {
         v.object("vignette", vignette);
         v.object("grain", grain);
         v.object("dazzle", dazzle);
+        v.object("subjects", subjects);
     }
 };
 

@@ -2,6 +2,7 @@
 
 #include "scenes/canvas/CanvasScene.h"
 #include "scenes/gradient/GradientScene.h"
+#include "scenes/tabletop/TabletopScene.h"
 
 #include <stdexcept>
 
@@ -14,6 +15,9 @@ const std::vector<SceneInfo>& builtInScenes() {
          makeGradientScene},
         {"canvas", "seed 003: a painted canvas lit by the device's tilt, glitter sparkle, tile-based shading",
          makeCanvasScene},
+        {"tabletop",
+         "a battle map: a player token walks from a torch-lit building into the sun and back (seed 000)",
+         makeTabletopScene},
     };
     return kScenes;
 }

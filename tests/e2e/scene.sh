@@ -12,6 +12,10 @@ check "telemetry has one row per frame plus the header" test "$(wc -l < "$S/grad
 check "telemetry starts with frame,time_s" test "$(head -c 12 "$S/grad/telemetry.csv")" = "frame,time_s"
 expect 0 "EXR frames" -- "$PHOTOPIC" scene gradient -o "$S/grad-exr" --frames 1 --size 64x36 --format exr
 check "EXR frame written" test -s "$S/grad-exr/frame_0000.exr"
+expect 0 "tabletop scene renders" -- "$PHOTOPIC" scene tabletop -o "$S/tt" --frames 3 --size 96x54 --set tabletop.darkness=0.5
+check "tabletop frames written" test -s "$S/tt/frame_0002.png"
+check "tabletop telemetry columns (issue 5's order)" test "$(head -1 "$S/tt/telemetry.csv" | cut -d, -f1-12)" = \
+    "frame,time_s,subject,world_x,world_y,screen_u,screen_v,outdoors,measured_luma,target_log2,applied_log2,exposure"
 expect 2 "unknown scene" -- "$PHOTOPIC" scene nowhere -o "$S/x" --frames 1
 check "known scenes listed" contains "known scenes"
 expect 2 "bad scene setting" -- "$PHOTOPIC" scene gradient -o "$S/y" --frames 1 --set gradient.period=0
