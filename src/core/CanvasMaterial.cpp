@@ -1,5 +1,7 @@
 #include "core/CanvasMaterial.h"
 
+#include "core/Hash.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -7,20 +9,6 @@
 #include <numeric>
 
 namespace photopic {
-
-namespace {
-
-// A 32-bit integer hash (Wellons' "lowbias32"): cheap, well mixed, identical on every platform.
-std::uint32_t hash32(std::uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
-}
-
-} // namespace
 
 float sparkleCosine() {
     return std::pow(kSparkleGate, 1.0f / kSparkleExponent);

@@ -1,5 +1,7 @@
 #include "scenes/canvas/CanvasImages.h"
 
+#include "core/Hash.h"
+
 #include "core/Color.h"
 #include "io/ImageIO.h"
 
@@ -15,15 +17,6 @@
 namespace photopic {
 
 namespace {
-
-std::uint32_t hash32(std::uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
-}
 
 /// Deterministic uniform [0, 1) from a few integers.
 float random01(std::uint32_t a, std::uint32_t b = 0, std::uint32_t c = 0) {
