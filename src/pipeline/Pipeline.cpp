@@ -138,6 +138,7 @@ Pipeline::Pipeline(const PipelineCreateInfo& info)
         mPasses->bloom = std::make_unique<BloomPass>();
         mPasses->lensFlare = std::make_unique<LensFlarePass>();
     }
+    mPasses->tonemap.prepare(mSettings.tonemapping, mSettings.colorGrading);
     loadMask();
     warnAboutTier(mCaps, mSettings.quality);
 }
@@ -146,6 +147,7 @@ Pipeline::~Pipeline() = default;
 
 void Pipeline::setSettings(const Settings& settings) {
     mSettings = settings;
+    mPasses->tonemap.prepare(mSettings.tonemapping, mSettings.colorGrading);
     loadMask();
     warnAboutTier(mCaps, mSettings.quality);
 }

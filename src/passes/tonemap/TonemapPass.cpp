@@ -13,12 +13,34 @@ constexpr const char* kFragment = "passes/tonemap/tonemap.frag.glsl";
 } // namespace
 
 TonemapPass::TonemapPass()
-    : mDisplayProgram{makeGraphicsProgram(kVertex, kFragment, bindingDefines()),
-                      makeGraphicsProgram(kVertex, kFragment, bindingDefines({{"BLOOM", "1"}}))}
-    , mSceneProgram{makeGraphicsProgram(kVertex, kFragment, bindingDefines({{"OUTPUT_SCENE", "1"}})),
-                    makeGraphicsProgram(kVertex, kFragment,
-                                        bindingDefines({{"OUTPUT_SCENE", "1"}, {"BLOOM", "1"}}))}
-    , mVao(VertexArray::create("fullscreen")) {}
+    : mVao(VertexArray::create("fullscreen")) {}
+
+const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool grade, bool scene) {
+    // The scene-referred output stops before the curve: one program serves every mode.
+    const int curve = scene ? 0 : int(mode);
+    const int key = curve * 8 + (bloom ? 4 : 0) + (grade ? 2 : 0) + (scene ? 1 : 0);
+    auto it = mPrograms.find(key);
+    if (it == mPrograms.end()) {
+        ShaderDefines defines{{"TONEMAP_MODE", std::to_string(curve)}};
+        if (bloom) {
+            defines.emplace_back("BLOOM", "1");
+        }
+        if (grade) {
+            defines.emplace_back("GRADE", "1");
+        }
+        if (scene) {
+            defines.emplace_back("OUTPUT_SCENE", "1");
+        }
+        it = mPrograms.emplace(key, makeGraphicsProgram(kVertex, kFragment, bindingDefines(defines))).first;
+    }
+    return it->second;
+}
+
+void TonemapPass::prepare(const ToneMappingSettings& tonemapping, const ColorGradingSettings& grading) {
+    for (const bool bloom : {false, true}) {
+        variant(tonemapping.mode, bloom, grading.enabled, false);
+    }
+}
 
 void TonemapPass::resize(Extent extent) {
     if (mDisplay.valid() && mDisplay.extent() == extent) {
@@ -31,21 +53,16 @@ void TonemapPass::resize(Extent extent) {
 }
 
 void TonemapPass::draw(const Program& program, const Inputs& in) {
-    setUniform(program, "uMode", int(in.tonemapping->mode));
     setUniform(program, "uWhitePoint", in.tonemapping->whitePoint);
     setUniform(program, "uAgxLook", int(in.tonemapping->agxLook));
     setUniform(program, "uDither", in.output->dither ? 1 : 0);
     glProgramUniform1ui(program.id(), glGetUniformLocation(program.id(), "uFrame"), GLuint(in.frameIndex));
     if (in.bloom) {
-        const Extent b = in.bloom->extent();
-        setUniform(program, "uBloomTexel", 1.0f / float(b.width), 1.0f / float(b.height));
         setUniform(program, "uBloomAdditive", in.bloomSettings->mode == BloomMode::Threshold ? 1 : 0);
         setUniform(program, "uBloomIntensity", in.bloomSettings->intensity);
         glBindTextureUnit(1, in.bloom->id());
     }
-    const bool grade = in.grading && in.grading->enabled;
-    setUniform(program, "uGrade", grade ? 1 : 0);
-    if (grade) {
+    if (in.grading && in.grading->enabled) {
         const ColorGradingSettings& g = *in.grading;
         const glm::mat3 wb = whiteBalanceMatrix(g.temperature, g.tint);
         glProgramUniformMatrix3fv(program.id(), glGetUniformLocation(program.id(), "uWhiteBalance"), 1,
@@ -73,7 +90,8 @@ const Texture& TonemapPass::execute(const Inputs& in) {
     }
     ScopedGpuTimer timer(in.timers, "composite + grade + tonemap", bytes);
     mDisplayFbo.bind();
-    draw(mDisplayProgram[in.bloom ? 1 : 0], in);
+    const bool grade = in.grading && in.grading->enabled;
+    draw(variant(in.tonemapping->mode, in.bloom != nullptr, grade, false), in);
     return mDisplay;
 }
 
@@ -85,7 +103,8 @@ const Texture& TonemapPass::renderScene(const Inputs& in) {
     }
     DebugGroup group("scene-referred output");
     mSceneFbo.bind();
-    draw(mSceneProgram[in.bloom ? 1 : 0], in);
+    const bool grade = in.grading && in.grading->enabled;
+    draw(variant(in.tonemapping->mode, in.bloom != nullptr, grade, true), in);
     return mScene;
 }
 
