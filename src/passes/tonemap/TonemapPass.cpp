@@ -5,6 +5,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+
 namespace photopic {
 
 namespace {
@@ -15,15 +17,18 @@ constexpr const char* kFragment = "passes/tonemap/tonemap.frag.glsl";
 TonemapPass::TonemapPass()
     : mVao(VertexArray::create("fullscreen")) {}
 
-const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool grade, bool scene) {
+const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene) {
     // The scene-referred output stops before the curve: one program serves every mode.
     const int curve = scene ? 0 : int(mode);
-    const int key = curve * 8 + (bloom ? 4 : 0) + (grade ? 2 : 0) + (scene ? 1 : 0);
+    const int key = curve * 16 + (glow ? 8 : 0) + (bloom ? 4 : 0) + (grade ? 2 : 0) + (scene ? 1 : 0);
     auto it = mPrograms.find(key);
     if (it == mPrograms.end()) {
         ShaderDefines defines{{"TONEMAP_MODE", std::to_string(curve)}};
         if (bloom) {
             defines.emplace_back("BLOOM", "1");
+        }
+        if (glow) {
+            defines.emplace_back("GLOW", "1");
         }
         if (grade) {
             defines.emplace_back("GRADE", "1");
@@ -36,9 +41,14 @@ const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool grade, boo
     return it->second;
 }
 
-void TonemapPass::prepare(const ToneMappingSettings& tonemapping, const ColorGradingSettings& grading) {
+void TonemapPass::prepare(const ToneMappingSettings& tonemapping, const ColorGradingSettings& grading,
+                          bool glow) {
+    if (glow) {
+        variant(tonemapping.mode, false, true, grading.enabled, false);
+        return;
+    }
     for (const bool bloom : {false, true}) {
-        variant(tonemapping.mode, bloom, grading.enabled, false);
+        variant(tonemapping.mode, bloom, false, grading.enabled, false);
     }
 }
 
@@ -61,6 +71,13 @@ void TonemapPass::draw(const Program& program, const Inputs& in) {
         setUniform(program, "uBloomAdditive", in.bloomSettings->mode == BloomMode::Threshold ? 1 : 0);
         setUniform(program, "uBloomIntensity", in.bloomSettings->intensity);
         glBindTextureUnit(1, in.bloom->id());
+    }
+    if (in.glow) {
+        const BloomSettings& b = *in.bloomSettings;
+        setUniform(program, "uGlowThreshold", b.mode == BloomMode::Threshold ? b.threshold : 1.0f);
+        setUniform(program, "uGlowIntensity", b.intensity);
+        // ~2% of the frame height, as wide as a mid level of the full chain; at least a few pixels.
+        setUniform(program, "uGlowRadius", std::max(4.0f, 0.02f * float(mDisplay.extent().height)));
     }
     if (in.grading && in.grading->enabled) {
         const ColorGradingSettings& g = *in.grading;
@@ -91,7 +108,7 @@ const Texture& TonemapPass::execute(const Inputs& in) {
     ScopedGpuTimer timer(in.timers, "composite + grade + tonemap", bytes);
     mDisplayFbo.bind();
     const bool grade = in.grading && in.grading->enabled;
-    draw(variant(in.tonemapping->mode, in.bloom != nullptr, grade, false), in);
+    draw(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, false), in);
     return mDisplay;
 }
 
@@ -104,7 +121,7 @@ const Texture& TonemapPass::renderScene(const Inputs& in) {
     DebugGroup group("scene-referred output");
     mSceneFbo.bind();
     const bool grade = in.grading && in.grading->enabled;
-    draw(variant(in.tonemapping->mode, in.bloom != nullptr, grade, true), in);
+    draw(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, true), in);
     return mScene;
 }
 

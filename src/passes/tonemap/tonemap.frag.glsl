@@ -6,7 +6,7 @@
 // (passes/tonemap/tonecurves.h.glsl mirrors core/ToneCurves.cpp), encodes sRGB, dithers by +-1 LSB (TPDF).
 // With OUTPUT_SCENE defined it stops before the curve and writes the graded scene-referred value (EXR output).
 // Variants are #defines, never uniform branches (TonemapPass.h: llvmpipe runs every case of a uniform switch):
-// TONEMAP_MODE (static_cast<int>(ToneMapper)), BLOOM, GRADE, OUTPUT_SCENE.
+// TONEMAP_MODE (static_cast<int>(ToneMapper)), BLOOM, GLOW (the legacy tier's glow), GRADE, OUTPUT_SCENE.
 #include "passes/common/color.h.glsl"
 #include "passes/common/exposure.h.glsl"
 #include "passes/common/noise.h.glsl"
@@ -26,6 +26,11 @@ uniform float uBloomIntensity;
 uniform mat3 uWhiteBalance;   // core/ColorGrading.cpp whiteBalanceMatrix
 uniform float uContrast;
 uniform float uSaturation;
+#ifdef GLOW
+uniform float uGlowThreshold; // exposed scene-linear: only what lies above glows
+uniform float uGlowIntensity; // additive gain
+uniform float uGlowRadius;    // px
+#endif
 uniform vec3 uLift;
 uniform vec3 uInvGamma;       // 1 / gamma, per channel
 uniform vec3 uGain;
@@ -40,6 +45,29 @@ layout(location = 0) out vec4 oColor;
 // on llvmpipe at 1920x1080 and only widened a glow that is smooth at this scale anyway.
 vec3 bloomAt(vec2 uv) {
     return textureLod(uBloom, uv, 0.0).rgb;
+}
+#endif
+
+#ifdef GLOW
+// The legacy tier's single cheap glow (seed 003: "a simplest glow without blur"): no mip chain and no extra
+// target, 12 bilinear taps of the exposed input's part above the threshold on two hexagonal rings (the outer
+// one at half weight, rotated 30 degrees), added to the pixel. A wide-radius approximation, not a blur.
+vec3 brightAt(vec2 p) {
+    vec3 c = sanitize(textureLod(uScene, p / vec2(textureSize(uScene, 0)), 0.0).rgb) * gExposure.exposure;
+    return max(c - vec3(uGlowThreshold), vec3(0.0));
+}
+
+vec3 glowAt(vec2 p) {
+    const vec2 kHex[6] = vec2[](vec2(1.0, 0.0), vec2(0.5, 0.8660254), vec2(-0.5, 0.8660254), vec2(-1.0, 0.0),
+                                vec2(-0.5, -0.8660254), vec2(0.5, -0.8660254));
+    vec3 s = vec3(0.0);
+    for (int i = 0; i < 6; ++i) {
+        vec2 inner = kHex[i] * (0.5 * uGlowRadius);
+        vec2 outer = vec2(kHex[i].x * 0.8660254 - kHex[i].y * 0.5, kHex[i].x * 0.5 + kHex[i].y * 0.8660254) *
+                     uGlowRadius;
+        s += brightAt(p + inner) + 0.5 * brightAt(p + outer);
+    }
+    return s * (1.0 / 9.0);
 }
 #endif
 
@@ -62,6 +90,9 @@ void main() {
 #ifdef BLOOM
     vec3 bloom = bloomAt(gl_FragCoord.xy / vec2(textureSize(uScene, 0)));
     c = uBloomAdditive != 0 ? c + uBloomIntensity * bloom : mix(c, bloom, uBloomIntensity);
+#endif
+#ifdef GLOW
+    c += uGlowIntensity * glowAt(gl_FragCoord.xy);
 #endif
 #ifdef GRADE
     c = grade(c);
