@@ -30,9 +30,13 @@ test: build
 	cmake --build build/example -j$(JOBS)
 	build/example/photopic_minimal
 
+# On Mesa llvmpipe a 1080p frame takes ~0.15 s, so the whole target runs in about a minute there; read the timer
+# query columns on a GPU and the --sync / wall+finish columns on llvmpipe (apps/cli/Bench.cpp explains why).
+BENCH_FRAMES ?= 60
 bench: build
 	@if [ -x build/release/bench/photopic_bench ]; then build/release/bench/photopic_bench; else echo "no benchmarks yet"; fi
-	build/release/photopic bench --size 1920x1080 --frames 60
+	build/release/photopic bench --size 1920x1080 --frames $(BENCH_FRAMES)
+	build/release/photopic bench --scene canvas --size 1920x1080 --frames $(BENCH_FRAMES)
 
 install: build
 	cmake --install build/release

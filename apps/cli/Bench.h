@@ -1,5 +1,6 @@
 #pragma once
-// `photopic bench`: per-pass GPU timings of the pipeline over N frames.
+// `photopic bench`: per-pass GPU timings of the pipeline over N frames; `--scene canvas`: the canvas scene's
+// tiled against full-screen shading.
 
 #include "Commands.h"
 
@@ -16,6 +17,10 @@ struct BenchOptions {
     std::filesystem::path json;     ///< also write the table here (atomically)
     SettingsSources settings;
     bool forceLdr = false;
+    /// Debug: glFinish() around every pass and report its wall time beside the timer query (stalls every
+    /// pass; for drivers whose timestamps miss deferred work, such as Mesa llvmpipe).
+    bool sync = false;
+    std::string scene; ///< "" (the pipeline on a synthetic or --input frame) or "canvas" (its shading paths)
 };
 
 int runBench(const BenchOptions& options);

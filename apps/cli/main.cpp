@@ -98,8 +98,10 @@ int main(int argc, char** argv) {
                    "the tabletop walk with exposure from a CPU probe under the token (seed 000, phase 1)");
 
     BenchOptions bench;
-    auto* benchCmd = app.add_subcommand("bench", "per-pass GPU timings (median ms, bytes moved, GB/s) over N "
-                                                 "frames of a synthetic HDR frame or --input FILE");
+    auto* benchCmd =
+        app.add_subcommand("bench", "per-pass GPU timings (median ms, bytes moved, GB/s) over N "
+                                    "frames of a synthetic HDR frame or --input FILE, or the canvas "
+                                    "scene's shading paths (--scene canvas)");
     benchCmd->add_option("--size", bench.size, "WxH of the synthetic frame")->capture_default_str();
     benchCmd->add_option("--frames", bench.frames, "timed frames after the warm-up")
         ->check(CLI::Range(1, 100000))
@@ -109,6 +111,12 @@ int main(int argc, char** argv) {
         ->check(CLI::ExistingFile);
     benchCmd->add_option("--json", bench.json, "also write the table as JSON to FILE (atomically)");
     benchCmd->add_flag("--force-ldr", bench.forceLdr, "run the LDR (RGBA8) path");
+    benchCmd->add_flag("--sync", bench.sync,
+                       "debug: glFinish() around every pass and report its wall time too (stalls each pass; "
+                       "for drivers whose timer queries miss deferred work, e.g. llvmpipe)");
+    benchCmd->add_option("--scene", bench.scene,
+                         "canvas: time the canvas scene's tiled and full-screen shading paths instead "
+                         "(--set canvas.KEY=VALUE, e.g. canvas.occupancy=0.3, the default)");
     addSettingsOptions(benchCmd, bench.settings);
 
     try {

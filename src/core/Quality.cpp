@@ -25,6 +25,7 @@ QualityTier qualityTier(Quality quality) noexcept {
     case Quality::Legacy:
         t.hdrPath = false;
         t.bloom = false;
+        t.glow = true; // seed 003: "bloom skipped or replaced by a simplest glow without blur"
         t.bloomMips = 0;
         t.lensFlare = false;
         t.chromaticAberration = false;

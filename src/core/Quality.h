@@ -11,8 +11,9 @@ struct QualityTier {
     bool bloom = true;         ///< the bloom chain runs (when bloom.enabled)
     int bloomFirstDivisor = 2; ///< level 0 of the chain is the image / this (2 or 4)
     int bloomMips = 6;         ///< levels when bloom.mipCount is 0
-    bool lensFlare = true;     ///< the lens flare runs (when lensFlare.enabled)
-    int lensFlareDivisor = 4;  ///< the flare buffer is the image / this
+    bool glow = false;        ///< LDR path: a single cheap glow in the uber pass instead (when bloom.enabled)
+    bool lensFlare = true;    ///< the lens flare runs (when lensFlare.enabled)
+    int lensFlareDivisor = 4; ///< the flare buffer is the image / this
     bool chromaticAberration = true;
     bool fxaa = true;
     bool grain = true;

@@ -21,6 +21,7 @@ void GpuTimers::beginFrame() {
     slot.used = 0;
     slot.names.clear();
     slot.bytes.clear();
+    slot.wallMs.clear();
     mOpen = true;
     // Opportunistically harvest older frames that have completed.
     for (auto& other : mSlots) {
@@ -35,6 +36,10 @@ void GpuTimers::begin(std::string_view name, double bytesMoved) {
         return;
     }
     Slot& slot = mSlots[std::size_t(mCurrent)];
+    if (mSynchronous) {
+        glFinish(); // the previous passes' deferred work lands before this pass's bracket opens
+        mWallStart = std::chrono::steady_clock::now();
+    }
     glQueryCounter(queryAt(slot.starts, slot.used).id(), GL_TIMESTAMP);
     slot.names.emplace_back(name);
     slot.bytes.push_back(bytesMoved);
@@ -46,6 +51,13 @@ void GpuTimers::end() {
     }
     Slot& slot = mSlots[std::size_t(mCurrent)];
     glQueryCounter(queryAt(slot.ends, slot.used).id(), GL_TIMESTAMP);
+    if (mSynchronous) {
+        glFinish();
+        slot.wallMs.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mWallStart).count());
+    } else {
+        slot.wallMs.push_back(-1);
+    }
     ++slot.used;
 }
 
@@ -77,8 +89,8 @@ bool GpuTimers::harvest(Slot& slot, bool wait) {
         GLuint64 t0 = 0, t1 = 0;
         glGetQueryObjectui64v(slot.starts[std::size_t(i)].id(), GL_QUERY_RESULT, &t0);
         glGetQueryObjectui64v(slot.ends[std::size_t(i)].id(), GL_QUERY_RESULT, &t1);
-        result.push_back(
-            {slot.names[std::size_t(i)], t1 > t0 ? double(t1 - t0) * 1e-6 : 0.0, slot.bytes[std::size_t(i)]});
+        result.push_back({slot.names[std::size_t(i)], t1 > t0 ? double(t1 - t0) * 1e-6 : 0.0,
+                          slot.bytes[std::size_t(i)], slot.wallMs[std::size_t(i)]});
     }
     slot.pending = false;
     if (slot.frame > mLatestFrame) {

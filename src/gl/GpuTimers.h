@@ -5,6 +5,7 @@
 #include "gl/Objects.h"
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@ struct PassTiming {
     std::string name;
     double gpuMs = 0;      ///< GPU time between the pass's start and end timestamps
     double bytesMoved = 0; ///< estimated bytes read + written by the pass (formats x sizes)
+    double wallMs = -1; ///< synchronous mode only: glFinish-bracketed wall time of the pass (-1: not taken)
 };
 
 class GpuTimers {
@@ -29,6 +31,13 @@ public:
     void end();
     void endFrame();
 
+    /// Debug/benchmark mode: every begin() and end() also calls glFinish() and reads a steady clock, so each
+    /// pass gets a wall time that holds all of its work and none of its predecessors'. Stalls every pass: a
+    /// measurement tool for drivers whose timestamps miss deferred work (Mesa llvmpipe runs a draw when its
+    /// scene is flushed, possibly after the pass's end timestamp), never for a frame loop.
+    void setSynchronous(bool synchronous) { mSynchronous = synchronous; }
+    [[nodiscard]] bool synchronous() const { return mSynchronous; }
+
     /// The most recent frame whose results have arrived (empty until one has).
     [[nodiscard]] const std::vector<PassTiming>& latest() const { return mLatest; }
     /// Frame number (0-based count of endFrame calls) `latest()` belongs to, or -1.
@@ -42,6 +51,7 @@ private:
         std::vector<Query> starts, ends;
         std::vector<std::string> names;
         std::vector<double> bytes;
+        std::vector<double> wallMs;
         int used = 0;
         std::int64_t frame = -1;
         bool pending = false;
@@ -53,6 +63,8 @@ private:
     int mCurrent = 0;
     std::int64_t mFrameCounter = 0;
     bool mOpen = false;
+    bool mSynchronous = false;
+    std::chrono::steady_clock::time_point mWallStart;
     std::vector<PassTiming> mLatest;
     std::int64_t mLatestFrame = -1;
     std::vector<std::vector<PassTiming>> mHarvested;

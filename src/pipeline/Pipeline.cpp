@@ -105,6 +105,7 @@ QualityTier effectiveTier(const Capabilities& caps, Quality quality) {
         const QualityTier legacy = qualityTier(Quality::Legacy);
         tier.hdrPath = false;
         tier.bloom = legacy.bloom;
+        tier.glow = legacy.glow;
         tier.lensFlare = legacy.lensFlare;
     }
     return tier;
@@ -112,9 +113,10 @@ QualityTier effectiveTier(const Capabilities& caps, Quality quality) {
 
 void warnAboutTier(const Capabilities& caps, Quality quality) {
     if (quality == Quality::Legacy && caps.path == ColorPath::Hdr) {
-        warnOnce("quality-legacy", "quality=legacy: running the LDR (RGBA8) path although the GPU renders "
-                                   "RGBA16F; bloom and lens flare are off and values above 1 clip before "
-                                   "tone mapping");
+        warnOnce("quality-legacy",
+                 "quality=legacy: running the LDR (RGBA8) path although the GPU renders "
+                 "RGBA16F; the bloom chain is replaced by a single cheap glow, lens flare is "
+                 "off and values above 1 clip before tone mapping");
     }
 }
 
@@ -138,6 +140,7 @@ Pipeline::Pipeline(const PipelineCreateInfo& info)
         mPasses->bloom = std::make_unique<BloomPass>();
         mPasses->lensFlare = std::make_unique<LensFlarePass>();
     }
+    mPasses->tonemap.prepare(mSettings.tonemapping, mSettings.colorGrading, legacyGlow());
     loadMask();
     warnAboutTier(mCaps, mSettings.quality);
 }
@@ -146,6 +149,7 @@ Pipeline::~Pipeline() = default;
 
 void Pipeline::setSettings(const Settings& settings) {
     mSettings = settings;
+    mPasses->tonemap.prepare(mSettings.tonemapping, mSettings.colorGrading, legacyGlow());
     loadMask();
     warnAboutTier(mCaps, mSettings.quality);
 }
@@ -269,6 +273,7 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
                                             .output = &mSettings.output,
                                             .bloom = bloom,
                                             .bloomSettings = &mSettings.bloom,
+                                            .glow = !hdr && legacyGlow(),
                                             .grading = &mSettings.colorGrading,
                                             .frameIndex = time.frameIndex,
                                             .timers = &mTimers};
@@ -358,9 +363,15 @@ const Texture& Pipeline::sceneReferred() {
                                          .output = &mSettings.output,
                                          .bloom = mLastBloom,
                                          .bloomSettings = &mSettings.bloom,
+                                         .glow = mLastBloom == nullptr && legacyGlow(),
                                          .grading = &mSettings.colorGrading,
                                          .frameIndex = mLastFrame,
                                          .timers = nullptr});
+}
+
+bool Pipeline::legacyGlow() const {
+    const QualityTier tier = effectiveTier(mCaps, mSettings.quality);
+    return !(tier.hdrPath && mPasses->sanitize) && tier.glow && mSettings.bloom.enabled;
 }
 
 PipelineStatus Pipeline::status() const {

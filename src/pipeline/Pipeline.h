@@ -21,7 +21,8 @@
 //           grain fused into one pass
 //   [x] 12. overlays (histogram)
 // Quality tiers (core/Quality.h) choose sizes and which steps run; `legacy`, and any GPU without RGBA16F
-// render targets, take the LDR path: steps 1, 6 and the lens flare are skipped.
+// render targets, take the LDR path: steps 1, 6 and the lens flare are skipped; with bloom.enabled, step 7
+// adds a single cheap glow of the input's bright parts instead of the bloom chain.
 
 #include "core/Image.h"
 #include "core/Settings.h"
@@ -135,6 +136,8 @@ private:
     struct Passes;
     void resize(Extent extent);
     void loadMask();
+    /// The LDR path's single cheap glow runs instead of the bloom chain (legacy tier, bloom.enabled).
+    [[nodiscard]] bool legacyGlow() const;
     void pollTelemetry();
     void keep(const ExposureTelemetry& record);
 

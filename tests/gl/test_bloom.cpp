@@ -177,4 +177,37 @@ TEST_F(GlTest, GradingMatchesCpuAndReachesTheExrOutput) {
     }
 }
 
+TEST_F(GlTest, LegacyTierGlowsAroundABrightDiscWithoutTheBloomChain) {
+    // Seed 003's legacy tier: no bloom chain, a single cheap glow of the bright parts. A disc of 20 on black:
+    // with bloom.enabled the pixels just outside it light up, evenly left/right/up/down; without, they stay
+    // 0.
+    const int size = 96;
+    const float radius = 6.0f;
+    const ImageF image = disc(size, radius, 20.0f);
+    Settings s;
+    s.quality = Quality::Legacy;
+    s.tonemapping.mode = ToneMapper::Linear;
+    s.output.dither = false;
+    s.bloom.mode = BloomMode::Threshold;
+    s.bloom.intensity = 0.5f;
+    Pipeline pipeline({.settings = s});
+    ASSERT_EQ(pipeline.status().path, ColorPath::Ldr);
+    const ImageF glow = sceneOf(pipeline, image);
+    const float c = 0.5f * float(size), r = radius + 2.0f; // the ring's inner taps reach 2 px past the edge
+    const float right = bilinear(glow, c + r, c, 1), left = bilinear(glow, c - r, c, 1);
+    const float up = bilinear(glow, c, c + r, 1), down = bilinear(glow, c, c - r, 1);
+    EXPECT_GT(right, 0.05f);
+    for (const float v : {left, up, down}) {
+        EXPECT_NEAR(v, right, 0.15f * right);
+    }
+    EXPECT_LT(bilinear(glow, 4.0f, 4.0f, 1), 1e-4f) << "the corner stays black";
+
+    s.bloom.enabled = false;
+    pipeline.setSettings(s);
+    const ImageF none = sceneOf(pipeline, image);
+    EXPECT_LT(bilinear(none, c + r, c, 1), 1e-4f) << "bloom.enabled=false turns the glow off";
+    const Image8 display = processImage(pipeline, image);
+    EXPECT_EQ(display.width, size);
+}
+
 } // namespace photopic::test

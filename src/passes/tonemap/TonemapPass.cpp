@@ -5,6 +5,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+
 namespace photopic {
 
 namespace {
@@ -13,12 +15,42 @@ constexpr const char* kFragment = "passes/tonemap/tonemap.frag.glsl";
 } // namespace
 
 TonemapPass::TonemapPass()
-    : mDisplayProgram{makeGraphicsProgram(kVertex, kFragment, bindingDefines()),
-                      makeGraphicsProgram(kVertex, kFragment, bindingDefines({{"BLOOM", "1"}}))}
-    , mSceneProgram{makeGraphicsProgram(kVertex, kFragment, bindingDefines({{"OUTPUT_SCENE", "1"}})),
-                    makeGraphicsProgram(kVertex, kFragment,
-                                        bindingDefines({{"OUTPUT_SCENE", "1"}, {"BLOOM", "1"}}))}
-    , mVao(VertexArray::create("fullscreen")) {}
+    : mVao(VertexArray::create("fullscreen")) {}
+
+const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene) {
+    // The scene-referred output stops before the curve: one program serves every mode.
+    const int curve = scene ? 0 : int(mode);
+    const int key = curve * 16 + (glow ? 8 : 0) + (bloom ? 4 : 0) + (grade ? 2 : 0) + (scene ? 1 : 0);
+    auto it = mPrograms.find(key);
+    if (it == mPrograms.end()) {
+        ShaderDefines defines{{"TONEMAP_MODE", std::to_string(curve)}};
+        if (bloom) {
+            defines.emplace_back("BLOOM", "1");
+        }
+        if (glow) {
+            defines.emplace_back("GLOW", "1");
+        }
+        if (grade) {
+            defines.emplace_back("GRADE", "1");
+        }
+        if (scene) {
+            defines.emplace_back("OUTPUT_SCENE", "1");
+        }
+        it = mPrograms.emplace(key, makeGraphicsProgram(kVertex, kFragment, bindingDefines(defines))).first;
+    }
+    return it->second;
+}
+
+void TonemapPass::prepare(const ToneMappingSettings& tonemapping, const ColorGradingSettings& grading,
+                          bool glow) {
+    if (glow) {
+        variant(tonemapping.mode, false, true, grading.enabled, false);
+        return;
+    }
+    for (const bool bloom : {false, true}) {
+        variant(tonemapping.mode, bloom, false, grading.enabled, false);
+    }
+}
 
 void TonemapPass::resize(Extent extent) {
     if (mDisplay.valid() && mDisplay.extent() == extent) {
@@ -31,21 +63,23 @@ void TonemapPass::resize(Extent extent) {
 }
 
 void TonemapPass::draw(const Program& program, const Inputs& in) {
-    setUniform(program, "uMode", int(in.tonemapping->mode));
     setUniform(program, "uWhitePoint", in.tonemapping->whitePoint);
     setUniform(program, "uAgxLook", int(in.tonemapping->agxLook));
     setUniform(program, "uDither", in.output->dither ? 1 : 0);
     glProgramUniform1ui(program.id(), glGetUniformLocation(program.id(), "uFrame"), GLuint(in.frameIndex));
     if (in.bloom) {
-        const Extent b = in.bloom->extent();
-        setUniform(program, "uBloomTexel", 1.0f / float(b.width), 1.0f / float(b.height));
         setUniform(program, "uBloomAdditive", in.bloomSettings->mode == BloomMode::Threshold ? 1 : 0);
         setUniform(program, "uBloomIntensity", in.bloomSettings->intensity);
         glBindTextureUnit(1, in.bloom->id());
     }
-    const bool grade = in.grading && in.grading->enabled;
-    setUniform(program, "uGrade", grade ? 1 : 0);
-    if (grade) {
+    if (in.glow) {
+        const BloomSettings& b = *in.bloomSettings;
+        setUniform(program, "uGlowThreshold", b.mode == BloomMode::Threshold ? b.threshold : 1.0f);
+        setUniform(program, "uGlowIntensity", b.intensity);
+        // ~2% of the frame height, as wide as a mid level of the full chain; at least a few pixels.
+        setUniform(program, "uGlowRadius", std::max(4.0f, 0.02f * float(mDisplay.extent().height)));
+    }
+    if (in.grading && in.grading->enabled) {
         const ColorGradingSettings& g = *in.grading;
         const glm::mat3 wb = whiteBalanceMatrix(g.temperature, g.tint);
         glProgramUniformMatrix3fv(program.id(), glGetUniformLocation(program.id(), "uWhiteBalance"), 1,
@@ -73,7 +107,8 @@ const Texture& TonemapPass::execute(const Inputs& in) {
     }
     ScopedGpuTimer timer(in.timers, "composite + grade + tonemap", bytes);
     mDisplayFbo.bind();
-    draw(mDisplayProgram[in.bloom ? 1 : 0], in);
+    const bool grade = in.grading && in.grading->enabled;
+    draw(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, false), in);
     return mDisplay;
 }
 
@@ -85,7 +120,8 @@ const Texture& TonemapPass::renderScene(const Inputs& in) {
     }
     DebugGroup group("scene-referred output");
     mSceneFbo.bind();
-    draw(mSceneProgram[in.bloom ? 1 : 0], in);
+    const bool grade = in.grading && in.grading->enabled;
+    draw(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, true), in);
     return mScene;
 }
 

@@ -5,6 +5,8 @@
 // "Bloom"), grades (core/ColorGrading.cpp is the CPU reference), applies the curve
 // (passes/tonemap/tonecurves.h.glsl mirrors core/ToneCurves.cpp), encodes sRGB, dithers by +-1 LSB (TPDF).
 // With OUTPUT_SCENE defined it stops before the curve and writes the graded scene-referred value (EXR output).
+// Variants are #defines, never uniform branches (TonemapPass.h: llvmpipe runs every case of a uniform switch):
+// TONEMAP_MODE (static_cast<int>(ToneMapper)), BLOOM, GLOW (the legacy tier's glow), GRADE, OUTPUT_SCENE.
 #include "passes/common/color.h.glsl"
 #include "passes/common/exposure.h.glsl"
 #include "passes/common/noise.h.glsl"
@@ -12,21 +14,23 @@
 #include "passes/tonemap/tonecurves.h.glsl"
 
 layout(binding = 0) uniform sampler2D uScene;
-uniform int uMode;
 uniform float uWhitePoint;
 uniform int uAgxLook;
 uniform int uDither;
 uniform uint uFrame;
 #ifdef BLOOM
 layout(binding = 1) uniform sampler2D uBloom;
-uniform vec2 uBloomTexel;     // 1 / bloom size
 uniform int uBloomAdditive;   // 0: mix(scene, bloom, intensity); 1: scene + intensity * bloom
 uniform float uBloomIntensity;
 #endif
-uniform int uGrade;
 uniform mat3 uWhiteBalance;   // core/ColorGrading.cpp whiteBalanceMatrix
 uniform float uContrast;
 uniform float uSaturation;
+#ifdef GLOW
+uniform float uGlowThreshold; // exposed scene-linear: only what lies above glows
+uniform float uGlowIntensity; // additive gain
+uniform float uGlowRadius;    // px
+#endif
 uniform vec3 uLift;
 uniform vec3 uInvGamma;       // 1 / gamma, per channel
 uniform vec3 uGain;
@@ -36,17 +40,34 @@ const float kMiddleGrey = 0.18; // core/ColorGrading.h kGradingMiddleGrey
 layout(location = 0) out vec4 oColor;
 
 #ifdef BLOOM
-// The bloom image is half or a quarter of the frame: a 3x3 tent (the chain's own upsample filter) brings it
-// up without the blockiness of one bilinear tap.
+// The bloom image is half or a quarter of the frame and already blurred by the chain's tent upsamples: one
+// bilinear tap brings it up. A 3x3 tent here (9 taps per full-resolution pixel) cost 86 of the pass's 135 ms
+// on llvmpipe at 1920x1080 and only widened a glow that is smooth at this scale anyway.
 vec3 bloomAt(vec2 uv) {
-    vec2 t = uBloomTexel;
-    vec3 s = textureLod(uBloom, uv, 0.0).rgb * 4.0;
-    s += (textureLod(uBloom, uv + vec2(-t.x, 0.0), 0.0).rgb + textureLod(uBloom, uv + vec2(t.x, 0.0), 0.0).rgb +
-          textureLod(uBloom, uv + vec2(0.0, -t.y), 0.0).rgb + textureLod(uBloom, uv + vec2(0.0, t.y), 0.0).rgb) *
-         2.0;
-    s += textureLod(uBloom, uv - t, 0.0).rgb + textureLod(uBloom, uv + t, 0.0).rgb +
-         textureLod(uBloom, uv + vec2(-t.x, t.y), 0.0).rgb + textureLod(uBloom, uv + vec2(t.x, -t.y), 0.0).rgb;
-    return s * (1.0 / 16.0);
+    return textureLod(uBloom, uv, 0.0).rgb;
+}
+#endif
+
+#ifdef GLOW
+// The legacy tier's single cheap glow (seed 003: "a simplest glow without blur"): no mip chain and no extra
+// target, 12 bilinear taps of the exposed input's part above the threshold on two hexagonal rings (the outer
+// one at half weight, rotated 30 degrees), added to the pixel. A wide-radius approximation, not a blur.
+vec3 brightAt(vec2 p) {
+    vec3 c = sanitize(textureLod(uScene, p / vec2(textureSize(uScene, 0)), 0.0).rgb) * gExposure.exposure;
+    return max(c - vec3(uGlowThreshold), vec3(0.0));
+}
+
+vec3 glowAt(vec2 p) {
+    const vec2 kHex[6] = vec2[](vec2(1.0, 0.0), vec2(0.5, 0.8660254), vec2(-0.5, 0.8660254), vec2(-1.0, 0.0),
+                                vec2(-0.5, -0.8660254), vec2(0.5, -0.8660254));
+    vec3 s = vec3(0.0);
+    for (int i = 0; i < 6; ++i) {
+        vec2 inner = kHex[i] * (0.5 * uGlowRadius);
+        vec2 outer = vec2(kHex[i].x * 0.8660254 - kHex[i].y * 0.5, kHex[i].x * 0.5 + kHex[i].y * 0.8660254) *
+                     uGlowRadius;
+        s += brightAt(p + inner) + 0.5 * brightAt(p + outer);
+    }
+    return s * (1.0 / 9.0);
 }
 #endif
 
@@ -70,13 +91,16 @@ void main() {
     vec3 bloom = bloomAt(gl_FragCoord.xy / vec2(textureSize(uScene, 0)));
     c = uBloomAdditive != 0 ? c + uBloomIntensity * bloom : mix(c, bloom, uBloomIntensity);
 #endif
-    if (uGrade != 0) {
-        c = grade(c);
-    }
+#ifdef GLOW
+    c += uGlowIntensity * glowAt(gl_FragCoord.xy);
+#endif
+#ifdef GRADE
+    c = grade(c);
+#endif
 #ifdef OUTPUT_SCENE
     oColor = vec4(c, 1.0);
 #else
-    vec3 display = srgbEncode(toneMap(uMode, c, uWhitePoint, uAgxLook));
+    vec3 display = srgbEncode(toneMap(TONEMAP_MODE, c, uWhitePoint, uAgxLook));
     if (uDither != 0) {
         display += vec3(triangularNoise(p, uFrame, 0u), triangularNoise(p, uFrame, 1u),
                         triangularNoise(p, uFrame, 2u)) * (1.0 / 255.0);
