@@ -217,19 +217,17 @@ void Pipeline::setSubjects(std::span<const Subject> subjects, glm::vec2 viewCent
 }
 
 void Pipeline::pollProbes() noexcept {
-    try {
-        for (const auto& r : mProbeRing.pollAll()) {
-            GpuProbeHeader header;
-            std::memcpy(&header, r.bytes.data(), sizeof(header));
-            const std::size_t count = std::min<std::size_t>(header.count, mPasses->probe.capacity());
-            for (std::size_t i = 0; i < count; ++i) {
-                GpuProbeEntry e;
-                std::memcpy(&e, r.bytes.data() + sizeof(header) + i * sizeof(GpuProbeEntry), sizeof(e));
-                mSubjects.recordProbe(e.id, e.luma, header.timeS);
-            }
+    const std::size_t capacity = mPasses->probe.capacity();
+    mProbeRing.pollEach([&](const ReadbackRing::Result& r) {
+        GpuProbeHeader header;
+        std::memcpy(&header, r.bytes.data(), sizeof(header));
+        const std::size_t count = std::min<std::size_t>(header.count, capacity);
+        for (std::size_t i = 0; i < count; ++i) {
+            GpuProbeEntry e;
+            std::memcpy(&e, r.bytes.data() + sizeof(header) + i * sizeof(GpuProbeEntry), sizeof(e));
+            mSubjects.recordProbe(e.id, e.luma, header.timeS);
         }
-    } catch (...) { // a failed poll loses probe results, never the frame
-    }
+    });
 }
 
 void Pipeline::loadMask() {
@@ -312,7 +310,8 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
     pollTelemetry(); // frees finished slots first
     mRing.enqueue(mTelemetryRecord, 0, time.frameIndex);
     // Contexts: target from each subject's probed luma, applied from the newest exposure that came back.
-    mSubjects.updateExposure(frameAe, mTelemetry.appliedLog2);
+    // The base settings: the tracker applies each subject's own outdoors coupling.
+    mSubjects.updateExposure(mSettings.autoExposure, mTelemetry.appliedLog2);
 
     // 6. bloom on exposed colour.
     const Texture* bloom = nullptr;

@@ -7,6 +7,7 @@
 #include "core/ExposureController.h"
 #include "core/Subjects.h"
 #include "core/TransitionAnalysis.h"
+#include "gl/ReadbackRing.h"
 #include "gl/TextureIo.h"
 #include "pipeline/Pipeline.h"
 #include "scenes/tabletop/TabletopScene.h"
@@ -15,6 +16,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 namespace photopic::test {
 
@@ -78,6 +80,26 @@ Subject subjectAt(std::uint32_t id, glm::vec2 uv, bool controlled = false) {
 }
 
 } // namespace
+
+TEST_F(GlTest, ReadbackRingPollEachVisitsFinishedSlotsOldestFirst) {
+    ReadbackRing ring(sizeof(std::uint32_t), 4, "test ring");
+    for (std::uint32_t v : {10u, 20u, 30u}) {
+        const Buffer source({.size = sizeof(v), .flags = 0, .data = &v, .debugName = "source"});
+        ASSERT_TRUE(ring.enqueue(source, 0, v / 10));
+    }
+    glFinish();
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> seen;
+    const int n = ring.pollEach([&](const ReadbackRing::Result& r) {
+        std::uint32_t value = 0;
+        std::memcpy(&value, r.bytes.data(), sizeof(value));
+        seen.emplace_back(r.tag, value);
+    });
+    EXPECT_EQ(n, 3);
+    const std::vector<std::pair<std::uint64_t, std::uint32_t>> expected{{1, 10}, {2, 20}, {3, 30}};
+    EXPECT_EQ(seen, expected);
+    EXPECT_EQ(ring.inFlight(), 0);
+    EXPECT_EQ(ring.pollEach([](const ReadbackRing::Result&) {}), 0);
+}
 
 TEST_F(GlTest, GpuProbeEqualsCoreProbeImage) {
     const ImageF image = patternImage(67, 41);
