@@ -1,5 +1,5 @@
 // `photopic demo`: every image in the data folder through three tone curves, as a labelled contact sheet.
-// (The tabletop scene replaces this as the main demo once it exists.)
+// `photopic demo --images`, the demo before the tabletop walk became the main one (TabletopDemo.cpp).
 
 #include "Commands.h"
 

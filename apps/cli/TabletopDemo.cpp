@@ -1,12 +1,10 @@
-// Phase 1 of the tabletop demo: exposure driven by a CPU probe under the player token (the GPU probe and
-// subject metering replace it after issue 3's merge). Seed 000's eye lag, made visible.
+// `photopic demo`: the tabletop walk through the GPU pipeline, exposure driven by `subject` metering (the
+// pipeline's probe under the player token). Seed 000's eye lag, made visible.
 
 #include "TabletopDemo.h"
 
 #include "Commands.h"
 
-#include "core/ExposureController.h"
-#include "core/Subjects.h"
 #include "gl/Context.h"
 #include "gl/TextureIo.h"
 #include "io/ImageIO.h"
@@ -16,8 +14,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 namespace photopic::cli {
@@ -58,7 +58,28 @@ std::vector<std::size_t> keyFrameIndices(const std::vector<Transition>& transiti
     return frames;
 }
 
+namespace {
+
+/// Mean of the display image's sRGB-encoded RGB (0..255): how bright the frame looks.
+double meanDisplay(const Image8& image) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+        sum += double(image.rgba[i]) + double(image.rgba[i + 1]) + double(image.rgba[i + 2]);
+    }
+    return image.rgba.empty() ? 0.0 : sum / (3.0 * double(image.rgba.size() / 4));
+}
+
+bool haveFfmpeg() {
+    return std::system("command -v ffmpeg > /dev/null 2>&1") == 0;
+}
+
+} // namespace
+
 int runTabletopWalk(const TabletopWalkOptions& options) {
+    const auto begin = std::chrono::steady_clock::now();
+    if (options.width < 16 || options.height < 16 || options.fps <= 0.0f || options.seconds <= 0.0f) {
+        throw InputError("demo: --size must be at least 16x16, --fps and --seconds positive");
+    }
     std::error_code ec;
     fs::create_directories(options.output, ec);
     if (ec) {
@@ -66,61 +87,43 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     }
     HeadlessContext context;
     TabletopScene scene;
-    Settings settings = scene.defaultSettings();
-    AutoExposureSettings ae = settings.autoExposure;
-    ae.enabled = true; // seed 000's defaults otherwise: key 0.18, -2..+2 EV, tauBrighten 1 s, tauDarken 0.3 s
-    Pipeline pipeline({.settings = settings});
+    const Settings settings = scene.defaultSettings(); // subject metering, seed 000's constants
+    const AutoExposureSettings& ae = settings.autoExposure;
+    Pipeline pipeline({.settings = settings, .keepTelemetryHistory = true});
     scene.resize({options.width, options.height});
-    SubjectTracker tracker(settings.subjects);
-    tracker.setOutdoorsMask(&scene.outdoorsMask());
-    ExposureController controller(ae);
 
     const float dt = 1.0f / options.fps;
     const int frames = std::max(1, int(std::lround(options.seconds * options.fps)));
-    std::vector<TelemetrySample> samples;
+    const int every = std::max(1, options.frameEvery);
+    const std::vector<std::string> sceneColumns = scene.telemetryColumns();
+    std::vector<std::vector<double>> sceneValues(static_cast<std::size_t>(frames));
     std::vector<Image8> displayFrames;
-    std::string csv = "frame,time_s";
-    for (const auto& c : scene.telemetryColumns()) {
-        csv += "," + c;
-    }
-    csv += ",measured_luma,target_log2,applied_log2,exposure\n";
-    std::vector<double> values;
+    displayFrames.reserve(std::size_t(frames));
     for (int i = 0; i < frames; ++i) {
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
-        const Texture& colour = scene.render(time, pipeline, values);
-        // Phase 1: a blocking read of the HDR frame for the CPU probe (the GPU probe makes this a 1-texel
-        // non-blocking readback).
-        const ImageF hdr = readTextureF(colour);
-        tracker.beginFrame(dt);
-        for (const Subject& s : scene.subjects()) {
-            tracker.addSubject(s);
-        }
-        for (const ProbeRequest& p : tracker.scheduleProbes()) {
-            tracker.recordProbe(
-                p.id,
-                probeImage(hdr, p.screenUv, settings.subjects.probe.taps, settings.subjects.probe.radius),
-                tracker.time());
-        }
-        const SubjectContext* subject = tracker.subjectContext();
-        const ExposureState& state = controller.update(subject ? subject->measuredLuma : 0.0f, dt);
-        tracker.updateExposure(ae, state.appliedLog2);
-        settings.tonemapping.exposure = state.appliedLog2;
-        pipeline.setSettings(settings);
+        // The scene registers its tokens with the pipeline; exposure follows the player on the GPU.
+        const Texture& colour = scene.render(time, pipeline, sceneValues[std::size_t(i)]);
         Image8 display = readTexture8(pipeline.execute({.color = &colour}, time));
-        writePng(options.output / fmt::format("frame_{:04d}.png", i), display);
-        displayFrames.push_back(std::move(display));
-        const float outdoors = subject ? subject->outdoors : 0.0f;
-        samples.push_back({float(i) * dt, subject ? subject->measuredLuma : 0.0f, state.targetLog2,
-                           state.appliedLog2, outdoors});
-        csv += fmt::format("{},{:.6f}", i, double(i) * double(dt));
-        for (double v : values) {
-            csv += fmt::format(",{:.6g}", v);
+        if (i % every == 0) {
+            writePng(options.output / fmt::format("frame_{:04d}.png", i / every), display);
         }
-        csv += fmt::format(",{:.6g},{:.6g},{:.6g},{:.6g}\n", double(samples.back().measuredLuma),
-                           double(state.targetLog2), double(state.appliedLog2), double(state.exposure));
+        displayFrames.push_back(std::move(display));
     }
-    writeTextFile(options.output / "telemetry.csv", csv);
+    const auto rendered = std::chrono::steady_clock::now();
+    const std::vector<ExposureTelemetry> rows = pipeline.drainTelemetry();
+    if (rows.size() != std::size_t(frames)) {
+        throw std::runtime_error(fmt::format("telemetry: {} of {} frames came back ({} dropped)", rows.size(),
+                                             frames, pipeline.droppedTelemetry()));
+    }
+    writeTextFile(options.output / "telemetry.csv", telemetryCsv(rows, dt, sceneColumns, sceneValues));
 
+    // The scene's columns: subject, world_x, world_y, screen_u, screen_v, outdoors.
+    std::vector<TelemetrySample> samples;
+    for (const ExposureTelemetry& t : rows) {
+        const auto& values = sceneValues[std::size_t(t.frame)];
+        samples.push_back({float(t.frame) * dt, t.frameLuminance, t.targetLog2, t.appliedLog2,
+                           values.size() > 5 ? float(values[5]) : 0.0f});
+    }
     const std::vector<Transition> transitions = analyzeTransitions(samples, ae);
     writePng(options.output / "exposure_plot.png", plotExposureTelemetry(samples, 960, 420));
     std::vector<std::pair<std::string, Image8>> tiles;
@@ -132,11 +135,35 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     if (!tiles.empty()) {
         writePng(options.output / "contact_sheet.png", makeContactSheet(tiles, 3, 320));
     }
-    std::printf("tabletop walk: %d frames at %dx%d, %.3g fps -> %s\n", frames, options.width, options.height,
-                double(options.fps), options.output.string().c_str());
+    std::string video = "demo.mp4 skipped (no ffmpeg command)";
+    if (options.video && haveFfmpeg()) {
+        const std::string command = fmt::format(
+            "ffmpeg -y -loglevel error -framerate {:.6g} -i '{}/frame_%04d.png' -pix_fmt yuv420p "
+            "-vf 'scale=trunc(iw/2)*2:trunc(ih/2)*2' '{}/demo.mp4'",
+            double(options.fps) / double(every), options.output.string(), options.output.string());
+        video = std::system(command.c_str()) == 0 ? "demo.mp4" : "demo.mp4 FAILED (ffmpeg returned an error)";
+    } else if (!options.video) {
+        video = "demo.mp4 skipped (--no-video)";
+    }
+    const auto end = std::chrono::steady_clock::now();
+
+    std::printf("tabletop walk: %d frames at %dx%d, %.3g fps, subject metering on the GPU -> %s\n", frames,
+                options.width, options.height, double(options.fps), options.output.string().c_str());
+    std::printf("  files: %d frame PNGs, telemetry.csv, exposure_plot.png, contact_sheet.png, %s\n",
+                (frames + every - 1) / every, video.c_str());
     for (const Transition& t : transitions) {
         std::printf("  %s\n", describeTransition(t).c_str());
+        if (t.settled) {
+            std::printf("    frame brightness (mean sRGB): %.1f at the start -> %.1f settled\n",
+                        meanDisplay(displayFrames[t.startIndex]), meanDisplay(displayFrames[t.settledIndex]));
+        }
     }
+    if (transitions.empty()) {
+        std::printf("  no indoor/outdoor crossing in %.3g s\n", double(options.seconds));
+    }
+    std::printf("  time: %.1f s rendering, %.1f s in all\n",
+                std::chrono::duration<double>(rendered - begin).count(),
+                std::chrono::duration<double>(end - begin).count());
     return kOk;
 }
 

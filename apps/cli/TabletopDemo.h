@@ -1,8 +1,7 @@
 #pragma once
-// The tabletop walk demo's pieces (seed 000): telemetry -> plot, key frames, transition summary; and a
-// phase-1 runner that drives exposure from a CPU probe under the token. After issue 3's GPU metering is
-// merged, the runner's CPU probe and ExposureController give way to the pipeline's subject metering and
-// `photopic demo` switches to the walk (DESIGN.md: the tabletop is the main demo).
+// `photopic demo` (DESIGN.md: the tabletop is the main demo; seed 000): the tabletop walk through the GPU
+// pipeline with `subject` metering -- the pipeline probes the tokens and exposure follows the light under the
+// player -- then telemetry -> plot, key frames, an MP4 when ffmpeg is there, and a summary per transition.
 
 #include "core/Image.h"
 #include "core/TransitionAnalysis.h"
@@ -23,15 +22,17 @@ namespace photopic::cli {
                                                        std::size_t frameCount);
 
 struct TabletopWalkOptions {
-    std::filesystem::path output = "out/demo-walk";
-    int width = 480;
-    int height = 270;
+    std::filesystem::path output = "out/demo";
+    int width = 320; ///< 320x180 at 30 fps for 22 s: well under two minutes on llvmpipe (2 cores)
+    int height = 180;
     float fps = 30.0f;
-    float seconds = 24.0f;
+    float seconds = 22.0f; ///< the walk crosses out at ~4 s and back in at ~12 s
+    int frameEvery = 1;    ///< write every Nth frame as PNG (the MP4 then runs at fps / N)
+    bool video = true;     ///< encode demo.mp4 when the ffmpeg command is present
 };
 
-/// Renders the walk with exposure driven on the CPU (probe under the token -> ExposureController -> manual
-/// exposure): frames, telemetry.csv, exposure_plot.png, contact_sheet.png, and a printed transition summary.
+/// Renders the walk through the pipeline (subject metering on the GPU): frame_NNNN.png, telemetry.csv,
+/// exposure_plot.png, contact_sheet.png, demo.mp4 (ffmpeg present) and a printed transition summary.
 int runTabletopWalk(const TabletopWalkOptions& options);
 
 } // namespace photopic::cli

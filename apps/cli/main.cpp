@@ -88,14 +88,26 @@ int main(int argc, char** argv) {
     sceneCmd->add_option("--motion", scene.motion, "canvas scene: device motion CSV (time_s,pitch,roll,yaw)");
     addSettingsOptions(sceneCmd, scene.settings);
 
-    std::filesystem::path demoOut = "out/demo";
+    TabletopWalkOptions walk;
     std::filesystem::path demoData = "../shared/data";
-    auto* demo = app.add_subcommand("demo", "the main demo: renders into out/demo (or -o DIR)");
-    demo->add_option("-o,--output", demoOut, "output folder");
-    demo->add_option("--data", demoData, "folder of HDR images (../shared/data)");
-    bool demoWalk = false;
-    demo->add_flag("--walk", demoWalk,
-                   "the tabletop walk with exposure from a CPU probe under the token (seed 000, phase 1)");
+    std::string demoSize = "320x180";
+    auto* demo = app.add_subcommand(
+        "demo", "the main demo: the tabletop walk (seed 000's eye adaptation) into out/demo (or -o DIR)");
+    demo->add_option("-o,--output", walk.output, "output folder");
+    demo->add_option("--size", demoSize, "WIDTHxHEIGHT")->capture_default_str();
+    demo->add_option("--fps", walk.fps, "frame rate")->check(CLI::Range(1.0f, 240.0f))->capture_default_str();
+    demo->add_option("--seconds", walk.seconds, "length of the walk")
+        ->check(CLI::Range(0.1f, 600.0f))
+        ->capture_default_str();
+    demo->add_option("--every", walk.frameEvery, "write every Nth frame as PNG")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    bool noVideo = false;
+    demo->add_flag("--no-video", noVideo, "do not encode demo.mp4 even when ffmpeg is present");
+    bool demoImages = false;
+    demo->add_flag("--images", demoImages,
+                   "the former demo instead: every HDR image in --data through three tone curves");
+    demo->add_option("--data", demoData, "folder of HDR images for --images (../shared/data)");
 
     BenchOptions bench;
     auto* benchCmd =
@@ -152,10 +164,14 @@ int main(int argc, char** argv) {
             return runBench(bench);
         }
         if (*demo) {
-            if (demoWalk) {
-                return runTabletopWalk({.output = demoOut});
+            if (demoImages) {
+                return runDemo(demoData, walk.output);
             }
-            return runDemo(demoData, demoOut);
+            const ParsedSize size = parseSize(demoSize);
+            walk.width = size.width;
+            walk.height = size.height;
+            walk.video = !noVideo;
+            return runTabletopWalk(walk);
         }
     } catch (const InputError& e) {
         std::fprintf(stderr, "photopic: %s\n", e.what());

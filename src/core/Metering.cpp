@@ -221,6 +221,10 @@ float meterImage(const ImageF& image, const AutoExposureSettings& settings, cons
             return meterAverage(image);
         }
         return meterMasked(image, *mask);
+    case MeteringMode::Subject:
+        // The subject's probe (core/Subjects.h probeImage, or the pipeline's probe pass) is the reading; an
+        // image alone has none, so exposure holds.
+        return 0.0f;
     }
     return 0.0f;
 }

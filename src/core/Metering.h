@@ -132,7 +132,8 @@ struct TexelCoord {
 [[nodiscard]] float meterMasked(const ImageF& image, const ImageF& mask) noexcept;
 
 /// The metered luminance for settings.metering; 0 means "no reading" (ExposureController keeps its state).
-/// Mask mode without a mask (null or empty) meters like `average` and warns once.
+/// Mask mode without a mask (null or empty) meters like `average` and warns once. Subject mode has no reading
+/// from an image alone (the subject probe is the reading: core/Subjects.h, passes/probe/).
 [[nodiscard]] float meterImage(const ImageF& image, const AutoExposureSettings& settings,
                                const ImageF* mask = nullptr) noexcept;
 

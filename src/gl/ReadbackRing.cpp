@@ -65,6 +65,16 @@ std::vector<ReadbackRing::Result> ReadbackRing::collect(bool wait, bool newestOn
     return out;
 }
 
+ReadbackRing::Slot* ReadbackRing::oldestFinished() noexcept {
+    Slot* oldest = nullptr;
+    for (auto& slot : mSlots) {
+        if (slot.busy && (!oldest || slot.order < oldest->order)) {
+            oldest = &slot;
+        }
+    }
+    return oldest && oldest->fence.signalled() ? oldest : nullptr;
+}
+
 std::optional<ReadbackRing::Result> ReadbackRing::pollNewest() {
     auto all = collect(false, true);
     if (all.empty()) {

@@ -34,6 +34,22 @@ public:
     std::optional<Result> pollNewest();
     /// Every finished slot not yet returned, oldest first (non-blocking). For consumers that need each frame.
     std::vector<Result> pollAll();
+    /// Hands every finished slot not yet returned to `visit(const Result&)`, oldest first, without allocating
+    /// (non-blocking; the bytes are valid during the call). Returns how many. For per-frame consumers that
+    /// must not allocate (the pipeline's subject probes).
+    template <class Visit>
+    int pollEach(Visit&& visit) {
+        if (mReadyOverride && !mReadyOverride()) {
+            return 0;
+        }
+        int n = 0;
+        while (Slot* slot = oldestFinished()) {
+            slot->busy = false;
+            visit(Result{slot->tag, {slot->mapped, mBytes}});
+            ++n;
+        }
+        return n;
+    }
     /// Blocks until every slot in flight has finished and returns them oldest first (end of an offline
     /// sequence).
     std::vector<Result> drain();
@@ -56,6 +72,8 @@ private:
         bool busy = false;
     };
     std::vector<Result> collect(bool wait, bool newestOnly);
+    /// The busy slot enqueued first, when its fence has signalled (fences signal in submission order).
+    Slot* oldestFinished() noexcept;
 
     std::vector<Slot> mSlots;
     std::size_t mBytes = 0;

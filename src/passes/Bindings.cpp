@@ -9,6 +9,8 @@ ShaderDefines bindingDefines(ShaderDefines extra) {
         {"BINDING_EXPOSURE_STATE", std::to_string(kBindingExposureState)},
         {"BINDING_HISTOGRAM", std::to_string(kBindingHistogram)},
         {"BINDING_METERING", std::to_string(kBindingMetering)},
+        {"BINDING_PROBE", std::to_string(kBindingProbe)},
+        {"BINDING_SUBJECT_STATE", std::to_string(kBindingSubjectState)},
     };
     defines.insert(defines.end(), extra.begin(), extra.end());
     return defines;

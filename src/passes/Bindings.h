@@ -12,6 +12,8 @@ namespace photopic {
 inline constexpr unsigned kBindingExposureState = 0; ///< SSBO: GpuExposureState
 inline constexpr unsigned kBindingHistogram = 1; ///< SSBO: 256 uint histogram bins (core/Metering.h binning)
 inline constexpr unsigned kBindingMetering = 2;  ///< SSBO: GpuMeteringHeader + per-workgroup partial sums
+inline constexpr unsigned kBindingProbe = 3; ///< SSBO: GpuProbeHeader + GpuProbeEntry[] (this frame's probes)
+inline constexpr unsigned kBindingSubjectState = 4; ///< SSBO: GpuSubjectState (persists across frames)
 
 /// std430 mirror of passes/common/exposure.h.glsl. The first six fields are core's ExposureState
 /// (core/ExposureController.h) in the same order; the rest is what the pipeline and its readers add.
@@ -66,6 +68,43 @@ struct GpuMeteringHeader {
 static_assert(sizeof(GpuMeteringHeader) == 32);
 static_assert(offsetof(GpuMeteringHeader, groups) == 8 && offsetof(GpuMeteringHeader, reading) == 16 &&
               offsetof(GpuMeteringHeader, weightSum) == 20);
+
+/// std430 mirror of the header of passes/probe/probe.comp.glsl's buffer; `GpuProbeEntry entries[]` follows
+/// it. The CPU writes the header and the entries' uv/id each frame; the probe dispatch fills `luma`; the
+/// buffer then goes whole into the probe readback ring.
+struct GpuProbeHeader {
+    std::uint32_t count = 0;      ///< entries probed this frame
+    std::int32_t taps = 5;        ///< 1, 5 or 9 (kProbeTaps)
+    float radius = 0.02f;         ///< image heights
+    std::int32_t selected = -1;   ///< entry of the subject of the view when it is probed this frame, else -1
+    std::int32_t active = 0;      ///< 1: there is a subject of the view (its kept luma is the reading)
+    std::uint32_t selectedId = 0; ///< id of the subject of the view
+    float deadbandEV = 0.05f;     ///< SubjectSettings probe.deadbandEV
+    float timeS = 0.0f;           ///< frame time of these probes (SubjectTracker::time()), for lastProbeAt
+};
+static_assert(sizeof(GpuProbeHeader) == 32);
+static_assert(offsetof(GpuProbeHeader, selected) == 12 && offsetof(GpuProbeHeader, selectedId) == 20 &&
+              offsetof(GpuProbeHeader, timeS) == 28);
+
+/// std430 mirror of one probe entry (passes/probe/probe.comp.glsl).
+struct GpuProbeEntry {
+    float u = 0.5f; ///< image UV, u right
+    float v = 0.5f; ///< image UV, v down
+    std::uint32_t id = 0;
+    float luma = 0; ///< written by the probe: mean Rec.709 luma of the taps (core probeImage)
+};
+static_assert(sizeof(GpuProbeEntry) == 16 && offsetof(GpuProbeEntry, id) == 8 &&
+              offsetof(GpuProbeEntry, luma) == 12);
+
+/// std430 mirror of passes/probe/probe.comp.glsl's persistent subject state: the luma `subject` metering
+/// reads, kept on the GPU between probes.
+struct GpuSubjectState {
+    float keptLuma = 0;       ///< the subject's luma after the deadband; 0: none yet
+    std::uint32_t keptId = 0; ///< whose it is
+    std::int32_t hasKept = 0; ///< 1: keptLuma belongs to keptId
+    std::uint32_t pad = 0;
+};
+static_assert(sizeof(GpuSubjectState) == 16 && offsetof(GpuSubjectState, hasKept) == 8);
 
 /// #defines every shader gets: the binding indices above.
 ShaderDefines bindingDefines(ShaderDefines extra = {});

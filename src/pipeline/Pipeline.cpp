@@ -12,9 +12,11 @@
 #include "passes/fxaa/FxaaPass.h"
 #include "passes/lensflare/LensFlarePass.h"
 #include "passes/metering/MeteringPass.h"
+#include "passes/probe/ProbePass.h"
 #include "passes/sanitize/SanitizePass.h"
 #include "passes/tonemap/TonemapPass.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -26,6 +28,9 @@ namespace {
 /// behind.
 constexpr int kTelemetrySlots = 16;
 constexpr std::size_t kTelemetryBytes = sizeof(GpuExposureState) + kGpuHistogramBytes;
+/// Probe readback slots: probes run at probe.hz, a few frames apart; a GPU a few frames behind never fills
+/// it.
+constexpr int kProbeSlots = 8;
 
 ExposureTelemetry decodeTelemetry(std::uint64_t frame, std::span<const std::byte> bytes) {
     GpuExposureState s;
@@ -65,6 +70,8 @@ MeteringPass::Weights meteringWeights(const AutoExposureSettings& ae, bool haveM
         return MeteringPass::Weights::Spot;
     case MeteringMode::Center:
         return MeteringPass::Weights::Center;
+    case MeteringMode::Subject:
+        return MeteringPass::Weights::None; // the probe pass writes the reading
     case MeteringMode::Mask:
         if (!haveMask) {
             try {
@@ -89,6 +96,7 @@ struct Pipeline::Passes {
     std::unique_ptr<LensFlarePass> lensFlare;
     // Both paths.
     MeteringPass metering;
+    ProbePass probe;
     ExposurePass exposure;
     TonemapPass tonemap;
     DebugViewPass debug;
@@ -142,6 +150,7 @@ Pipeline::Pipeline(const PipelineCreateInfo& info)
     }
     mPasses->tonemap.prepare(mSettings.tonemapping, mSettings.colorGrading, legacyGlow());
     loadMask();
+    configureSubjects();
     warnAboutTier(mCaps, mSettings.quality);
 }
 
@@ -151,7 +160,78 @@ void Pipeline::setSettings(const Settings& settings) {
     mSettings = settings;
     mPasses->tonemap.prepare(mSettings.tonemapping, mSettings.colorGrading, legacyGlow());
     loadMask();
+    configureSubjects();
     warnAboutTier(mCaps, mSettings.quality);
+}
+
+void Pipeline::configureSubjects() {
+    mSubjects.setSettings(mSettings.subjects);
+    mPending.resize(std::size_t(std::max(mSettings.subjects.maxSubjects, 1)));
+    mPendingCount = std::min(mPendingCount, mPending.size());
+    if (mPasses->probe.capacity() != mSubjects.capacity() || mProbeRing.slotCount() == 0) {
+        mPasses->probe.setCapacity(mSubjects.capacity());
+        mProbeRing = ReadbackRing(mPasses->probe.bytes(), kProbeSlots, "subject probes");
+    }
+}
+
+const AutoExposureSettings& Pipeline::runSubjects(const FrameInputs& inputs, const FrameTime& time,
+                                                  const Texture& scene, const Buffer& metering) {
+    const bool pending = inputs.subjects.empty();
+    mSubjects.beginFrame(time.dt, pending ? mPendingCentre : inputs.viewCentreWorld);
+    for (const Subject& s :
+         pending ? std::span<const Subject>(mPending.data(), mPendingCount) : inputs.subjects) {
+        mSubjects.addSubject(s);
+    }
+    mPendingCount = 0;
+    const std::span<const ProbeRequest> requests = mSubjects.scheduleProbes();
+    pollProbes(); // results of earlier frames into this frame's contexts (never waits)
+
+    const AutoExposureSettings& ae = mSettings.autoExposure;
+    const bool subjectMetering = ae.enabled && ae.metering == MeteringMode::Subject;
+    const SubjectContext* subject = mSubjects.subjectContext();
+    const SubjectSettings::Probe& p = mSettings.subjects.probe;
+    if (!requests.empty() || subjectMetering) {
+        mPasses->probe.execute({.scene = &scene,
+                                .requests = requests,
+                                .taps = p.taps,
+                                .radius = p.radius,
+                                .active = subject != nullptr,
+                                .selectedId = subject ? subject->id : 0u,
+                                .deadbandEV = p.deadbandEV,
+                                .timeS = mSubjects.time(),
+                                .metering = subjectMetering ? &metering : nullptr,
+                                .timers = &mTimers});
+        if (!requests.empty()) {
+            mProbeRing.enqueue(mPasses->probe.results(), 0, time.frameIndex);
+        }
+    }
+    // Outdoors coupling of the subject of the view (seed 000: tighter maxEV, faster adaptation outdoors); the
+    // copy reuses mCoupled's storage, so the frame does not allocate.
+    if (subjectMetering && subject && mSettings.subjects.outdoorsCoupling.enabled) {
+        mCoupled = outdoorsCoupledSettings(ae, mSettings.subjects.outdoorsCoupling, subject->outdoors);
+        return mCoupled;
+    }
+    return ae;
+}
+
+void Pipeline::setSubjects(std::span<const Subject> subjects, glm::vec2 viewCentreWorld) noexcept {
+    mPendingCount = std::min(subjects.size(), mPending.size());
+    std::copy_n(subjects.begin(), mPendingCount, mPending.begin());
+    mPendingCentre = viewCentreWorld;
+}
+
+void Pipeline::pollProbes() noexcept {
+    const std::size_t capacity = mPasses->probe.capacity();
+    mProbeRing.pollEach([&](const ReadbackRing::Result& r) {
+        GpuProbeHeader header;
+        std::memcpy(&header, r.bytes.data(), sizeof(header));
+        const std::size_t count = std::min<std::size_t>(header.count, capacity);
+        for (std::size_t i = 0; i < count; ++i) {
+            GpuProbeEntry e;
+            std::memcpy(&e, r.bytes.data() + sizeof(header) + i * sizeof(GpuProbeEntry), sizeof(e));
+            mSubjects.recordProbe(e.id, e.luma, header.timeS);
+        }
+    });
 }
 
 void Pipeline::loadMask() {
@@ -200,8 +280,8 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
         scene = &mPasses->sanitize->execute({.color = inputs.color, .timers = &mTimers});
     }
 
-    // 4. metering and adaptation, on the GPU. The histogram is built when exposure or a debug view needs it
-    // (seed 004: the histogram view works with auto exposure off).
+    // 4. metering, subject probes and adaptation, on the GPU. The histogram is built when exposure or a debug
+    // view needs it (seed 004: the histogram view works with auto exposure off).
     const bool histogram = (ae.enabled && ae.metering == MeteringMode::Histogram) ||
                            view == DebugView::Histogram ||
                            (view == DebugView::Metering && ae.metering == MeteringMode::Histogram);
@@ -212,10 +292,12 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
                                                                      .histogram = histogram,
                                                                      .weights = weights,
                                                                      .timers = &mTimers});
+    // The probes read the same sanitised image; with subject metering they write the reading.
+    const AutoExposureSettings& frameAe = runSubjects(inputs, time, *scene, *metered.metering);
     mPasses->exposure.execute({.histogram = metered.histogram,
                                .metering = metered.metering,
                                .exposureState = &mExposureState,
-                               .settings = &ae,
+                               .settings = &frameAe,
                                .metered = ae.enabled,
                                .histogramBuilt = histogram,
                                .reset = mResetExposure,
@@ -231,6 +313,9 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
                              GLsizeiptr(kGpuHistogramBytes));
     pollTelemetry(); // frees finished slots first
     mRing.enqueue(mTelemetryRecord, 0, time.frameIndex);
+    // Contexts: target from each subject's probed luma, applied from the newest exposure that came back.
+    // The base settings: the tracker applies each subject's own outdoors coupling.
+    mSubjects.updateExposure(mSettings.autoExposure, mTelemetry.appliedLog2);
 
     // 6. bloom on exposed colour.
     const Texture* bloom = nullptr;

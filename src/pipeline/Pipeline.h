@@ -7,7 +7,9 @@
 //   [x] 1. sanitise the host's colour (NaN, +-Inf, negatives -> 0; clamp below the half-float maximum)
 //   [ ] 2. scene-space effects (SSAO, contact shadows, SSR, volumetric light)
 //   [ ] 3. TAA
-//   [x] 4. metering and exposure adaptation (GPU-resident, same frame; with auto exposure off the adaptation
+//   [x] 4. subject probes (one dispatch for every scheduled subject; their results into a readback ring),
+//   then
+//          metering and exposure adaptation (GPU-resident, same frame; with auto exposure off the adaptation
 //          pass writes 2^manualEV to the same state; the state, histogram and min/max go into the readback
 //          ring)
 //   [ ] 5. depth of field, motion blur
@@ -25,7 +27,9 @@
 // adds a single cheap glow of the input's bright parts instead of the bloom chain.
 
 #include "core/Image.h"
+#include "core/OutdoorsMask.h"
 #include "core/Settings.h"
+#include "core/Subjects.h"
 #include "gl/Capabilities.h"
 #include "gl/GpuTimers.h"
 #include "gl/Objects.h"
@@ -36,6 +40,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -44,6 +49,11 @@ namespace photopic {
 /// What the host hands the pipeline each frame. Textures are the host's: adopted, never owned.
 struct FrameInputs {
     const Texture* color = nullptr; ///< scene-referred linear Rec.709 colour, any float format
+    /// This frame's subjects (seed 000), in the host's order; read during execute(), not kept. Empty: no
+    /// subject (subject metering holds exposure, or probes the screen centre with subjects.fallback =
+    /// center).
+    std::span<const Subject> subjects{};
+    glm::vec2 viewCentreWorld{0.0f}; ///< world position under the screen centre (the centre subject's)
 };
 
 /// Time comes from the caller, never from a wall clock (seed 000's TimeManager rule).
@@ -129,6 +139,31 @@ public:
     /// Test hook (seed 004): while `ready` returns false, finished readbacks stay in flight.
     void setTelemetryReadyOverride(std::function<bool()> ready) { mRing.setReadyOverride(std::move(ready)); }
 
+    // Subjects (seed 000's context API). Contexts are this frame's registrations with the newest probe
+    // results that have come back through the readback ring (a frame or more old; never waited on). The
+    // pointers are valid until the next execute() or setSettings().
+
+    /// Registers this frame's subjects for the next execute() (for hosts that prepare the pipeline before the
+    /// caller runs it, like scenes); copied into storage sized at set-up (subjects.maxSubjects), so it does
+    /// not allocate. FrameInputs::subjects, when not empty, takes precedence. Cleared by execute().
+    void setSubjects(std::span<const Subject> subjects, glm::vec2 viewCentreWorld = glm::vec2(0.0f)) noexcept;
+    /// Outdoors values for subjects that bring none (seed 000's roof mask). Not owned; nullptr clears it.
+    void setOutdoorsMask(const OutdoorsMask* mask) noexcept { mSubjects.setOutdoorsMask(mask); }
+    /// Seed 000's getContextForToken: nullptr when the id was not registered this frame.
+    [[nodiscard]] const SubjectContext* contextForSubject(std::uint32_t id) const noexcept {
+        return mSubjects.contextForSubject(id);
+    }
+    /// Seed 000's getSubjectContext: the subject of the view, nullptr when there is none.
+    [[nodiscard]] const SubjectContext* subjectContext() const noexcept { return mSubjects.subjectContext(); }
+    /// Seed 000's getOutdoorsAtWorld: the outdoors mask at a world position, 0 without a mask.
+    [[nodiscard]] float outdoorsAtWorld(float x, float y) const noexcept {
+        return mSubjects.outdoorsAtWorld(x, y);
+    }
+    /// The tracker behind the context API (selection, every context of this frame).
+    [[nodiscard]] const SubjectTracker& subjects() const { return mSubjects; }
+    /// Probe results dropped because every probe readback slot was in flight.
+    [[nodiscard]] std::uint64_t droppedProbes() const { return mProbeRing.dropped(); }
+
     /// The GPU exposure state buffer (GpuExposureState), for passes a host adds after the pipeline's.
     [[nodiscard]] const Buffer& exposureState() const { return mExposureState; }
 
@@ -140,6 +175,12 @@ private:
     [[nodiscard]] bool legacyGlow() const;
     void pollTelemetry();
     void keep(const ExposureTelemetry& record);
+    void pollProbes() noexcept;
+    /// Registers the frame's subjects, schedules and dispatches the probes; returns the auto exposure
+    /// settings for this frame (outdoors coupling of the subject of the view applied).
+    const AutoExposureSettings& runSubjects(const FrameInputs& inputs, const FrameTime& time,
+                                            const Texture& scene, const Buffer& metering);
+    void configureSubjects();
 
     Settings mSettings;
     Capabilities mCaps;
@@ -159,6 +200,12 @@ private:
     const Texture* mLastBloom = nullptr;
     int mBloomLevels = 0;
     std::uint64_t mLastFrame = 0;
+    SubjectTracker mSubjects;
+    ReadbackRing mProbeRing;
+    std::vector<Subject> mPending; ///< setSubjects(), capacity subjects.maxSubjects
+    std::size_t mPendingCount = 0;
+    glm::vec2 mPendingCentre{0.0f};
+    AutoExposureSettings mCoupled; ///< this frame's outdoors-coupled auto exposure (subject metering)
 };
 
 /// Convenience for offline use (CLI, tests, examples): one image through the pipeline, read back.

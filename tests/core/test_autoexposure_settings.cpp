@@ -49,7 +49,8 @@ TEST(AutoExposureSettings, DefaultsFollowTheOwnerDecisions) {
     EXPECT_EQ(s.spot.taps, 9);
     EXPECT_TRUE(s.compensationCurve.empty());
     EXPECT_TRUE(s.mask.path.empty());
-    EXPECT_EQ(meteringModeNames().size(), 5u);
+    EXPECT_EQ(meteringModeNames().size(), 6u);
+    EXPECT_EQ(meteringModeNames()[std::size_t(MeteringMode::Subject)], "subject");
     EXPECT_EQ(adaptationModeNames()[2], "hybrid");
 }
 

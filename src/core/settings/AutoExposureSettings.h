@@ -28,6 +28,8 @@ enum class MeteringMode {
     Spot,      ///< geometric mean of 1/5/9/13 taps on a disc (kSpotTaps in core/Metering.h)
     Center,    ///< geometric mean weighted by a Gaussian around the image centre (centerWeight)
     Mask,      ///< geometric mean weighted by a grey mask image
+    Subject,   ///< the probed luma under the subject of the view (seed 000; core/Subjects.h). No subject: no
+               ///< reading, exposure holds (or the screen centre with subjects.fallback = center)
 };
 
 /// How exposure follows its target (core/ExposureController.h implements each).
@@ -39,7 +41,8 @@ enum class AdaptationMode {
 
 /// JSON names, in enum order.
 inline std::span<const std::string_view> meteringModeNames() {
-    static constexpr std::array<std::string_view, 5> kNames{"average", "histogram", "spot", "center", "mask"};
+    static constexpr std::array<std::string_view, 6> kNames{"average", "histogram", "spot",
+                                                            "center",  "mask",      "subject"};
     return kNames;
 }
 inline std::span<const std::string_view> adaptationModeNames() {

@@ -17,6 +17,7 @@ const int kMeterHistogram = 1;
 const int kMeterSpot = 2;
 const int kMeterCenter = 3;
 const int kMeterMask = 4;
+const int kMeterSubject = 5; // the probe pass (passes/probe/) writes gReading
 
 // core: kSpotTaps (x right, y down, in spot radii).
 const vec2 kSpotTaps[13] = vec2[](vec2(0.0, 0.0), vec2(0.5, 0.0), vec2(-0.5, 0.0), vec2(0.0, 0.5), vec2(0.0, -0.5),

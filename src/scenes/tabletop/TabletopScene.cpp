@@ -134,9 +134,16 @@ TabletopScene::TabletopScene()
 Settings TabletopScene::defaultSettings() const {
     Settings s;
     s.tonemapping.mode = ToneMapper::AcesFitted;
-    // Seed 000's exposure defaults (key 0.18, x0.25..x4, tauBrighten 1 s, tauDarken 0.3 s) are already
-    // AutoExposureSettings' defaults. Once GPU subject metering lands (issue 3's metering + this issue's
-    // phase 2), this turns auto exposure on with metering = subject.
+    // Seed 000: the eye follows the light under the player token (subject metering on the GPU), key 0.18,
+    // x0.25..x4 (-2..+2 EV, DESIGN.md), tauBrighten 1 s, tauDarken 0.3 s.
+    s.autoExposure.enabled = true;
+    s.autoExposure.metering = MeteringMode::Subject;
+    s.autoExposure.adaptation = AdaptationMode::Exponential;
+    s.autoExposure.keyValue = 0.18f;
+    s.autoExposure.minEV = -2.0f;
+    s.autoExposure.maxEV = 2.0f;
+    s.autoExposure.tauBrighten = 1.0f;
+    s.autoExposure.tauDarken = 0.3f;
     s.subjects.probe.hz = 10.0f;
     s.subjects.probe.taps = 5;
     return s;
@@ -188,7 +195,8 @@ float TabletopScene::torchFlicker(int index, double seconds, float amplitude) {
     return float(1.0 + double(amplitude) * n);
 }
 
-const Texture& TabletopScene::render(const FrameTime& time, Pipeline&, std::vector<double>& telemetry) {
+const Texture& TabletopScene::render(const FrameTime& time, Pipeline& pipeline,
+                                     std::vector<double>& telemetry) {
     // Time is frameIndex * dt, never a clock: frame N is identical on every run.
     const double t = double(time.frameIndex) * double(time.dt);
     const Extent e = mColor.extent();
@@ -261,10 +269,15 @@ const Texture& TabletopScene::render(const FrameTime& time, Pipeline&, std::vect
     glDispatchCompute(GLuint((e.width + 7) / 8), GLuint((e.height + 7) / 8), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
+    // The tokens go to the pipeline (seed 000's subjects: it probes them and its `subject` metering follows
+    // the player); the roof mask answers "outdoors?" for them.
+    pipeline.setOutdoorsMask(&mMask);
+    pipeline.setSubjects(mSubjects, centre);
     const SubjectSelection sel = selectSubject(mSubjects, SubjectFallback::None);
     const Subject& s = mSubjects[sel.index];
-    telemetry = {double(s.id),         double(s.world.x),    double(s.world.y),
-                 double(s.screenUv.x), double(s.screenUv.y), double(mMask.atWorld(s.world.x, s.world.y))};
+    telemetry = {double(s.id),         double(s.world.x),
+                 double(s.world.y),    double(s.screenUv.x),
+                 double(s.screenUv.y), double(pipeline.outdoorsAtWorld(s.world.x, s.world.y))};
     return mColor;
 }
 

@@ -1,0 +1,105 @@
+// Subject probes (seed 000, "Brightness Measurement", phase 2's multi-tap probe): one invocation per subject
+// averages the Rec.709 luma at the first `taps` kProbeTaps around its screen UV. A line-for-line mirror of core's
+// probeImage and probeTapTexel (core/Subjects.cpp); the texture's rows run bottom-up (gl/TextureIo.h), so the
+// image pixel is flipped to its texel. For `subject` metering the invocation of the subject of the view also keeps
+// its luma behind the probe deadband (core: applyLumaDeadband) in a buffer that persists across frames, and the
+// reading the adaptation pass reads is that kept luma every frame: exposure keeps adapting between probes.
+#include "passes/common/color.h.glsl"
+#include "passes/common/sanitize.h.glsl"
+#include "passes/metering/metering.h.glsl"
+#include "passes/metering/metering_buffers.h.glsl"
+
+layout(local_size_x = 64) in;
+layout(binding = 0) uniform sampler2D uScene;
+
+uniform int uWriteReading; // 1: subject metering, write gReading
+
+struct ProbeEntry {
+    vec2 uv; // image UV, v down
+    uint id;
+    float luma;
+};
+
+// Mirrors photopic::GpuProbeHeader + GpuProbeEntry[] (passes/Bindings.h).
+layout(std430, binding = BINDING_PROBE) buffer ProbeBuffer {
+    uint gCount;
+    int gTaps;
+    float gRadius;
+    int gSelected; // entry of the subject of the view, -1 when it is not probed this frame
+    int gActive;   // 1: there is a subject of the view
+    uint gSelectedId;
+    float gDeadbandEV;
+    float gTimeS;
+    ProbeEntry gEntries[];
+};
+
+// Mirrors photopic::GpuSubjectState.
+layout(std430, binding = BINDING_SUBJECT_STATE) buffer SubjectStateBuffer {
+    float gKeptLuma;
+    uint gKeptId;
+    int gHasKept;
+    uint gStatePad;
+};
+
+// core: kProbeTaps (image heights of probe.radius, x right, y down).
+const vec2 kProbeTaps[9] = vec2[](vec2(0.0, 0.0), vec2(0.5, 0.0), vec2(-0.5, 0.0), vec2(0.0, 0.5), vec2(0.0, -0.5),
+                                  vec2(0.5, 0.5), vec2(-0.5, 0.5), vec2(0.5, -0.5), vec2(-0.5, -0.5));
+
+// core: probeTapTexel, as an image pixel (x right, y down).
+ivec2 probeTapPixel(vec2 uv, int tap, float radius, ivec2 size) {
+    vec2 o = kProbeTaps[clamp(tap, 0, 8)];
+    float rp = radius * float(size.y);
+    float px = uv.x * float(size.x) + o.x * rp;
+    float py = uv.y * float(size.y) + o.y * rp;
+    return ivec2(clamp(int(floor(px)), 0, size.x - 1), clamp(int(floor(py)), 0, size.y - 1));
+}
+
+// core: probeImage (arithmetic mean; sanitised luma is finite and non-negative).
+float probe(vec2 uv) {
+    if (isnan(uv.x) || isnan(uv.y)) {
+        return 0.0;
+    }
+    ivec2 size = textureSize(uScene, 0);
+    int n = clamp(gTaps, 1, 9);
+    float sum = 0.0;
+    for (int t = 0; t < n; ++t) {
+        ivec2 pixel = probeTapPixel(uv, t, gRadius, size);
+        sum += luma709(sanitize(texelFetch(uScene, texelOfImagePixel(pixel, size), 0).rgb));
+    }
+    return sum / float(n);
+}
+
+// core: applyLumaDeadband, with the kept value reset when the subject of the view changes.
+void keep(float measured) {
+    if (!isMeterable(measured)) {
+        return;
+    }
+    if (gHasKept == 0 || gKeptId != gSelectedId || !isMeterable(gKeptLuma) ||
+        abs(log2(measured) - log2(gKeptLuma)) > gDeadbandEV) {
+        gKeptLuma = measured;
+    }
+    gKeptId = gSelectedId;
+    gHasKept = 1;
+}
+
+float keptReading() {
+    return gActive != 0 && gHasKept != 0 && gKeptId == gSelectedId ? gKeptLuma : 0.0;
+}
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i < gCount) {
+        float luma = probe(gEntries[i].uv);
+        gEntries[i].luma = luma;
+        if (int(i) == gSelected) {
+            keep(luma);
+            if (uWriteReading != 0) {
+                gReading = keptReading();
+            }
+        }
+    }
+    // No probe of the subject this frame: its last kept luma (0 without a subject: exposure holds).
+    if (i == 0u && gSelected < 0 && uWriteReading != 0) {
+        gReading = keptReading();
+    }
+}
