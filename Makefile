@@ -16,7 +16,7 @@ build: deps
 	cmake --build --preset release -j$(JOBS)
 
 demo: build
-	build/release/photopic demo --data $(DATA) -o out/demo
+	build/release/photopic demo -o out/demo
 
 test: build
 	cd build/release && ctest $(CTEST_FLAGS)
