@@ -1,7 +1,6 @@
 # Photopic: every entry point installs missing Debian packages first (scripts/deps.sh), then configures with
 # CMakePresets.json and builds. The release CLI is build/release/photopic.
 JOBS ?= $(shell nproc)
-DATA ?= ../shared/data
 CTEST_FLAGS ?= --output-on-failure -j$(JOBS)
 
 .PHONY: all deps build demo test bench install clean format
