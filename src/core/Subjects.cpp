@@ -39,18 +39,16 @@ SubjectSelection selectSubject(std::span<const Subject> subjects, SubjectFallbac
 }
 
 TexelCoord probeTapTexel(glm::vec2 uv, int tap, float radius, int width, int height) noexcept {
-    const auto& o = kProbeTaps[std::size_t(std::clamp(tap, 0, int(kProbeTaps.size()) - 1))];
-    const float rp = radius * float(height);
-    const float px = uv.x * float(width) + o[0] * rp;
-    const float py = uv.y * float(height) + o[1] * rp;
-    return {std::clamp(int(std::floor(px)), 0, width - 1), std::clamp(int(std::floor(py)), 0, height - 1)};
+    const AutoExposureSettings::SpotMetering disc{
+        .u = uv.x, .v = uv.y, .radius = radius, .taps = kProbeTapCount};
+    return spotTapTexel(disc, std::clamp(tap, 0, kProbeTapCount - 1), width, height);
 }
 
 float probeImage(const ImageF& image, glm::vec2 uv, int taps, float radius) noexcept {
     if (image.empty() || std::isnan(uv.x) || std::isnan(uv.y)) {
         return 0.0f;
     }
-    const int n = std::clamp(taps, 1, int(kProbeTaps.size()));
+    const int n = std::clamp(taps, 1, kProbeTapCount);
     double sum = 0.0;
     for (int t = 0; t < n; ++t) {
         const TexelCoord c = probeTapTexel(uv, t, radius, image.width, image.height);

@@ -60,25 +60,14 @@ struct SubjectSelection {
 // ---------------------------------------------------------------------------------------------------------------
 // The probe: the light under a subject.
 
-/// Probe taps in units of probe.radius (image heights on both axes), x right and y down; `taps = n` uses the
-/// first n: 1 = centre, 5 = plus at 0.5, 9 = 3x3 grid of spacing 0.5. Equal weights. The same pattern as the
-/// first nine spot-metering taps (kSpotTaps) so both read the same disc.
-/// GLSL: `const vec2 kProbeTaps[9] = vec2[](vec2(0, 0), vec2(0.5, 0), vec2(-0.5, 0), vec2(0, 0.5),
-///        vec2(0, -0.5), vec2(0.5, 0.5), vec2(-0.5, 0.5), vec2(0.5, -0.5), vec2(-0.5, -0.5));`
-inline constexpr std::array<std::array<float, 2>, 9> kProbeTaps{{
-    {0.0f, 0.0f},
-    {0.5f, 0.0f},
-    {-0.5f, 0.0f},
-    {0.0f, 0.5f},
-    {0.0f, -0.5f},
-    {0.5f, 0.5f},
-    {-0.5f, 0.5f},
-    {0.5f, -0.5f},
-    {-0.5f, -0.5f},
-}};
+/// Probe taps: the first nine spot-metering taps (kSpotTaps, in units of probe.radius, image heights on both
+/// axes, x right and y down), so a probe and a spot meter read the same disc; `taps = n` uses the first n:
+/// 1 = centre, 5 = plus at 0.5, 9 = 3x3 grid of spacing 0.5. Equal weights.
+inline constexpr int kProbeTapCount = 9;
+static_assert(kProbeTapCount <= int(kSpotTaps.size()));
 
 /// Texel of probe tap `tap` (nearest, clamped to the image), as spotTapTexel:
-///   rp = radius * H;  px = uv.x * W + kProbeTaps[tap].x * rp;  py = uv.y * H + kProbeTaps[tap].y * rp
+///   rp = radius * H;  px = uv.x * W + kSpotTaps[tap].x * rp;  py = uv.y * H + kSpotTaps[tap].y * rp
 ///   x = clamp(int(floor(px)), 0, W - 1);  y = clamp(int(floor(py)), 0, H - 1)
 [[nodiscard]] TexelCoord probeTapTexel(glm::vec2 uv, int tap, float radius, int width, int height) noexcept;
 

@@ -236,10 +236,19 @@ void setGrey(ImageF& image, int x, int y, float v) {
     p[0] = p[1] = p[2] = v;
 }
 
-TEST(Probe, TapTableMatchesSpotMeteringTaps) {
-    for (std::size_t i = 0; i < kProbeTaps.size(); ++i) {
-        EXPECT_EQ(kProbeTaps[i], kSpotTaps[i]) << i;
+TEST(Probe, ProbeTapsAreTheFirstNineSpotTapsAndClampThere) {
+    const AutoExposureSettings::SpotMetering disc{.u = 0.3f, .v = 0.6f, .radius = 0.25f, .taps = 13};
+    for (int tap = 0; tap < kProbeTapCount; ++tap) {
+        const TexelCoord probe = probeTapTexel({0.3f, 0.6f}, tap, 0.25f, 64, 48);
+        const TexelCoord spot = spotTapTexel(disc, tap, 64, 48);
+        EXPECT_EQ(probe.x, spot.x) << tap;
+        EXPECT_EQ(probe.y, spot.y) << tap;
     }
+    // The probe shader's table has nine entries: tap 12 (a spot rim tap) must read tap 8, not the rim.
+    const TexelCoord beyond = probeTapTexel({0.3f, 0.6f}, 12, 0.25f, 64, 48);
+    const TexelCoord last = spotTapTexel(disc, 8, 64, 48);
+    EXPECT_EQ(beyond.x, last.x);
+    EXPECT_EQ(beyond.y, last.y);
 }
 
 TEST(Probe, TapTexelsFollowTheRadiusInImageHeights) {

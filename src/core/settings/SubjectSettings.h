@@ -29,9 +29,9 @@ inline std::span<const std::string_view> subjectFallbackNames() {
 struct SubjectSettings {
     /// The light probe under each subject.
     struct Probe {
-        float hz = 10.0f;     ///< 1/s, [0.1, 240], default 10 (seed 000): probes per second of frame time
-        int taps = 5;         ///< 1, 5 or 9, default 5: kProbeTaps used (centre, plus, 3x3), averaged
-        float radius = 0.02f; ///< image heights, [0, 0.5], default 0.02: distance of the outer taps
+        float hz = 10.0f; ///< 1/s, [0.1, 240], default 10 (seed 000): probes per second of frame time
+        int taps = 5;     ///< 1, 5 or 9, default 5: the first taps of kSpotTaps (centre, plus, 3x3), averaged
+        float radius = 0.02f;           ///< image heights, [0, 0.5], default 0.02: distance of the outer taps
         bool freezeWhileMoving = false; ///< default off: skip probes while the subject moves, force one when
                                         ///< it stops (a walking token over torch pools does not pump)
         float moveThreshold = 20.0f;    ///< world units/s, [0, 1e6], default 20: "moving" above this speed

@@ -41,7 +41,7 @@ layout(std430, binding = BINDING_SUBJECT_STATE) buffer SubjectStateBuffer {
     uint gStatePad;
 };
 
-// core: kProbeTaps (image heights of probe.radius, x right, y down).
+// core: the first nine kSpotTaps (probeTapTexel; image heights of probe.radius, x right, y down).
 const vec2 kProbeTaps[9] = vec2[](vec2(0.0, 0.0), vec2(0.5, 0.0), vec2(-0.5, 0.0), vec2(0.0, 0.5), vec2(0.0, -0.5),
                                   vec2(0.5, 0.5), vec2(-0.5, 0.5), vec2(0.5, -0.5), vec2(-0.5, -0.5));
 
