@@ -2,16 +2,15 @@
 // The orchestrator: owns the passes and the frame's resources and runs them in the frame order below. It
 // sequences; pass logic lives in src/passes/<name>/.
 //
-// Frame order (DESIGN.md, normative). Implemented steps are marked [x]; the rest arrive with their issues.
+// Frame order (DESIGN.md, normative). Implemented steps are marked [x]; steps 2, 3 and 5 need depth, motion
+// vectors and a camera from the host (3D scenes) and are not built yet.
 //   HDR domain (scene-referred, linear, RGBA16F):
 //   [x] 1. sanitise the host's colour (NaN, +-Inf, negatives -> 0; clamp below the half-float maximum)
 //   [ ] 2. scene-space effects (SSAO, contact shadows, SSR, volumetric light)
 //   [ ] 3. TAA
-//   [x] 4. subject probes (one dispatch for every scheduled subject; their results into a readback ring),
-//   then
+//   [x] 4. subject probes (one dispatch for every scheduled subject; results into a readback ring), then
 //          metering and exposure adaptation (GPU-resident, same frame; with auto exposure off the adaptation
-//          pass writes 2^manualEV to the same state; the state, histogram and min/max go into the readback
-//          ring)
+//          pass writes 2^manualEV to the same state; state, histogram and min/max go into the readback ring)
 //   [ ] 5. depth of field, motion blur
 //   [x] 6. bloom on exposed colour (prefilter + Karis, 13-tap downsample chain, tent upsample chain)
 //   [x] 7. composite: colour x exposure + bloom; colour grading in HDR   } one "uber" pass with step 9
