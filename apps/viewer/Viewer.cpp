@@ -86,7 +86,8 @@ struct UiState {
 
 void row(const char* name, const std::string& value) {
     ImGui::TextUnformatted(name);
-    ImGui::SameLine(170.0f);
+    // Long names (the fused composite pass) push their value right rather than overlap it.
+    ImGui::SameLine(std::max(150.0f, ImGui::CalcTextSize(name).x + 16.0f));
     ImGui::TextUnformatted(value.c_str());
 }
 
@@ -158,7 +159,8 @@ void telemetryPanel(Pipeline& pipeline, float dt) {
     const ExposureTelemetry& t = pipeline.telemetry();
     const PipelineStatus status = pipeline.status();
     row("frame dt", fmt::format("{:.1f} ms", dt * 1000.0f));
-    row("path", fmt::format("{} ({})", status.path == ColorPath::Hdr ? "HDR" : "LDR", status.pathReason));
+    row("path", status.path == ColorPath::Hdr ? "HDR" : "LDR");
+    ImGui::TextWrapped("(%s)", status.pathReason.c_str());
     row("quality", std::string(qualityNames()[std::size_t(status.quality)]));
     if (!t.valid) {
         ImGui::TextDisabled("exposure telemetry not back yet");
@@ -189,8 +191,9 @@ void saveSettings(const Settings& settings, const std::filesystem::path& path, U
 
 void drawPanels(Pipeline& pipeline, const ViewerOptions& options, UiState& ui) {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(300, ImGui::GetIO().DisplaySize.y - 16), ImGuiCond_FirstUseEver);
     ImGui::Begin("Photopic");
+    ImGui::PushItemWidth(150.0f);
     bool changed = false;
     ImGui::SetNextItemOpen(true, ImGuiCond_FirstUseEver);
     if (ImGui::CollapsingHeader("Dynamic Exposure")) {
@@ -226,6 +229,7 @@ void drawPanels(Pipeline& pipeline, const ViewerOptions& options, UiState& ui) {
     for (const std::string& p : ui.problems) {
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "not applied: %s", p.c_str());
     }
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 
