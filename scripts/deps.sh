@@ -8,7 +8,7 @@ packages=(
     libepoxy-dev libegl-dev libgl1-mesa-dri libegl-mesa0
     libopenexr-dev libpng-dev libstb-dev
     nlohmann-json3-dev libcli11-dev libfmt-dev libglm-dev
-    libglfw3-dev libimgui-dev
+    libglfw3-dev libimgui-dev xvfb xauth
     libgtest-dev libgmock-dev libbenchmark-dev
 )
 

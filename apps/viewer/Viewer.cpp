@@ -1,0 +1,392 @@
+#include "Viewer.h"
+
+#include "SettingsEditor.h"
+
+#include "core/settings/SettingsJson.h"
+#include "gl/Gl.h"
+#include "gl/Objects.h"
+#include "io/ImageIO.h"
+#include "pipeline/Pipeline.h"
+#include "scenes/Scene.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <fmt/format.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+namespace photopic::viewer {
+namespace {
+
+constexpr const char* kNoDisplay =
+    "photopic-view needs a display; run under xvfb-run or use `photopic scene`";
+/// A stall (window drag, a slow first frame on llvmpipe) must not read as a long step of eye adaptation.
+constexpr float kMaxDt = 0.1f;
+constexpr float kMinDt = 1.0f / 1000.0f;
+
+std::string gGlfwError;
+
+void onGlfwError(int code, const char* text) {
+    gGlfwError = fmt::format("GLFW error 0x{:x}: {}", code, text ? text : "");
+}
+
+/// glfwInit/glfwTerminate as a scope, so every exit path below releases the display connection.
+struct GlfwSession {
+    GlfwSession() {
+        glfwSetErrorCallback(onGlfwError);
+        if (glfwInit() != GLFW_TRUE) {
+            throw DisplayError(fmt::format("{} ({})", kNoDisplay, gGlfwError));
+        }
+    }
+    ~GlfwSession() { glfwTerminate(); }
+    GlfwSession(const GlfwSession&) = delete;
+    GlfwSession& operator=(const GlfwSession&) = delete;
+};
+
+struct WindowDeleter {
+    void operator()(GLFWwindow* w) const { glfwDestroyWindow(w); }
+};
+using WindowPtr = std::unique_ptr<GLFWwindow, WindowDeleter>;
+
+/// Dear ImGui's context and its GLFW + OpenGL3 backends (both built into Debian's libimgui.a).
+struct ImGuiSession {
+    explicit ImGuiSession(GLFWwindow* window) {
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        ImGui::GetIO().IniFilename =
+            nullptr; // panel layout is part of the program, not state left in the cwd
+        ImGui::StyleColorsDark();
+        ImGui::GetStyle().Alpha = 0.92f;
+        ImGui_ImplGlfw_InitForOpenGL(window, true);
+        ImGui_ImplOpenGL3_Init("#version 450 core");
+    }
+    ~ImGuiSession() {
+        ImGui_ImplOpenGL3_Shutdown();
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+    }
+    ImGuiSession(const ImGuiSession&) = delete;
+    ImGuiSession& operator=(const ImGuiSession&) = delete;
+};
+
+/// The part of the frame the panels read and write; the Pipeline itself is only touched through setSettings.
+struct UiState {
+    Settings edited;                   ///< what the widgets show; applied when it has no problems
+    std::vector<std::string> problems; ///< why `edited` is not applied yet
+    std::string message;               ///< last Save / Reset result
+    float dt = 0.0f;
+};
+
+void row(const char* name, const std::string& value) {
+    ImGui::TextUnformatted(name);
+    // Long names (the fused composite pass) push their value right rather than overlap it.
+    ImGui::SameLine(std::max(150.0f, ImGui::CalcTextSize(name).x + 16.0f));
+    ImGui::TextUnformatted(value.c_str());
+}
+
+bool evSlider(const char* label, float& ev) {
+    // Shown as EV with the multiplier beside it: seed 000 states the bounds as multipliers (0.25 .. 4).
+    const std::string format = fmt::format("%.2f EV (x{:.3g})", std::exp2(ev));
+    return ImGui::SliderFloat(label, &ev, -8.0f, 8.0f, format.c_str(), ImGuiSliderFlags_AlwaysClamp);
+}
+
+/// Seed 000's "Dynamic Exposure" folder: the adaptation bounds and timing.
+bool dynamicExposurePanel(Settings& s) {
+    bool changed = false;
+    AutoExposureSettings& ae = s.autoExposure;
+    changed |= ImGui::Checkbox("enabled", &ae.enabled);
+    if (evSlider("minExposure", ae.minEV)) {
+        ae.maxEV = std::max(ae.maxEV, ae.minEV); // keep minEV <= maxEV while dragging, as the settings demand
+        changed = true;
+    }
+    if (evSlider("maxExposure", ae.maxEV)) {
+        ae.minEV = std::min(ae.minEV, ae.maxEV);
+        changed = true;
+    }
+    changed |= ImGui::SliderFloat("probeHz", &s.subjects.probe.hz, 0.1f, 240.0f, "%.3g Hz",
+                                  ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::SliderFloat("tauBrighten", &ae.tauBrighten, 0.001f, 30.0f, "%.3g s",
+                                  ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::SliderFloat("tauDarken", &ae.tauDarken, 0.001f, 30.0f, "%.3g s",
+                                  ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    return changed;
+}
+
+const char* sourceName(SubjectSource source) {
+    switch (source) {
+    case SubjectSource::Controlled:
+        return "controlled";
+    case SubjectSource::OwnCharacter:
+        return "own character";
+    case SubjectSource::Center:
+        return "screen centre";
+    case SubjectSource::None:
+        break;
+    }
+    return "none";
+}
+
+/// Seed 000's "Debug (Selected Token)": read from the context API, which never waits on the GPU (probe
+/// results are a frame or more old), so drawing it cannot stall the frame.
+void debugPanel(const Pipeline& pipeline) {
+    const SubjectTracker& tracker = pipeline.subjects();
+    const SubjectContext* c = pipeline.subjectContext();
+    row("selection", sourceName(tracker.selection().source));
+    if (!c) {
+        ImGui::TextDisabled("no subject this frame");
+        return;
+    }
+    row("subjectTokenId", fmt::format("{}", c->id));
+    row("measuredLuma", fmt::format("{:.4f}", c->measuredLuma));
+    row("outdoors", fmt::format("{:.3f}", c->outdoors));
+    row("targetExposure", fmt::format("x{:.3f} ({:+.2f} EV)", std::exp2(c->targetLog2), c->targetLog2));
+    row("appliedExposure", fmt::format("x{:.3f} ({:+.2f} EV)", std::exp2(c->appliedLog2), c->appliedLog2));
+    row("screenUv.u", fmt::format("{:.3f}", c->screenUv.x));
+    row("screenUv.v", fmt::format("{:.3f}", c->screenUv.y));
+    row("lastProbeAgeSeconds", c->lastProbeAt < 0.0f
+                                   ? std::string("never")
+                                   : fmt::format("{:.3f}", tracker.time() - c->lastProbeAt));
+}
+
+void telemetryPanel(Pipeline& pipeline, float dt) {
+    const ExposureTelemetry& t = pipeline.telemetry();
+    const PipelineStatus status = pipeline.status();
+    row("frame dt", fmt::format("{:.1f} ms", dt * 1000.0f));
+    row("path", status.path == ColorPath::Hdr ? "HDR" : "LDR");
+    ImGui::TextWrapped("(%s)", status.pathReason.c_str());
+    row("quality", std::string(qualityNames()[std::size_t(status.quality)]));
+    if (!t.valid) {
+        ImGui::TextDisabled("exposure telemetry not back yet");
+    } else {
+        row("telemetry frame", fmt::format("{}", t.frame));
+        row("metered luminance", fmt::format("{:.4f}", t.meteredLuminance));
+        row("target / applied", fmt::format("{:+.2f} / {:+.2f} EV", t.targetLog2, t.appliedLog2));
+        row("exposure", fmt::format("x{:.3f}{}", t.exposure, t.adapting ? " (adapting)" : ""));
+    }
+    double total = 0.0;
+    for (const PassTiming& p : status.passes) {
+        row(p.name.c_str(), fmt::format("{:.3f} ms", p.gpuMs));
+        total += p.gpuMs;
+    }
+    if (!status.passes.empty()) {
+        row("total GPU", fmt::format("{:.3f} ms", total));
+    }
+}
+
+void saveSettings(const Settings& settings, const std::filesystem::path& path, UiState& ui) {
+    try {
+        writeTextFile(path, settingsToJson(settings));
+        ui.message = "saved " + path.string();
+    } catch (const std::exception& e) {
+        ui.message = e.what();
+    }
+}
+
+void drawPanels(Pipeline& pipeline, const ViewerOptions& options, UiState& ui) {
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(300, ImGui::GetIO().DisplaySize.y - 16), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Photopic");
+    ImGui::PushItemWidth(150.0f);
+    bool changed = false;
+    ImGui::SetNextItemOpen(true, ImGuiCond_FirstUseEver);
+    if (ImGui::CollapsingHeader("Dynamic Exposure")) {
+        changed |= dynamicExposurePanel(ui.edited);
+    }
+    ImGui::SetNextItemOpen(true, ImGuiCond_FirstUseEver);
+    if (ImGui::CollapsingHeader("Debug (Selected Token)")) {
+        debugPanel(pipeline);
+    }
+    if (ImGui::CollapsingHeader("Exposure telemetry and status")) {
+        telemetryPanel(pipeline, ui.dt);
+    }
+    if (ImGui::CollapsingHeader("All settings")) {
+        changed |= editSettings(ui.edited);
+    }
+    if (ImGui::Button("Save JSON")) {
+        saveSettings(pipeline.settings(), options.save, ui);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Reset exposure")) {
+        pipeline.resetExposure();
+        ui.message = "exposure reset";
+    }
+    if (!ui.message.empty()) {
+        ImGui::TextWrapped("%s", ui.message.c_str());
+    }
+    if (changed) {
+        ui.problems = settingsProblems(ui.edited);
+        if (ui.problems.empty()) {
+            pipeline.setSettings(ui.edited);
+        }
+    }
+    for (const std::string& p : ui.problems) {
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "not applied: %s", p.c_str());
+    }
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+
+/// The letterboxed rectangle of the window that shows a `src` image at its aspect ratio.
+std::array<int, 4> fitRect(Extent src, int w, int h) {
+    const float scale = std::min(float(w) / float(src.width), float(h) / float(src.height));
+    const int dw = std::max(1, int(std::lround(float(src.width) * scale)));
+    const int dh = std::max(1, int(std::lround(float(src.height) * scale)));
+    const int x = (w - dw) / 2, y = (h - dh) / 2;
+    return {x, y, x + dw, y + dh};
+}
+
+Image8 readBackBuffer(int width, int height) {
+    Image8 image(width, height);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    // GL's row 0 is the bottom; PNG's is the top.
+    const std::size_t stride = std::size_t(width) * 4;
+    for (int y = 0; y < height / 2; ++y) {
+        std::swap_ranges(image.rgba.begin() + std::ptrdiff_t(std::size_t(y) * stride),
+                         image.rgba.begin() + std::ptrdiff_t(std::size_t(y + 1) * stride),
+                         image.rgba.begin() + std::ptrdiff_t(std::size_t(height - 1 - y) * stride));
+    }
+    for (std::size_t i = 3; i < image.rgba.size(); i += 4) {
+        image.rgba[i] = 255; // the default framebuffer's alpha is whatever ImGui blended into it
+    }
+    return image;
+}
+
+} // namespace
+
+int run(const ViewerOptions& options) {
+    // Everything that needs no GL is checked before the display is opened: bad input exits 2 everywhere.
+    const auto& scenes = builtInScenes();
+    if (std::none_of(scenes.begin(), scenes.end(),
+                     [&](const SceneInfo& s) { return s.name == options.scene; })) {
+        std::string names;
+        for (const SceneInfo& s : scenes) {
+            names += (names.empty() ? "" : ", ") + s.name;
+        }
+        throw InputError(fmt::format("unknown scene '{}' (known: {})", options.scene, names));
+    }
+    const std::string prefix = options.scene + ".";
+    std::vector<std::string> sceneOverrides;
+    std::vector<std::string> postOverrides;
+    for (const std::string& o : options.overrides) {
+        (o.rfind(prefix, 0) == 0 ? sceneOverrides : postOverrides).push_back(o);
+    }
+    {
+        Settings probe;
+        for (const std::string& o : postOverrides) {
+            applySettingsOverride(probe, o);
+        }
+    }
+
+    GlfwSession glfw;
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    WindowPtr window(glfwCreateWindow(options.width, options.height, "photopic-view", nullptr, nullptr));
+    if (!window) {
+        throw DisplayError(fmt::format("{} (no OpenGL 4.5 core window: {})", kNoDisplay, gGlfwError));
+    }
+    glfwMakeContextCurrent(window.get());
+    // --frames runs as fast as it can (tests, screenshots); interactive use follows the display.
+    glfwSwapInterval(options.frames > 0 ? 0 : 1);
+
+    // From here on the window's context is current: the pipeline runs in the host's context.
+    std::unique_ptr<Scene> scene = makeScene(options.scene);
+    std::vector<SettingsIssue> sceneIssues;
+    for (const std::string& o : sceneOverrides) {
+        auto issues = scene->applyOverride(std::string_view(o).substr(prefix.size()));
+        sceneIssues.insert(sceneIssues.end(), issues.begin(), issues.end());
+    }
+    if (!sceneIssues.empty()) {
+        throw SettingsError("--set", std::move(sceneIssues));
+    }
+    Settings settings = scene->defaultSettings();
+    if (!options.settingsFile.empty()) {
+        settings = loadSettingsFile(options.settingsFile, std::move(settings));
+    }
+    for (const std::string& o : postOverrides) {
+        applySettingsOverride(settings, o);
+    }
+    const Extent renderSize{options.width, options.height};
+    try {
+        scene->resize(renderSize);
+    } catch (const SceneInputError& e) {
+        throw InputError(e.what());
+    }
+
+    Pipeline pipeline({.settings = settings});
+    ImGuiSession imgui(window.get());
+    UiState ui;
+    ui.edited = settings;
+    std::printf("photopic-view: %s at %dx%d, GL %s on %s\n", options.scene.c_str(), options.width,
+                options.height, reinterpret_cast<const char*>(glGetString(GL_VERSION)),
+                reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+
+    Framebuffer displayFbo;
+    GLuint displayFboTexture = 0;
+    std::vector<double> sceneTelemetry;
+    double last = glfwGetTime();
+    for (std::uint64_t frame = 0; !glfwWindowShouldClose(window.get()); ++frame) {
+        glfwPollEvents();
+        // The measured delta feeds FrameTime (the pipeline never reads a clock); --fixed-dt replaces it.
+        const double now = glfwGetTime();
+        ui.dt = options.fixedDt ? *options.fixedDt : std::clamp(float(now - last), kMinDt, kMaxDt);
+        last = now;
+        const FrameTime time{.dt = ui.dt, .frameIndex = frame};
+
+        sceneTelemetry.clear();
+        const Texture& colour = scene->render(time, pipeline, sceneTelemetry);
+        const Texture& display = pipeline.execute({.color = &colour}, time);
+
+        if (display.id() != displayFboTexture) {
+            displayFbo = Framebuffer(display, 0, "photopic-view display");
+            displayFboTexture = display.id();
+        }
+        int fbw = 0, fbh = 0;
+        glfwGetFramebufferSize(window.get(), &fbw, &fbh);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, fbw, fbh);
+        glDisable(GL_FRAMEBUFFER_SRGB); // the display texture already holds sRGB-encoded bytes
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        if (fbw > 0 && fbh > 0) {
+            const auto r = fitRect(display.extent(), fbw, fbh);
+            glBlitNamedFramebuffer(displayFbo.id(), 0, 0, 0, display.extent().width, display.extent().height,
+                                   r[0], r[1], r[2], r[3], GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        }
+
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        drawPanels(pipeline, options, ui);
+        ImGui::Render();
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+        const bool lastFrame = options.frames > 0 && frame + 1 >= std::uint64_t(options.frames);
+        if (lastFrame && !options.screenshot.empty()) {
+            writePng(options.screenshot, readBackBuffer(fbw, fbh));
+            std::printf("photopic-view: screenshot %s\n", options.screenshot.string().c_str());
+        }
+        glfwSwapBuffers(window.get());
+        if (lastFrame) {
+            break;
+        }
+    }
+    if (options.frames > 0 && options.saveGiven) {
+        writeTextFile(options.save, settingsToJson(pipeline.settings()));
+        std::printf("photopic-view: settings saved to %s\n", options.save.string().c_str());
+    }
+    return kOk;
+}
+
+} // namespace photopic::viewer

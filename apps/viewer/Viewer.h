@@ -1,0 +1,46 @@
+#pragma once
+// photopic-view: a built-in scene through the pipeline in a GLFW window, with Dear ImGui panels that tune
+// every setting live (DESIGN.md "apps/viewer"), seed 000's Dynamic Exposure controls and its read-only
+// debug readout of the selected subject.
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace photopic::viewer {
+
+enum ExitCode : int { kOk = 0, kFailure = 1, kBadInput = 2 };
+
+/// Bad command-line input (unknown scene, bad size, bad --set): exit 2.
+class InputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// No display, or no GL 4.5 core context on it: exit 1.
+class DisplayError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct ViewerOptions {
+    std::string scene = "tabletop";
+    std::filesystem::path settingsFile;
+    std::vector<std::string> overrides; ///< "key=value"; "SCENE.key=value" goes to the scene
+    int width = 1280;
+    int height = 720;
+    int frames = 0;                   ///< > 0: run that many frames, then exit
+    std::optional<float> fixedDt;     ///< seconds per frame; unset: the measured frame delta, clamped
+    std::filesystem::path screenshot; ///< with frames: the last window frame as PNG
+    std::filesystem::path save = "photopic_view.json";
+    bool saveGiven = false; ///< --save was named: with --frames, save on exit
+};
+
+/// Opens the window and runs until it is closed (or `frames` have run). Throws InputError, DisplayError,
+/// SettingsError.
+int run(const ViewerOptions& options);
+
+} // namespace photopic::viewer

@@ -1,0 +1,78 @@
+// photopic-view's command line: parses it, then hands over to the Viewer. Exit codes match photopic's:
+// 0 ok, 1 failure (no display included), 2 bad input.
+
+#include "Viewer.h"
+
+#include "core/settings/SettingsJson.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+
+namespace {
+
+using namespace photopic::viewer;
+
+void parseSize(const std::string& text, ViewerOptions& options) {
+    int w = 0, h = 0;
+    char x = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d", &w, &x, &h) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 ||
+        w > 16384 || h > 16384) {
+        throw InputError("size '" + text + "' is not WIDTHxHEIGHT with each in [1, 16384]");
+    }
+    options.width = w;
+    options.height = h;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"photopic-view: a built-in scene through the Photopic pipeline, every setting tunable live"};
+    ViewerOptions options;
+    std::string size = "1280x720";
+    float fixedDt = 0.0f;
+    app.add_option("--scene", options.scene, "built-in scene: tabletop, canvas or gradient")
+        ->capture_default_str();
+    app.add_option("--settings", options.settingsFile, "settings JSON applied over the scene's defaults")
+        ->check(CLI::ExistingFile);
+    app.add_option("--set", options.overrides, "override key=value (SCENE.key=value for the scene's own)");
+    app.add_option("--size", size, "render and initial window size WIDTHxHEIGHT")->capture_default_str();
+    app.add_option("--frames", options.frames, "run N frames, then exit")->check(CLI::Range(1, 1000000));
+    auto* dtOption = app.add_option("--fixed-dt", fixedDt, "seconds per frame instead of the measured delta")
+                         ->check(CLI::Range(0.0001f, 1.0f));
+    auto* saveOption =
+        app.add_option("--save", options.save, "where Save JSON writes (with --frames: also on exit)")
+            ->capture_default_str();
+    auto* shotOption =
+        app.add_option("--screenshot", options.screenshot, "with --frames: the last window frame as PNG");
+    try {
+        app.parse(argc, argv);
+        if (shotOption->count() > 0 && options.frames == 0) {
+            throw CLI::ValidationError("--screenshot", "needs --frames N");
+        }
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? kOk : kBadInput;
+    }
+    if (dtOption->count() > 0) {
+        options.fixedDt = fixedDt;
+    }
+    options.saveGiven = saveOption->count() > 0;
+
+    try {
+        parseSize(size, options);
+        return run(options);
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "photopic-view: %s\n", e.what());
+        return kBadInput;
+    } catch (const photopic::SettingsError& e) {
+        std::fprintf(stderr, "photopic-view: %s\n", e.what());
+        return kBadInput;
+    } catch (const DisplayError& e) {
+        std::fprintf(stderr, "photopic-view: %s\n", e.what());
+        return kFailure;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "photopic-view: %s\n", e.what());
+        return kFailure;
+    }
+}

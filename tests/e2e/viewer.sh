@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# photopic-view under Xvfb (GLX on Mesa llvmpipe): frames, screenshot of the window (scene + ImGui panels),
+# --save, bad input. scripts/deps.sh installs xvfb and xauth.
+source "$(dirname "$0")/lib.bash"
+S="$SCRATCH"
+VIEW="$(dirname "$PHOTOPIC")/photopic-view"
+
+if ! command -v xvfb-run > /dev/null; then
+    echo "FAIL: xvfb-run is missing; run scripts/deps.sh (installs xvfb and xauth)"
+    exit 1
+fi
+if [ ! -x "$VIEW" ]; then
+    echo "FAIL: $VIEW was not built (needs libglfw3-dev and libimgui-dev; run scripts/deps.sh)"
+    exit 1
+fi
+# Each run gets its own server (-a picks a free display number), so parallel ctest jobs do not collide.
+xrun() { xvfb-run -a -s "-screen 0 1280x800x24" "$@"; }
+
+expect 0 "tabletop, 90 frames, screenshot and save" -- xrun "$VIEW" --scene tabletop --frames 90 --size 640x360 \
+    --fixed-dt 0.0333 --screenshot "$S/view.png" --save "$S/view.json" --set autoExposure.tauDarken=0.5
+check "reports a GL 4.5 (or newer) context" contains "GL 4.5"
+check "screenshot written" test -s "$S/view.png"
+check "screenshot is 640x360 and not uniform" python3 - "$S/view.png" <<'PY'
+import struct, sys, zlib
+data = open(sys.argv[1], "rb").read()
+assert data[:8] == b"\x89PNG\r\n\x1a\n"
+pos, idat = 8, b""
+while pos < len(data):
+    n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+    body = data[pos + 8:pos + 8 + n]
+    if kind == b"IHDR":
+        w, h, depth, ctype = struct.unpack(">IIBB", body[:10])
+    elif kind == b"IDAT":
+        idat += body
+    pos += 12 + n
+assert (w, h, depth) == (640, 360, 8), (w, h, depth)
+bpp = {2: 3, 6: 4}[ctype]
+raw, stride, prev, rows = zlib.decompress(idat), w * bpp, bytearray(w * bpp), []
+for y in range(h):
+    f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+    for i in range(stride):
+        a = line[i - bpp] if i >= bpp else 0
+        b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+        p = a + b - c
+        pred = [0, a, b, (a + b) // 2, a if abs(p - a) <= abs(p - b) and abs(p - a) <= abs(p - c) else (b if abs(p - b) <= abs(p - c) else c)][f]
+        line[i] = (line[i] + pred) & 255
+    rows.append(bytes(line))
+    prev = line
+colours = {r[i:i + 3] for r in rows[::4] for i in range(0, stride, bpp * 4)}
+print(len(colours), "distinct colours")
+sys.exit(0 if len(colours) > 64 else 1)
+PY
+check "saved settings written" test -s "$S/view.json"
+expect 0 "saved settings pass photopic settings --check" -- "$PHOTOPIC" settings --check "$S/view.json"
+check "saved settings keep the --set value" grep -q '"tauDarken": 0.5' "$S/view.json"
+
+expect 2 "bad --set exits 2" -- xrun "$VIEW" --frames 1 --set autoExposure.tauDarken=-3
+check "names the bad key" contains "tauDarken"
+expect 2 "bad scene --set exits 2" -- xrun "$VIEW" --scene tabletop --frames 1 --set tabletop.nosuchkey=1
+expect 2 "unknown scene exits 2" -- xrun "$VIEW" --scene nosuch --frames 1
+expect 1 "no display exits 1" -- env -u DISPLAY -u WAYLAND_DISPLAY "$VIEW" --frames 1
+check "says it needs a display" contains "needs a display"
+
+finish
