@@ -41,18 +41,9 @@ layout(std430, binding = BINDING_SUBJECT_STATE) buffer SubjectStateBuffer {
     uint gStatePad;
 };
 
-// core: the first nine kSpotTaps (probeTapTexel; image heights of probe.radius, x right, y down).
-const vec2 kProbeTaps[9] = vec2[](vec2(0.0, 0.0), vec2(0.5, 0.0), vec2(-0.5, 0.0), vec2(0.0, 0.5), vec2(0.0, -0.5),
-                                  vec2(0.5, 0.5), vec2(-0.5, 0.5), vec2(0.5, -0.5), vec2(-0.5, -0.5));
-
-// core: probeTapTexel, as an image pixel (x right, y down).
-ivec2 probeTapPixel(vec2 uv, int tap, float radius, ivec2 size) {
-    vec2 o = kProbeTaps[clamp(tap, 0, 8)];
-    float rp = radius * float(size.y);
-    float px = uv.x * float(size.x) + o.x * rp;
-    float py = uv.y * float(size.y) + o.y * rp;
-    return ivec2(clamp(int(floor(px)), 0, size.x - 1), clamp(int(floor(py)), 0, size.y - 1));
-}
+// core: probeTapTexel = spotTapTexel over the first nine spot taps (kProbeTapCount), so a probe and a spot
+// meter read the same disc.
+const int kProbeTapCount = 9;
 
 // core: probeImage (arithmetic mean; sanitised luma is finite and non-negative).
 float probe(vec2 uv) {
@@ -60,10 +51,10 @@ float probe(vec2 uv) {
         return 0.0;
     }
     ivec2 size = textureSize(uScene, 0);
-    int n = clamp(gTaps, 1, 9);
+    int n = clamp(gTaps, 1, kProbeTapCount);
     float sum = 0.0;
     for (int t = 0; t < n; ++t) {
-        ivec2 pixel = probeTapPixel(uv, t, gRadius, size);
+        ivec2 pixel = spotTapPixel(uv, gRadius, t, size);
         sum += luma709(sanitize(texelFetch(uScene, texelOfImagePixel(pixel, size), 0).rgb));
     }
     return sum / float(n);
