@@ -32,7 +32,6 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
-#include <regex>
 
 namespace photopic::cli {
 
@@ -47,18 +46,6 @@ double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     const std::size_t n = v.size();
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-/// WxH with each side in [8, 16384].
-std::pair<int, int> parseBenchSize(const std::string& size) {
-    std::smatch m;
-    static const std::regex kSize(R"((\d{1,5})x(\d{1,5}))");
-    if (!std::regex_match(size, m, kSize) || std::stoi(m[1]) < 8 || std::stoi(m[2]) < 8 ||
-        std::stoi(m[1]) > 16384 || std::stoi(m[2]) > 16384) {
-        throw InputError(
-            fmt::format("--size {}: expected WxH with each side in [8, 16384], e.g. 1920x1080", size));
-    }
-    return {std::stoi(m[1]), std::stoi(m[2])};
 }
 
 bool isSoftwareRenderer(const std::string& renderer) {
@@ -129,7 +116,7 @@ int runCanvasBench(const BenchOptions& options) {
         throw InputError("bench --scene canvas renders its own canvas: --input and --force-ldr do not apply");
     }
     const CanvasSceneSettings cs = canvasBenchSettings(options.settings);
-    const auto [width, height] = parseBenchSize(options.size);
+    const auto [width, height] = parseSize(options.size, 8);
 
     HeadlessContext context;
     if (!detectCapabilities(false).timerQueries) {
@@ -289,7 +276,7 @@ int runBench(const BenchOptions& options) {
             throw InputError(e.what());
         }
     } else {
-        const auto [w, h] = parseBenchSize(options.size);
+        const auto [w, h] = parseSize(options.size, 8);
         image = makeSyntheticHdr(w, h);
     }
 

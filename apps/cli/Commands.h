@@ -53,12 +53,8 @@ struct SceneOptions {
     std::string motion;         ///< --motion FILE.csv: canvas scene only, = --set canvas.motion=FILE
 };
 
-/// "1920x1080" -> {1920, 1080}; throws InputError naming the text.
-struct ParsedSize {
-    int width;
-    int height;
-};
-ParsedSize parseSize(const std::string& text);
+/// "1920x1080" -> {1920, 1080} with each side in [minSide, 16384]; throws InputError naming the text.
+Extent parseSize(const std::string& text, int minSide = 1);
 
 /// Telemetry CSV: frame,time_s, then the scene's own columns (if any), then the exposure columns, whose first
 /// four are measured_luma,target_log2,applied_log2,exposure. One row per record; `sceneValues[frame]` holds

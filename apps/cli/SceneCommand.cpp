@@ -19,18 +19,17 @@ namespace photopic::cli {
 
 namespace fs = std::filesystem;
 
-ParsedSize parseSize(const std::string& text) {
-    int w = 0, h = 0;
-    char x = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d", &w, &x, &h) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 ||
-        w > 16384 || h > 16384) {
-        throw InputError(fmt::format("size '{}' is not WIDTHxHEIGHT with each in [1, 16384]", text));
+Extent parseSize(const std::string& text, int minSide) {
+    const std::optional<Extent> size = parseExtent(text, minSide);
+    if (!size) {
+        throw InputError(
+            fmt::format("size '{}' is not WIDTHxHEIGHT with each side in [{}, 16384]", text, minSide));
     }
-    return {w, h};
+    return *size;
 }
 
 int runScene(const SceneOptions& options) {
-    const ParsedSize size = parseSize(options.size);
+    const Extent size = parseSize(options.size);
     if (options.frames < 1) {
         throw InputError(fmt::format("--frames {} must be at least 1", options.frames));
     }
@@ -42,12 +41,6 @@ int runScene(const SceneOptions& options) {
         throw InputError(e.what());
     }
 
-    // Post settings: the scene's defaults, then --settings, the shorthands and every --set that is not the
-    // scene's.
-    SettingsSources post = options.settings;
-    post.overrides.clear();
-    std::vector<SettingsIssue> sceneIssues;
-    const std::string prefix = std::string(scene->name()) + ".";
     // The canvas scene's file flags are shorthands for its settings, applied before the --set overrides.
     std::vector<std::string> overrides;
     for (const auto& [flag, key, value] : {std::tuple{"--canvas", "colour", options.canvasColour},
@@ -62,21 +55,16 @@ int runScene(const SceneOptions& options) {
         }
     }
     overrides.insert(overrides.end(), options.settings.overrides.begin(), options.settings.overrides.end());
-    for (const auto& o : overrides) {
-        if (o.rfind(prefix, 0) == 0) {
-            auto issues = scene->applyOverride(std::string_view(o).substr(prefix.size()));
-            sceneIssues.insert(sceneIssues.end(), issues.begin(), issues.end());
-        } else {
-            post.overrides.push_back(o);
-        }
-    }
-    if (!sceneIssues.empty()) {
-        throw SettingsError("--set", std::move(sceneIssues));
-    }
+    const SplitOverrides split = splitSceneOverrides(scene->name(), overrides);
+    applySceneOverrides(*scene, split.scene);
+    // Post settings: the scene's defaults, then --settings, the shorthands and every --set that is not the
+    // scene's.
+    SettingsSources post = options.settings;
+    post.overrides = split.post;
     const Settings resolved = resolveSettings(post, scene->defaultSettings());
     // The scene reads its input files here, before any output exists: a bad one is bad input (exit 2).
     try {
-        scene->resize({size.width, size.height});
+        scene->resize(size);
     } catch (const SceneInputError& e) {
         throw InputError(e.what());
     }

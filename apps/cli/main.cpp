@@ -167,7 +167,7 @@ int main(int argc, char** argv) {
             if (demoImages) {
                 return runDemo(demoData, walk.output);
             }
-            const ParsedSize size = parseSize(demoSize);
+            const Extent size = parseSize(demoSize);
             walk.width = size.width;
             walk.height = size.height;
             walk.video = !noVideo;

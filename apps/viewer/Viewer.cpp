@@ -274,15 +274,10 @@ int run(const ViewerOptions& options) {
         }
         throw InputError(fmt::format("unknown scene '{}' (known: {})", options.scene, names));
     }
-    const std::string prefix = options.scene + ".";
-    std::vector<std::string> sceneOverrides;
-    std::vector<std::string> postOverrides;
-    for (const std::string& o : options.overrides) {
-        (o.rfind(prefix, 0) == 0 ? sceneOverrides : postOverrides).push_back(o);
-    }
+    const SplitOverrides overrides = splitSceneOverrides(options.scene, options.overrides);
     {
         Settings probe;
-        for (const std::string& o : postOverrides) {
+        for (const std::string& o : overrides.post) {
             applySettingsOverride(probe, o);
         }
     }
@@ -302,19 +297,12 @@ int run(const ViewerOptions& options) {
 
     // From here on the window's context is current: the pipeline runs in the host's context.
     std::unique_ptr<Scene> scene = makeScene(options.scene);
-    std::vector<SettingsIssue> sceneIssues;
-    for (const std::string& o : sceneOverrides) {
-        auto issues = scene->applyOverride(std::string_view(o).substr(prefix.size()));
-        sceneIssues.insert(sceneIssues.end(), issues.begin(), issues.end());
-    }
-    if (!sceneIssues.empty()) {
-        throw SettingsError("--set", std::move(sceneIssues));
-    }
+    applySceneOverrides(*scene, overrides.scene);
     Settings settings = scene->defaultSettings();
     if (!options.settingsFile.empty()) {
         settings = loadSettingsFile(options.settingsFile, std::move(settings));
     }
-    for (const std::string& o : postOverrides) {
+    for (const std::string& o : overrides.post) {
         applySettingsOverride(settings, o);
     }
     const Extent renderSize{options.width, options.height};

@@ -4,6 +4,7 @@
 #include "Viewer.h"
 
 #include "core/settings/SettingsJson.h"
+#include "gl/Gl.h"
 
 #include <CLI/CLI.hpp>
 
@@ -14,14 +15,12 @@ namespace {
 using namespace photopic::viewer;
 
 void parseSize(const std::string& text, ViewerOptions& options) {
-    int w = 0, h = 0;
-    char x = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d", &w, &x, &h) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 ||
-        w > 16384 || h > 16384) {
-        throw InputError("size '" + text + "' is not WIDTHxHEIGHT with each in [1, 16384]");
+    const std::optional<photopic::Extent> size = photopic::parseExtent(text);
+    if (!size) {
+        throw InputError("size '" + text + "' is not WIDTHxHEIGHT with each side in [1, 16384]");
     }
-    options.width = w;
-    options.height = h;
+    options.width = size->width;
+    options.height = size->height;
 }
 
 } // namespace

@@ -3,8 +3,10 @@
 
 #include <epoxy/gl.h>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace photopic {
 
@@ -15,6 +17,9 @@ struct Extent {
     friend bool operator==(const Extent&, const Extent&) = default;
     [[nodiscard]] bool empty() const { return width <= 0 || height <= 0; }
 };
+
+/// "1920x1080" (or "1920X1080") -> {1920, 1080}, each side in [minSide, maxSide]; nothing for any other text.
+std::optional<Extent> parseExtent(std::string_view text, int minSide = 1, int maxSide = 16384);
 
 /// Thrown at GL set-up boundaries (context creation, shader compilation, incomplete framebuffers).
 class GlError : public std::runtime_error {

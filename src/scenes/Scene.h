@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -64,5 +65,17 @@ struct SceneInfo {
 const std::vector<SceneInfo>& builtInScenes();
 /// Makes the named scene; throws std::invalid_argument listing the known names.
 std::unique_ptr<Scene> makeScene(std::string_view name);
+
+/// `--set` assignments split by their root, each list in order: "NAME.key=value" goes to the scene named NAME
+/// (with "NAME." removed), every other one to the post settings.
+struct SplitOverrides {
+    std::vector<std::string> scene;
+    std::vector<std::string> post;
+};
+SplitOverrides splitSceneOverrides(std::string_view sceneName, std::span<const std::string> overrides);
+
+/// Applies the scene's own assignments (as splitSceneOverrides returns them); throws SettingsError listing
+/// every issue.
+void applySceneOverrides(Scene& scene, std::span<const std::string> sceneOverrides);
 
 } // namespace photopic

@@ -1,5 +1,7 @@
 #include "scenes/Scene.h"
 
+#include "core/settings/SettingsJson.h"
+
 #include "scenes/canvas/CanvasScene.h"
 #include "scenes/gradient/GradientScene.h"
 #include "scenes/tabletop/TabletopScene.h"
@@ -31,6 +33,30 @@ std::unique_ptr<Scene> makeScene(std::string_view name) {
         known += (known.empty() ? "" : ", ") + scene.name;
     }
     throw std::invalid_argument("unknown scene '" + std::string(name) + "' (known scenes: " + known + ")");
+}
+
+SplitOverrides splitSceneOverrides(std::string_view sceneName, std::span<const std::string> overrides) {
+    const std::string prefix = std::string(sceneName) + ".";
+    SplitOverrides split;
+    for (const std::string& o : overrides) {
+        if (o.rfind(prefix, 0) == 0) {
+            split.scene.push_back(o.substr(prefix.size()));
+        } else {
+            split.post.push_back(o);
+        }
+    }
+    return split;
+}
+
+void applySceneOverrides(Scene& scene, std::span<const std::string> sceneOverrides) {
+    std::vector<SettingsIssue> issues;
+    for (const std::string& o : sceneOverrides) {
+        auto found = scene.applyOverride(o);
+        issues.insert(issues.end(), found.begin(), found.end());
+    }
+    if (!issues.empty()) {
+        throw SettingsError("--set", std::move(issues));
+    }
 }
 
 } // namespace photopic
