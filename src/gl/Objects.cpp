@@ -1,6 +1,8 @@
 #include "gl/Objects.h"
 
 #include <algorithm>
+#include <atomic>
+#include <string>
 #include <vector>
 
 namespace photopic {
@@ -11,7 +13,38 @@ void label(GLenum type, GLuint id, std::string_view name) {
         glObjectLabel(type, id, GLsizei(name.size()), name.data());
     }
 }
+
+// Only GL threads create objects, but a host may run pipelines on several contexts and threads.
+std::atomic<std::uint64_t> gTexturesCreated{0};
+std::atomic<std::uint64_t> gBuffersCreated{0};
+
+void checkComplete(GLuint id, std::string_view debugName, GLenum firstFormat) {
+    const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        throw GlError("framebuffer '" + std::string(debugName) + "' is incomplete with a " +
+                      std::string(formatName(firstFormat)) + " attachment (status 0x" +
+                      std::to_string(status) + ")");
+    }
+}
 } // namespace
+
+GlObjectCounts glObjectCounts() noexcept {
+    return {.textures = gTexturesCreated.load(), .buffers = gBuffersCreated.load()};
+}
+
+bool isDepthFormat(GLenum format) noexcept {
+    switch (format) {
+    case GL_DEPTH_COMPONENT16:
+    case GL_DEPTH_COMPONENT24:
+    case GL_DEPTH_COMPONENT32:
+    case GL_DEPTH_COMPONENT32F:
+    case GL_DEPTH24_STENCIL8:
+    case GL_DEPTH32F_STENCIL8:
+        return true;
+    default:
+        return false;
+    }
+}
 
 Texture::Texture(const TextureCreateInfo& info)
     : mExtent(info.extent)
@@ -22,6 +55,7 @@ Texture::Texture(const TextureCreateInfo& info)
     }
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &id);
+    ++gTexturesCreated;
     mObject = GlObject<detail::TextureDeleter>(id);
     glTextureStorage2D(id, info.levels, info.format, info.extent.width, info.extent.height);
     glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GLint(info.minFilter));
@@ -60,6 +94,7 @@ Buffer::Buffer(const BufferCreateInfo& info)
     : mSize(info.size) {
     GLuint id = 0;
     glCreateBuffers(1, &id);
+    ++gBuffersCreated;
     mObject = GlObject<detail::BufferDeleter>(id);
     glNamedBufferStorage(id, GLsizeiptr(info.size), info.data, info.flags);
     label(GL_BUFFER, id, info.debugName);
@@ -76,12 +111,43 @@ Framebuffer::Framebuffer(const Texture& colour, int level, std::string_view debu
     mObject = GlObject<detail::FramebufferDeleter>(id);
     glNamedFramebufferTexture(id, GL_COLOR_ATTACHMENT0, colour.id(), level);
     label(GL_FRAMEBUFFER, id, debugName);
-    const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE) {
-        throw GlError("framebuffer '" + std::string(debugName) + "' is incomplete with a " +
-                      std::string(formatName(colour.format())) + " attachment (status 0x" +
-                      std::to_string(status) + ")");
+    checkComplete(id, debugName, colour.format());
+}
+
+Framebuffer::Framebuffer(const FramebufferCreateInfo& info) {
+    const Texture* first = info.colour.size() > 0 ? *info.colour.begin() : info.depth;
+    if (first == nullptr || info.colour.size() > 8) {
+        throw GlError("framebuffer '" + std::string(info.debugName) +
+                      "': no attachment, or more than 8 colour");
     }
+    mExtent = first->levelExtent(info.level);
+    GLuint id = 0;
+    glCreateFramebuffers(1, &id);
+    mObject = GlObject<detail::FramebufferDeleter>(id);
+    GLenum drawBuffers[8] = {};
+    GLsizei count = 0;
+    for (const Texture* t : info.colour) {
+        if (t == nullptr || t->levelExtent(info.level) != mExtent) {
+            throw GlError("framebuffer '" + std::string(info.debugName) +
+                          "': a colour attachment is missing or of another size");
+        }
+        drawBuffers[count] = GLenum(GL_COLOR_ATTACHMENT0 + count);
+        glNamedFramebufferTexture(id, drawBuffers[count], t->id(), info.level);
+        ++count;
+    }
+    glNamedFramebufferDrawBuffers(id, count, drawBuffers);
+    if (info.depth) {
+        if (!isDepthFormat(info.depth->format()) || info.depth->levelExtent(info.level) != mExtent) {
+            throw GlError("framebuffer '" + std::string(info.debugName) +
+                          "': the depth attachment is not a depth format or is of another size");
+        }
+        const bool stencil =
+            info.depth->format() == GL_DEPTH24_STENCIL8 || info.depth->format() == GL_DEPTH32F_STENCIL8;
+        glNamedFramebufferTexture(id, stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
+                                  info.depth->id(), info.level);
+    }
+    label(GL_FRAMEBUFFER, id, info.debugName);
+    checkComplete(id, info.debugName, first->format());
 }
 
 void Framebuffer::bind() const {
@@ -157,15 +223,23 @@ int bytesPerTexel(GLenum format) {
     case GL_RGBA16F:
         return 8;
     case GL_RG32F:
+    case GL_DEPTH32F_STENCIL8:
         return 8;
+    case GL_RGB16F:
+        return 6;
     case GL_R32F:
     case GL_R32UI:
+    case GL_DEPTH_COMPONENT32F:
+    case GL_DEPTH_COMPONENT24:
+    case GL_DEPTH24_STENCIL8:
+    case GL_RG16F:
     case GL_RGBA8:
     case GL_SRGB8_ALPHA8:
     case GL_R11F_G11F_B10F:
         return 4;
     case GL_R16F:
     case GL_RG8:
+    case GL_DEPTH_COMPONENT16:
         return 2;
     case GL_R8:
         return 1;
@@ -194,6 +268,20 @@ std::string_view formatName(GLenum format) {
         return "R11F_G11F_B10F";
     case GL_R16F:
         return "R16F";
+    case GL_RG16F:
+        return "RG16F";
+    case GL_RGB16F:
+        return "RGB16F";
+    case GL_DEPTH_COMPONENT16:
+        return "DEPTH_COMPONENT16";
+    case GL_DEPTH_COMPONENT24:
+        return "DEPTH_COMPONENT24";
+    case GL_DEPTH_COMPONENT32F:
+        return "DEPTH_COMPONENT32F";
+    case GL_DEPTH24_STENCIL8:
+        return "DEPTH24_STENCIL8";
+    case GL_DEPTH32F_STENCIL8:
+        return "DEPTH32F_STENCIL8";
     case GL_R8:
         return "R8";
     default:

@@ -6,6 +6,8 @@
 #include "gl/Gl.h"
 
 #include <cstddef>
+#include <cstdint>
+#include <initializer_list>
 #include <string_view>
 #include <utility>
 
@@ -129,18 +131,51 @@ private:
     std::size_t mSize = 0;
 };
 
-/// A framebuffer with one colour attachment (what every full-screen pass needs).
+/// Attachments of a framebuffer: colour targets in draw-buffer order (MRT) and an optional depth or
+/// depth-stencil texture, all at mip `level` and the same size.
+struct FramebufferCreateInfo {
+    std::initializer_list<const Texture*> colour;
+    const Texture* depth = nullptr; ///< GL_DEPTH_COMPONENT* or GL_DEPTH24_STENCIL8 / GL_DEPTH32F_STENCIL8
+    int level = 0;
+    std::string_view debugName;
+};
+
+/// A framebuffer: one colour attachment (what a full-screen pass needs), or several plus depth (a scene's
+/// G-buffer-style outputs). Throws GlError naming it when incomplete.
 class Framebuffer {
 public:
     Framebuffer() = default;
     Framebuffer(const Texture& colour, int level, std::string_view debugName);
+    explicit Framebuffer(const FramebufferCreateInfo& info);
     [[nodiscard]] GLuint id() const { return mObject.id(); }
+    [[nodiscard]] Extent extent() const { return mExtent; }
     /// Binds it, sets the viewport to the attachment's size.
     void bind() const;
 
 private:
     GlObject<detail::FramebufferDeleter> mObject;
     Extent mExtent;
+};
+
+/// A std140 uniform block mirrored by `T` in C++ (explicit padding, static_asserts on size and offsets next
+/// to the struct): one immutable buffer per block, updated with glNamedBufferSubData and bound to its
+/// binding index before a dispatch or draw.
+template <class T>
+class ParameterBlock {
+public:
+    ParameterBlock() = default;
+    explicit ParameterBlock(std::string_view debugName, const T& initial = T{})
+        : mBuffer({.size = sizeof(T),
+                   .flags = GL_DYNAMIC_STORAGE_BIT,
+                   .data = &initial,
+                   .debugName = debugName}) {}
+    void update(const T& value) const { mBuffer.update(&value, sizeof(T)); }
+    void bind(GLuint binding) const { glBindBufferBase(GL_UNIFORM_BUFFER, binding, mBuffer.id()); }
+    [[nodiscard]] const Buffer& buffer() const { return mBuffer; }
+    [[nodiscard]] bool valid() const { return mBuffer.valid(); }
+
+private:
+    Buffer mBuffer;
 };
 
 class Program {
@@ -205,6 +240,18 @@ public:
     DebugGroup(const DebugGroup&) = delete;
     DebugGroup& operator=(const DebugGroup&) = delete;
 };
+
+/// GL textures and buffers this process has created through the wrappers (adopted host objects do not
+/// count). A steady-state frame creates none: tests compare the counts over many frames.
+struct GlObjectCounts {
+    std::uint64_t textures = 0;
+    std::uint64_t buffers = 0;
+    friend bool operator==(const GlObjectCounts&, const GlObjectCounts&) = default;
+};
+[[nodiscard]] GlObjectCounts glObjectCounts() noexcept;
+
+/// True for GL_DEPTH_COMPONENT16/24/32F and the depth-stencil formats.
+[[nodiscard]] bool isDepthFormat(GLenum format) noexcept;
 
 /// Bytes per texel of a sized internal format (for bandwidth estimates and readbacks).
 int bytesPerTexel(GLenum format);
