@@ -266,6 +266,19 @@ void Pipeline::resize(Extent extent) {
     mResetExposure = true; // DESIGN.md: snap on resize
 }
 
+glm::vec2 Pipeline::beginFrame(const FrameTime& time, const Camera* camera) {
+    (void)time;
+    (void)camera;
+    return glm::vec2(0.0f);
+}
+
+const LightingOutputs& Pipeline::renderLighting(const FrameInputs& inputs, const FrameTime& time) {
+    (void)inputs;
+    (void)time;
+    mLighting = {};
+    return mLighting;
+}
+
 const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& time) {
     resize(inputs.color->extent());
     mTimers.beginFrame();

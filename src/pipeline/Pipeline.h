@@ -94,6 +94,14 @@ struct PipelineStatus {
     std::vector<PassTiming> passes; ///< the most recent frame with GPU timings available
 };
 
+/// What the lighting stage hands the host for shading. Each is null when its pass did not run this frame.
+struct LightingOutputs {
+    /// R8/R16F visibility in [0, 1] for indirect (ambient, IBL) light only.
+    const Texture* ambientOcclusion = nullptr;
+    /// R8/R16F visibility in [0, 1] for the sun's direct light only.
+    const Texture* contactShadows = nullptr;
+};
+
 struct PipelineCreateInfo {
     Settings settings;
     bool forceLdr = false; ///< take the LDR path whatever the GPU can do
@@ -135,6 +143,16 @@ public:
     void setSettings(const Settings& settings);
     [[nodiscard]] const Settings& settings() const { return mSettings; }
     [[nodiscard]] const Capabilities& capabilities() const { return mCaps; }
+
+    /// Starts a frame (two-stage use by 3D hosts): returns the sub-pixel jitter, in pixels (x right, y up),
+    /// that the host adds to its projection for this frame (jitteredProjection in core/Camera.h): Halton(2,
+    /// 3) with the configured cycle while a temporal pass is on, zero otherwise. `camera` may be null.
+    glm::vec2 beginFrame(const FrameTime& time, const Camera* camera = nullptr);
+
+    /// Lighting stage (3D hosts, after beginFrame, before the host shades): runs the passes whose outputs the
+    /// host consumes while lighting and hands back their textures (null when that pass is off or lacks its
+    /// inputs). Valid until the next call.
+    const LightingOutputs& renderLighting(const FrameInputs& inputs, const FrameTime& time);
 
     /// Runs one frame; returns the display image (RGBA8 holding sRGB-encoded values), valid until the next
     /// call.
@@ -228,6 +246,7 @@ private:
     std::vector<Subject> mPending; ///< setSubjects(), capacity subjects.maxSubjects
     std::size_t mPendingCount = 0;
     glm::vec2 mPendingCentre{0.0f};
+    LightingOutputs mLighting;
     AutoExposureSettings mCoupled; ///< this frame's outdoors-coupled auto exposure (subject metering)
 };
 
