@@ -10,6 +10,7 @@
 #include "core/settings/OutputSettings.h"
 #include "core/settings/QualitySettings.h"
 #include "core/settings/SubjectSettings.h"
+#include "core/settings/TemporalSettings.h"
 #include "core/settings/ToneMappingSettings.h"
 
 namespace photopic {
@@ -28,6 +29,7 @@ struct Settings {
     GrainSettings grain;
     DazzleSettings dazzle;
     SubjectSettings subjects;
+    TemporalSettings temporal;
 
     template <class V>
     void visit(V& v) {
@@ -44,6 +46,7 @@ struct Settings {
         v.object("grain", grain);
         v.object("dazzle", dazzle);
         v.object("subjects", subjects);
+        v.object("temporal", temporal);
     }
 };
 

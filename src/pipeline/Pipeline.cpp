@@ -1,123 +1,20 @@
 #include "pipeline/Pipeline.h"
 
 #include "core/Log.h"
-#include "core/Quality.h"
+#include "core/settings/SettingsJson.h"
 #include "gl/TextureIo.h"
-#include "io/ImageIO.h"
-#include "passes/Bindings.h"
-#include "passes/bloom/BloomPass.h"
-#include "passes/debug/DebugViewPass.h"
-#include "passes/display/DisplayEffectsPass.h"
-#include "passes/exposure/ExposurePass.h"
-#include "passes/fxaa/FxaaPass.h"
-#include "passes/lensflare/LensFlarePass.h"
-#include "passes/metering/MeteringPass.h"
-#include "passes/probe/ProbePass.h"
-#include "passes/sanitize/SanitizePass.h"
-#include "passes/tonemap/TonemapPass.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
-#include <cstring>
 
 namespace photopic {
 
 namespace {
 
-/// Readback slots: deep enough that a host polling once a frame never drops a frame on a GPU a few frames
-/// behind.
-constexpr int kTelemetrySlots = 16;
-constexpr std::size_t kTelemetryBytes = sizeof(GpuExposureState) + kGpuHistogramBytes;
-/// Probe readback slots: probes run at probe.hz, a few frames apart; a GPU a few frames behind never fills
-/// it.
-constexpr int kProbeSlots = 8;
-
-ExposureTelemetry decodeTelemetry(std::uint64_t frame, std::span<const std::byte> bytes) {
-    GpuExposureState s;
-    std::memcpy(&s, bytes.data(), sizeof(s));
-    ExposureTelemetry t;
-    t.valid = true;
-    t.frame = frame;
-    t.frameLuminance = s.frameLuminance;
-    t.meteredLuminance = s.meteredLuminance;
-    t.targetLog2 = s.targetLog2;
-    t.appliedLog2 = s.appliedLog2;
-    t.exposure = s.exposure;
-    t.manualEV = s.manualEV;
-    t.autoEnabled = s.autoEnabled != 0;
-    t.adapting = s.adapting != 0;
-    t.initialized = s.initialized != 0;
-    t.minLuminance = s.minLuminance;
-    t.maxLuminance = s.maxLuminance;
-    t.histogramCount = s.histogramCount;
-    t.histogramLowLog2 = s.histogramLowLog2;
-    t.histogramHighLog2 = s.histogramHighLog2;
-    t.histogramAverageLog2 = s.histogramAverageLog2;
-    std::memcpy(t.histogram.data(), bytes.data() + sizeof(GpuExposureState), kGpuHistogramBytes);
-    return t;
-}
-
-MeteringPass::Weights meteringWeights(const AutoExposureSettings& ae, bool haveMask) {
-    if (!ae.enabled) {
-        return MeteringPass::Weights::None;
-    }
-    switch (ae.metering) {
-    case MeteringMode::Average:
-        return MeteringPass::Weights::Average;
-    case MeteringMode::Histogram:
-        return MeteringPass::Weights::None;
-    case MeteringMode::Spot:
-        return MeteringPass::Weights::Spot;
-    case MeteringMode::Center:
-        return MeteringPass::Weights::Center;
-    case MeteringMode::Subject:
-        return MeteringPass::Weights::None; // the probe pass writes the reading
-    case MeteringMode::Mask:
-        if (!haveMask) {
-            try {
-                warnOnce(
-                    "metering.mask.missing",
-                    "autoExposure.metering is \"mask\" but no mask image is loaded; metering the average");
-            } catch (...) { // logging must not take the frame down
-            }
-            return MeteringPass::Weights::Average;
-        }
-        return MeteringPass::Weights::Mask;
-    }
-    return MeteringPass::Weights::Average;
-}
-
-} // namespace
-
-struct Pipeline::Passes {
-    // HDR path only (null on a GPU without RGBA16F render targets).
-    std::unique_ptr<SanitizePass> sanitize;
-    std::unique_ptr<BloomPass> bloom;
-    std::unique_ptr<LensFlarePass> lensFlare;
-    // Both paths.
-    MeteringPass metering;
-    ProbePass probe;
-    ExposurePass exposure;
-    TonemapPass tonemap;
-    DebugViewPass debug;
-    FxaaPass fxaa;
-    DisplayEffectsPass displayEffects;
-};
-
-namespace {
-
-/// The tier frames run at: the settings' tier, or the legacy tier's effects when the GPU forces LDR.
-QualityTier effectiveTier(const Capabilities& caps, Quality quality) {
-    QualityTier tier = qualityTier(quality);
-    if (caps.path == ColorPath::Ldr) {
-        const QualityTier legacy = qualityTier(Quality::Legacy);
-        tier.hdrPath = false;
-        tier.bloom = legacy.bloom;
-        tier.glow = legacy.glow;
-        tier.lensFlare = legacy.lensFlare;
-    }
-    return tier;
-}
+constexpr Resource kLightingOutputs[] = {Resource::AmbientOcclusion, Resource::ContactShadows};
+/// A scene-value debug view replaces the display image when its pass can run.
+constexpr Resource kPostOutputs[] = {Resource::DebugColor, Resource::DisplayColor};
 
 void warnAboutTier(const Capabilities& caps, Quality quality) {
     if (quality == Quality::Legacy && caps.path == ColorPath::Hdr) {
@@ -128,124 +25,63 @@ void warnAboutTier(const Capabilities& caps, Quality quality) {
     }
 }
 
+void checkSettings(const Settings& settings) {
+    std::vector<SettingsIssue> issues = validateSettings(settings);
+    if (!issues.empty()) {
+        throw SettingsError("settings", std::move(issues));
+    }
+}
+
+bool oneOf(GLenum format, std::initializer_list<GLenum> formats) {
+    return std::find(formats.begin(), formats.end(), format) != formats.end();
+}
+
+/// Why an optional texture input cannot be used this frame, or an empty string.
+std::string textureProblem(const char* name, const Texture& t, Extent extent,
+                           std::initializer_list<GLenum> formats) {
+    if (!t.valid()) {
+        return fmt::format("{}: not a texture (id 0)", name);
+    }
+    if (t.extent() != extent) {
+        return fmt::format("{}: {}x{} does not match colour's {}x{}", name, t.extent().width,
+                           t.extent().height, extent.width, extent.height);
+    }
+    if (!oneOf(t.format(), formats)) {
+        return fmt::format("{}: format {} is not one the pipeline reads", name, formatName(t.format()));
+    }
+    return {};
+}
+
 } // namespace
 
 Pipeline::Pipeline(const PipelineCreateInfo& info)
     : mSettings(info.settings)
     , mCaps(detectCapabilities(info.forceLdr))
-    , mPasses(std::make_unique<Passes>())
-    , mTelemetryRecord(
-          {.size = kTelemetryBytes, .flags = 0, .data = nullptr, .debugName = "exposure telemetry"})
-    , mRing(kTelemetryBytes, kTelemetrySlots, "exposure telemetry")
-    , mKeepHistory(info.keepTelemetryHistory) {
-    const GpuExposureState initial;
-    mExposureState = Buffer({.size = sizeof(GpuExposureState),
-                             .flags = GL_DYNAMIC_STORAGE_BIT,
-                             .data = &initial,
-                             .debugName = "exposure state"});
-    if (mCaps.path == ColorPath::Hdr) {
-        mPasses->sanitize = std::make_unique<SanitizePass>();
-        mPasses->bloom = std::make_unique<BloomPass>();
-        mPasses->lensFlare = std::make_unique<LensFlarePass>();
+    , mOrder(std::make_unique<FrameOrder>(mCaps, info.keepTelemetryHistory))
+    , mInvalid({.extent = {1, 1}, .format = GL_RGBA8, .debugName = "no colour input"}) {
+    checkSettings(mSettings);
+    const std::uint8_t black[4] = {0, 0, 0, 255};
+    glTextureSubImage2D(mInvalid.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, black);
+    for (FramePass* pass : mOrder->all()) {
+        pass->configure(mSettings);
     }
-    mPasses->tonemap.prepare(mSettings.tonemapping, mSettings.colorGrading, legacyGlow());
-    loadMask();
-    configureSubjects();
     warnAboutTier(mCaps, mSettings.quality);
 }
 
 Pipeline::~Pipeline() = default;
 
 void Pipeline::setSettings(const Settings& settings) {
+    checkSettings(settings);
+    for (FramePass* pass : mOrder->all()) {
+        pass->configure(settings);
+    }
     mSettings = settings;
-    mPasses->tonemap.prepare(mSettings.tonemapping, mSettings.colorGrading, legacyGlow());
-    loadMask();
-    configureSubjects();
     warnAboutTier(mCaps, mSettings.quality);
 }
 
-void Pipeline::configureSubjects() {
-    mSubjects.setSettings(mSettings.subjects);
-    mPending.resize(std::size_t(std::max(mSettings.subjects.maxSubjects, 1)));
-    mPendingCount = std::min(mPendingCount, mPending.size());
-    if (mPasses->probe.capacity() != mSubjects.capacity() || mProbeRing.slotCount() == 0) {
-        mPasses->probe.setCapacity(mSubjects.capacity());
-        mProbeRing = ReadbackRing(mPasses->probe.bytes(), kProbeSlots, "subject probes");
-    }
-}
-
-const AutoExposureSettings& Pipeline::runSubjects(const FrameInputs& inputs, const FrameTime& time,
-                                                  const Texture& scene, const Buffer& metering) {
-    const bool pending = inputs.subjects.empty();
-    mSubjects.beginFrame(time.dt, pending ? mPendingCentre : inputs.viewCentreWorld);
-    for (const Subject& s :
-         pending ? std::span<const Subject>(mPending.data(), mPendingCount) : inputs.subjects) {
-        mSubjects.addSubject(s);
-    }
-    mPendingCount = 0;
-    const std::span<const ProbeRequest> requests = mSubjects.scheduleProbes();
-    pollProbes(); // results of earlier frames into this frame's contexts (never waits)
-
-    const AutoExposureSettings& ae = mSettings.autoExposure;
-    const bool subjectMetering = ae.enabled && ae.metering == MeteringMode::Subject;
-    const SubjectContext* subject = mSubjects.subjectContext();
-    const SubjectSettings::Probe& p = mSettings.subjects.probe;
-    if (!requests.empty() || subjectMetering) {
-        mPasses->probe.execute({.scene = &scene,
-                                .requests = requests,
-                                .taps = p.taps,
-                                .radius = p.radius,
-                                .active = subject != nullptr,
-                                .selectedId = subject ? subject->id : 0u,
-                                .deadbandEV = p.deadbandEV,
-                                .timeS = mSubjects.time(),
-                                .metering = subjectMetering ? &metering : nullptr,
-                                .timers = &mTimers});
-        if (!requests.empty()) {
-            mProbeRing.enqueue(mPasses->probe.results(), 0, time.frameIndex);
-        }
-    }
-    // Outdoors coupling of the subject of the view (seed 000: tighter maxEV, faster adaptation outdoors); the
-    // copy reuses mCoupled's storage, so the frame does not allocate.
-    if (subjectMetering && subject && mSettings.subjects.outdoorsCoupling.enabled) {
-        mCoupled = outdoorsCoupledSettings(ae, mSettings.subjects.outdoorsCoupling, subject->outdoors);
-        return mCoupled;
-    }
-    return ae;
-}
-
-void Pipeline::setSubjects(std::span<const Subject> subjects, glm::vec2 viewCentreWorld) noexcept {
-    mPendingCount = std::min(subjects.size(), mPending.size());
-    std::copy_n(subjects.begin(), mPendingCount, mPending.begin());
-    mPendingCentre = viewCentreWorld;
-}
-
-void Pipeline::pollProbes() noexcept {
-    const std::size_t capacity = mPasses->probe.capacity();
-    mProbeRing.pollEach([&](const ReadbackRing::Result& r) {
-        GpuProbeHeader header;
-        std::memcpy(&header, r.bytes.data(), sizeof(header));
-        const std::size_t count = std::min<std::size_t>(header.count, capacity);
-        for (std::size_t i = 0; i < count; ++i) {
-            GpuProbeEntry e;
-            std::memcpy(&e, r.bytes.data() + sizeof(header) + i * sizeof(GpuProbeEntry), sizeof(e));
-            mSubjects.recordProbe(e.id, e.luma, header.timeS);
-        }
-    });
-}
-
-void Pipeline::loadMask() {
-    const std::string& path = mSettings.autoExposure.mask.path;
-    if (path == mMaskPath) {
-        return;
-    }
-    if (path.empty()) {
-        mMask = {};
-    } else {
-        // Set-up boundary: an unreadable mask throws IoError naming the file.
-        mMask = makeTexture(readImage(path), "metering mask");
-    }
-    mMaskPath = path;
+void Pipeline::reset() {
+    mResetExposure = true;
+    mResetHistory = true;
 }
 
 void Pipeline::resize(Extent extent) {
@@ -253,223 +89,162 @@ void Pipeline::resize(Extent extent) {
         return;
     }
     mExtent = extent;
-    if (mPasses->sanitize) {
-        mPasses->sanitize->resize(extent);
-        mPasses->bloom->resize(extent);
-        mPasses->lensFlare->resize(extent);
+    mResources.pool().clear();
+    for (FramePass* pass : mOrder->all()) {
+        pass->resize(extent);
     }
-    mPasses->metering.resize(extent);
-    mPasses->tonemap.resize(extent);
-    mPasses->debug.resize(extent);
-    mPasses->fxaa.resize(extent);
-    mPasses->displayEffects.resize(extent);
-    mResetExposure = true; // DESIGN.md: snap on resize
+    mResetExposure = true; // a new size is a new view: snap exposure
+    mResetHistory = true;
 }
 
 glm::vec2 Pipeline::beginFrame(const FrameTime& time, const Camera* camera) {
-    (void)time;
-    (void)camera;
-    return glm::vec2(0.0f);
+    if (camera && camera->cut) {
+        reset();
+    }
+    // No temporal pass exists yet, so `auto` means no jitter; `on` serves hosts that accumulate frames.
+    const bool jitter = mSettings.temporal.jitter == JitterMode::On;
+    mJitter = jitter ? haltonJitter(time.frameIndex, mSettings.temporal.jitterCycle) : glm::vec2(0.0f);
+    return mJitter;
+}
+
+bool Pipeline::bindInputs(const FrameInputs& in) {
+    mInputErrors.clear();
+    mResources.clear();
+    if (in.color == nullptr || !in.color->valid() || in.color->extent().empty()) {
+        mInputErrors.emplace_back("color: missing (a null or empty texture); the frame shows black");
+        return false;
+    }
+    const Extent extent = in.color->extent();
+    mResources.bind(Resource::Color, *in.color);
+    mResources.bind(Resource::SceneColor, *in.color); // replaced by the sanitised copy on the HDR path
+
+    const auto optional = [&](Resource r, const char* name, const Texture* t,
+                              std::initializer_list<GLenum> formats) {
+        if (t == nullptr) {
+            return;
+        }
+        std::string problem = textureProblem(name, *t, extent, formats);
+        if (problem.empty()) {
+            mResources.bind(r, *t);
+        } else {
+            mInputErrors.push_back(std::move(problem));
+        }
+    };
+    if (in.depthKind == DepthKind::LinearView) {
+        optional(Resource::Depth, "depth", in.depth, {GL_R32F, GL_R16F, GL_RG32F, GL_RGBA32F});
+    } else {
+        optional(Resource::Depth, "depth", in.depth,
+                 {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT32F,
+                  GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8, GL_R32F});
+    }
+    if (in.normalEncoding == NormalEncoding::Octahedral) {
+        optional(Resource::Normals, "normals", in.normals, {GL_RG16F, GL_RG32F, GL_RG16_SNORM, GL_RG8_SNORM});
+    } else {
+        optional(
+            Resource::Normals, "normals", in.normals,
+            {GL_RGB16F, GL_RGBA16F, GL_RGB32F, GL_RGBA32F, GL_RGB10_A2, GL_RGBA16_SNORM, GL_RGBA8_SNORM});
+    }
+    optional(Resource::Motion, "motion", in.motion, {GL_RG16F, GL_RG32F, GL_RGBA16F, GL_RGBA32F});
+    if (in.camera) {
+        if (const char* reason = invalidCameraReason(*in.camera)) {
+            mInputErrors.emplace_back(reason);
+        } else {
+            mResources.markPresent(Resource::Camera);
+        }
+    }
+    return true;
+}
+
+FrameContext Pipeline::makeContext(const FrameInputs& inputs, const FrameTime& time,
+                                   const QualityTier& tier) {
+    return FrameContext{.settings = mSettings,
+                        .tier = tier,
+                        .caps = mCaps,
+                        .inputs = inputs,
+                        .time = time,
+                        .extent = mExtent,
+                        .hdr = tier.hdrPath,
+                        .resetExposure = mResetExposure,
+                        .resetHistory = mResetHistory,
+                        .timers = &mTimers,
+                        .autoExposure = &mSettings.autoExposure};
 }
 
 const LightingOutputs& Pipeline::renderLighting(const FrameInputs& inputs, const FrameTime& time) {
-    (void)inputs;
-    (void)time;
     mLighting = {};
+    if (!bindInputs(inputs)) {
+        return mLighting;
+    }
+    resize(inputs.color->extent());
+    const QualityTier tier = effectiveTier(mCaps, mSettings.quality);
+    FrameContext ctx = makeContext(inputs, time, tier);
+    mResources.pool().beginFrame();
+    mLightingSequencer.run(mOrder->lighting(), {.resources = kLightingOutputs}, ctx, mResources);
+    mLighting.ambientOcclusion = mResources.texture(Resource::AmbientOcclusion);
+    mLighting.contactShadows = mResources.texture(Resource::ContactShadows);
     return mLighting;
 }
 
 const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& time) {
+    // The lighting stage's outputs stay bound for the post stage when the host ran it this frame.
+    const LightingOutputs lighting = mLighting;
+    mLighting = {};
+    if (!bindInputs(inputs)) {
+        try {
+            warnOnce("input.color", "execute(): " + mInputErrors.front());
+        } catch (...) { // logging must not take the frame down
+        }
+        return mInvalid;
+    }
+    for (const std::string& problem : mInputErrors) {
+        try {
+            warnOnce("input." + problem.substr(0, problem.find(':')), "execute(): " + problem + "; ignored");
+        } catch (...) {
+        }
+    }
+    if (lighting.ambientOcclusion) {
+        mResources.bind(Resource::AmbientOcclusion, *lighting.ambientOcclusion);
+    }
+    if (lighting.contactShadows) {
+        mResources.bind(Resource::ContactShadows, *lighting.contactShadows);
+    }
     resize(inputs.color->extent());
     mTimers.beginFrame();
-    const AutoExposureSettings& ae = mSettings.autoExposure;
-    const DebugView view = mSettings.debug.view;
     const QualityTier tier = effectiveTier(mCaps, mSettings.quality);
-    const bool hdr = tier.hdrPath && mPasses->sanitize;
-
-    // 1. sanitise (HDR path; the LDR path sanitises inside its single pass)
-    const Texture* scene = inputs.color;
-    if (hdr) {
-        scene = &mPasses->sanitize->execute({.color = inputs.color, .timers = &mTimers});
+    FrameContext ctx = makeContext(inputs, time, tier);
+    if (lighting.ambientOcclusion == nullptr && lighting.contactShadows == nullptr) {
+        mResources.pool().beginFrame(); // else the lighting stage began it and its textures are in use
     }
-
-    // 4. metering, subject probes and adaptation, on the GPU. The histogram is built when exposure or a debug
-    // view needs it (seed 004: the histogram view works with auto exposure off).
-    const bool histogram = (ae.enabled && ae.metering == MeteringMode::Histogram) ||
-                           view == DebugView::Histogram ||
-                           (view == DebugView::Metering && ae.metering == MeteringMode::Histogram);
-    const MeteringPass::Weights weights = meteringWeights(ae, mMask.valid());
-    const MeteringPass::Outputs metered = mPasses->metering.execute({.scene = scene,
-                                                                     .mask = mMask.valid() ? &mMask : nullptr,
-                                                                     .settings = &ae,
-                                                                     .histogram = histogram,
-                                                                     .weights = weights,
-                                                                     .timers = &mTimers});
-    // The probes read the same sanitised image; with subject metering they write the reading.
-    const AutoExposureSettings& frameAe = runSubjects(inputs, time, *scene, *metered.metering);
-    mPasses->exposure.execute({.histogram = metered.histogram,
-                               .metering = metered.metering,
-                               .exposureState = &mExposureState,
-                               .settings = &frameAe,
-                               .metered = ae.enabled,
-                               .histogramBuilt = histogram,
-                               .reset = mResetExposure,
-                               .dt = time.dt,
-                               .manualEV = mSettings.tonemapping.exposure,
-                               .timers = &mTimers});
+    mOutput = mPostSequencer.run(mOrder->post(), {.resources = kPostOutputs, .firstAvailable = true}, ctx,
+                                 mResources);
     mResetExposure = false;
-
-    // Telemetry: the state and the bins into one record, on the GPU, then into the ring (never waited on
-    // here).
-    glCopyNamedBufferSubData(mExposureState.id(), mTelemetryRecord.id(), 0, 0, sizeof(GpuExposureState));
-    glCopyNamedBufferSubData(metered.histogram->id(), mTelemetryRecord.id(), 0, sizeof(GpuExposureState),
-                             GLsizeiptr(kGpuHistogramBytes));
-    pollTelemetry(); // frees finished slots first
-    mRing.enqueue(mTelemetryRecord, 0, time.frameIndex);
-    // Contexts: target from each subject's probed luma, applied from the newest exposure that came back.
-    // The base settings: the tracker applies each subject's own outdoors coupling.
-    mSubjects.updateExposure(mSettings.autoExposure, mTelemetry.appliedLog2);
-
-    // 6. bloom on exposed colour.
-    const Texture* bloom = nullptr;
-    mBloomLevels = 0;
-    if (hdr && tier.bloom && mSettings.bloom.enabled) {
-        const int mips = mSettings.bloom.mipCount > 0 ? mSettings.bloom.mipCount : tier.bloomMips;
-        bloom = &mPasses->bloom->execute({.scene = scene,
-                                          .exposureState = &mExposureState,
-                                          .settings = &mSettings.bloom,
-                                          .firstDivisor = tier.bloomFirstDivisor,
-                                          .mipCount = mips,
-                                          .timers = &mTimers});
-        mBloomLevels = mPasses->bloom->levels();
-    }
-
-    const DebugViewPass::Inputs debugInputs{.view = view,
-                                            .scene = scene,
-                                            .display = nullptr,
-                                            .mask = mMask.valid() ? &mMask : nullptr,
-                                            .bloom = bloom,
-                                            .exposureState = &mExposureState,
-                                            .histogram = metered.histogram,
-                                            .autoExposure = &ae,
-                                            .timers = &mTimers};
-    mLastScene = scene;
-    mLastBloom = bloom;
-    mLastFrame = time.frameIndex;
-
-    // 8. scene-value debug views replace the image and are shown as they are (no tone mapping).
-    if (DebugViewPass::isSceneView(view)) {
-        const Texture& debug = mPasses->debug.execute(debugInputs);
-        mTimers.endFrame();
-        return debug;
-    }
-
-    // 7 + 9. composite, grade and tone map, once.
-    const TonemapPass::Inputs tonemapInputs{.scene = scene,
-                                            .exposureState = &mExposureState,
-                                            .tonemapping = &mSettings.tonemapping,
-                                            .output = &mSettings.output,
-                                            .bloom = bloom,
-                                            .bloomSettings = &mSettings.bloom,
-                                            .glow = !hdr && legacyGlow(),
-                                            .grading = &mSettings.colorGrading,
-                                            .frameIndex = time.frameIndex,
-                                            .timers = &mTimers};
-    const Texture* display = &mPasses->tonemap.execute(tonemapInputs);
-
-    // 10. FXAA on display-referred values.
-    if (tier.fxaa && mSettings.fxaa.enabled) {
-        display =
-            &mPasses->fxaa.execute({.display = display, .settings = &mSettings.fxaa, .timers = &mTimers});
-    }
-
-    // 11. lens flare from the HDR image, then the fused display effects.
-    const Texture* flare = nullptr;
-    if (hdr && tier.lensFlare && mSettings.lensFlare.enabled) {
-        flare = &mPasses->lensFlare->execute({.scene = scene,
-                                              .exposureState = &mExposureState,
-                                              .settings = &mSettings.lensFlare,
-                                              .divisor = tier.lensFlareDivisor,
-                                              .timers = &mTimers});
-    }
-    const bool grain = tier.grain && mSettings.grain.enabled;
-    if (flare || grain || mSettings.vignette.enabled || mSettings.dazzle.enabled) {
-        const GrainSettings grainSettings{.enabled = grain, .intensity = mSettings.grain.intensity};
-        display = &mPasses->displayEffects.execute({.display = display,
-                                                    .exposureState = &mExposureState,
-                                                    .flare = flare,
-                                                    .glare = bloom,
-                                                    .vignette = &mSettings.vignette,
-                                                    .chromaticAberration = tier.chromaticAberration,
-                                                    .grain = &grainSettings,
-                                                    .dazzle = &mSettings.dazzle,
-                                                    .frameIndex = time.frameIndex,
-                                                    .timers = &mTimers});
-    }
-
-    // 12. overlays.
-    if (view == DebugView::Histogram) {
-        DebugViewPass::Inputs overlay = debugInputs;
-        overlay.display = display;
-        display = &mPasses->debug.execute(overlay);
-    }
+    mResetHistory = false;
     mTimers.endFrame();
-    return *display;
-}
-
-void Pipeline::keep(const ExposureTelemetry& record) {
-    mTelemetry = record;
-    if (mKeepHistory) {
-        mHistory.push_back(record);
-    }
-}
-
-void Pipeline::pollTelemetry() {
-    if (mKeepHistory) {
-        for (const auto& r : mRing.pollAll()) {
-            keep(decodeTelemetry(r.tag, r.bytes));
-        }
-    } else if (const auto r = mRing.pollNewest()) {
-        keep(decodeTelemetry(r->tag, r->bytes));
-    }
-}
-
-const ExposureTelemetry& Pipeline::telemetry() {
-    pollTelemetry();
-    return mTelemetry;
-}
-
-std::vector<ExposureTelemetry> Pipeline::drainTelemetry() {
-    pollTelemetry();
-    for (const auto& r : mRing.drain()) {
-        const ExposureTelemetry t = decodeTelemetry(r.tag, r.bytes);
-        mTelemetry = t;
-        mHistory.push_back(t);
-    }
-    std::vector<ExposureTelemetry> out(mHistory.begin(), mHistory.end());
-    mHistory.clear();
-    return out;
+    const Texture* out = mResources.texture(mOutput);
+    PHOTOPIC_ASSERT(out != nullptr);
+    return *out;
 }
 
 const Texture& Pipeline::sceneReferred() {
     if (!mCaps.rgba32fRenderable) {
         throw GlError("the scene-referred (EXR) output needs RGBA32F render targets, which this GPU lacks");
     }
-    return mPasses->tonemap.renderScene({.scene = mLastScene,
-                                         .exposureState = &mExposureState,
-                                         .tonemapping = &mSettings.tonemapping,
-                                         .output = &mSettings.output,
-                                         .bloom = mLastBloom,
-                                         .bloomSettings = &mSettings.bloom,
-                                         .glow = mLastBloom == nullptr && legacyGlow(),
-                                         .grading = &mSettings.colorGrading,
-                                         .frameIndex = mLastFrame,
-                                         .timers = nullptr});
-}
-
-bool Pipeline::legacyGlow() const {
+    const Texture* scene = mResources.texture(Resource::SceneColor);
+    if (scene == nullptr) {
+        throw GlError("no frame has been executed: there is no scene-referred image yet");
+    }
     const QualityTier tier = effectiveTier(mCaps, mSettings.quality);
-    return !(tier.hdrPath && mPasses->sanitize) && tier.glow && mSettings.bloom.enabled;
+    const Texture* bloom = mResources.texture(Resource::Bloom);
+    return mOrder->tonemap.renderScene({.scene = scene,
+                                        .exposureState = &mOrder->exposure.state(),
+                                        .tonemapping = &mSettings.tonemapping,
+                                        .output = &mSettings.output,
+                                        .bloom = bloom,
+                                        .bloomSettings = &mSettings.bloom,
+                                        .glow = bloom == nullptr && legacyGlow(tier, mSettings),
+                                        .grading = &mSettings.colorGrading,
+                                        .frameIndex = 0,
+                                        .timers = nullptr});
 }
 
 PipelineStatus Pipeline::status() const {
@@ -483,9 +258,66 @@ PipelineStatus Pipeline::status() const {
         t.path = ColorPath::Ldr;
         t.pathReason = mCaps.path == ColorPath::Ldr ? mCaps.pathReason : "quality=legacy runs the LDR path";
     }
-    t.bloomLevels = mBloomLevels;
+    t.bloomLevels = mPostSequencer.ran(mOrder->bloom) ? mOrder->bloom.levels() : 0;
     t.passes = mTimers.latest();
+    for (const Sequencer* s : {&mLightingSequencer, &mPostSequencer}) {
+        for (std::string& name : s->ranPasses()) {
+            t.ran.push_back(std::move(name));
+        }
+        for (SkippedPass& skipped : s->skippedPasses()) {
+            t.skipped.push_back(std::move(skipped));
+        }
+    }
+    t.inputErrors = mInputErrors;
     return t;
+}
+
+const ExposureTelemetry& Pipeline::telemetry() {
+    return mOrder->exposure.telemetry();
+}
+
+std::vector<ExposureTelemetry> Pipeline::drainTelemetry() {
+    return mOrder->exposure.drainTelemetry();
+}
+
+std::uint64_t Pipeline::droppedTelemetry() const {
+    return mOrder->exposure.droppedTelemetry();
+}
+
+void Pipeline::setTelemetryReadyOverride(std::function<bool()> ready) {
+    mOrder->exposure.setTelemetryReadyOverride(std::move(ready));
+}
+
+const Buffer& Pipeline::exposureState() const {
+    return mOrder->exposure.state();
+}
+
+void Pipeline::setSubjects(std::span<const Subject> subjects, glm::vec2 viewCentreWorld) noexcept {
+    mOrder->probes.setPending(subjects, viewCentreWorld);
+}
+
+void Pipeline::setOutdoorsMask(const OutdoorsMask* mask) noexcept {
+    mOrder->probes.tracker().setOutdoorsMask(mask);
+}
+
+const SubjectContext* Pipeline::contextForSubject(std::uint32_t id) const noexcept {
+    return mOrder->probes.tracker().contextForSubject(id);
+}
+
+const SubjectContext* Pipeline::subjectContext() const noexcept {
+    return mOrder->probes.tracker().subjectContext();
+}
+
+float Pipeline::outdoorsAtWorld(float x, float y) const noexcept {
+    return mOrder->probes.tracker().outdoorsAtWorld(x, y);
+}
+
+const SubjectTracker& Pipeline::subjects() const {
+    return mOrder->probes.tracker();
+}
+
+std::uint64_t Pipeline::droppedProbes() const {
+    return mOrder->probes.droppedProbes();
 }
 
 Image8 processImage(Pipeline& pipeline, const ImageF& image, const FrameTime& time) {

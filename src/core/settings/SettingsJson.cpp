@@ -171,4 +171,10 @@ void applySettingsOverride(Settings& settings, std::string_view assignment) {
     settings = std::move(candidate);
 }
 
+std::vector<SettingsIssue> validateSettings(const Settings& settings) {
+    // One set of rules: the JSON reader's type and range checks, applied to the values as written.
+    Settings scratch;
+    return readSettingsJson(settingsToJson(settings), scratch);
+}
+
 } // namespace photopic

@@ -40,6 +40,10 @@ nlohmann::json settingsToJsonValue(const Settings& settings);
 /// when it is valid JSON, else taken as a string. Throws SettingsError naming the override.
 void applySettingsOverride(Settings& settings, std::string_view assignment);
 
+/// Every issue `settings` has (a value out of its range, a NaN), by JSON path: what loading the same values
+/// from JSON would report. Empty when the settings can be used.
+std::vector<SettingsIssue> validateSettings(const Settings& settings);
+
 /// "postEffects.a.b: message (allowed ...)" lines, one per issue.
 std::string formatSettingsIssues(const std::vector<SettingsIssue>& issues);
 

@@ -24,6 +24,23 @@ BloomPass::BloomPass()
     , mUpsample(makeGraphicsProgram(kVertex, kUp, bindingDefines()))
     , mVao(VertexArray::create("bloom fullscreen")) {}
 
+std::span<const ResourceUse> BloomPass::uses() const {
+    static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
+                                            {Resource::ExposureState, Access::Read},
+                                            {Resource::Bloom, Access::Write}};
+    return kUses;
+}
+
+void BloomPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const BloomSettings& b = ctx.settings.bloom;
+    resources.bind(Resource::Bloom, execute({.scene = resources.texture(Resource::SceneColor),
+                                             .exposureState = resources.buffer(Resource::ExposureState),
+                                             .settings = &b,
+                                             .firstDivisor = ctx.tier.bloomFirstDivisor,
+                                             .mipCount = b.mipCount > 0 ? b.mipCount : ctx.tier.bloomMips,
+                                             .timers = ctx.timers}));
+}
+
 void BloomPass::resize(Extent extent) {
     if (extent == mExtent) {
         return;

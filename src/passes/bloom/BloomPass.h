@@ -4,14 +4,13 @@
 // composites it (energy-conserving mix or threshold add).
 
 #include "core/settings/BloomSettings.h"
-#include "gl/GpuTimers.h"
-#include "gl/Objects.h"
+#include "passes/FramePass.h"
 
 #include <vector>
 
 namespace photopic {
 
-class BloomPass {
+class BloomPass final : public FramePass {
 public:
     struct Inputs {
         const Texture* scene = nullptr;        ///< sanitised scene-referred colour (not yet exposed)
@@ -22,7 +21,14 @@ public:
         GpuTimers* timers = nullptr;
     };
     BloomPass();
-    void resize(Extent extent);
+    [[nodiscard]] std::string_view name() const override { return "bloom"; }
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    /// The HDR path's chain (the LDR path's glow is part of the tone-map pass).
+    [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
+        return ctx.hdr && ctx.tier.bloom && ctx.settings.bloom.enabled;
+    }
+    void resize(Extent extent) override;
+    void execute(FrameContext& ctx, FrameResources& resources) override;
     const Texture& execute(const Inputs& in);
     /// Levels of the chain the last execute ran.
     [[nodiscard]] int levels() const { return mLevels; }

@@ -13,65 +13,136 @@ constexpr const char* kVertex = "passes/common/fullscreen.vert.glsl";
 constexpr int kPanelMargin = 8;
 constexpr int kPanelMaxWidth = 512;
 constexpr int kPanelMaxHeight = 160;
+
+constexpr ResourceUse kSceneViewUses[] = {{Resource::SceneColor, Access::Read},
+                                          {Resource::ExposureState, Access::Read},
+                                          {Resource::Histogram, Access::Read},
+                                          {Resource::Bloom, Access::ReadOptional},
+                                          {Resource::MeteringMask, Access::ReadOptional},
+                                          {Resource::DebugColor, Access::Write}};
+constexpr ResourceUse kDepthViewUses[] = {{Resource::LinearDepth, Access::Read},
+                                          {Resource::Camera, Access::Read},
+                                          {Resource::DebugColor, Access::Write}};
+constexpr ResourceUse kNormalsViewUses[] = {{Resource::Normals, Access::Read},
+                                            {Resource::DebugColor, Access::Write}};
+constexpr ResourceUse kMotionViewUses[] = {{Resource::Motion, Access::Read},
+                                           {Resource::DebugColor, Access::Write}};
 } // namespace
 
 DebugViewPass::DebugViewPass()
     : mSceneProgram(makeGraphicsProgram(kVertex, "passes/debug/debug_view.frag.glsl", bindingDefines()))
-    , mHistogramProgram(
-          makeGraphicsProgram(kVertex, "passes/debug/debug_histogram.frag.glsl", bindingDefines()))
+    , mInputProgram(makeGraphicsProgram(kVertex, "passes/debug/debug_inputs.frag.glsl", bindingDefines()))
     , mVao(VertexArray::create("debug view")) {}
 
-void DebugViewPass::resize(Extent extent) {
-    if (mOutput.valid() && mOutput.extent() == extent) {
-        return;
+std::span<const ResourceUse> DebugViewPass::uses() const {
+    switch (mView) {
+    case DebugView::Depth:
+        return kDepthViewUses;
+    case DebugView::Normals:
+        return kNormalsViewUses;
+    case DebugView::Motion:
+        return kMotionViewUses;
+    default:
+        return kSceneViewUses;
     }
-    mOutput = Texture({.extent = extent, .format = GL_RGBA8, .debugName = "debug view"});
-    mFbo = Framebuffer(mOutput, 0, "debug view");
 }
 
-const Texture& DebugViewPass::execute(const Inputs& in) noexcept {
-    const Extent e = mOutput.extent();
-    DebugGroup group("debug view");
-    ScopedGpuTimer timer(in.timers, "debug view", double(e.width) * e.height * 12);
-    const AutoExposureSettings& ae = *in.autoExposure;
-    mFbo.bind();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState, in.exposureState->id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingHistogram, in.histogram->id());
-    if (in.view == DebugView::Histogram) {
-        const Program& p = mHistogramProgram;
-        const int width = std::min(kPanelMaxWidth, std::max(e.width - 2 * kPanelMargin, 1));
-        const int height = std::min(kPanelMaxHeight, std::max(e.height / 3, 1));
-        setUniform(p, "uPanel", float(kPanelMargin), float(kPanelMargin), float(width), float(height));
-        setUniform(p, "uLog2Min", ae.histogramLog2Min);
-        setUniform(p, "uLog2Max", ae.histogramLog2Max);
-        setUniform(p, "uKeyValue", ae.keyValue);
-        p.use();
-        glBindTextureUnit(0, in.display->id());
+void DebugViewPass::execute(FrameContext& ctx, FrameResources& resources) {
+    PooledTexture& out =
+        resources.pool().acquire({.extent = ctx.extent, .format = GL_RGBA8, .debugName = "debug view"});
+    const Extent e = ctx.extent;
+    ScopedGpuTimer timer(ctx.timers, "debug view", double(e.width) * e.height * 12);
+    out.framebuffer().bind();
+    if (mView == DebugView::Depth || mView == DebugView::Normals || mView == DebugView::Motion) {
+        drawInputView(ctx, resources);
     } else {
-        const Program& p = mSceneProgram;
-        if (in.view == DebugView::Bloom && !in.bloom) {
-            try {
-                warnOnce("debug.bloom.missing",
-                         "debug.view is \"bloom\" but the pipeline has no bloom; showing black");
-            } catch (...) { // logging must not take the frame down
-            }
-        }
-        setUniform(p, "uView", int(in.view));
-        setUniform(p, "uHasBloom", in.bloom ? 1 : 0);
-        setUniform(p, "uHasMask", in.mask ? 1 : 0);
-        setUniform(p, "uMeteringMode", int(ae.metering));
-        setUniform(p, "uLog2Min", ae.histogramLog2Min);
-        setUniform(p, "uLog2Max", ae.histogramLog2Max);
-        setUniform(p, "uSpotUv", ae.spot.u, ae.spot.v);
-        setUniform(p, "uSpotRadius", ae.spot.radius);
-        p.use();
-        glBindTextureUnit(0, in.scene->id());
-        glBindTextureUnit(1, in.mask ? in.mask->id() : in.scene->id());
-        glBindTextureUnit(2, in.bloom ? in.bloom->id() : in.scene->id());
+        drawSceneView(ctx, resources);
     }
     glBindVertexArray(mVao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    return mOutput;
+    resources.bind(Resource::DebugColor, out.texture());
+}
+
+void DebugViewPass::drawSceneView(const FrameContext& ctx, const FrameResources& resources) {
+    const AutoExposureSettings& ae = ctx.settings.autoExposure;
+    const Texture* scene = resources.texture(Resource::SceneColor);
+    const Texture* bloom = resources.texture(Resource::Bloom);
+    const Texture* mask = resources.texture(Resource::MeteringMask);
+    if (mView == DebugView::Bloom && !bloom) {
+        try {
+            warnOnce("debug.bloom.missing",
+                     "debug.view is \"bloom\" but the pipeline has no bloom; showing black");
+        } catch (...) { // logging must not take the frame down
+        }
+    }
+    const Program& p = mSceneProgram;
+    setUniform(p, "uView", int(mView));
+    setUniform(p, "uHasBloom", bloom ? 1 : 0);
+    setUniform(p, "uHasMask", mask ? 1 : 0);
+    setUniform(p, "uMeteringMode", int(ae.metering));
+    setUniform(p, "uLog2Min", ae.histogramLog2Min);
+    setUniform(p, "uLog2Max", ae.histogramLog2Max);
+    setUniform(p, "uSpotUv", ae.spot.u, ae.spot.v);
+    setUniform(p, "uSpotRadius", ae.spot.radius);
+    p.use();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
+                     resources.buffer(Resource::ExposureState)->id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingHistogram,
+                     resources.buffer(Resource::Histogram)->id());
+    glBindTextureUnit(0, scene->id());
+    glBindTextureUnit(1, mask ? mask->id() : scene->id());
+    glBindTextureUnit(2, bloom ? bloom->id() : scene->id());
+}
+
+void DebugViewPass::drawInputView(const FrameContext& ctx, const FrameResources& resources) {
+    const Resource source = mView == DebugView::Depth     ? Resource::LinearDepth
+                            : mView == DebugView::Normals ? Resource::Normals
+                                                          : Resource::Motion;
+    const Program& p = mInputProgram;
+    const Camera* camera = ctx.inputs.camera;
+    setUniform(p, "uView", int(mView));
+    setUniform(p, "uOctahedral", ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 1 : 0);
+    setUniform(p, "uNear", camera ? camera->nearPlane : 0.1f);
+    setUniform(p, "uFar", camera ? camera->farPlane : 1000.0f);
+    p.use();
+    glBindTextureUnit(0, resources.texture(source)->id());
+}
+
+HistogramOverlayPass::HistogramOverlayPass()
+    : mProgram(makeGraphicsProgram(kVertex, "passes/debug/debug_histogram.frag.glsl", bindingDefines()))
+    , mVao(VertexArray::create("histogram overlay")) {}
+
+std::span<const ResourceUse> HistogramOverlayPass::uses() const {
+    static constexpr ResourceUse kUses[] = {{Resource::DisplayColor, Access::Read},
+                                            {Resource::Histogram, Access::Read},
+                                            {Resource::ExposureState, Access::Read},
+                                            {Resource::DisplayColor, Access::Write}};
+    return kUses;
+}
+
+void HistogramOverlayPass::execute(FrameContext& ctx, FrameResources& resources) {
+    PooledTexture& out = resources.pool().acquire(
+        {.extent = ctx.extent, .format = GL_RGBA8, .debugName = "histogram overlay"});
+    const Extent e = ctx.extent;
+    const AutoExposureSettings& ae = ctx.settings.autoExposure;
+    ScopedGpuTimer timer(ctx.timers, "debug view", double(e.width) * e.height * 12);
+    out.framebuffer().bind();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
+                     resources.buffer(Resource::ExposureState)->id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingHistogram,
+                     resources.buffer(Resource::Histogram)->id());
+    const Program& p = mProgram;
+    const int width = std::min(kPanelMaxWidth, std::max(e.width - 2 * kPanelMargin, 1));
+    const int height = std::min(kPanelMaxHeight, std::max(e.height / 3, 1));
+    setUniform(p, "uPanel", float(kPanelMargin), float(kPanelMargin), float(width), float(height));
+    setUniform(p, "uLog2Min", ae.histogramLog2Min);
+    setUniform(p, "uLog2Max", ae.histogramLog2Max);
+    setUniform(p, "uKeyValue", ae.keyValue);
+    p.use();
+    glBindTextureUnit(0, resources.texture(Resource::DisplayColor)->id());
+    glBindVertexArray(mVao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    resources.bind(Resource::DisplayColor, out.texture());
 }
 
 } // namespace photopic

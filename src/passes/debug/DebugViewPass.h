@@ -1,31 +1,25 @@
 #pragma once
 // Debug views (settings `debug.view`). Scene-value views (exposure false colour, luma, EV, metering weights,
-// bloom) replace the image before tone mapping (DESIGN.md step 8) and are shown as they are; the histogram is
-// an overlay over the tone-mapped image (step 12), drawn from the GPU histogram buffer.
+// bloom) and the 3D input views (depth, normals, motion) replace the image before tone mapping and are shown
+// as they are. The histogram is an overlay over the tone-mapped image, drawn from the GPU histogram buffer,
+// by HistogramOverlayPass.
 
 #include "core/Settings.h"
-#include "gl/GpuTimers.h"
-#include "gl/Objects.h"
+#include "passes/FramePass.h"
 
 namespace photopic {
 
-class DebugViewPass {
+class DebugViewPass final : public FramePass {
 public:
-    struct Inputs {
-        DebugView view = DebugView::None;
-        const Texture* scene = nullptr;        ///< sanitised HDR colour (scene views)
-        const Texture* display = nullptr;      ///< tone-mapped RGBA8 image (histogram overlay)
-        const Texture* mask = nullptr;         ///< metering mask, when loaded
-        const Texture* bloom = nullptr;        ///< bloom texture, when the pipeline has bloom
-        const Buffer* exposureState = nullptr; ///< GpuExposureState
-        const Buffer* histogram = nullptr;     ///< 256 uint bins
-        const AutoExposureSettings* autoExposure = nullptr;
-        GpuTimers* timers = nullptr;
-    };
     DebugViewPass();
-    void resize(Extent extent);
-    /// The view as a display image (RGBA8, sRGB-encoded values). view must not be None.
-    const Texture& execute(const Inputs& in) noexcept;
+    [[nodiscard]] std::string_view name() const override { return "debug view"; }
+    /// Depends on the view: the 3D views require their input, the others the scene and its metering.
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
+        return isSceneView(ctx.settings.debug.view);
+    }
+    void configure(const Settings& settings) override { mView = settings.debug.view; }
+    void execute(FrameContext& ctx, FrameResources& resources) override;
 
     /// True for the views that replace the scene before tone mapping.
     [[nodiscard]] static bool isSceneView(DebugView view) {
@@ -33,11 +27,28 @@ public:
     }
 
 private:
+    void drawSceneView(const FrameContext& ctx, const FrameResources& resources);
+    void drawInputView(const FrameContext& ctx, const FrameResources& resources);
+
     Program mSceneProgram;
-    Program mHistogramProgram;
+    Program mInputProgram;
     VertexArray mVao;
-    Texture mOutput;
-    Framebuffer mFbo;
+    DebugView mView = DebugView::None;
+};
+
+class HistogramOverlayPass final : public FramePass {
+public:
+    HistogramOverlayPass();
+    [[nodiscard]] std::string_view name() const override { return "histogram overlay"; }
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
+        return ctx.settings.debug.view == DebugView::Histogram;
+    }
+    void execute(FrameContext& ctx, FrameResources& resources) override;
+
+private:
+    Program mProgram;
+    VertexArray mVao;
 };
 
 } // namespace photopic

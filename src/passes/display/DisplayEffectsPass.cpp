@@ -13,47 +13,62 @@ DisplayEffectsPass::DisplayEffectsPass()
     mBlack.uploadRgba32f(black);
 }
 
-void DisplayEffectsPass::resize(Extent extent) {
-    if (mOutput.valid() && mOutput.extent() == extent) {
-        return;
-    }
-    mOutput = Texture({.extent = extent, .format = GL_RGBA8, .debugName = "display effects output"});
-    mFbo = Framebuffer(mOutput, 0, "display effects output");
+std::span<const ResourceUse> DisplayEffectsPass::uses() const {
+    static constexpr ResourceUse kUses[] = {{Resource::DisplayColor, Access::Read},
+                                            {Resource::ExposureState, Access::Read},
+                                            {Resource::LensFlare, Access::ReadOptional},
+                                            {Resource::Bloom, Access::ReadOptional},
+                                            {Resource::DisplayColor, Access::Write}};
+    return kUses;
 }
 
-const Texture& DisplayEffectsPass::execute(const Inputs& in) {
-    const Extent e = mOutput.extent();
+bool DisplayEffectsPass::enabled(const FrameContext& ctx) const {
+    const Settings& s = ctx.settings;
+    const bool flare = ctx.hdr && ctx.tier.lensFlare && s.lensFlare.enabled;
+    return flare || (ctx.tier.grain && s.grain.enabled) || s.vignette.enabled || s.dazzle.enabled;
+}
+
+void DisplayEffectsPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const Texture& display = *resources.texture(Resource::DisplayColor);
+    const Texture* flare = resources.texture(Resource::LensFlare);
+    const Texture* glare = resources.texture(Resource::Bloom);
+    PooledTexture& out = resources.pool().acquire(
+        {.extent = ctx.extent, .format = GL_RGBA8, .debugName = "display effects output"});
+    const Settings& s = ctx.settings;
+    const Extent e = ctx.extent;
     double bytes = double(e.width) * e.height * 8.0;
-    for (const Texture* t : {in.flare, in.glare}) {
+    for (const Texture* t : {flare, glare}) {
         if (t) {
             bytes += double(t->extent().width) * t->extent().height * bytesPerTexel(t->format());
         }
     }
-    DebugGroup group("display effects");
-    ScopedGpuTimer timer(in.timers, "flare + dazzle + vignette + grain", bytes);
-    const VignetteSettings& v = *in.vignette;
+    ScopedGpuTimer timer(ctx.timers, "flare + dazzle + vignette + grain", bytes);
+    const VignetteSettings& v = s.vignette;
+    const bool grain = ctx.tier.grain && s.grain.enabled;
     setUniform(mProgram, "uTexel", 1.0f / float(e.width), 1.0f / float(e.height));
     setUniform(mProgram, "uChromaticAberration",
-               v.enabled && in.chromaticAberration ? v.chromaticAberration : 0.0f);
+               v.enabled && ctx.tier.chromaticAberration ? v.chromaticAberration : 0.0f);
     setUniform(mProgram, "uVignette", v.enabled ? 1 : 0);
     setUniform(mProgram, "uVignetteIntensity", v.intensity);
     setUniform(mProgram, "uVignetteFalloff", v.falloff);
-    setUniform(mProgram, "uFlare", in.flare ? 1 : 0);
-    setUniform(mProgram, "uDazzle", in.dazzle->enabled ? 1 : 0);
-    setUniform(mProgram, "uDazzleStrength", in.dazzle->strength);
-    setUniform(mProgram, "uDazzleRangeEV", in.dazzle->rangeEV);
-    setUniform(mProgram, "uGrain", in.grain->enabled ? 1 : 0);
-    setUniform(mProgram, "uGrainIntensity", in.grain->intensity);
-    glProgramUniform1ui(mProgram.id(), glGetUniformLocation(mProgram.id(), "uFrame"), GLuint(in.frameIndex));
+    setUniform(mProgram, "uFlare", flare ? 1 : 0);
+    setUniform(mProgram, "uDazzle", s.dazzle.enabled ? 1 : 0);
+    setUniform(mProgram, "uDazzleStrength", s.dazzle.strength);
+    setUniform(mProgram, "uDazzleRangeEV", s.dazzle.rangeEV);
+    setUniform(mProgram, "uGrain", grain ? 1 : 0);
+    setUniform(mProgram, "uGrainIntensity", s.grain.intensity);
+    glProgramUniform1ui(mProgram.id(), glGetUniformLocation(mProgram.id(), "uFrame"),
+                        GLuint(ctx.time.frameIndex));
     mProgram.use();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState, in.exposureState->id());
-    glBindTextureUnit(0, in.display->id());
-    glBindTextureUnit(1, in.flare ? in.flare->id() : mBlack.id());
-    glBindTextureUnit(2, in.glare ? in.glare->id() : mBlack.id());
-    mFbo.bind();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
+                     resources.buffer(Resource::ExposureState)->id());
+    glBindTextureUnit(0, display.id());
+    glBindTextureUnit(1, flare ? flare->id() : mBlack.id());
+    glBindTextureUnit(2, glare ? glare->id() : mBlack.id());
+    out.framebuffer().bind();
     glBindVertexArray(mVao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    return mOutput;
+    resources.bind(Resource::DisplayColor, out.texture());
 }
 
 } // namespace photopic

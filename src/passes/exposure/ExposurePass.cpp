@@ -1,14 +1,123 @@
 #include "passes/exposure/ExposurePass.h"
 
 #include "passes/Bindings.h"
+#include "passes/metering/MeteringPass.h"
 
 #include <algorithm>
 #include <array>
+#include <cstring>
+#include <span>
 
 namespace photopic {
 
-ExposurePass::ExposurePass()
-    : mProgram(makeComputeProgram("passes/exposure/exposure_adapt.comp.glsl", bindingDefines())) {}
+namespace {
+
+/// Readback slots: deep enough that a host polling once a frame never drops a frame on a GPU a few frames
+/// behind.
+constexpr int kTelemetrySlots = 16;
+constexpr std::size_t kTelemetryBytes = sizeof(GpuExposureState) + kGpuHistogramBytes;
+
+ExposureTelemetry decodeTelemetry(std::uint64_t frame, std::span<const std::byte> bytes) {
+    GpuExposureState s;
+    std::memcpy(&s, bytes.data(), sizeof(s));
+    ExposureTelemetry t;
+    t.valid = true;
+    t.frame = frame;
+    t.frameLuminance = s.frameLuminance;
+    t.meteredLuminance = s.meteredLuminance;
+    t.targetLog2 = s.targetLog2;
+    t.appliedLog2 = s.appliedLog2;
+    t.exposure = s.exposure;
+    t.manualEV = s.manualEV;
+    t.autoEnabled = s.autoEnabled != 0;
+    t.adapting = s.adapting != 0;
+    t.initialized = s.initialized != 0;
+    t.minLuminance = s.minLuminance;
+    t.maxLuminance = s.maxLuminance;
+    t.histogramCount = s.histogramCount;
+    t.histogramLowLog2 = s.histogramLowLog2;
+    t.histogramHighLog2 = s.histogramHighLog2;
+    t.histogramAverageLog2 = s.histogramAverageLog2;
+    std::memcpy(t.histogram.data(), bytes.data() + sizeof(GpuExposureState), kGpuHistogramBytes);
+    return t;
+}
+
+const GpuExposureState kInitialState{};
+
+} // namespace
+
+ExposurePass::ExposurePass(bool keepHistory)
+    : mProgram(makeComputeProgram("passes/exposure/exposure_adapt.comp.glsl", bindingDefines()))
+    , mState({.size = sizeof(GpuExposureState),
+              .flags = GL_DYNAMIC_STORAGE_BIT,
+              .data = &kInitialState,
+              .debugName = "exposure state"})
+    , mRecord({.size = kTelemetryBytes, .flags = 0, .data = nullptr, .debugName = "exposure telemetry"})
+    , mRing(kTelemetryBytes, kTelemetrySlots, "exposure telemetry")
+    , mKeepHistory(keepHistory) {}
+
+std::span<const ResourceUse> ExposurePass::uses() const {
+    static constexpr ResourceUse kUses[] = {{Resource::Histogram, Access::Read},
+                                            {Resource::Metering, Access::Read},
+                                            {Resource::ExposureState, Access::Write}};
+    return kUses;
+}
+
+void ExposurePass::execute(FrameContext& ctx, FrameResources& resources) {
+    const Buffer& histogram = *resources.buffer(Resource::Histogram);
+    execute({.histogram = &histogram,
+             .metering = resources.buffer(Resource::Metering),
+             .exposureState = &mState,
+             .settings = ctx.autoExposure,
+             .metered = ctx.settings.autoExposure.enabled,
+             .histogramBuilt = MeteringPass::histogramWanted(ctx.settings),
+             .reset = ctx.resetExposure,
+             .dt = ctx.time.dt,
+             .manualEV = ctx.settings.tonemapping.exposure,
+             .timers = ctx.timers});
+    resources.bind(Resource::ExposureState, mState);
+
+    // Telemetry: the state and the bins into one record, on the GPU, then into the ring (never waited on).
+    glCopyNamedBufferSubData(mState.id(), mRecord.id(), 0, 0, sizeof(GpuExposureState));
+    glCopyNamedBufferSubData(histogram.id(), mRecord.id(), 0, sizeof(GpuExposureState),
+                             GLsizeiptr(kGpuHistogramBytes));
+    pollTelemetry(); // frees finished slots first
+    mRing.enqueue(mRecord, 0, ctx.time.frameIndex);
+}
+
+void ExposurePass::keep(const ExposureTelemetry& record) {
+    mTelemetry = record;
+    if (mKeepHistory) {
+        mHistory.push_back(record);
+    }
+}
+
+void ExposurePass::pollTelemetry() {
+    if (mKeepHistory) {
+        for (const auto& r : mRing.pollAll()) {
+            keep(decodeTelemetry(r.tag, r.bytes));
+        }
+    } else if (const auto r = mRing.pollNewest()) {
+        keep(decodeTelemetry(r->tag, r->bytes));
+    }
+}
+
+const ExposureTelemetry& ExposurePass::telemetry() {
+    pollTelemetry();
+    return mTelemetry;
+}
+
+std::vector<ExposureTelemetry> ExposurePass::drainTelemetry() {
+    pollTelemetry();
+    for (const auto& r : mRing.drain()) {
+        const ExposureTelemetry t = decodeTelemetry(r.tag, r.bytes);
+        mTelemetry = t;
+        mHistory.push_back(t);
+    }
+    std::vector<ExposureTelemetry> out(mHistory.begin(), mHistory.end());
+    mHistory.clear();
+    return out;
+}
 
 void ExposurePass::execute(const Inputs& in) noexcept {
     DebugGroup group("exposure adaptation");

@@ -5,12 +5,40 @@
 // statistics a debug view may need.
 
 #include "core/settings/AutoExposureSettings.h"
-#include "gl/GpuTimers.h"
-#include "gl/Objects.h"
+#include "gl/ReadbackRing.h"
+#include "passes/FramePass.h"
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <vector>
 
 namespace photopic {
 
-class ExposurePass {
+/// One frame's exposure as the GPU computed it, read back through the ring (never blocking the frame).
+struct ExposureTelemetry {
+    bool valid = false;         ///< false until the first frame's record has arrived
+    std::uint64_t frame = 0;    ///< FrameTime::frameIndex of the frame it came from
+    float frameLuminance = 0;   ///< this frame's metered luminance, 0 when it had no reading
+    float meteredLuminance = 0; ///< the last valid reading (what the target follows)
+    float targetLog2 = 0;       ///< EV, auto exposure's target
+    float appliedLog2 = 0;      ///< EV, auto exposure's adapted value
+    float exposure = 1;         ///< total multiplier applied to the frame (manual x auto)
+    float manualEV = 0;
+    bool autoEnabled = false;
+    bool adapting = false;
+    bool initialized = false;
+    float minLuminance = 0; ///< smallest meterable pixel luminance (0 when nothing was metered)
+    float maxLuminance = 0;
+    std::uint32_t histogramCount = 0; ///< pixels binned (0: no histogram this frame)
+    float histogramLowLog2 = 0;       ///< percentile window, bin centres
+    float histogramHighLog2 = 0;
+    float histogramAverageLog2 = 0;
+    std::array<std::uint32_t, 256> histogram{}; ///< this frame's bins (replaced whole, never accumulated)
+};
+
+class ExposurePass final : public FramePass {
 public:
     struct Inputs {
         const Buffer* histogram = nullptr; ///< MeteringPass output (bins)
@@ -24,11 +52,40 @@ public:
         float manualEV = 0.0f;       ///< tonemapping.exposure
         GpuTimers* timers = nullptr;
     };
-    ExposurePass();
+    /// `keepHistory`: keep every frame's telemetry until drainTelemetry() (offline sequences); else only the
+    /// newest is kept.
+    explicit ExposurePass(bool keepHistory = false);
+    [[nodiscard]] std::string_view name() const override { return "exposure adaptation"; }
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    /// Telemetry goes into a readback ring every frame, whether or not anything downstream reads exposure.
+    [[nodiscard]] bool hasSideEffects() const override { return true; }
+    void execute(FrameContext& ctx, FrameResources& resources) override;
+    /// The adaptation kernel alone (benchmarks, tests).
     void execute(const Inputs& in) noexcept;
 
+    /// The GPU exposure state every later pass reads (GpuExposureState).
+    [[nodiscard]] const Buffer& state() const { return mState; }
+    /// The newest telemetry that has arrived, without blocking; the last result again when nothing new has
+    /// finished (a continuity cache); `valid` is false before the first.
+    const ExposureTelemetry& telemetry();
+    /// Blocks until every frame in flight has reported; every record not yet drained, oldest first.
+    std::vector<ExposureTelemetry> drainTelemetry();
+    /// The newest record polled so far, without polling.
+    [[nodiscard]] const ExposureTelemetry& lastTelemetry() const { return mTelemetry; }
+    [[nodiscard]] std::uint64_t droppedTelemetry() const { return mRing.dropped(); }
+    void setTelemetryReadyOverride(std::function<bool()> ready) { mRing.setReadyOverride(std::move(ready)); }
+
 private:
+    void pollTelemetry();
+    void keep(const ExposureTelemetry& record);
+
     Program mProgram;
+    Buffer mState;
+    Buffer mRecord; ///< GpuExposureState + bins, copied on the GPU, then into the ring
+    ReadbackRing mRing;
+    ExposureTelemetry mTelemetry;
+    std::deque<ExposureTelemetry> mHistory;
+    bool mKeepHistory = false;
 };
 
 } // namespace photopic

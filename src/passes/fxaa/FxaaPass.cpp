@@ -4,34 +4,38 @@
 
 namespace photopic {
 
+namespace {
+constexpr ResourceUse kUses[] = {{Resource::DisplayColor, Access::Read},
+                                 {Resource::DisplayColor, Access::Write}};
+} // namespace
+
 FxaaPass::FxaaPass()
     : mProgram(makeGraphicsProgram("passes/common/fullscreen.vert.glsl", "passes/fxaa/fxaa.frag.glsl",
                                    bindingDefines()))
     , mVao(VertexArray::create("fxaa fullscreen")) {}
 
-void FxaaPass::resize(Extent extent) {
-    if (mOutput.valid() && mOutput.extent() == extent) {
-        return;
-    }
-    mOutput = Texture({.extent = extent, .format = GL_RGBA8, .debugName = "fxaa output"});
-    mFbo = Framebuffer(mOutput, 0, "fxaa output");
+std::span<const ResourceUse> FxaaPass::uses() const {
+    return kUses;
 }
 
-const Texture& FxaaPass::execute(const Inputs& in) {
-    const Extent e = mOutput.extent();
-    DebugGroup group("fxaa");
+void FxaaPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const Texture& display = *resources.texture(Resource::DisplayColor);
+    PooledTexture& out =
+        resources.pool().acquire({.extent = ctx.extent, .format = GL_RGBA8, .debugName = "fxaa output"});
+    const Extent e = ctx.extent;
+    const FxaaSettings& s = ctx.settings.fxaa;
     // One RGBA8 read (the 3x3 and the searches hit the cache) and one RGBA8 write.
-    ScopedGpuTimer timer(in.timers, "fxaa", double(e.width) * e.height * 8.0);
+    ScopedGpuTimer timer(ctx.timers, "fxaa", double(e.width) * e.height * 8.0);
     setUniform(mProgram, "uTexel", 1.0f / float(e.width), 1.0f / float(e.height));
-    setUniform(mProgram, "uSubpix", in.settings->subpix);
-    setUniform(mProgram, "uEdgeThreshold", in.settings->edgeThreshold);
-    setUniform(mProgram, "uEdgeThresholdMin", in.settings->edgeThresholdMin);
+    setUniform(mProgram, "uSubpix", s.subpix);
+    setUniform(mProgram, "uEdgeThreshold", s.edgeThreshold);
+    setUniform(mProgram, "uEdgeThresholdMin", s.edgeThresholdMin);
     mProgram.use();
-    glBindTextureUnit(0, in.display->id());
-    mFbo.bind();
+    glBindTextureUnit(0, display.id());
+    out.framebuffer().bind();
     glBindVertexArray(mVao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    return mOutput;
+    resources.bind(Resource::DisplayColor, out.texture());
 }
 
 } // namespace photopic

@@ -1,28 +1,24 @@
 #pragma once
-// FXAA 3.11 (quality path) on the display-referred RGBA8 image (DESIGN.md step 10).
+// FXAA 3.11 (quality path) on the display-referred RGBA8 image, after tone mapping: anti-aliasing judges
+// edges by perceived contrast, which display-referred values carry.
 
-#include "core/settings/DisplaySettings.h"
-#include "gl/GpuTimers.h"
-#include "gl/Objects.h"
+#include "passes/FramePass.h"
 
 namespace photopic {
 
-class FxaaPass {
+class FxaaPass final : public FramePass {
 public:
-    struct Inputs {
-        const Texture* display = nullptr; ///< tone-mapped, sRGB-encoded RGBA8
-        const FxaaSettings* settings = nullptr;
-        GpuTimers* timers = nullptr;
-    };
     FxaaPass();
-    void resize(Extent extent);
-    const Texture& execute(const Inputs& in);
+    [[nodiscard]] std::string_view name() const override { return "fxaa"; }
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
+        return ctx.tier.fxaa && ctx.settings.fxaa.enabled;
+    }
+    void execute(FrameContext& ctx, FrameResources& resources) override;
 
 private:
     Program mProgram;
     VertexArray mVao;
-    Texture mOutput;
-    Framebuffer mFbo;
 };
 
 } // namespace photopic

@@ -18,6 +18,21 @@ LensFlarePass::LensFlarePass()
           makeGraphicsProgram(kVertex, "passes/lensflare/lensflare_features.frag.glsl", bindingDefines()))
     , mVao(VertexArray::create("lens flare fullscreen")) {}
 
+std::span<const ResourceUse> LensFlarePass::uses() const {
+    static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
+                                            {Resource::ExposureState, Access::Read},
+                                            {Resource::LensFlare, Access::Write}};
+    return kUses;
+}
+
+void LensFlarePass::execute(FrameContext& ctx, FrameResources& resources) {
+    resources.bind(Resource::LensFlare, execute({.scene = resources.texture(Resource::SceneColor),
+                                                 .exposureState = resources.buffer(Resource::ExposureState),
+                                                 .settings = &ctx.settings.lensFlare,
+                                                 .divisor = ctx.tier.lensFlareDivisor,
+                                                 .timers = ctx.timers}));
+}
+
 void LensFlarePass::resize(Extent extent) {
     if (extent == mExtent) {
         return;

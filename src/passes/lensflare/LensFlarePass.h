@@ -3,12 +3,11 @@
 // HDR buffer the display-effects pass adds in the display domain. Independent of bloom and its settings.
 
 #include "core/settings/DisplaySettings.h"
-#include "gl/GpuTimers.h"
-#include "gl/Objects.h"
+#include "passes/FramePass.h"
 
 namespace photopic {
 
-class LensFlarePass {
+class LensFlarePass final : public FramePass {
 public:
     struct Inputs {
         const Texture* scene = nullptr;        ///< sanitised scene-referred colour
@@ -18,7 +17,13 @@ public:
         GpuTimers* timers = nullptr;
     };
     LensFlarePass();
-    void resize(Extent extent);
+    [[nodiscard]] std::string_view name() const override { return "lens flare"; }
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
+        return ctx.hdr && ctx.tier.lensFlare && ctx.settings.lensFlare.enabled;
+    }
+    void resize(Extent extent) override;
+    void execute(FrameContext& ctx, FrameResources& resources) override;
     const Texture& execute(const Inputs& in);
 
 private:

@@ -1,5 +1,8 @@
 #include "passes/metering/MeteringPass.h"
 
+#include "core/Log.h"
+#include "gl/TextureIo.h"
+#include "io/ImageIO.h"
 #include "passes/Bindings.h"
 
 #include <cstdint>
@@ -29,6 +32,77 @@ MeteringPass::MeteringPass()
     : mMeter(makeComputeProgram("passes/metering/metering.comp.glsl", bindingDefines()))
     , mReduce(makeComputeProgram("passes/metering/metering_reduce.comp.glsl", bindingDefines()))
     , mHistogram({.size = kGpuHistogramBytes, .flags = 0, .data = nullptr, .debugName = "histogram bins"}) {}
+
+std::span<const ResourceUse> MeteringPass::uses() const {
+    static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
+                                            {Resource::Histogram, Access::Write},
+                                            {Resource::Metering, Access::Write},
+                                            {Resource::MeteringMask, Access::Write}};
+    return kUses;
+}
+
+void MeteringPass::configure(const Settings& settings) {
+    const std::string& path = settings.autoExposure.mask.path;
+    if (path == mMaskPath) {
+        return;
+    }
+    // Set-up boundary: an unreadable mask throws IoError naming the file.
+    mMask = path.empty() ? Texture() : makeTexture(readImage(path), "metering mask");
+    mMaskPath = path;
+}
+
+bool MeteringPass::histogramWanted(const Settings& s) noexcept {
+    const AutoExposureSettings& ae = s.autoExposure;
+    const DebugView view = s.debug.view;
+    return (ae.enabled && ae.metering == MeteringMode::Histogram) || view == DebugView::Histogram ||
+           (view == DebugView::Metering && ae.metering == MeteringMode::Histogram);
+}
+
+MeteringPass::Weights MeteringPass::weightsFor(const AutoExposureSettings& ae, bool haveMask) noexcept {
+    if (!ae.enabled) {
+        return Weights::None;
+    }
+    switch (ae.metering) {
+    case MeteringMode::Average:
+        return Weights::Average;
+    case MeteringMode::Histogram:
+        return Weights::None;
+    case MeteringMode::Spot:
+        return Weights::Spot;
+    case MeteringMode::Center:
+        return Weights::Center;
+    case MeteringMode::Subject:
+        return Weights::None; // the probe pass writes the reading
+    case MeteringMode::Mask:
+        if (!haveMask) {
+            try {
+                warnOnce(
+                    "metering.mask.missing",
+                    "autoExposure.metering is \"mask\" but no mask image is loaded; metering the average");
+            } catch (...) { // logging must not take the frame down
+            }
+            return Weights::Average;
+        }
+        return Weights::Mask;
+    }
+    return Weights::Average;
+}
+
+void MeteringPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const AutoExposureSettings& ae = ctx.settings.autoExposure;
+    const Texture* mask = mMask.valid() ? &mMask : nullptr;
+    const Outputs out = execute({.scene = resources.texture(Resource::SceneColor),
+                                 .mask = mask,
+                                 .settings = &ae,
+                                 .histogram = histogramWanted(ctx.settings),
+                                 .weights = weightsFor(ae, mask != nullptr),
+                                 .timers = ctx.timers});
+    resources.bind(Resource::Histogram, *out.histogram);
+    resources.bind(Resource::Metering, *out.metering);
+    if (mask) {
+        resources.bind(Resource::MeteringMask, *mask);
+    }
+}
 
 void MeteringPass::resize(Extent extent) {
     if (mMetering.valid() && mExtent == extent) {

@@ -4,12 +4,13 @@
 // the adaptation pass (passes/exposure/) turns into exposure. Nothing is read back here.
 
 #include "core/settings/AutoExposureSettings.h"
-#include "gl/GpuTimers.h"
-#include "gl/Objects.h"
+#include "passes/FramePass.h"
+
+#include <string>
 
 namespace photopic {
 
-class MeteringPass {
+class MeteringPass final : public FramePass {
 public:
     /// Which weighted mean the pass computes (core/Metering.h). `None` skips it (histogram metering, or auto
     /// exposure off with only the histogram wanted by a debug view).
@@ -29,8 +30,20 @@ public:
     };
 
     MeteringPass();
+    [[nodiscard]] std::string_view name() const override { return "metering"; }
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    /// Loads the mask image that `autoExposure.mask.path` names (throws IoError naming the file).
+    void configure(const Settings& settings) override;
     /// Sizes the partial-sum buffer for `extent` (one vec2 per 16x16 workgroup).
-    void resize(Extent extent);
+    void resize(Extent extent) override;
+    void execute(FrameContext& ctx, FrameResources& resources) override;
+
+    /// The histogram is built when exposure or a debug view needs it (the histogram view works with auto
+    /// exposure off). The exposure pass asks the same question to know whether the bins are this frame's.
+    [[nodiscard]] static bool histogramWanted(const Settings& settings) noexcept;
+    /// The weighted mean this frame's settings ask for (the subject probe writes its own reading).
+    [[nodiscard]] static Weights weightsFor(const AutoExposureSettings& ae, bool haveMask) noexcept;
+
     /// Clears the bins and the min/max, then meters: nothing more when neither a histogram nor a mean is
     /// wanted, else one metering dispatch plus, for a mean, one reduction dispatch.
     Outputs execute(const Inputs& in) noexcept;
@@ -43,6 +56,8 @@ private:
     Program mReduce;
     Buffer mHistogram;
     Buffer mMetering;
+    Texture mMask;
+    std::string mMaskPath;
     Extent mExtent;
     int mGroupsX = 0;
     int mGroupsY = 0;

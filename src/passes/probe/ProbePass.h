@@ -6,9 +6,10 @@
 // the subject of the view's luma on the GPU (with the probe deadband) and writes it as the metering reading,
 // so exposure follows it in the same frame and keeps adapting between probes.
 
+#include "core/OutdoorsMask.h"
 #include "core/Subjects.h"
-#include "gl/GpuTimers.h"
-#include "gl/Objects.h"
+#include "gl/ReadbackRing.h"
+#include "passes/FramePass.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -17,7 +18,7 @@
 
 namespace photopic {
 
-class ProbePass {
+class ProbePass final : public FramePass {
 public:
     struct Inputs {
         const Texture* scene = nullptr;         ///< sanitised HDR colour (texture rows bottom-up)
@@ -33,6 +34,23 @@ public:
     };
 
     ProbePass();
+    [[nodiscard]] std::string_view name() const override { return "subject probes"; }
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    /// The subject tracker advances every frame (selection, probe schedule, results coming back).
+    [[nodiscard]] bool hasSideEffects() const override { return true; }
+    /// Sizes the tracker, the pending list, the probe buffer and its readback ring (subjects.maxSubjects).
+    void configure(const Settings& settings) override;
+    /// Registers the frame's subjects, schedules and dispatches the probes; with `subject` metering writes
+    /// the reading and, with outdoors coupling, this frame's auto exposure settings into the context.
+    void execute(FrameContext& ctx, FrameResources& resources) override;
+
+    /// Subjects for the next frame when FrameInputs brings none (hosts that prepare before the caller
+    /// runs the pipeline); copied into storage sized at set-up, so it does not allocate.
+    void setPending(std::span<const Subject> subjects, glm::vec2 viewCentreWorld) noexcept;
+    [[nodiscard]] SubjectTracker& tracker() noexcept { return mTracker; }
+    [[nodiscard]] const SubjectTracker& tracker() const noexcept { return mTracker; }
+    [[nodiscard]] std::uint64_t droppedProbes() const { return mRing.dropped(); }
+
     /// Set-up time: sizes the probe buffer for `entries` probes per frame.
     void setCapacity(std::size_t entries);
     [[nodiscard]] std::size_t capacity() const { return mCapacity; }
@@ -52,6 +70,14 @@ private:
     Buffer mState; ///< GpuSubjectState, across frames
     std::vector<std::byte> mStaging;
     std::size_t mCapacity = 0;
+    void pollProbes() noexcept;
+
+    SubjectTracker mTracker;
+    ReadbackRing mRing;
+    std::vector<Subject> mPending; ///< setPending(), capacity subjects.maxSubjects
+    std::size_t mPendingCount = 0;
+    glm::vec2 mPendingCentre{0.0f};
+    AutoExposureSettings mCoupled; ///< this frame's outdoors-coupled auto exposure (subject metering)
 };
 
 } // namespace photopic

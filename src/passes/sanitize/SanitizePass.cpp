@@ -4,27 +4,31 @@
 
 namespace photopic {
 
+namespace {
+constexpr ResourceUse kUses[] = {{Resource::Color, Access::Read}, {Resource::SceneColor, Access::Write}};
+} // namespace
+
 SanitizePass::SanitizePass()
     : mProgram(makeComputeProgram("passes/sanitize/sanitize.comp.glsl", bindingDefines())) {}
 
-void SanitizePass::resize(Extent extent) {
-    if (mOutput.valid() && mOutput.extent() == extent) {
-        return;
-    }
-    mOutput = Texture({.extent = extent, .format = GL_RGBA16F, .debugName = "sanitized colour"});
+std::span<const ResourceUse> SanitizePass::uses() const {
+    return kUses;
 }
 
-const Texture& SanitizePass::execute(const Inputs& in) {
-    const Extent e = mOutput.extent();
-    const double bytes = double(e.width) * e.height * (bytesPerTexel(in.color->format()) + 8);
-    DebugGroup group("sanitize");
-    ScopedGpuTimer timer(in.timers, "sanitize", bytes);
+void SanitizePass::execute(FrameContext& ctx, FrameResources& resources) {
+    const Texture& color = *resources.texture(Resource::Color);
+    const Texture& out =
+        resources.pool()
+            .acquire({.extent = ctx.extent, .format = GL_RGBA16F, .debugName = "sanitized colour"})
+            .texture();
+    const Extent e = ctx.extent;
+    const double bytes = double(e.width) * e.height * (bytesPerTexel(color.format()) + 8);
+    ScopedGpuTimer timer(ctx.timers, "sanitize", bytes);
     mProgram.use();
-    glBindTextureUnit(0, in.color->id());
-    glBindImageTexture(0, mOutput.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindTextureUnit(0, color.id());
+    glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glDispatchCompute(GLuint((e.width + 7) / 8), GLuint((e.height + 7) / 8), 1);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    return mOutput;
+    resources.bind(Resource::SceneColor, out);
 }
 
 } // namespace photopic

@@ -1,25 +1,22 @@
 #pragma once
+// The first read of the host's colour: any float format -> RGBA16F with NaN, +-Inf and negatives -> 0 and
+// values clamped below the half-float maximum, so nothing non-finite reaches metering, exposure or bloom.
 
-#include "gl/GpuTimers.h"
-#include "gl/Objects.h"
+#include "passes/FramePass.h"
 
 namespace photopic {
 
-/// Input colour (any float format the host gives) -> RGBA16F with NaN/Inf/negative -> 0 and values < 65000.
-class SanitizePass {
+class SanitizePass final : public FramePass {
 public:
-    struct Inputs {
-        const Texture* color = nullptr;
-        GpuTimers* timers = nullptr;
-    };
     SanitizePass();
-    void resize(Extent extent);
-    const Texture& execute(const Inputs& in);
-    [[nodiscard]] const Texture& output() const { return mOutput; }
+    [[nodiscard]] std::string_view name() const override { return "sanitize"; }
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    /// The HDR path only: the LDR path sanitises inside its single pass.
+    [[nodiscard]] bool enabled(const FrameContext& ctx) const override { return ctx.hdr; }
+    void execute(FrameContext& ctx, FrameResources& resources) override;
 
 private:
     Program mProgram;
-    Texture mOutput;
 };
 
 } // namespace photopic

@@ -14,8 +14,17 @@ constexpr const char* kVertex = "passes/common/fullscreen.vert.glsl";
 constexpr const char* kFragment = "passes/tonemap/tonemap.frag.glsl";
 } // namespace
 
-TonemapPass::TonemapPass()
-    : mVao(VertexArray::create("fullscreen")) {}
+TonemapPass::TonemapPass(const Capabilities& caps)
+    : mCaps(caps)
+    , mVao(VertexArray::create("fullscreen")) {}
+
+std::span<const ResourceUse> TonemapPass::uses() const {
+    static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
+                                            {Resource::ExposureState, Access::Read},
+                                            {Resource::Bloom, Access::ReadOptional},
+                                            {Resource::DisplayColor, Access::Write}};
+    return kUses;
+}
 
 const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene) {
     // The scene-referred output stops before the curve: one program serves every mode.
@@ -41,9 +50,10 @@ const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool
     return it->second;
 }
 
-void TonemapPass::prepare(const ToneMappingSettings& tonemapping, const ColorGradingSettings& grading,
-                          bool glow) {
-    if (glow) {
+void TonemapPass::configure(const Settings& settings) {
+    const ToneMappingSettings& tonemapping = settings.tonemapping;
+    const ColorGradingSettings& grading = settings.colorGrading;
+    if (legacyGlow(effectiveTier(mCaps, settings.quality), settings)) {
         variant(tonemapping.mode, false, true, grading.enabled, false);
         return;
     }
@@ -52,17 +62,7 @@ void TonemapPass::prepare(const ToneMappingSettings& tonemapping, const ColorGra
     }
 }
 
-void TonemapPass::resize(Extent extent) {
-    if (mDisplay.valid() && mDisplay.extent() == extent) {
-        return;
-    }
-    mDisplay = Texture({.extent = extent, .format = GL_RGBA8, .debugName = "display"});
-    mDisplayFbo = Framebuffer(mDisplay, 0, "display");
-    mScene = {};
-    mSceneFbo = {};
-}
-
-void TonemapPass::draw(const Program& program, const Inputs& in) {
+void TonemapPass::draw(const Program& program, const Inputs& in, Extent extent) {
     setUniform(program, "uWhitePoint", in.tonemapping->whitePoint);
     setUniform(program, "uAgxLook", int(in.tonemapping->agxLook));
     setUniform(program, "uDither", in.output->dither ? 1 : 0);
@@ -77,7 +77,7 @@ void TonemapPass::draw(const Program& program, const Inputs& in) {
         setUniform(program, "uGlowThreshold", b.mode == BloomMode::Threshold ? b.threshold : 1.0f);
         setUniform(program, "uGlowIntensity", b.intensity);
         // ~2% of the frame height, as wide as a mid level of the full chain; at least a few pixels.
-        setUniform(program, "uGlowRadius", std::max(4.0f, 0.02f * float(mDisplay.extent().height)));
+        setUniform(program, "uGlowRadius", std::max(4.0f, 0.02f * float(extent.height)));
     }
     if (in.grading && in.grading->enabled) {
         const ColorGradingSettings& g = *in.grading;
@@ -97,31 +97,42 @@ void TonemapPass::draw(const Program& program, const Inputs& in) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-const Texture& TonemapPass::execute(const Inputs& in) {
-    const Extent e = mDisplay.extent();
-    DebugGroup group("tonemap");
+void TonemapPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const Inputs in{.scene = resources.texture(Resource::SceneColor),
+                    .exposureState = resources.buffer(Resource::ExposureState),
+                    .tonemapping = &ctx.settings.tonemapping,
+                    .output = &ctx.settings.output,
+                    .bloom = resources.texture(Resource::Bloom),
+                    .bloomSettings = &ctx.settings.bloom,
+                    .glow = !ctx.hdr && legacyGlow(ctx.tier, ctx.settings),
+                    .grading = &ctx.settings.colorGrading,
+                    .frameIndex = ctx.time.frameIndex,
+                    .timers = ctx.timers};
+    PooledTexture& out =
+        resources.pool().acquire({.extent = ctx.extent, .format = GL_RGBA8, .debugName = "display"});
+    const Extent e = ctx.extent;
     double bytes = double(e.width) * e.height * (bytesPerTexel(in.scene->format()) + 4);
     if (in.bloom) {
         bytes +=
             double(in.bloom->extent().width) * in.bloom->extent().height * bytesPerTexel(in.bloom->format());
     }
     ScopedGpuTimer timer(in.timers, "composite + grade + tonemap", bytes);
-    mDisplayFbo.bind();
+    out.framebuffer().bind();
     const bool grade = in.grading && in.grading->enabled;
-    draw(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, false), in);
-    return mDisplay;
+    draw(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, false), in, e);
+    resources.bind(Resource::DisplayColor, out.texture());
 }
 
 const Texture& TonemapPass::renderScene(const Inputs& in) {
-    if (!mScene.valid()) {
-        mScene = Texture(
-            {.extent = mDisplay.extent(), .format = GL_RGBA32F, .debugName = "scene-referred output"});
+    const Extent e = in.scene->extent();
+    if (!mScene.valid() || mScene.extent() != e) {
+        mScene = Texture({.extent = e, .format = GL_RGBA32F, .debugName = "scene-referred output"});
         mSceneFbo = Framebuffer(mScene, 0, "scene-referred output");
     }
     DebugGroup group("scene-referred output");
     mSceneFbo.bind();
     const bool grade = in.grading && in.grading->enabled;
-    draw(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, true), in);
+    draw(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, true), in, e);
     return mScene;
 }
 

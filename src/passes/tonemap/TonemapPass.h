@@ -1,8 +1,7 @@
 #pragma once
 
 #include "core/Settings.h"
-#include "gl/GpuTimers.h"
-#include "gl/Objects.h"
+#include "passes/FramePass.h"
 
 #include <cstdint>
 #include <map>
@@ -12,7 +11,7 @@ namespace photopic {
 /// The uber pass: exposure, bloom composite, HDR grading, tone curve, sRGB, dither -> RGBA8 display image;
 /// or, as `renderScene`, the composited and graded scene-referred image just before the curve (RGBA32F) for
 /// EXR output.
-class TonemapPass {
+class TonemapPass final : public FramePass {
 public:
     struct Inputs {
         const Texture* scene = nullptr;        ///< scene-referred colour (sanitised or the host's)
@@ -27,16 +26,19 @@ public:
         std::uint64_t frameIndex = 0;
         GpuTimers* timers = nullptr;
     };
-    TonemapPass();
-    /// Compiles the programs `tonemapping` and `grading` select (with and without bloom) ahead of the first
-    /// frame: a set-up boundary, throws GlError with the log. execute() compiles any still missing.
-    void prepare(const ToneMappingSettings& tonemapping, const ColorGradingSettings& grading, bool glow);
-    void resize(Extent extent);
-    const Texture& execute(const Inputs& in);
+    /// `caps` decides whether frames can take the HDR path (for the programs configure() prepares).
+    explicit TonemapPass(const Capabilities& caps);
+    [[nodiscard]] std::string_view name() const override { return "composite + grade + tonemap"; }
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    /// Compiles the programs the settings select (with and without bloom) ahead of the first frame: a
+    /// set-up boundary, throws GlError with the log. execute() compiles any still missing.
+    void configure(const Settings& settings) override;
+    void execute(FrameContext& ctx, FrameResources& resources) override;
+    /// The composited and graded scene-referred image just before the curve (RGBA32F), for EXR output.
     const Texture& renderScene(const Inputs& in);
 
 private:
-    void draw(const Program& program, const Inputs& in);
+    void draw(const Program& program, const Inputs& in, Extent extent);
     /// One program per (curve, bloom, grading, scene output): the curve and the switches are #defines, not
     /// uniforms. Mesa llvmpipe executes every case of a switch on a uniform under a SIMD mask, so a runtime
     /// curve switch cost all eleven curves per pixel (1920x1080, --sync wall time: 280 ms against 49 ms for
@@ -44,9 +46,8 @@ private:
     const Program& variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene);
 
     std::map<int, Program> mPrograms; ///< by variant key (see variant())
+    const Capabilities& mCaps;
     VertexArray mVao;
-    Texture mDisplay;
-    Framebuffer mDisplayFbo;
     Texture mScene;
     Framebuffer mSceneFbo;
 };

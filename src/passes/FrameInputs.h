@@ -1,0 +1,56 @@
+#pragma once
+// What a host hands the pipeline each frame: its colour, optionally depth, normals, motion vectors, the
+// camera and subjects, and the frame's time. docs/architecture.md ("Inputs") draws the conventions.
+
+#include "core/Camera.h"
+#include "core/Subjects.h"
+#include "gl/Objects.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <span>
+
+namespace photopic {
+
+/// How a depth input encodes distance (docs/architecture.md, "Inputs").
+enum class DepthKind {
+    Standard,   ///< window depth in [0, 1] of a GL perspective projection: near -> 0, far -> 1
+    Reversed,   ///< reversed-Z window depth (glClipControl zero-to-one): near -> 1, far or infinity -> 0
+    LinearView, ///< R32F/R16F: positive distance along the view axis in scene units; >= far or inf = sky
+};
+
+/// How a normals input is stored. Normals are view-space unit vectors (right-handed, +z towards the viewer).
+enum class NormalEncoding {
+    ViewXyz,    ///< RGB(A)16F/32F holding x, y, z in [-1, 1]
+    Octahedral, ///< RG16F/RG32F: octahedral encoding in [-1, 1]^2
+};
+
+/// What the host hands the pipeline each frame. Textures are the host's: adopted, never owned. Everything
+/// but colour is optional; a pass that needs an input the frame lacks is skipped and reported in
+/// PipelineStatus::skipped. Every texture has colour's extent.
+struct FrameInputs {
+    const Texture* color = nullptr; ///< scene-referred linear Rec.709 colour, any float format
+    const Texture* depth = nullptr; ///< depth buffer or linear view depth, see depthKind
+    DepthKind depthKind = DepthKind::Standard;
+    const Texture* normals = nullptr; ///< view-space unit normals, see normalEncoding
+    NormalEncoding normalEncoding = NormalEncoding::ViewXyz;
+    /// RG16F/RG32F: UV-space displacement of each pixel's surface point, current minus previous frame, with
+    /// both frames' jitter removed (uv_prev = uv - motion). Static scene, static camera: 0.
+    const Texture* motion = nullptr;
+    const Camera* camera = nullptr; ///< view, unjittered projection, previous view-projection, lens
+    /// This frame's subjects (tokens, characters) in the host's order; read during execute(), not kept.
+    /// Empty: no subject (subject metering holds exposure, or probes the screen centre with
+    /// subjects.fallback = center).
+    std::span<const Subject> subjects{};
+    glm::vec2 viewCentreWorld{0.0f}; ///< world position under the screen centre (the centre subject's)
+};
+
+/// Time comes from the caller, never from a wall clock: a frame renders the same whatever the machine's
+/// speed, and offline sequences, tests and replays are deterministic.
+struct FrameTime {
+    float dt = 1.0f / 30.0f;      ///< seconds since the previous frame
+    std::uint64_t frameIndex = 0; ///< monotonically increasing; drives dither/grain patterns
+};
+
+} // namespace photopic

@@ -1,0 +1,97 @@
+#include "passes/inputs/InputPasses.h"
+
+#include "core/Log.h"
+#include "passes/Bindings.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace photopic {
+
+namespace {
+void setMatrix(const Program& p, const char* name, const glm::mat4& m) {
+    glProgramUniformMatrix4fv(p.id(), glGetUniformLocation(p.id(), name), 1, GL_FALSE, glm::value_ptr(m));
+}
+GLuint groups(int size) {
+    return GLuint((size + 7) / 8);
+}
+} // namespace
+
+LinearDepthPass::LinearDepthPass()
+    : mProgram(makeComputeProgram("passes/inputs/linear_depth.comp.glsl", bindingDefines())) {}
+
+std::span<const ResourceUse> LinearDepthPass::uses() const {
+    static constexpr ResourceUse kUses[] = {{Resource::Depth, Access::Read},
+                                            {Resource::Camera, Access::Read},
+                                            {Resource::LinearDepth, Access::Write}};
+    return kUses;
+}
+
+bool LinearDepthPass::enabled(const FrameContext& ctx) const {
+    return ctx.inputs.depth != nullptr;
+}
+
+void LinearDepthPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const Camera& camera = *ctx.inputs.camera;
+    const Texture& out = resources.pool()
+                             .acquire({.extent = ctx.extent,
+                                       .format = GL_R32F,
+                                       .minFilter = GL_NEAREST,
+                                       .magFilter = GL_NEAREST,
+                                       .debugName = "linear depth"})
+                             .texture();
+    const Texture& depth = *resources.texture(Resource::Depth);
+    ScopedGpuTimer timer(ctx.timers, "linear depth",
+                         double(ctx.extent.width) * ctx.extent.height * (bytesPerTexel(depth.format()) + 4));
+    setUniform(mProgram, "uKind", int(ctx.inputs.depthKind));
+    setUniform(mProgram, "uNear", camera.nearPlane);
+    setUniform(mProgram, "uFar", camera.farPlane);
+    mProgram.use();
+    glBindTextureUnit(0, depth.id());
+    glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glDispatchCompute(groups(ctx.extent.width), groups(ctx.extent.height), 1);
+    resources.bind(Resource::LinearDepth, out);
+}
+
+CameraMotionPass::CameraMotionPass()
+    : mProgram(makeComputeProgram("passes/inputs/camera_motion.comp.glsl", bindingDefines())) {}
+
+std::span<const ResourceUse> CameraMotionPass::uses() const {
+    static constexpr ResourceUse kUses[] = {{Resource::LinearDepth, Access::Read},
+                                            {Resource::Camera, Access::Read},
+                                            {Resource::Motion, Access::Write}};
+    return kUses;
+}
+
+bool CameraMotionPass::enabled(const FrameContext& ctx) const {
+    return ctx.inputs.motion == nullptr && ctx.inputs.depth != nullptr;
+}
+
+void CameraMotionPass::execute(FrameContext& ctx, FrameResources& resources) {
+    try {
+        warnOnce(
+            "motion.reconstructed",
+            "no motion vectors from the host: motion is reconstructed from depth and the camera, so objects "
+            "that move on their own will ghost in temporal passes");
+    } catch (...) { // logging must not take the frame down
+    }
+    const Camera& camera = *ctx.inputs.camera;
+    const Texture& out = resources.pool()
+                             .acquire({.extent = ctx.extent,
+                                       .format = GL_RG16F,
+                                       .minFilter = GL_NEAREST,
+                                       .magFilter = GL_NEAREST,
+                                       .debugName = "camera motion"})
+                             .texture();
+    ScopedGpuTimer timer(ctx.timers, "camera motion", double(ctx.extent.width) * ctx.extent.height * 8);
+    setMatrix(mProgram, "uInvProjection", glm::inverse(camera.projection));
+    setMatrix(mProgram, "uInvView", glm::inverse(camera.view));
+    setMatrix(mProgram, "uPrevViewProjection", camera.prevViewProjection);
+    setUniform(mProgram, "uCut", camera.cut ? 1 : 0);
+    mProgram.use();
+    glBindTextureUnit(0, resources.texture(Resource::LinearDepth)->id());
+    glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
+    glDispatchCompute(groups(ctx.extent.width), groups(ctx.extent.height), 1);
+    resources.bind(Resource::Motion, out);
+}
+
+} // namespace photopic

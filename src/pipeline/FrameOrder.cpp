@@ -1,0 +1,39 @@
+#include "pipeline/FrameOrder.h"
+
+namespace photopic {
+
+FrameOrder::FrameOrder(const Capabilities& caps, bool keepTelemetryHistory)
+    : exposure(keepTelemetryHistory)
+    , subjectContexts(probes, exposure)
+    , tonemap(caps) {
+    // Lighting stage (3D hosts, while they shade): ambient occlusion for indirect light and contact
+    // shadows for the sun read depth and normals and write ambientOcclusion / contactShadows. None is built
+    // yet; the stage runs whatever this list holds.
+    mLighting = {};
+
+    // Post stage. Reads -> writes of each pass; the sequencer skips what a frame lacks the inputs for and
+    // does not run what nothing reads.
+    mPost = {
+        // HDR domain: scene-referred, linear.
+        &sanitize,        // color -> sceneColor (NaN/Inf/negatives to 0, below the half maximum)
+        &linearDepth,     // depth, camera -> linearDepth
+        &cameraMotion,    // linearDepth, camera -> motion (only when the host gives none)
+        &metering,        // sceneColor -> histogram, metering, meteringMask
+        &probes,          // sceneColor, metering -> metering (subject probes; the subject's reading)
+        &exposure,        // histogram, metering -> exposure (adaptation; telemetry readback)
+        &subjectContexts, // exposure -> (subject contexts for the host)
+        &bloom,           // sceneColor, exposure -> bloom
+        &debugView,       // scene values or 3D inputs -> debugColor (replaces the image, no tone mapping)
+        // Display domain.
+        &tonemap,          // sceneColor, exposure, bloom? -> displayColor (composite, grade, curve, sRGB)
+        &fxaa,             // displayColor -> displayColor
+        &lensFlare,        // sceneColor, exposure -> lensFlare
+        &displayEffects,   // displayColor, exposure, lensFlare?, bloom? -> displayColor
+        &histogramOverlay, // displayColor, histogram, exposure -> displayColor
+    };
+
+    mAll = mLighting;
+    mAll.insert(mAll.end(), mPost.begin(), mPost.end());
+}
+
+} // namespace photopic

@@ -1,0 +1,60 @@
+#pragma once
+// Every pass of the frame, owned in one place, and the frame order: the lists FrameOrder.cpp writes once, in
+// the order the passes run (docs/architecture.md draws them with their reads and writes).
+
+#include "gl/Capabilities.h"
+#include "passes/FramePass.h"
+#include "passes/bloom/BloomPass.h"
+#include "passes/debug/DebugViewPass.h"
+#include "passes/display/DisplayEffectsPass.h"
+#include "passes/exposure/ExposurePass.h"
+#include "passes/fxaa/FxaaPass.h"
+#include "passes/inputs/InputPasses.h"
+#include "passes/lensflare/LensFlarePass.h"
+#include "passes/metering/MeteringPass.h"
+#include "passes/probe/ProbePass.h"
+#include "passes/probe/SubjectContextsPass.h"
+#include "passes/sanitize/SanitizePass.h"
+#include "passes/tonemap/TonemapPass.h"
+
+#include <span>
+#include <vector>
+
+namespace photopic {
+
+class FrameOrder {
+public:
+    FrameOrder(const Capabilities& caps, bool keepTelemetryHistory);
+    FrameOrder(const FrameOrder&) = delete;
+    FrameOrder& operator=(const FrameOrder&) = delete;
+
+    /// Lighting stage: passes whose outputs the host reads while it shades.
+    [[nodiscard]] std::span<FramePass* const> lighting() const { return mLighting; }
+    /// Post stage: HDR domain, then display domain.
+    [[nodiscard]] std::span<FramePass* const> post() const { return mPost; }
+    /// Every pass once (configure, resize, history).
+    [[nodiscard]] std::span<FramePass* const> all() const { return mAll; }
+
+    // The passes, for the pipeline's API (telemetry, subjects, the scene-referred output, status).
+    SanitizePass sanitize;
+    LinearDepthPass linearDepth;
+    CameraMotionPass cameraMotion;
+    MeteringPass metering;
+    ProbePass probes;
+    ExposurePass exposure;
+    SubjectContextsPass subjectContexts;
+    BloomPass bloom;
+    DebugViewPass debugView;
+    TonemapPass tonemap;
+    FxaaPass fxaa;
+    LensFlarePass lensFlare;
+    DisplayEffectsPass displayEffects;
+    HistogramOverlayPass histogramOverlay;
+
+private:
+    std::vector<FramePass*> mLighting;
+    std::vector<FramePass*> mPost;
+    std::vector<FramePass*> mAll;
+};
+
+} // namespace photopic
