@@ -18,6 +18,7 @@ demo: build
 	build/release/photopic demo -o out/demo
 
 test: build
+	@scripts/check-standalone.sh
 	cd build/release && ctest $(CTEST_FLAGS)
 	@echo "== core tests under AddressSanitizer + UndefinedBehaviorSanitizer"
 	@cmake --preset asan > build-configure-asan.log 2>&1 || (cat build-configure-asan.log; exit 1)

@@ -35,6 +35,7 @@ int runDemo(const fs::path& dataDir, const fs::path& outDir) {
     if (files.empty()) {
         throw InputError(fmt::format("no .exr or .hdr images in {}", dataDir.string()));
     }
+    std::printf("reading %zu images from %s\n", files.size(), dataDir.string().c_str());
     std::error_code ec;
     fs::create_directories(outDir, ec);
     if (ec) {

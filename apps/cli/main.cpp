@@ -7,6 +7,7 @@
 #include "core/Log.h"
 #include "core/settings/SettingsJson.h"
 #include "gl/Gl.h"
+#include "io/DataPath.h"
 #include "scenes/Scene.h"
 
 #include <CLI/CLI.hpp>
@@ -89,7 +90,7 @@ int main(int argc, char** argv) {
     addSettingsOptions(sceneCmd, scene.settings);
 
     TabletopWalkOptions walk;
-    std::filesystem::path demoData = "../shared/data";
+    std::filesystem::path demoData; // empty: findDataDir() looks it up
     std::string demoSize = "320x180";
     auto* demo = app.add_subcommand(
         "demo", "the main demo: the tabletop walk (seed 000's eye adaptation) into out/demo (or -o DIR)");
@@ -107,7 +108,9 @@ int main(int argc, char** argv) {
     bool demoImages = false;
     demo->add_flag("--images", demoImages,
                    "the former demo instead: every HDR image in --data through three tone curves");
-    demo->add_option("--data", demoData, "folder of HDR images for --images (../shared/data)");
+    demo->add_option("--data", demoData,
+                     "folder of HDR images for --images (default: $PHOTOPIC_DATA_DIR, else the installed "
+                     "share/photopic/data, else the checkout's data/)");
 
     BenchOptions bench;
     auto* benchCmd =
@@ -165,7 +168,7 @@ int main(int argc, char** argv) {
         }
         if (*demo) {
             if (demoImages) {
-                return runDemo(demoData, walk.output);
+                return runDemo(findDataDir(demoData), walk.output);
             }
             const Extent size = parseSize(demoSize);
             walk.width = size.width;

@@ -1,7 +1,9 @@
 #pragma once
-// Where the shared HDR test images live (see shared/data/SOURCES.md).
+// Where the tests find their inputs: the images of data/ (data/SOURCES.md) and the test-only files of
+// tests/data/.
 
-#include <cstdlib>
+#include "io/DataPath.h"
+
 #include <filesystem>
 
 #ifndef PHOTOPIC_SOURCE_DIR
@@ -10,11 +12,15 @@
 
 namespace photopic::test {
 
-/// $PHOTOPIC_DATA_DIR when set, else ../shared/data next to the repository root.
+/// The data folder as the CLI finds it (photopic::findDataDir): $PHOTOPIC_DATA_DIR when set, else the
+/// checkout around the current directory, else this source tree's data/.
 inline std::filesystem::path dataDir() {
-    if (const char* dir = std::getenv("PHOTOPIC_DATA_DIR"); dir != nullptr && *dir != '\0')
-        return dir;
-    return (std::filesystem::path(PHOTOPIC_SOURCE_DIR) / ".." / "shared" / "data").lexically_normal();
+    return findDataDir();
+}
+
+/// Test-only inputs (malformed glTF, fuzzing reproducers): tests/data/ of this source tree.
+inline std::filesystem::path testInputDir() {
+    return std::filesystem::path(PHOTOPIC_SOURCE_DIR) / "tests" / "data";
 }
 
 } // namespace photopic::test

@@ -80,7 +80,7 @@ void expectIoError(const std::function<void()>& action, const fs::path& path,
 }
 
 const ImageF& dataImage(const std::string& name) {
-    // Each shared image is decoded once per test run: they take tens of ms each.
+    // Each data image is decoded once per test run: they take tens of ms each.
     static std::map<std::string, ImageF> cache;
     auto it = cache.find(name);
     if (it == cache.end())
@@ -145,7 +145,7 @@ TEST_P(SharedData, SizeAndLuminanceMatchSources) {
     EXPECT_NEAR(stats.mean, c.yMean.value, c.yMean.tolerance());
 }
 
-// Figures from shared/data/SOURCES.md.
+// Figures from data/SOURCES.md.
 INSTANTIATE_TEST_SUITE_P(
     Sources, SharedData,
     ::testing::Values(DataCase{"GoldenGate.exr", 1262, 860, {0.00099, 1e-5}, {292, 1}, {0.110, 1e-3}},
