@@ -209,6 +209,11 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
         mResources.bind(Resource::ContactShadows, *lighting.contactShadows);
     }
     resize(inputs.color->extent());
+    if (mResetHistory) {
+        for (FramePass* pass : mOrder->all()) {
+            pass->invalidateHistory();
+        }
+    }
     mTimers.beginFrame();
     const QualityTier tier = effectiveTier(mCaps, mSettings.quality);
     FrameContext ctx = makeContext(inputs, time, tier);

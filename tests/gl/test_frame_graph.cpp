@@ -5,6 +5,7 @@
 
 #include "core/settings/SettingsJson.h"
 #include "gl/TextureIo.h"
+#include "passes/HistoryTexture.h"
 #include "pipeline/Pipeline.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -312,6 +313,29 @@ TEST_F(GlTest, ACutZeroesCameraMotion) {
     for (std::size_t i = 0; i < view.rgba.size(); i += 4) {
         ASSERT_EQ(view.rgba[i + 1], 0) << "motion after a cut";
     }
+}
+
+} // namespace photopic::test
+
+namespace photopic::test {
+
+TEST_F(GlTest, HistoryTexturePingPongsAndForgetsWhenInvalidated) {
+    HistoryTexture history;
+    history.ensure({8, 4}, GL_RGBA16F, "test history");
+    EXPECT_EQ(history.previous(), nullptr); // nothing to reuse on the first frame
+    const GLuint first = history.current().id();
+    history.advance();
+    ASSERT_NE(history.previous(), nullptr);
+    EXPECT_EQ(history.previous()->id(), first);
+    EXPECT_NE(history.current().id(), first);
+    history.invalidate(); // a cut, a reset
+    EXPECT_EQ(history.previous(), nullptr);
+    history.advance();
+    history.ensure({8, 4}, GL_RGBA16F, "test history"); // same size: kept
+    EXPECT_NE(history.previous(), nullptr);
+    history.ensure({16, 4}, GL_RGBA16F, "test history"); // resize: remade, nothing to reuse
+    EXPECT_EQ(history.previous(), nullptr);
+    EXPECT_EQ(history.current().extent(), (Extent{16, 4}));
 }
 
 } // namespace photopic::test
