@@ -5,18 +5,33 @@ source "$(dirname "$0")/lib.bash"
 S="$SCRATCH"
 VIEW="$(dirname "$PHOTOPIC")/photopic-view"
 
-if ! command -v xvfb-run > /dev/null; then
-    echo "FAIL: xvfb-run is missing; run scripts/deps.sh (installs xvfb and xauth)"
+if ! command -v Xvfb > /dev/null; then
+    echo "FAIL: Xvfb is missing; run scripts/deps.sh (installs xvfb and xauth)"
     exit 1
 fi
 if [ ! -x "$VIEW" ]; then
     echo "FAIL: $VIEW was not built (needs libglfw3-dev and libimgui-dev; run scripts/deps.sh)"
     exit 1
 fi
-# Each run gets its own server (-a picks a free display number), so parallel ctest jobs do not collide.
-xrun() { xvfb-run -a -s "-screen 0 1280x800x24" "$@"; }
+# One server for the script. Xvfb picks a free display itself and writes its number to fd 3 (-displayfd), so
+# parallel ctest jobs never race for a display number (xvfb-run -a did, and its clean-up failed under load).
+exec 3> "$S/display"
+Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp > "$S/xvfb.log" 2>&1 &
+XVFB_PID=$!
+exec 3>&-
+trap 'kill "$XVFB_PID" 2> /dev/null' EXIT
+for _ in $(seq 100); do
+    [ -s "$S/display" ] && break
+    sleep 0.1
+done
+if [ ! -s "$S/display" ]; then
+    echo "FAIL: Xvfb did not start"
+    cat "$S/xvfb.log"
+    exit 1
+fi
+export DISPLAY=":$(head -n 1 "$S/display")"
 
-expect 0 "tabletop, 90 frames, screenshot and save" -- xrun "$VIEW" --scene tabletop --frames 90 --size 640x360 \
+expect 0 "tabletop, 90 frames, screenshot and save" -- "$VIEW" --scene tabletop --frames 90 --size 640x360 \
     --fixed-dt 0.0333 --screenshot "$S/view.png" --save "$S/view.json" --set autoExposure.tauDarken=0.5
 check "reports a GL 4.5 (or newer) context" contains "GL 4.5"
 check "screenshot written" test -s "$S/view.png"
@@ -54,10 +69,10 @@ check "saved settings written" test -s "$S/view.json"
 expect 0 "saved settings pass photopic settings --check" -- "$PHOTOPIC" settings --check "$S/view.json"
 check "saved settings keep the --set value" grep -q '"tauDarken": 0.5' "$S/view.json"
 
-expect 2 "bad --set exits 2" -- xrun "$VIEW" --frames 1 --set autoExposure.tauDarken=-3
+expect 2 "bad --set exits 2" -- "$VIEW" --frames 1 --set autoExposure.tauDarken=-3
 check "names the bad key" contains "tauDarken"
-expect 2 "bad scene --set exits 2" -- xrun "$VIEW" --scene tabletop --frames 1 --set tabletop.nosuchkey=1
-expect 2 "unknown scene exits 2" -- xrun "$VIEW" --scene nosuch --frames 1
+expect 2 "bad scene --set exits 2" -- "$VIEW" --scene tabletop --frames 1 --set tabletop.nosuchkey=1
+expect 2 "unknown scene exits 2" -- "$VIEW" --scene nosuch --frames 1
 expect 1 "no display exits 1" -- env -u DISPLAY -u WAYLAND_DISPLAY "$VIEW" --frames 1
 check "says it needs a display" contains "needs a display"
 
