@@ -85,8 +85,8 @@ int runScene(const SceneOptions& options) {
     const float dt = 1.0f / options.fps;
     for (int i = 0; i < options.frames; ++i) {
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
-        const Texture& color = scene->render(time, pipeline, sceneValues[std::size_t(i)]);
-        const Texture& display = pipeline.execute({.color = &color}, time);
+        const FrameInputs inputs = scene->render(time, pipeline, sceneValues[std::size_t(i)]);
+        const Texture& display = pipeline.execute(inputs, time);
         const fs::path frame = outDir / fmt::format("frame_{:04d}.{}", i, options.format);
         if (options.format == "exr") {
             writeExr(frame, readTextureF(pipeline.sceneReferred()));

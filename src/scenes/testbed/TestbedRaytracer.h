@@ -1,0 +1,64 @@
+#pragma once
+// Ground truth for the testbed: a CPU ray tracer of the analytic scene (TestbedGeometry), no GL. Each kind
+// is an ImageF (rows top to bottom, like every CPU image here) at a given size and frame; rows are shared
+// out over std::thread workers. Conventions are the pipeline's inputs' (core/Camera.h, pipeline/Pipeline.h):
+//
+//   kind        channels          what
+//   color       RGB, A = 1        N x N stratified supersampled colour of the local shading
+//   (TestbedGeometry.h) depth       R                 linear view depth at the pixel centre (+inf: sky)
+//   normals     RGB               view-space unit normal at the pixel centre (0: sky)
+//   motion      RG                UV displacement at the pixel centre, current minus previous (v up)
+//   objectid    R                 the object's id at the pixel centre (0: sky)
+//   ao          RGB = visibility  cosine-weighted fraction of the hemisphere above the pixel-centre point
+//                                 that no surface within aoRadius occludes (1: open; sky 1)
+//   sun         RGB = visibility  fraction of shadow rays towards the sun's disc (sunSamples^2 of them, or
+//                                 its centre) that reach it, occluders counted within sunMaxDistance (0:
+//                                 any distance); 0 where the surface faces away from the sun; sky 1
+//   shutter     RGB, A = 1        colour averaged over the shutter interval centred on the frame's time
+//                                 (camera and objects moving), one time per colour sub-sample
+//   thinlens    RGB, A = 1        colour through a thin lens (the camera's focus distance and f-number)
+//   reflection  RGB, A = mask     radiance along the mirror direction at the pixel centre on surfaces
+//                                 with metallic > 0 (A = 1 there, RGB = A = 0 elsewhere); the mirror term's
+//                                 weight is the Fresnel F0 = mix(0.04, albedo, metallic)
+//
+// color, shutter and thinlens share their sub-pixel sample positions, so with no motion `shutter` equals
+// `color` exactly, and `thinlens` tends to `color` as the aperture closes.
+
+#include "core/Camera.h"
+#include "core/Image.h"
+#include "scenes/testbed/TestbedGeometry.h"
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace photopic::testbed {
+
+enum class TruthKind { Color, Depth, Normals, Motion, ObjectId, Ao, Sun, Shutter, ThinLens, Reflection };
+
+[[nodiscard]] std::string_view truthKindName(TruthKind kind);
+[[nodiscard]] std::optional<TruthKind> parseTruthKind(std::string_view name);
+[[nodiscard]] const std::vector<TruthKind>& allTruthKinds();
+
+struct TruthOptions {
+    int width = 160;
+    int height = 90;
+    FrameTimes times;       ///< the frame (frameTimes())
+    double dt = 1.0 / 30.0; ///< s, the frame interval (the shutter's length follows it)
+    Lens lens;              ///< f-number, shutter angle or exposure time (focal length, focus: the path's)
+    float focusDistance = 0.0f;  ///< scene units; 0: the camera path's
+    int samples = 16;            ///< colour, shutter, thin lens: samples x samples per pixel
+    float aoRadius = 1.0f;       ///< scene units
+    int aoSamples = 16;          ///< aoSamples x aoSamples cosine-weighted rays per pixel
+    float sunMaxDistance = 0.0f; ///< scene units; 0: any distance
+    int sunSamples = 1;          ///< 1: one ray to the sun's centre; n: n x n over its disc
+    int threads = 0;             ///< 0: one per hardware thread
+};
+
+/// The Camera the truth and the rasteriser see for `options` (the path's, at the frame's camera time).
+[[nodiscard]] Camera truthCamera(const TruthOptions& options);
+
+/// Renders one truth kind.
+[[nodiscard]] ImageF renderTruth(TruthKind kind, const TruthOptions& options);
+
+} // namespace photopic::testbed
