@@ -1,5 +1,7 @@
 #include "Commands.h"
 
+#include "ImageInputs.h"
+
 #include "core/settings/SettingsJson.h"
 #include "gl/Context.h"
 #include "gl/TextureIo.h"
@@ -100,21 +102,18 @@ std::string lowerExtension(const fs::path& p) {
     return ext;
 }
 
-ImageF readInput(const fs::path& path) {
-    try {
-        return readImage(path);
-    } catch (const IoError& e) {
-        throw InputError(e.what());
-    }
-}
-
 } // namespace
 
 int runImage(const ImageOptions& options) {
-    const Settings settings = resolveSettings(options.settings);
-
     std::vector<fs::path> inputs = options.inputs;
     std::sort(inputs.begin(), inputs.end());
+    if (options.info) {
+        return runImageInfo(inputs, options.camera);
+    }
+    if (options.output.empty()) {
+        throw InputError("image: an output is required (-o FILE or FOLDER), or --info");
+    }
+    const Settings settings = resolveSettings(options.settings);
     const std::string outExt = lowerExtension(options.output);
     const bool toFolder = inputs.size() > 1 || fs::is_directory(options.output) || outExt.empty();
     if (!toFolder && outExt != ".png" && outExt != ".exr") {
@@ -132,10 +131,20 @@ int runImage(const ImageOptions& options) {
         }
     }
     // Read every input first: a bad input fails the run before any output is written.
-    std::vector<ImageF> images;
-    images.reserve(inputs.size());
+    InputDecoder decoder(options.camera.empty() ? std::nullopt
+                                                : std::optional<CameraJson>(loadCameraJson(options.camera)));
+    std::vector<DecodedFrame> frames;
+    frames.reserve(inputs.size());
     for (const auto& in : inputs) {
-        images.push_back(readInput(in));
+        frames.push_back(decoder.decode(in));
+    }
+    if (!options.writeAux.empty()) {
+        std::error_code ec;
+        fs::create_directories(options.writeAux, ec);
+        if (ec) {
+            throw std::runtime_error(
+                fmt::format("cannot create aux folder {}: {}", options.writeAux.string(), ec.message()));
+        }
     }
 
     HeadlessContext context;
@@ -150,10 +159,10 @@ int runImage(const ImageOptions& options) {
     }
     Pipeline& pipeline = *pipelinePtr;
     const float dt = 1.0f / options.fps;
+    InputTextures textures; // created for the first frame, re-uploaded for the others
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         const auto start = std::chrono::steady_clock::now();
-        const Texture input = makeTexture(images[i], inputs[i].filename().string());
-        const Texture& display = pipeline.execute({.color = &input}, {.dt = dt, .frameIndex = i});
+        const Texture& display = pipeline.execute(textures.upload(frames[i]), {.dt = dt, .frameIndex = i});
         const std::string ext = toFolder ? "." + options.format : outExt;
         const fs::path out = toFolder ? options.output / (inputs[i].stem().string() + ext) : options.output;
         if (ext == ".exr") {
@@ -164,7 +173,10 @@ int runImage(const ImageOptions& options) {
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         std::printf("%s -> %s (%dx%d, %.1f ms)\n", inputs[i].string().c_str(), out.string().c_str(),
-                    images[i].width, images[i].height, ms);
+                    frames[i].color.width, frames[i].color.height, ms);
+        if (!options.writeAux.empty()) {
+            writeAux(options.writeAux, inputs[i], frames[i]);
+        }
     }
     if (!options.telemetry.empty()) {
         // Offline: drain the ring so every frame has its own row.

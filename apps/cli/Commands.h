@@ -37,6 +37,9 @@ struct ImageOptions {
     bool forceLdr = false;
     float fps = 30.0f;
     std::filesystem::path telemetry; ///< CSV, one row per frame; empty: none
+    bool info = false; ///< list each input's channels and attributes and what they feed; no rendering
+    std::filesystem::path camera;   ///< camera JSON for EXR files without camera attributes; empty: none
+    std::filesystem::path writeAux; ///< folder for the decoded depth/normals/motion; empty: none
 };
 
 struct SceneOptions {

@@ -51,8 +51,8 @@ int main(int argc, char** argv) {
     imageCmd
         ->add_option("inputs", image.inputs, "input images; several are frames of a sequence in name order")
         ->required();
-    imageCmd->add_option("-o,--output", image.output, "output file (.png/.exr) or folder (several inputs)")
-        ->required();
+    imageCmd->add_option("-o,--output", image.output,
+                         "output file (.png/.exr) or folder (several inputs); required unless --info");
     imageCmd->add_option("--format", image.format, "file type written into an output folder")
         ->check(CLI::IsMember({"png", "exr"}));
     imageCmd->add_option("--fps", image.fps, "frame rate of a sequence")->check(CLI::Range(0.001f, 10000.0f));
@@ -60,6 +60,18 @@ int main(int argc, char** argv) {
     imageCmd->add_option("--telemetry", image.telemetry,
                          "write exposure telemetry as CSV, one row per frame (frame,time_s,measured_luma,"
                          "target_log2,applied_log2,exposure,...)");
+    imageCmd->add_flag(
+        "--info", image.info,
+        "list each input's channels and attributes and what each feeds (depth, normals, motion, "
+        "camera); no rendering");
+    imageCmd
+        ->add_option("--camera", image.camera,
+                     "camera JSON for EXR inputs without worldToCamera/worldToNDC (docs/camera-json.md)")
+        ->check(CLI::ExistingFile);
+    imageCmd->add_option(
+        "--write-aux", image.writeAux,
+        "write each frame's decoded depth (linear view), normals (view space) and motion (UV, "
+        "y up) as DIR/NAME.aux.exr");
     addSettingsOptions(imageCmd, image.settings);
 
     auto* settingsCmd = app.add_subcommand("settings", "print the default settings or check a settings file");

@@ -6,11 +6,17 @@
 // - normals: `N.X`/`N.Y`/`N.Z` (or `normal.X/Y/Z`), world space;
 // - motion: `motion.X`/`motion.Y`, pixels, current minus previous position, x right, y down in file rows;
 // - camera: the standard attributes `worldToCamera` and `worldToNDC` (Imath row-vector matrices; OpenEXR
-// camera
-//   space is left-handed with +z forward, its NDC has (0, 0) at the top-left and (1, 1) at the bottom-right
-//   of the display window), `focus` (m), `aperture` (f-number), `expTime` (s), `isoSpeed`, and, when present,
-//   the lens attributes `pinholeFocalLength` (mm), `sensorOverallDimensions` (mm), `shutterAngle` (degrees)
-//   and `jitter` (v2f, pixels: the sample's offset from the pixel centre, x right, y down).
+//   camera space is left-handed with +z forward, its NDC has (0, 0) at the top-left and (1, 1) at the
+//   bottom-right of the display window), `focus` (m), `aperture` (f-number), `expTime` (s), `isoSpeed`, and,
+//   when present, the lens attributes `pinholeFocalLength` (mm), `sensorOverallDimensions` (mm),
+//   `shutterAngle` (degrees), `nearClipPlane`/`farClipPlane` (scene units) and `jitter` (v2f, pixels: the
+//   offset of the frame's samples from the pixel centres, x right, y down).
+// `worldToNDC` is the unjittered projection; `jitter` says how the samples (and so the motion vectors) were
+// moved. Its z row, when it is a projective depth, follows RenderMan: z_ndc = 0 at the near plane and 1 at
+// the far plane (z_ndc = f (z - n) / (z (f - n)) for camera depth z).
+//
+// Attribute types: matrices m44f (m44d accepted), scalars float (double accepted), vectors v2f (v2d
+// accepted); an attribute of any other type is an error, not silently ignored.
 
 #include "core/Camera.h"
 #include "core/Image.h"
@@ -24,7 +30,9 @@
 
 namespace photopic {
 
-/// Camera attributes as stored in the file (matrices in Imath's row-vector layout: m[row][col], p' = p * M).
+/// Camera attributes as stored in the file. Matrices are copied element for element from Imath's row-vector
+/// matrices (m[i][j] = M[i][j]); read as glm's column-vector matrices they are the same transforms: glm's
+/// m * p is Imath's p * M.
 struct ExrCameraAttributes {
     std::optional<glm::mat4> worldToCamera;
     std::optional<glm::mat4> worldToNDC;
@@ -49,23 +57,52 @@ struct ExrFrame {
         motion; ///< width*height*2 pixels (x right, y down), current minus previous; empty when none
     ExrCameraAttributes camera;
     std::vector<std::string> channels; ///< every channel of the first part, as named in the file
+    /// Every attribute of the first part's header as "name (type)", in the header's (alphabetical) order.
+    std::vector<std::string> attributes;
+    /// The display window's size and the data window's top-left corner in it: the layers above hold the
+    /// data window (like readImage), while worldToNDC refers to the display window.
+    glm::ivec2 displaySize{0, 0};
+    glm::ivec2 dataOrigin{0, 0};
 };
 
-/// Reads colour as readImage does, plus the layers and attributes above when present. Throws IoError naming
-/// the file.
+/// Reads colour as readImage does, plus the layers and attributes above when present, in one pass. Throws
+/// IoError naming the file for anything readImage rejects, a layer with some of its components missing
+/// (N.X and N.Y without N.Z) and a camera attribute of the wrong type.
 [[nodiscard]] ExrFrame readExrFrame(const std::filesystem::path& path);
 /// Writes colour (half RGBA), Z (float), N.X/Y/Z (half), motion.X/Y (float) for the layers that are not
-/// empty, and the camera attributes that are set. Atomic, like writeExr.
+/// empty, and the camera attributes that are set; data window = display window = the colour image (the
+/// displaySize/dataOrigin fields are not written). Atomic, like writeExr; throws IoError naming the file when
+/// a layer's size does not match the colour.
 void writeExrFrame(const std::filesystem::path& path, const ExrFrame& frame);
 
-/// The file's camera attributes in a `width` x `height` frame as the pipeline's Camera (GL conventions);
+/// The file's camera attributes as the pipeline's Camera (GL conventions) for the file's display window
+/// (`width` x `height` pixels, which the NDC conversion does not need but the arguments are checked);
 /// `previous`, the previous frame's attributes in a sequence, gives prevViewProjection (else the current
-/// view-projection). Nothing when the file has no worldToCamera/worldToNDC pair; throws IoError-free
-/// std::invalid_argument with the reason when the matrices are not invertible or not finite.
+/// view-projection). Nothing when the file has no worldToCamera/worldToNDC pair. Throws std::invalid_argument
+/// naming the attribute when the matrices are not finite or not invertible, worldToNDC is not a perspective
+/// projection of camera space, or a lens attribute is out of Lens's range.
+///
+/// view = diag(1, 1, -1, 1) * worldToCamera (left-handed +z forward -> right-handed -z forward).
+/// projection: K = worldToNDC * inverse(worldToCamera) * diag(1, 1, -1, 1) maps GL view space to OpenEXR
+/// NDC; scaled so that its w row is (0, 0, -1, 0), its x and y rows become 2x - w and w - 2y (GL NDC,
+/// y up) and its z row is GL's for near/far. near/far: the nearClipPlane/farClipPlane attributes when
+/// present, else solved from K's z row read as RenderMan's NDC depth (0 at near, 1 at far; a row that gives
+/// no 0 < near < far is ignored), else near 0.1 and far +inf. verticalFov = 2 atan(1 / projection[1][1]).
+/// The lens: pinholeFocalLength and sensorOverallDimensions.y when present; one of them alone gives the
+/// other through the field of view; neither: a 24 mm sensor height.
+/// `jitter` is not applied: worldToNDC is taken as unjittered.
 [[nodiscard]] std::optional<Camera> cameraFromExr(const ExrCameraAttributes& attributes, int width,
                                                   int height, const ExrCameraAttributes* previous = nullptr);
 /// The inverse of cameraFromExr for the attributes a renderer writes (worldToCamera, worldToNDC, focus,
-/// aperture, expTime, isoSpeed, pinholeFocalLength, sensorOverallDimensions, shutterAngle, near/far clip).
+/// aperture, expTime when the lens sets one, isoSpeed, pinholeFocalLength, sensorOverallDimensions from the
+/// sensor height and the width/height aspect, shutterAngle, nearClip/farClip). worldToNDC's z row is
+/// RenderMan's NDC depth for the camera's near/far, so cameraFromExr recovers them without the clip
+/// attributes. jitter is left unset.
 [[nodiscard]] ExrCameraAttributes exrFromCamera(const Camera& camera, int width, int height);
+
+/// The matrix that takes GL clip coordinates over the display window to GL clip coordinates over the data
+/// window (identity when they are the same): left-multiply a projection by it to render only the pixels
+/// readExrFrame returned.
+[[nodiscard]] glm::mat4 dataWindowCrop(glm::ivec2 displaySize, glm::ivec2 dataOrigin, glm::ivec2 dataSize);
 
 } // namespace photopic

@@ -1,6 +1,7 @@
 #include "io/ImageIO.h"
 
 #include "core/Color.h"
+#include "io/ExrDetail.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -59,7 +60,9 @@ struct StbiFree {
 // ---------------------------------------------------------------------------------------------------------------
 // Reading files
 
-void requireRegularFile(const fs::path& path) {
+} // namespace
+
+void detail::requireRegularFile(const fs::path& path) {
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
     if (status.type() == fs::file_type::not_found)
@@ -71,6 +74,8 @@ void requireRegularFile(const fs::path& path) {
     if (status.type() != fs::file_type::regular)
         throw IoError(path, "is not a regular file");
 }
+
+namespace {
 
 /// The first `limit` bytes of the file (all of it by default).
 Bytes readBytes(const fs::path& path, std::size_t limit = SIZE_MAX) {
@@ -163,56 +168,74 @@ ImageF readExrLuminanceChroma(const fs::path& path, int width, int height) {
     return image;
 }
 
+} // namespace
+
+ImageF detail::readExrColor(const fs::path& path, Imf::InputFile& file, const ExrExtraSlices& extra) {
+    const Imf::Header& header = file.header();
+    const Imath::Box2i dataWindow = header.dataWindow();
+    const std::int64_t width64 = std::int64_t(dataWindow.max.x) - dataWindow.min.x + 1;
+    const std::int64_t height64 = std::int64_t(dataWindow.max.y) - dataWindow.min.y + 1;
+    checkSize(path, width64, height64);
+    const int width = int(width64);
+    const int height = int(height64);
+    if (!file.isComplete())
+        throw IoError(path, "OpenEXR file is truncated or incomplete (pixel blocks are missing)");
+
+    const Imf::ChannelList& channels = header.channels();
+    const auto has = [&](const char* name) { return channels.findChannel(name) != nullptr; };
+    const bool hasRgb = has("R") || has("G") || has("B");
+    if (!hasRgb && has("Y") && (has("RY") || has("BY"))) {
+        ImageF image = readExrLuminanceChroma(path, width, height);
+        if (extra) { // RgbaInputFile reads colour only: the extra layers take a second pass
+            Imf::FrameBuffer frameBuffer;
+            extra(frameBuffer, dataWindow, width, height);
+            file.setFrameBuffer(frameBuffer);
+            file.readPixels(dataWindow.min.y, dataWindow.max.y);
+        }
+        return image;
+    }
+    if (!hasRgb && !has("Y")) {
+        std::string names;
+        for (auto it = channels.begin(); it != channels.end(); ++it)
+            names += std::string(names.empty() ? "" : ", ") + it.name();
+        throw IoError(path, "OpenEXR file has no R, G, B or Y channel (channels: " + names + ")");
+    }
+
+    ImageF image(width, height);
+    Imf::FrameBuffer frameBuffer;
+    const std::size_t xStride = 4 * sizeof(float);
+    const std::size_t yStride = xStride * std::size_t(width);
+    // Every channel is read as FLOAT whatever it is stored as; absent channels take the fill value.
+    const auto addSlice = [&](const char* name, std::size_t component, double fill) {
+        frameBuffer.insert(name, Imf::Slice::Make(Imf::FLOAT, image.rgba.data() + component, dataWindow,
+                                                  xStride, yStride, 1, 1, fill));
+    };
+    if (hasRgb) {
+        addSlice("R", 0, 0.0);
+        addSlice("G", 1, 0.0);
+        addSlice("B", 2, 0.0);
+    } else {
+        addSlice("Y", 0, 0.0);
+    }
+    addSlice("A", 3, 1.0);
+    if (extra)
+        extra(frameBuffer, dataWindow, width, height);
+    file.setFrameBuffer(frameBuffer);
+    file.readPixels(dataWindow.min.y, dataWindow.max.y);
+
+    if (!hasRgb) {
+        for (std::size_t i = 0; i < image.pixelCount(); ++i)
+            image.rgba[i * 4 + 1] = image.rgba[i * 4 + 2] = image.rgba[i * 4];
+    }
+    return image;
+}
+
+namespace {
+
 ImageF readExr(const fs::path& path) {
     try {
         Imf::InputFile file(path.c_str());
-        const Imf::Header& header = file.header();
-        const Imath::Box2i dataWindow = header.dataWindow();
-        const std::int64_t width64 = std::int64_t(dataWindow.max.x) - dataWindow.min.x + 1;
-        const std::int64_t height64 = std::int64_t(dataWindow.max.y) - dataWindow.min.y + 1;
-        checkSize(path, width64, height64);
-        const int width = int(width64);
-        const int height = int(height64);
-        if (!file.isComplete())
-            throw IoError(path, "OpenEXR file is truncated or incomplete (pixel blocks are missing)");
-
-        const Imf::ChannelList& channels = header.channels();
-        const auto has = [&](const char* name) { return channels.findChannel(name) != nullptr; };
-        const bool hasRgb = has("R") || has("G") || has("B");
-        if (!hasRgb && has("Y") && (has("RY") || has("BY")))
-            return readExrLuminanceChroma(path, width, height);
-        if (!hasRgb && !has("Y")) {
-            std::string names;
-            for (auto it = channels.begin(); it != channels.end(); ++it)
-                names += std::string(names.empty() ? "" : ", ") + it.name();
-            throw IoError(path, "OpenEXR file has no R, G, B or Y channel (channels: " + names + ")");
-        }
-
-        ImageF image(width, height);
-        Imf::FrameBuffer frameBuffer;
-        const std::size_t xStride = 4 * sizeof(float);
-        const std::size_t yStride = xStride * std::size_t(width);
-        // Every channel is read as FLOAT whatever it is stored as; absent channels take the fill value.
-        const auto addSlice = [&](const char* name, std::size_t component, double fill) {
-            frameBuffer.insert(name, Imf::Slice::Make(Imf::FLOAT, image.rgba.data() + component, dataWindow,
-                                                      xStride, yStride, 1, 1, fill));
-        };
-        if (hasRgb) {
-            addSlice("R", 0, 0.0);
-            addSlice("G", 1, 0.0);
-            addSlice("B", 2, 0.0);
-        } else {
-            addSlice("Y", 0, 0.0);
-        }
-        addSlice("A", 3, 1.0);
-        file.setFrameBuffer(frameBuffer);
-        file.readPixels(dataWindow.min.y, dataWindow.max.y);
-
-        if (!hasRgb) {
-            for (std::size_t i = 0; i < image.pixelCount(); ++i)
-                image.rgba[i * 4 + 1] = image.rgba[i * 4 + 2] = image.rgba[i * 4];
-        }
-        return image;
+        return detail::readExrColor(path, file);
     } catch (const IoError&) {
         throw;
     } catch (const std::exception& e) {
@@ -458,8 +481,8 @@ Bytes encodePng(const fs::path& path, const Image8& image) {
     png.width = png_uint_32(image.width);
     png.height = png_uint_32(image.height);
     png.format = opaque ? PNG_FORMAT_RGB : PNG_FORMAT_RGBA;
-    // Fast deflate: a 1080p frame encodes ~10x faster than at the default level for ~10-20% more bytes, which is
-    // what sequences of hundreds of frames need.
+    // Fast deflate: a 1080p frame encodes ~10x faster than at the default level for ~10-20% more bytes, which
+    // is what sequences of hundreds of frames need.
     png.flags = PNG_IMAGE_FLAG_FAST;
     const void* pixels =
         opaque ? static_cast<const void*>(rgb.data()) : static_cast<const void*>(image.rgba.data());
@@ -485,7 +508,9 @@ Bytes encodePng(const fs::path& path, const Image8& image) {
 
 std::atomic<unsigned> gTemporaryCounter{0};
 
-void writeAtomically(const fs::path& path, std::span<const unsigned char> bytes) {
+} // namespace
+
+void detail::writeAtomically(const fs::path& path, std::span<const unsigned char> bytes) {
     if (!path.has_filename())
         throw IoError(path, "names a folder, not a file");
     const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
@@ -517,6 +542,8 @@ void writeAtomically(const fs::path& path, std::span<const unsigned char> bytes)
         fail("cannot move the finished file into place: " + ec.message());
 }
 
+namespace {
+
 template <typename Image>
 void requirePixels(const fs::path& path, const Image& image) {
     if (image.empty())
@@ -534,11 +561,17 @@ void requirePixels(const fs::path& path, const Image& image) {
 } // namespace
 
 void writeTextFile(const fs::path& path, std::string_view text) {
-    writeAtomically(path, {reinterpret_cast<const unsigned char*>(text.data()), text.size()});
+    detail::writeAtomically(path, {reinterpret_cast<const unsigned char*>(text.data()), text.size()});
+}
+
+void detail::requireExrFile(const fs::path& path) {
+    const Bytes head = readBytes(path, 16);
+    if (sniff(head) != FileFormat::Exr)
+        throw IoError(path, head.empty() ? std::string("file is empty") : unknownFormatMessage(path, head));
 }
 
 ImageF readImage(const fs::path& path) {
-    requireRegularFile(path);
+    detail::requireRegularFile(path);
     const Bytes head = readBytes(path, 16);
     if (head.empty())
         throw IoError(path, "file is empty");
@@ -558,7 +591,7 @@ ImageF readImage(const fs::path& path) {
 }
 
 Image8 readPng8(const fs::path& path) {
-    requireRegularFile(path);
+    detail::requireRegularFile(path);
     const Bytes bytes = readBytes(path);
     if (bytes.empty())
         throw IoError(path, "file is empty");
@@ -574,13 +607,14 @@ Image8 readPng8(const fs::path& path) {
 
 void writePng(const fs::path& path, const Image8& image) {
     requirePixels(path, image);
-    writeAtomically(path, encodePng(path, image));
+    detail::writeAtomically(path, encodePng(path, image));
 }
 
 void writeExr(const fs::path& path, const ImageF& image) {
     requirePixels(path, image);
     const std::string bytes = encodeExr(path, image);
-    writeAtomically(path, std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
+    detail::writeAtomically(path,
+                            std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
 }
 
 } // namespace photopic

@@ -1,0 +1,430 @@
+#include "ImageInputs.h"
+
+#include "Commands.h"
+
+#include "core/Log.h"
+#include "gl/TextureIo.h"
+#include "io/ImageIO.h"
+
+#include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <set>
+
+namespace photopic::cli {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// ---------------------------------------------------------------------------------------------------------------
+// Camera JSON
+
+namespace {
+
+[[noreturn]] void badKey(const fs::path& path, const std::string& key, const std::string& problem) {
+    throw InputError(fmt::format("{}: camera key \"{}\": {}", path.string(), key, problem));
+}
+
+float number(const fs::path& path, const json& object, const std::string& key, float fallback,
+             const std::string& prefix = "") {
+    const auto it = object.find(key);
+    if (it == object.end())
+        return fallback;
+    if (!it->is_number() || !std::isfinite(it->get<double>()))
+        badKey(path, prefix + key, "expected a finite number");
+    return it->get<float>();
+}
+
+glm::vec3 vector3(const fs::path& path, const json& object, const std::string& key, glm::vec3 fallback) {
+    const auto it = object.find(key);
+    if (it == object.end())
+        return fallback;
+    if (!it->is_array() || it->size() != 3 ||
+        !std::all_of(it->begin(), it->end(), [](const json& v) { return v.is_number(); }))
+        badKey(path, key, "expected an array of 3 numbers");
+    return {(*it)[0].get<float>(), (*it)[1].get<float>(), (*it)[2].get<float>()};
+}
+
+void rejectUnknownKeys(const fs::path& path, const json& object, const std::set<std::string>& known,
+                       const std::string& prefix) {
+    for (const auto& [key, value] : object.items()) {
+        if (!known.contains(key))
+            badKey(path, prefix + key, "unknown key");
+    }
+}
+
+Lens lensJson(const fs::path& path, const json& root, float verticalFov) {
+    Lens lens;
+    const auto it = root.find("lens");
+    if (it == root.end()) {
+        lens.focalLengthMm = lens.sensorHeightMm / (2.0f * std::tan(0.5f * verticalFov));
+        return lens;
+    }
+    if (!it->is_object())
+        badKey(path, "lens", "expected an object");
+    rejectUnknownKeys(path, *it,
+                      {"focalLengthMm", "sensorHeightMm", "fNumber", "focusDistance", "shutterAngleDeg",
+                       "exposureTimeS", "iso"},
+                      "lens.");
+    lens.sensorHeightMm = number(path, *it, "sensorHeightMm", lens.sensorHeightMm, "lens.");
+    // Without a focal length, the one that gives the field of view on this sensor.
+    lens.focalLengthMm = number(path, *it, "focalLengthMm",
+                                lens.sensorHeightMm / (2.0f * std::tan(0.5f * verticalFov)), "lens.");
+    lens.fNumber = number(path, *it, "fNumber", lens.fNumber, "lens.");
+    lens.focusDistance = number(path, *it, "focusDistance", lens.focusDistance, "lens.");
+    lens.shutterAngleDeg = number(path, *it, "shutterAngleDeg", lens.shutterAngleDeg, "lens.");
+    lens.exposureTimeS = number(path, *it, "exposureTimeS", lens.exposureTimeS, "lens.");
+    lens.iso = number(path, *it, "iso", lens.iso, "lens.");
+    return lens;
+}
+
+} // namespace
+
+Camera CameraJson::camera(int width, int height) const {
+    Camera c;
+    c.view = glm::lookAt(position, target, up);
+    c.verticalFov = glm::radians(verticalFovDeg);
+    c.nearPlane = nearPlane;
+    c.farPlane = farPlane;
+    c.projection = perspectiveProjection(c.verticalFov, float(width) / float(height), nearPlane, farPlane);
+    c.prevViewProjection = c.viewProjection();
+    c.lens = lens;
+    return c;
+}
+
+CameraJson loadCameraJson(const fs::path& path) {
+    std::ifstream in(path);
+    if (!in)
+        throw InputError(fmt::format("{}: cannot open the camera file", path.string()));
+    json root;
+    try {
+        root = json::parse(in);
+    } catch (const json::exception& e) {
+        throw InputError(fmt::format("{}: not valid JSON: {}", path.string(), e.what()));
+    }
+    if (!root.is_object())
+        throw InputError(fmt::format("{}: a camera file holds one JSON object", path.string()));
+    rejectUnknownKeys(path, root, {"position", "target", "up", "verticalFovDeg", "near", "far", "lens"}, "");
+    for (const char* key : {"position", "target"}) {
+        if (!root.contains(key))
+            badKey(path, key, "required");
+    }
+    CameraJson c;
+    c.position = vector3(path, root, "position", c.position);
+    c.target = vector3(path, root, "target", c.target);
+    c.up = vector3(path, root, "up", c.up);
+    c.verticalFovDeg = number(path, root, "verticalFovDeg", c.verticalFovDeg);
+    c.nearPlane = number(path, root, "near", c.nearPlane);
+    const auto far = root.find("far");
+    c.farPlane = far == root.end() || far->is_null() ? std::numeric_limits<float>::infinity()
+                                                     : number(path, root, "far", c.farPlane);
+    if (!(c.verticalFovDeg > 0.0f && c.verticalFovDeg < 180.0f))
+        badKey(path, "verticalFovDeg", "must be in (0, 180) degrees");
+    if (!(c.nearPlane > 0.0f))
+        badKey(path, "near", "must be > 0");
+    if (!(c.farPlane > c.nearPlane))
+        badKey(path, "far", "must be > near (omit it or use null for an infinite far plane)");
+    const glm::vec3 forward = c.target - c.position;
+    if (glm::length(forward) < 1e-6f)
+        badKey(path, "target", "must differ from position");
+    if (glm::length(glm::cross(forward, c.up)) < 1e-6f * glm::length(forward) * glm::length(c.up))
+        badKey(path, "up", "must not be parallel to target - position");
+    c.lens = lensJson(path, root, glm::radians(c.verticalFovDeg));
+    Camera check = c.camera(16, 9);
+    if (const char* reason = invalidCameraReason(check))
+        badKey(path, "lens", reason);
+    return c;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Decoding
+
+namespace {
+
+/// World-space normals into view space with the view's normal matrix; zero or non-finite normals (no
+/// surface) stay zero.
+std::vector<float> viewSpaceNormals(const std::vector<float>& world, const glm::mat4& view) {
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(view)));
+    std::vector<float> out(world.size(), 0.0f);
+    for (std::size_t i = 0; i + 2 < world.size(); i += 3) {
+        const glm::vec3 n = normalMatrix * glm::vec3(world[i], world[i + 1], world[i + 2]);
+        const float length = glm::length(n);
+        if (!(length > 0.0f) || !std::isfinite(length))
+            continue;
+        out[i] = n.x / length;
+        out[i + 1] = n.y / length;
+        out[i + 2] = n.z / length;
+    }
+    return out;
+}
+
+/// Pixels (x right, y down, current minus previous, samples jittered) -> UV (y up), jitter removed: a
+/// jittered sample of the current frame sits at p + j_current, of the previous frame at p' + j_previous, so
+/// the surface's own motion is m - j_current + j_previous.
+std::vector<float> uvMotion(const std::vector<float>& pixels, int width, int height, glm::vec2 jitter,
+                            glm::vec2 previousJitter) {
+    const glm::vec2 unjitter = previousJitter - jitter;
+    std::vector<float> out(pixels.size());
+    for (std::size_t i = 0; i + 1 < pixels.size(); i += 2) {
+        out[i] = (pixels[i] + unjitter.x) / float(width);
+        out[i + 1] = -(pixels[i + 1] + unjitter.y) / float(height);
+    }
+    return out;
+}
+
+bool isExr(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    unsigned char magic[4] = {};
+    in.read(reinterpret_cast<char*>(magic), 4);
+    return in.gcount() == 4 && magic[0] == 0x76 && magic[1] == 0x2f && magic[2] == 0x31 && magic[3] == 0x01;
+}
+
+} // namespace
+
+InputDecoder::InputDecoder(std::optional<CameraJson> cameraJson)
+    : mCameraJson(std::move(cameraJson)) {}
+
+DecodedFrame InputDecoder::decode(const fs::path& path) {
+    DecodedFrame out;
+    if (!isExr(path)) { // HDR, PNG, or a missing file: colour only, through readImage's errors
+        try {
+            out.color = readImage(path);
+        } catch (const IoError& e) {
+            throw InputError(e.what());
+        }
+        if (mCameraJson)
+            out.camera = mCameraJson->camera(out.color.width, out.color.height);
+        mPrevious.reset();
+        return out;
+    }
+    ExrFrame frame;
+    try {
+        frame = readExrFrame(path);
+    } catch (const IoError& e) {
+        throw InputError(e.what());
+    }
+    const int width = frame.color.width;
+    const int height = frame.color.height;
+    try {
+        out.camera = cameraFromExr(frame.camera, frame.displaySize.x, frame.displaySize.y,
+                                   mPrevious ? &*mPrevious : nullptr);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(fmt::format("\"{}\": bad camera attributes: {}", path.string(), e.what()));
+    }
+    if (out.camera && (frame.dataOrigin != glm::ivec2(0) || frame.displaySize != glm::ivec2(width, height))) {
+        const glm::mat4 crop = dataWindowCrop(frame.displaySize, frame.dataOrigin, {width, height});
+        out.camera->projection = crop * out.camera->projection;
+        out.camera->prevViewProjection = crop * out.camera->prevViewProjection;
+    }
+    if (!out.camera && mCameraJson)
+        out.camera = mCameraJson->camera(width, height);
+    if (out.camera)
+        out.camera->cut = mFirst;
+
+    out.depth = std::move(frame.depth);
+    if (!frame.normals.empty()) {
+        if (out.camera) {
+            out.normals = viewSpaceNormals(frame.normals, out.camera->view);
+        } else {
+            warnOnce("cli.normalsWithoutCamera",
+                     fmt::format("{}: normals skipped: turning world-space normals into view space needs a "
+                                 "camera (worldToCamera/worldToNDC attributes or --camera FILE.json)",
+                                 path.string()));
+        }
+    }
+    if (!frame.motion.empty()) {
+        const glm::vec2 previousJitter =
+            mPrevious && mPrevious->jitter ? *mPrevious->jitter : glm::vec2(0.0f);
+        out.motion = uvMotion(frame.motion, width, height, frame.camera.jitter.value_or(glm::vec2(0.0f)),
+                              previousJitter);
+    }
+    out.color = std::move(frame.color);
+    mPrevious = frame.camera;
+    mFirst = false;
+    return out;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Textures
+
+namespace {
+
+/// Uploads `components` floats per pixel, rows top to bottom, into level 0 of `texture` (rows flipped so
+/// that texel (x, y) is image pixel (x, height - 1 - y), as Texture::uploadRgba32f does).
+void uploadFlipped(const Texture& texture, const std::vector<float>& values, int components) {
+    const Extent extent = texture.extent();
+    const std::size_t row = std::size_t(extent.width) * std::size_t(components);
+    std::vector<float> flipped(values.size());
+    for (int y = 0; y < extent.height; ++y) {
+        std::copy_n(values.data() + std::size_t(extent.height - 1 - y) * row, row,
+                    flipped.data() + std::size_t(y) * row);
+    }
+    const GLenum format = components == 1 ? GL_RED : components == 2 ? GL_RG : GL_RGBA;
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage2D(texture.id(), 0, 0, 0, extent.width, extent.height, format, GL_FLOAT, flipped.data());
+}
+
+/// Makes `texture` `extent` x `format` unless it already is.
+void ensure(Texture& texture, Extent extent, GLenum format, std::string_view name) {
+    if (!texture.valid() || texture.extent() != extent || texture.format() != format)
+        texture = Texture({.extent = extent, .format = format, .debugName = name});
+}
+
+} // namespace
+
+FrameInputs InputTextures::upload(const DecodedFrame& frame) {
+    const Extent extent{frame.color.width, frame.color.height};
+    ensure(mColor, extent, GL_RGBA32F, "cli.input.color");
+    mColor.uploadRgba32f(frame.color.rgba.data());
+    FrameInputs inputs{.color = &mColor};
+    if (!frame.depth.empty()) {
+        ensure(mDepth, extent, GL_R32F, "cli.input.depth");
+        uploadFlipped(mDepth, frame.depth, 1);
+        inputs.depth = &mDepth;
+        inputs.depthKind = DepthKind::LinearView;
+    }
+    if (!frame.normals.empty()) {
+        std::vector<float> rgba(frame.normals.size() / 3 * 4, 0.0f);
+        for (std::size_t i = 0, j = 0; i < frame.normals.size(); i += 3, j += 4)
+            std::copy_n(frame.normals.data() + i, 3, rgba.data() + j);
+        ensure(mNormals, extent, GL_RGBA16F, "cli.input.normals");
+        uploadFlipped(mNormals, rgba, 4);
+        inputs.normals = &mNormals;
+        inputs.normalEncoding = NormalEncoding::ViewXyz;
+    }
+    if (!frame.motion.empty()) {
+        ensure(mMotion, extent, GL_RG16F, "cli.input.motion");
+        uploadFlipped(mMotion, frame.motion, 2);
+        inputs.motion = &mMotion;
+    }
+    if (frame.camera) {
+        mCamera = *frame.camera;
+        inputs.camera = &mCamera;
+    }
+    return inputs;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// --info and --write-aux
+
+namespace {
+
+std::string channelUse(const std::string& name) {
+    if (name == "R" || name == "G" || name == "B" || name == "A" || name == "Y" || name == "RY" ||
+        name == "BY")
+        return "colour";
+    if (name == "Z" || name == "depth.Z")
+        return "depth (linear view depth)";
+    if (name.starts_with("N.") || name.starts_with("normal."))
+        return "normals (world space, turned into view space with the camera)";
+    if (name == "motion.X" || name == "motion.Y")
+        return "motion (pixels, turned into UV, y up, current minus previous, jitter removed)";
+    return "not used";
+}
+
+std::string attributeUse(const std::string& name) {
+    static const std::vector<std::pair<std::string, std::string>> uses{
+        {"worldToCamera", "camera view"},
+        {"worldToNDC", "camera projection"},
+        {"nearClipPlane", "camera near plane"},
+        {"farClipPlane", "camera far plane"},
+        {"focus", "lens focus distance"},
+        {"aperture", "lens f-number"},
+        {"expTime", "lens exposure time"},
+        {"isoSpeed", "lens ISO"},
+        {"pinholeFocalLength", "lens focal length"},
+        {"sensorOverallDimensions", "lens sensor height"},
+        {"shutterAngle", "lens shutter angle"},
+        {"jitter", "motion unjitter"},
+        {"dataWindow", "pixels read"},
+        {"displayWindow", "NDC frame of the camera"},
+        {"channels", "the channels above"},
+        {"compression", "file structure"},
+        {"lineOrder", "file structure"},
+    };
+    for (const auto& [attribute, use] : uses) {
+        if (name == attribute)
+            return use;
+    }
+    return "not used";
+}
+
+void printInfo(const fs::path& path, const std::optional<CameraJson>& cameraJson) {
+    const ExrFrame frame = readExrFrame(path);
+    std::printf("%s: %dx%d", path.string().c_str(), frame.color.width, frame.color.height);
+    if (frame.displaySize != glm::ivec2(frame.color.width, frame.color.height) ||
+        frame.dataOrigin != glm::ivec2(0))
+        std::printf(" (data window at %d,%d of a %dx%d display window)", frame.dataOrigin.x,
+                    frame.dataOrigin.y, frame.displaySize.x, frame.displaySize.y);
+    std::printf("\nchannels:\n");
+    for (const auto& name : frame.channels)
+        std::printf("  %s -> %s\n", name.c_str(), channelUse(name).c_str());
+    std::printf("attributes:\n");
+    for (const auto& attribute : frame.attributes) {
+        const std::string name = attribute.substr(0, attribute.find(' '));
+        std::printf("  %s -> %s\n", attribute.c_str(), attributeUse(name).c_str());
+    }
+    std::optional<Camera> camera;
+    try {
+        camera = cameraFromExr(frame.camera, frame.displaySize.x, frame.displaySize.y);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(fmt::format("\"{}\": bad camera attributes: {}", path.string(), e.what()));
+    }
+    const char* source = camera ? "file attributes" : "--camera";
+    if (!camera && cameraJson)
+        camera = cameraJson->camera(frame.color.width, frame.color.height);
+    if (!camera) {
+        std::printf("camera: none (no worldToCamera/worldToNDC; normals will be skipped)\n");
+        return;
+    }
+    std::printf(
+        "camera (%s): near %g, far %g, vertical fov %.3g deg, focal length %.4g mm, sensor height %.4g mm, "
+        "f/%.3g, focus %g\n",
+        source, double(camera->nearPlane), double(camera->farPlane),
+        double(glm::degrees(camera->verticalFov)), double(camera->lens.focalLengthMm),
+        double(camera->lens.sensorHeightMm), double(camera->lens.fNumber),
+        double(camera->lens.focusDistance));
+}
+
+} // namespace
+
+int runImageInfo(const std::vector<fs::path>& inputs, const fs::path& cameraJsonPath) {
+    const std::optional<CameraJson> cameraJson =
+        cameraJsonPath.empty() ? std::nullopt : std::optional<CameraJson>(loadCameraJson(cameraJsonPath));
+    for (const auto& path : inputs) {
+        if (!isExr(path)) {
+            try {
+                const ImageF image = readImage(path);
+                std::printf("%s: %dx%d, colour only (not an OpenEXR file)\n", path.string().c_str(),
+                            image.width, image.height);
+            } catch (const IoError& e) {
+                throw InputError(e.what());
+            }
+            continue;
+        }
+        try {
+            printInfo(path, cameraJson);
+        } catch (const IoError& e) {
+            throw InputError(e.what());
+        }
+    }
+    return kOk;
+}
+
+void writeAux(const fs::path& folder, const fs::path& input, const DecodedFrame& frame) {
+    ExrFrame aux;
+    aux.color = frame.color;
+    aux.depth = frame.depth;
+    aux.normals = frame.normals;
+    aux.motion = frame.motion;
+    if (frame.camera)
+        aux.camera = exrFromCamera(*frame.camera, frame.color.width, frame.color.height);
+    writeExrFrame(folder / (input.stem().string() + ".aux.exr"), aux);
+}
+
+} // namespace photopic::cli

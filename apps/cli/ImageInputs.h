@@ -1,0 +1,83 @@
+#pragma once
+// `photopic image`'s 3D inputs: EXR frames decoded into the pipeline's conventions (linear view depth,
+// view-space normals, UV motion with jitter removed, a GL camera), the camera JSON for files without camera
+// attributes, the GL textures they are uploaded to, `--info` and `--write-aux`.
+
+#include "core/Camera.h"
+#include "core/Image.h"
+#include "gl/Objects.h"
+#include "io/ExrFrame.h"
+#include "pipeline/Pipeline.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace photopic::cli {
+
+/// A camera given as JSON (docs/camera-json.md): GL conventions, the projection built per frame size.
+struct CameraJson {
+    glm::vec3 position{0.0f};
+    glm::vec3 target{0.0f, 0.0f, -1.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float verticalFovDeg = 60.0f; ///< degrees, (0, 180)
+    float nearPlane = 0.1f;       ///< scene units, > 0
+    float farPlane = 1000.0f;     ///< scene units, > near; omitted or null in the file: infinite
+    Lens lens;
+
+    /// The camera for a `width` x `height` frame (aspect from the frame; prevViewProjection = this frame's).
+    [[nodiscard]] Camera camera(int width, int height) const;
+};
+
+/// Reads and validates a camera JSON file; throws InputError naming the file and the key.
+[[nodiscard]] CameraJson loadCameraJson(const std::filesystem::path& path);
+
+/// One input frame in the pipeline's conventions, rows top to bottom like ImageF.
+struct DecodedFrame {
+    ImageF color;
+    std::vector<float> depth;   ///< width*height linear view depth (inf or >= far: background); or empty
+    std::vector<float> normals; ///< width*height*3 view-space unit normals; or empty
+    std::vector<float> motion; ///< width*height*2 UV (y up), current minus previous, jitter removed; or empty
+    std::optional<Camera> camera;
+};
+
+/// Decodes a sequence in order, remembering the previous frame's camera attributes (prevViewProjection and
+/// the previous jitter). Layers that need a camera the frame lacks are dropped with one warning per run.
+class InputDecoder {
+public:
+    explicit InputDecoder(std::optional<CameraJson> cameraJson = std::nullopt);
+    /// Throws InputError naming the file for unreadable files and bad camera attributes.
+    [[nodiscard]] DecodedFrame decode(const std::filesystem::path& path);
+
+private:
+    std::optional<CameraJson> mCameraJson;
+    std::optional<ExrCameraAttributes> mPrevious;
+    bool mFirst = true;
+};
+
+/// The GL textures frames are uploaded to: created when the extent (or the set of layers) changes, and
+/// re-uploaded every frame otherwise, so a sequence creates textures only for its first frame.
+class InputTextures {
+public:
+    /// Uploads `frame` and returns inputs pointing at the textures and camera held here (valid until the
+    /// next upload).
+    [[nodiscard]] FrameInputs upload(const DecodedFrame& frame);
+
+private:
+    Texture mColor;
+    Texture mDepth;
+    Texture mNormals;
+    Texture mMotion;
+    Camera mCamera;
+};
+
+/// `photopic image --info`: the channels and attributes of each input and what each feeds.
+int runImageInfo(const std::vector<std::filesystem::path>& inputs, const std::filesystem::path& cameraJson);
+
+/// `--write-aux DIR`: DIR/<input stem>.aux.exr with colour, Z (linear view depth), N.X/Y/Z (view space),
+/// motion.X/Y (UV, y up) and the camera's attributes, for the layers the frame has.
+void writeAux(const std::filesystem::path& folder, const std::filesystem::path& input,
+              const DecodedFrame& frame);
+
+} // namespace photopic::cli

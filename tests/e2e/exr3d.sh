@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# photopic image with 3D EXR input: depth, normals, motion and the camera attributes, --info, --write-aux,
+# --camera, and the errors for malformed files (exit 2, the file named).
+source "$(dirname "$0")/lib.bash"
+S="$SCRATCH"
+FIXTURE="${PHOTOPIC_EXR3D_FIXTURE:?the test sets PHOTOPIC_EXR3D_FIXTURE to the fixture program}"
+
+expect 0 "fixture writes a 3D EXR sequence" -- "$FIXTURE" write "$S"
+
+expect 0 "--info on a 3D EXR, no output needed" -- "$PHOTOPIC" image --info "$S/seq/frame_0003.exr"
+check "--info lists Z as depth" contains "Z -> depth (linear view depth)"
+check "--info lists the normals" contains "N.Z -> normals (world space"
+check "--info lists the motion" contains "motion.X -> motion (pixels"
+check "--info lists colour" contains "R -> colour"
+check "--info: worldToCamera feeds the view" contains "worldToCamera (m44f) -> camera view"
+check "--info: worldToNDC feeds the projection" contains "worldToNDC (m44f) -> camera projection"
+check "--info: lens attributes" contains "pinholeFocalLength (float) -> lens focal length"
+check "--info: aperture" contains "aperture (float) -> lens f-number"
+check "--info: jitter" contains "jitter (v2f) -> motion unjitter"
+check "--info: the camera it derives" contains "camera (file attributes): near 0.1, far 100"
+check "--info: unused attributes say so" contains "screenWindowWidth (float) -> not used"
+
+expect 0 "a 3D EXR sequence renders" -- "$PHOTOPIC" image "$S"/seq/*.exr -o "$S/out" --write-aux "$S/aux"
+check "one PNG per frame" test "$(ls "$S/out"/*.png | wc -l)" -eq 10
+check "one aux EXR per frame" test "$(ls "$S/aux"/*.aux.exr | wc -l)" -eq 10
+expect 0 "aux depth, view-space normals and UV motion hold the expected values" -- "$FIXTURE" check-aux "$S/aux"
+
+expect 0 "normals without a camera are skipped, with a warning" -- "$PHOTOPIC" image "$S/plain/plain.exr" -o "$S/plain.png"
+check "the warning says why" contains "normals skipped"
+check "the image is still written" test -s "$S/plain.png"
+expect 0 "--camera gives a camera to a file without one" -- "$PHOTOPIC" image "$S/plain/plain.exr" -o "$S/plain2.png" --camera "$S/camera.json"
+check "no normals warning with --camera" eval '! contains "normals skipped"'
+expect 0 "--info with --camera" -- "$PHOTOPIC" image --info "$S/plain/plain.exr" --camera "$S/camera.json"
+check "--info names the camera's source" contains "camera (--camera): near 0.1, far 100, vertical fov 50"
+
+expect 2 "a normal layer without N.Z" -- "$PHOTOPIC" image "$S/bad/missing_nz.exr" -o "$S/bad.png"
+check "the error names the file" contains "missing_nz.exr"
+check "the error names the missing channel" contains "but not N.Z"
+expect 2 "--info on the same file" -- "$PHOTOPIC" image --info "$S/bad/missing_nz.exr"
+check "--info names the file" contains "missing_nz.exr"
+expect 2 "a non-finite worldToNDC" -- "$PHOTOPIC" image "$S/bad/nan_ndc.exr" -o "$S/bad.png"
+check "the error names the file" contains "nan_ndc.exr"
+check "the error names the attribute" contains "worldToNDC has a non-finite entry"
+expect 2 "a camera JSON with a bad value" -- "$PHOTOPIC" image "$S/plain/plain.exr" -o "$S/bad.png" --camera "$S/bad/camera.json"
+check "the error names the file" contains "bad/camera.json"
+check "the error names the key" contains '"verticalFovDeg"'
+expect 2 "a camera JSON with an unknown key" -- "$PHOTOPIC" image "$S/plain/plain.exr" -o "$S/bad.png" --camera "$S/bad/camera_key.json"
+check "the error names the key" contains '"fov": unknown key'
+check "no output for bad inputs" test ! -e "$S/bad.png"
+
+finish

@@ -1,0 +1,335 @@
+#include "io/ExrFrame.h"
+
+#include "io/ImageIO.h"
+
+#include <gtest/gtest.h>
+
+#include <ImfChannelList.h>
+#include <ImfFloatAttribute.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfOutputFile.h>
+#include <ImfStringAttribute.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <unistd.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+
+namespace photopic {
+namespace {
+
+namespace fs = std::filesystem;
+
+class TempFolder {
+public:
+    TempFolder() {
+        static int counter = 0;
+        mPath = fs::temp_directory_path() /
+                ("photopic-exrframe-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+        fs::remove_all(mPath);
+        fs::create_directories(mPath);
+    }
+    ~TempFolder() {
+        std::error_code ignored;
+        fs::remove_all(mPath, ignored);
+    }
+    TempFolder(const TempFolder&) = delete;
+    TempFolder& operator=(const TempFolder&) = delete;
+    [[nodiscard]] fs::path operator/(const std::string& name) const { return mPath / name; }
+
+private:
+    fs::path mPath;
+};
+
+constexpr int kWidth = 8;
+constexpr int kHeight = 6;
+
+Camera testCamera() {
+    Camera camera;
+    camera.view = glm::lookAt(glm::vec3(3.0f, 2.0f, 5.0f), glm::vec3(0.5f, 0.0f, -1.0f), glm::vec3(0, 1, 0));
+    camera.verticalFov = 0.8f;
+    camera.nearPlane = 0.25f;
+    camera.farPlane = 400.0f;
+    camera.projection = perspectiveProjection(camera.verticalFov, float(kWidth) / float(kHeight),
+                                              camera.nearPlane, camera.farPlane);
+    camera.prevViewProjection = camera.viewProjection();
+    camera.lens = {.focalLengthMm = 35.0f,
+                   .sensorHeightMm = 2.0f * 35.0f * std::tan(0.4f), // consistent with the field of view
+                   .fNumber = 4.0f,
+                   .focusDistance = 6.5f,
+                   .shutterAngleDeg = 172.8f,
+                   .exposureTimeS = 0.02f,
+                   .iso = 400.0f};
+    return camera;
+}
+
+ExrFrame testFrame() {
+    ExrFrame frame;
+    frame.color = ImageF(kWidth, kHeight);
+    const std::size_t pixels = std::size_t(kWidth) * kHeight;
+    frame.depth.resize(pixels);
+    frame.normals.resize(pixels * 3);
+    frame.motion.resize(pixels * 2);
+    for (std::size_t i = 0; i < pixels; ++i) {
+        for (std::size_t c = 0; c < 4; ++c)
+            frame.color.rgba[i * 4 + c] = 0.25f * float(c) + float(i);
+        frame.depth[i] = 1.0f + 0.37f * float(i);
+        const glm::vec3 n = glm::normalize(glm::vec3(float(i % 3) - 1.0f, 1.0f, float(i % 5) * 0.25f));
+        frame.normals[i * 3 + 0] = n.x;
+        frame.normals[i * 3 + 1] = n.y;
+        frame.normals[i * 3 + 2] = n.z;
+        frame.motion[i * 2 + 0] = 0.125f * float(i);
+        frame.motion[i * 2 + 1] = -0.5f * float(i);
+    }
+    frame.depth[pixels - 1] = std::numeric_limits<float>::infinity(); // the background
+    frame.camera = exrFromCamera(testCamera(), kWidth, kHeight);
+    frame.camera.jitter = glm::vec2(0.25f, -0.125f);
+    return frame;
+}
+
+void expectMatNear(const glm::mat4& a, const glm::mat4& b, float tolerance) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            EXPECT_NEAR(a[c][r], b[c][r], tolerance) << "[" << c << "][" << r << "]";
+}
+
+TEST(ExrFrame, RoundTripsEveryLayerAndAttribute) {
+    const TempFolder folder;
+    const ExrFrame written = testFrame();
+    writeExrFrame(folder / "frame.exr", written);
+    const ExrFrame read = readExrFrame(folder / "frame.exr");
+
+    ASSERT_EQ(read.color.width, kWidth);
+    ASSERT_EQ(read.color.height, kHeight);
+    for (std::size_t i = 0; i < written.color.rgba.size(); ++i)
+        EXPECT_NEAR(read.color.rgba[i], written.color.rgba[i], 1e-3f * std::abs(written.color.rgba[i]));
+    EXPECT_EQ(read.depth, written.depth); // float: exact
+    EXPECT_EQ(read.motion, written.motion);
+    ASSERT_EQ(read.normals.size(), written.normals.size());
+    for (std::size_t i = 0; i < written.normals.size(); ++i)
+        EXPECT_NEAR(read.normals[i], written.normals[i], 1e-3f); // half
+    EXPECT_EQ(read.channels, (std::vector<std::string>{"A", "B", "G", "N.X", "N.Y", "N.Z", "R", "Z",
+                                                       "motion.X", "motion.Y"}));
+    EXPECT_EQ(read.displaySize, glm::ivec2(kWidth, kHeight));
+    EXPECT_EQ(read.dataOrigin, glm::ivec2(0, 0));
+
+    const ExrCameraAttributes& a = read.camera;
+    const ExrCameraAttributes& w = written.camera;
+    ASSERT_TRUE(a.worldToCamera && a.worldToNDC);
+    EXPECT_EQ(*a.worldToCamera, *w.worldToCamera);
+    EXPECT_EQ(*a.worldToNDC, *w.worldToNDC);
+    EXPECT_EQ(a.focus, w.focus);
+    EXPECT_EQ(a.aperture, w.aperture);
+    EXPECT_EQ(a.expTime, w.expTime);
+    EXPECT_EQ(a.isoSpeed, w.isoSpeed);
+    EXPECT_EQ(a.pinholeFocalLength, w.pinholeFocalLength);
+    EXPECT_EQ(a.sensorOverallDimensions, w.sensorOverallDimensions);
+    EXPECT_EQ(a.shutterAngle, w.shutterAngle);
+    EXPECT_EQ(a.jitter, w.jitter);
+    EXPECT_EQ(a.nearClip, w.nearClip);
+    EXPECT_EQ(a.farClip, w.farClip);
+}
+
+TEST(ExrFrame, ColourOnlyFileHasNoLayersOrCamera) {
+    const TempFolder folder;
+    ImageF image(4, 3, 0.5f);
+    writeExr(folder / "plain.exr", image);
+    const ExrFrame frame = readExrFrame(folder / "plain.exr");
+    EXPECT_EQ(frame.color.width, 4);
+    EXPECT_TRUE(frame.depth.empty());
+    EXPECT_TRUE(frame.normals.empty());
+    EXPECT_TRUE(frame.motion.empty());
+    EXPECT_FALSE(frame.camera.worldToCamera);
+    EXPECT_FALSE(cameraFromExr(frame.camera, 4, 3).has_value());
+}
+
+TEST(ExrFrame, CameraRoundTrip) {
+    const Camera camera = testCamera();
+    const std::optional<Camera> back = cameraFromExr(exrFromCamera(camera, kWidth, kHeight), kWidth, kHeight);
+    ASSERT_TRUE(back.has_value());
+    expectMatNear(back->view, camera.view, 1e-5f);
+    expectMatNear(back->projection, camera.projection, 1e-4f);
+    expectMatNear(back->prevViewProjection, camera.viewProjection(), 1e-4f);
+    EXPECT_NEAR(back->nearPlane, camera.nearPlane, 1e-6f);
+    EXPECT_NEAR(back->farPlane, camera.farPlane, 1e-3f);
+    EXPECT_NEAR(back->verticalFov, camera.verticalFov, 1e-5f);
+    EXPECT_NEAR(back->lens.focalLengthMm, camera.lens.focalLengthMm, 1e-4f);
+    EXPECT_NEAR(back->lens.sensorHeightMm, camera.lens.sensorHeightMm, 1e-4f);
+    EXPECT_EQ(back->lens.fNumber, camera.lens.fNumber);
+    EXPECT_EQ(back->lens.focusDistance, camera.lens.focusDistance);
+    EXPECT_EQ(back->lens.shutterAngleDeg, camera.lens.shutterAngleDeg);
+    EXPECT_EQ(back->lens.exposureTimeS, camera.lens.exposureTimeS);
+    EXPECT_EQ(back->lens.iso, camera.lens.iso);
+}
+
+TEST(ExrFrame, NearFarComeFromWorldToNdcWithoutClipAttributes) {
+    Camera camera = testCamera();
+    for (const float far : {400.0f, std::numeric_limits<float>::infinity()}) {
+        camera.farPlane = far;
+        camera.projection = perspectiveProjection(camera.verticalFov, 1.5f, camera.nearPlane, far);
+        ExrCameraAttributes a = exrFromCamera(camera, 12, 8);
+        a.nearClip.reset();
+        a.farClip.reset();
+        const std::optional<Camera> back = cameraFromExr(a, 12, 8);
+        ASSERT_TRUE(back.has_value());
+        EXPECT_NEAR(back->nearPlane, camera.nearPlane, 1e-5f);
+        if (std::isinf(far))
+            EXPECT_TRUE(std::isinf(back->farPlane));
+        else
+            EXPECT_NEAR(back->farPlane, far, 0.5f); // float precision of a near/far ratio of 1600
+        expectMatNear(back->projection, camera.projection, 1e-3f);
+    }
+}
+
+TEST(ExrFrame, NearFarFallBackWhenWorldToNdcHasNoDepthRow) {
+    ExrCameraAttributes a = exrFromCamera(testCamera(), kWidth, kHeight);
+    a.nearClip.reset();
+    a.farClip.reset();
+    (*a.worldToNDC)[0][2] = (*a.worldToNDC)[1][2] = (*a.worldToNDC)[2][2] = (*a.worldToNDC)[3][2] = 0.0f;
+    const std::optional<Camera> back = cameraFromExr(a, kWidth, kHeight);
+    ASSERT_TRUE(back.has_value());
+    EXPECT_FLOAT_EQ(back->nearPlane, 0.1f);
+    EXPECT_TRUE(std::isinf(back->farPlane));
+}
+
+/// A world point lands on the same pixel through the file's worldToNDC (OpenEXR NDC, y down) as through the
+/// GL camera (GL NDC, y up, rows flipped).
+TEST(ExrFrame, GlCameraProjectsToTheSamePixelAsWorldToNdc) {
+    ExrCameraAttributes a = exrFromCamera(testCamera(), kWidth, kHeight);
+    // A renderer's own matrix scale is arbitrary: w scaled by 3 leaves NDC unchanged.
+    *a.worldToNDC = 3.0f * *a.worldToNDC;
+    const std::optional<Camera> camera = cameraFromExr(a, kWidth, kHeight);
+    ASSERT_TRUE(camera.has_value());
+    for (const glm::vec3 world : {glm::vec3(0.5f, 0.0f, -1.0f), glm::vec3(1.0f, 0.7f, -2.0f),
+                                  glm::vec3(-0.3f, -0.2f, 0.4f), glm::vec3(2.0f, 1.0f, -10.0f)}) {
+        const glm::vec4 exr = *a.worldToNDC * glm::vec4(world, 1.0f);
+        const glm::vec2 exrPixel(exr.x / exr.w * kWidth, exr.y / exr.w * kHeight); // from the top-left
+        const glm::vec4 clip = camera->viewProjection() * glm::vec4(world, 1.0f);
+        const glm::vec2 ndc(clip.x / clip.w, clip.y / clip.w);
+        const glm::vec2 glPixel((ndc.x * 0.5f + 0.5f) * kWidth, (0.5f - ndc.y * 0.5f) * kHeight);
+        EXPECT_NEAR(glPixel.x, exrPixel.x, 1e-4f);
+        EXPECT_NEAR(glPixel.y, exrPixel.y, 1e-4f);
+        // In front of the camera: OpenEXR camera z > 0, GL view z < 0, and the same distance.
+        const float exrDepth = (*a.worldToCamera * glm::vec4(world, 1.0f)).z;
+        EXPECT_GT(exrDepth, 0.0f);
+        EXPECT_NEAR((camera->view * glm::vec4(world, 1.0f)).z, -exrDepth, 1e-5f);
+    }
+}
+
+TEST(ExrFrame, PreviousFrameGivesPrevViewProjection) {
+    const Camera current = testCamera();
+    Camera previous = current;
+    previous.view = glm::translate(current.view, glm::vec3(0.3f, 0.0f, 0.1f));
+    const ExrCameraAttributes prevAttributes = exrFromCamera(previous, kWidth, kHeight);
+    const std::optional<Camera> camera =
+        cameraFromExr(exrFromCamera(current, kWidth, kHeight), kWidth, kHeight, &prevAttributes);
+    ASSERT_TRUE(camera.has_value());
+    expectMatNear(camera->prevViewProjection, previous.viewProjection(), 1e-4f);
+}
+
+TEST(ExrFrame, DataWindowCropMapsTheDataWindowToFullNdc) {
+    const glm::mat4 crop = dataWindowCrop({100, 50}, {20, 10}, {40, 30});
+    // The data window's corners in display GL NDC (y up): x 20..60 of 100, rows 10..40 of 50 from the top.
+    const glm::vec4 topLeft =
+        crop * glm::vec4(-1.0f + 2.0f * 20.0f / 100.0f, 1.0f - 2.0f * 10.0f / 50.0f, 0, 1);
+    const glm::vec4 bottomRight =
+        crop * glm::vec4(-1.0f + 2.0f * 60.0f / 100.0f, 1.0f - 2.0f * 40.0f / 50.0f, 0, 1);
+    EXPECT_NEAR(topLeft.x, -1.0f, 1e-6f);
+    EXPECT_NEAR(topLeft.y, 1.0f, 1e-6f);
+    EXPECT_NEAR(bottomRight.x, 1.0f, 1e-6f);
+    EXPECT_NEAR(bottomRight.y, -1.0f, 1e-6f);
+    const glm::mat4 identity = dataWindowCrop({64, 32}, {0, 0}, {64, 32});
+    expectMatNear(identity, glm::mat4(1.0f), 1e-6f);
+}
+
+/// Writes a small file with the given channels (all FLOAT) and float attributes.
+void writeRaw(const fs::path& path, const std::vector<std::string>& channels,
+              const std::function<void(Imf::Header&)>& attributes = {}) {
+    Imf::Header header(2, 2);
+    std::vector<float> values(4, 1.0f);
+    Imf::FrameBuffer frameBuffer;
+    for (const auto& name : channels) {
+        header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+        frameBuffer.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data()), sizeof(float),
+                                            2 * sizeof(float)));
+    }
+    if (attributes)
+        attributes(header);
+    Imf::OutputFile file(path.c_str(), header);
+    file.setFrameBuffer(frameBuffer);
+    file.writePixels(2);
+}
+
+void expectIoError(const fs::path& path, const std::string& fragment) {
+    try {
+        (void)readExrFrame(path);
+        ADD_FAILURE() << "no error for " << path;
+    } catch (const IoError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(path.string()), std::string::npos) << what;
+        EXPECT_NE(what.find(fragment), std::string::npos) << what;
+    }
+}
+
+TEST(ExrFrame, IncompleteLayerIsAnErrorNamingTheFile) {
+    const TempFolder folder;
+    writeRaw(folder / "n.exr", {"R", "G", "B", "N.X", "N.Y"});
+    expectIoError(folder / "n.exr", "has N.X, N.Y but not N.Z");
+    writeRaw(folder / "m.exr", {"R", "G", "B", "motion.Y"});
+    expectIoError(folder / "m.exr", "not motion.X");
+}
+
+TEST(ExrFrame, AlternativeLayerNamesAreRead) {
+    const TempFolder folder;
+    writeRaw(folder / "alt.exr", {"R", "G", "B", "depth.Z", "normal.X", "normal.Y", "normal.Z"});
+    const ExrFrame frame = readExrFrame(folder / "alt.exr");
+    EXPECT_EQ(frame.depth, std::vector<float>(4, 1.0f));
+    EXPECT_EQ(frame.normals, std::vector<float>(12, 1.0f));
+}
+
+TEST(ExrFrame, WrongTypedAttributeIsAnErrorNamingTheFile) {
+    const TempFolder folder;
+    writeRaw(folder / "attr.exr", {"R", "G", "B"},
+             [](Imf::Header& h) { h.insert("worldToNDC", Imf::FloatAttribute(2.0f)); });
+    expectIoError(folder / "attr.exr", "attribute worldToNDC is of type float, expected m44f");
+    writeRaw(folder / "lens.exr", {"R", "G", "B"},
+             [](Imf::Header& h) { h.insert("pinholeFocalLength", Imf::StringAttribute("35mm")); });
+    expectIoError(folder / "lens.exr", "pinholeFocalLength");
+}
+
+TEST(ExrFrame, NotAnExrIsAnError) {
+    const TempFolder folder;
+    writePng(folder / "x.exr", Image8(2, 2));
+    expectIoError(folder / "x.exr", "not an OpenEXR");
+    expectIoError(folder / "missing.exr", "does not exist");
+}
+
+TEST(ExrFrame, BadCameraMatricesAreInvalidArguments) {
+    ExrCameraAttributes a = exrFromCamera(testCamera(), kWidth, kHeight);
+    ExrCameraAttributes nan = a;
+    (*nan.worldToNDC)[1][2] = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_THROW((void)cameraFromExr(nan, kWidth, kHeight), std::invalid_argument);
+    ExrCameraAttributes singular = a;
+    *singular.worldToCamera = glm::mat4(0.0f);
+    EXPECT_THROW((void)cameraFromExr(singular, kWidth, kHeight), std::invalid_argument);
+    ExrCameraAttributes affine = a;
+    *affine.worldToNDC = glm::mat4(1.0f) * *affine.worldToCamera; // w no longer follows depth
+    EXPECT_THROW((void)cameraFromExr(affine, kWidth, kHeight), std::invalid_argument);
+    ExrCameraAttributes badLens = a;
+    badLens.aperture = 0.0f;
+    EXPECT_THROW((void)cameraFromExr(badLens, kWidth, kHeight), std::invalid_argument);
+}
+
+TEST(ExrFrame, WriteRejectsMismatchedLayers) {
+    const TempFolder folder;
+    ExrFrame frame = testFrame();
+    frame.depth.pop_back();
+    EXPECT_THROW(writeExrFrame(folder / "bad.exr", frame), IoError);
+    EXPECT_FALSE(fs::exists(folder / "bad.exr"));
+}
+
+} // namespace
+} // namespace photopic
