@@ -119,47 +119,6 @@ float surfaceEpsilon(const glm::vec3& p) {
     return 2e-4f * m;
 }
 
-float ambientOcclusion(const Frame& f, const TruthOptions& o, const glm::vec3& p, const glm::vec3& n,
-                       std::uint32_t pixel) {
-    glm::vec3 b1, b2;
-    basis(n, b1, b2);
-    const glm::vec3 origin = p + surfaceEpsilon(p) * n;
-    const int count = o.aoSamples * o.aoSamples;
-    int open = 0;
-    for (int k = 0; k < count; ++k) {
-        // Cosine-weighted by Malley's method: uniform on the disc, lifted onto the hemisphere.
-        const glm::vec2 d = concentricDisc(stratified(k, o.aoSamples, pixel, 11u));
-        const float z = std::sqrt(std::max(0.0f, 1.0f - glm::dot(d, d)));
-        const glm::vec3 dir = glm::normalize(d.x * b1 + d.y * b2 + z * n);
-        open += occluded(f.prims, {origin, dir}, 0.0f, o.aoRadius) ? 0 : 1;
-    }
-    return float(open) / float(count);
-}
-
-float sunVisibility(const Frame& f, const TruthOptions& o, const glm::vec3& p, const glm::vec3& n,
-                    std::uint32_t pixel) {
-    const Environment& env = environment();
-    if (glm::dot(n, env.sunDirection) <= 0.0f) {
-        return 0.0f;
-    }
-    const glm::vec3 origin = p + surfaceEpsilon(p) * n;
-    const float tMax = o.sunMaxDistance > 0.0f ? o.sunMaxDistance : kInf;
-    if (o.sunSamples <= 1) {
-        return occluded(f.prims, {origin, env.sunDirection}, 0.0f, tMax) ? 0.0f : 1.0f;
-    }
-    glm::vec3 b1, b2;
-    basis(env.sunDirection, b1, b2);
-    const float spread = std::tan(env.sunAngularRadius);
-    const int count = o.sunSamples * o.sunSamples;
-    int open = 0;
-    for (int k = 0; k < count; ++k) {
-        const glm::vec2 d = spread * concentricDisc(stratified(k, o.sunSamples, pixel, 21u));
-        const glm::vec3 dir = glm::normalize(env.sunDirection + d.x * b1 + d.y * b2);
-        open += occluded(f.prims, {origin, dir}, 0.0f, tMax) ? 0 : 1;
-    }
-    return float(open) / float(count);
-}
-
 /// Colour sub-sample k of pixel (x, y): the same sub-pixel position for color, shutter and thinlens.
 glm::vec2 subPixel(const TruthOptions& o, int x, int y, int k) {
     const std::uint32_t pixel = std::uint32_t(y * o.width + x);
@@ -203,12 +162,15 @@ void pixelCentreKinds(TruthKind kind, const Frame& f, const TruthOptions& o, int
         out[0] = found ? float(prim->id) : 0.0f;
         break;
     case TruthKind::Ao: {
-        const float v = found ? ambientOcclusion(f, o, p, hit.worldNormal, pixel) : 1.0f;
+        const float v =
+            found ? ambientOcclusionAt(f.prims, p, hit.worldNormal, o.aoRadius, o.aoSamples, pixel) : 1.0f;
         out[0] = out[1] = out[2] = v;
         break;
     }
     case TruthKind::Sun: {
-        const float v = found ? sunVisibility(f, o, p, hit.worldNormal, pixel) : 1.0f;
+        const float v =
+            found ? sunVisibilityAt(f.prims, p, hit.worldNormal, o.sunMaxDistance, o.sunSamples, pixel)
+                  : 1.0f;
         out[0] = out[1] = out[2] = v;
         break;
     }
@@ -312,6 +274,47 @@ const std::vector<TruthKind>& allTruthKinds() {
         return all;
     }();
     return kAll;
+}
+
+float ambientOcclusionAt(const std::vector<Primitive>& prims, const glm::vec3& p, const glm::vec3& n,
+                         float radius, int samples, std::uint32_t seed) {
+    glm::vec3 b1, b2;
+    basis(n, b1, b2);
+    const glm::vec3 origin = p + surfaceEpsilon(p) * n;
+    const int count = samples * samples;
+    int open = 0;
+    for (int k = 0; k < count; ++k) {
+        // Cosine-weighted by Malley's method: uniform on the disc, lifted onto the hemisphere.
+        const glm::vec2 d = concentricDisc(stratified(k, samples, seed, 11u));
+        const float z = std::sqrt(std::max(0.0f, 1.0f - glm::dot(d, d)));
+        const glm::vec3 dir = glm::normalize(d.x * b1 + d.y * b2 + z * n);
+        open += occluded(prims, {origin, dir}, 0.0f, radius) ? 0 : 1;
+    }
+    return float(open) / float(count);
+}
+
+float sunVisibilityAt(const std::vector<Primitive>& prims, const glm::vec3& p, const glm::vec3& n,
+                      float maxDistance, int samples, std::uint32_t seed) {
+    const Environment& env = environment();
+    if (glm::dot(n, env.sunDirection) <= 0.0f) {
+        return 0.0f;
+    }
+    const glm::vec3 origin = p + surfaceEpsilon(p) * n;
+    const float tMax = maxDistance > 0.0f ? maxDistance : kInf;
+    if (samples <= 1) {
+        return occluded(prims, {origin, env.sunDirection}, 0.0f, tMax) ? 0.0f : 1.0f;
+    }
+    glm::vec3 b1, b2;
+    basis(env.sunDirection, b1, b2);
+    const float spread = std::tan(env.sunAngularRadius);
+    const int count = samples * samples;
+    int open = 0;
+    for (int k = 0; k < count; ++k) {
+        const glm::vec2 d = spread * concentricDisc(stratified(k, samples, seed, 21u));
+        const glm::vec3 dir = glm::normalize(env.sunDirection + d.x * b1 + d.y * b2);
+        open += occluded(prims, {origin, dir}, 0.0f, tMax) ? 0 : 1;
+    }
+    return float(open) / float(count);
 }
 
 Camera truthCamera(const TruthOptions& options) {

@@ -28,6 +28,7 @@
 #include "core/Image.h"
 #include "scenes/testbed/TestbedGeometry.h"
 
+#include <cstdint>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -57,6 +58,18 @@ struct TruthOptions {
 
 /// The Camera the truth and the rasteriser see for `options` (the path's, at the frame's camera time).
 [[nodiscard]] Camera truthCamera(const TruthOptions& options);
+
+/// Ambient occlusion at a surface point p with unit normal n (the `ao` kind's value): the cosine-weighted
+/// fraction of samples x samples stratified rays that no primitive within `radius` blocks. `seed` varies the
+/// offsets within the strata.
+[[nodiscard]] float ambientOcclusionAt(const std::vector<Primitive>& prims, const glm::vec3& p,
+                                       const glm::vec3& n, float radius, int samples, std::uint32_t seed = 0);
+/// Sun visibility at a surface point (the `sun` kind's value): 0 when n faces away from the sun, else the
+/// fraction of shadow rays (one to the disc's centre, or samples x samples over it) that no primitive within
+/// `maxDistance` (0: any) blocks.
+[[nodiscard]] float sunVisibilityAt(const std::vector<Primitive>& prims, const glm::vec3& p,
+                                    const glm::vec3& n, float maxDistance, int samples,
+                                    std::uint32_t seed = 0);
 
 /// Renders one truth kind.
 [[nodiscard]] ImageF renderTruth(TruthKind kind, const TruthOptions& options);

@@ -1,0 +1,183 @@
+// The testbed's rasteriser against its CPU ray tracer: depth, normals and motion agree at pixel centres away
+// from object edges (so the ray tracer's other truths can be trusted against what the pipeline is fed), the
+// frame is deterministic, the cut frame is flagged, and the scene's EXR frame carries the file conventions.
+
+#include "GlTest.h"
+
+#include "gl/TextureIo.h"
+#include "scenes/SceneExr.h"
+#include "scenes/testbed/TestbedScene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace photopic::test {
+
+namespace {
+
+constexpr int kWidth = 160;
+constexpr int kHeight = 90;
+constexpr float kDt = 1.0f / 30.0f;
+
+struct Raster {
+    std::vector<float> depth; ///< window depth
+    ImageF normals;
+    ImageF motion;
+    ImageF color;
+    Camera camera;
+};
+
+Raster rasterise(TestbedScene& scene, Pipeline& pipeline, std::uint64_t frame) {
+    std::vector<double> telemetry;
+    const FrameInputs in = scene.render({.dt = kDt, .frameIndex = frame}, pipeline, telemetry);
+    return {readDepthTexture(*in.depth), readTextureF(*in.normals), readTextureF(*in.motion),
+            readTextureF(*in.color), *in.camera};
+}
+
+/// Interior pixels whose 3x3 neighbourhood in the ray tracer's object ids holds one object (or only sky).
+bool awayFromEdges(const ImageF& ids, int x, int y) {
+    if (x < 1 || y < 1 || x >= ids.width - 1 || y >= ids.height - 1) {
+        return false;
+    }
+    const float id = ids.at(x, y)[0];
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            if (ids.at(x + dx, y + dy)[0] != id) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+struct Stat {
+    double max = 0.0;
+    double sum = 0.0;
+    long count = 0;
+    void add(double v) {
+        max = std::max(max, v);
+        sum += v;
+        ++count;
+    }
+    [[nodiscard]] double mean() const { return count > 0 ? sum / double(count) : 0.0; }
+};
+
+class TestbedTest : public GlTest {
+protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        if (IsSkipped()) {
+            return;
+        }
+        scene = std::make_unique<TestbedScene>();
+        scene->resize({kWidth, kHeight});
+        pipeline = std::make_unique<Pipeline>(PipelineCreateInfo{.settings = scene->defaultSettings()});
+    }
+    void TearDown() override {
+        pipeline.reset();
+        scene.reset();
+        GlTest::TearDown();
+    }
+    std::unique_ptr<TestbedScene> scene;
+    std::unique_ptr<Pipeline> pipeline;
+};
+
+} // namespace
+
+// Depth: |rasterised linear depth - ray-traced depth| <= 0.1% of the ray-traced depth (the range to the
+// surface; stricter than 0.1% of far - near). Normals within 1 degree. Motion within 0.05 px (Euclidean, in
+// pixels of this target). Frames: the pan, the dolly, the cut, the second shot (spinner and mover moving).
+TEST_F(TestbedTest, RasterisedDepthNormalsAndMotionAgreeWithTheRayTracer) {
+    Stat depth, angle, motion;
+    for (const std::uint64_t frame : {10u, 25u, 36u, 44u}) {
+        const Raster r = rasterise(*scene, *pipeline, frame);
+        const testbed::TruthOptions truth = scene->truthOptions({.dt = kDt, .frameIndex = frame});
+        const ImageF ids = testbed::renderTruth(testbed::TruthKind::ObjectId, truth);
+        const ImageF tDepth = testbed::renderTruth(testbed::TruthKind::Depth, truth);
+        const ImageF tNormals = testbed::renderTruth(testbed::TruthKind::Normals, truth);
+        const ImageF tMotion = testbed::renderTruth(testbed::TruthKind::Motion, truth);
+        int objects = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                if (!awayFromEdges(ids, x, y)) {
+                    continue;
+                }
+                const glm::vec2 mr(r.motion.at(x, y)[0] * kWidth, r.motion.at(x, y)[1] * kHeight);
+                const glm::vec2 mt(tMotion.at(x, y)[0] * kWidth, tMotion.at(x, y)[1] * kHeight);
+                motion.add(double(glm::length(mr - mt)));
+                if (ids.at(x, y)[0] == 0.0f) {
+                    EXPECT_EQ(r.depth[std::size_t(y * kWidth + x)], 1.0f) << "sky at " << x << "," << y;
+                    continue;
+                }
+                ++objects;
+                const float d = linearDepthFromWindow(r.depth[std::size_t(y * kWidth + x)],
+                                                      r.camera.nearPlane, r.camera.farPlane);
+                const float dt = tDepth.at(x, y)[0];
+                depth.add(double(std::abs(d - dt) / dt));
+                const glm::vec3 nr = glm::normalize(
+                    glm::vec3(r.normals.at(x, y)[0], r.normals.at(x, y)[1], r.normals.at(x, y)[2]));
+                const glm::vec3 nt(tNormals.at(x, y)[0], tNormals.at(x, y)[1], tNormals.at(x, y)[2]);
+                angle.add(double(std::acos(std::clamp(glm::dot(nr, nt), -1.0f, 1.0f))) * 180.0 / 3.14159265);
+            }
+        }
+        EXPECT_GT(objects, kWidth * kHeight / 4) << "frame " << frame;
+    }
+    std::printf("testbed agreement (4 frames, %ld object pixels, %ld pixels with motion):\n"
+                "  depth   max %.2e mean %.2e (relative)\n"
+                "  normals max %.4f mean %.4f (degrees)\n"
+                "  motion  max %.4f mean %.4f (px)\n",
+                depth.count, motion.count, depth.max, depth.mean(), angle.max, angle.mean(), motion.max,
+                motion.mean());
+    EXPECT_LE(depth.max, 1e-3);
+    EXPECT_LE(angle.max, 1.0);
+    EXPECT_LE(motion.max, 0.05);
+}
+
+TEST_F(TestbedTest, TheSameFrameRendersBitIdentically) {
+    const Raster a = rasterise(*scene, *pipeline, 40);
+    rasterise(*scene, *pipeline, 7);
+    const Raster b = rasterise(*scene, *pipeline, 40);
+    EXPECT_EQ(a.color.rgba, b.color.rgba);
+    EXPECT_EQ(a.depth, b.depth);
+    EXPECT_EQ(a.normals.rgba, b.normals.rgba);
+    EXPECT_EQ(a.motion.rgba, b.motion.rgba);
+}
+
+TEST_F(TestbedTest, TheCutFrameIsFlaggedAndHasNoCameraMotion) {
+    for (std::uint64_t frame = 0; frame < 48; ++frame) {
+        std::vector<double> telemetry;
+        const FrameInputs in = scene->render({.dt = kDt, .frameIndex = frame}, *pipeline, telemetry);
+        ASSERT_NE(in.camera, nullptr);
+        ASSERT_NE(in.depth, nullptr);
+        EXPECT_EQ(in.camera->cut, frame == 36) << "frame " << frame;
+        EXPECT_EQ(telemetry.at(1), frame == 36 ? 1.0 : 0.0);
+        EXPECT_EQ(invalidCameraReason(*in.camera), nullptr);
+    }
+    // On the cut, the sky (static, far away) has no motion: the previous camera is the current one.
+    const Raster r = rasterise(*scene, *pipeline, 36);
+    const float* sky = r.motion.at(kWidth / 2, 2);
+    EXPECT_EQ(sky[0], 0.0f);
+    EXPECT_EQ(sky[1], 0.0f);
+}
+
+// The scene's frame as an EXR frame: linear Z, world normals, motion in pixels with y down.
+TEST_F(TestbedTest, TheExrFrameUsesTheFileConventions) {
+    std::vector<double> telemetry;
+    const FrameInputs in = scene->render({.dt = kDt, .frameIndex = 10}, *pipeline, telemetry);
+    const ExrFrame f = exrFrameFromInputs(in);
+    const testbed::TruthOptions truth = scene->truthOptions({.dt = kDt, .frameIndex = 10});
+    const ImageF tDepth = testbed::renderTruth(testbed::TruthKind::Depth, truth);
+    const ImageF tMotion = testbed::renderTruth(testbed::TruthKind::Motion, truth);
+    const int x = kWidth / 2;
+    const int y = kHeight - 10; // the ground in front of the camera
+    const std::size_t i = std::size_t(y * kWidth + x);
+    EXPECT_NEAR(f.depth[i], tDepth.at(x, y)[0], 1e-3f * tDepth.at(x, y)[0]);
+    EXPECT_NEAR(f.normals[3 * i + 1], 1.0f, 1e-3f); // the ground's world normal is +y
+    EXPECT_NEAR(f.motion[2 * i], tMotion.at(x, y)[0] * kWidth, 0.05f);
+    EXPECT_NEAR(f.motion[2 * i + 1], -tMotion.at(x, y)[1] * kHeight, 0.05f);
+    EXPECT_TRUE(f.camera.worldToCamera.has_value());
+    EXPECT_TRUE(f.camera.worldToNDC.has_value());
+}
+
+} // namespace photopic::test
