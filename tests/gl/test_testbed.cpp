@@ -6,6 +6,7 @@
 
 #include "gl/TextureIo.h"
 #include "scenes/SceneExr.h"
+#include "scenes/testbed/TestbedRenderer.h"
 #include "scenes/testbed/TestbedScene.h"
 
 #include <algorithm>
@@ -159,6 +160,80 @@ TEST_F(TestbedTest, TheCutFrameIsFlaggedAndHasNoCameraMotion) {
     const float* sky = r.motion.at(kWidth / 2, 2);
     EXPECT_EQ(sky[0], 0.0f);
     EXPECT_EQ(sky[1], 0.0f);
+}
+
+// With a sub-pixel jitter the rasteriser's samples move and the ray tracer's follow them
+// (TruthOptions::jitter): they still agree, and the motion has the jitter removed (it changes by far less
+// than the jitter's 0.4 px).
+TEST_F(TestbedTest, JitteredRasterisationAgreesWithTheJitteredTruthAndMotionIsUnjittered) {
+    const FrameTime time{.dt = kDt, .frameIndex = 10};
+    testbed::TruthOptions truth = scene->truthOptions(time);
+    const Camera camera = testbed::truthCamera(truth);
+    const std::vector<testbed::Primitive> prims =
+        testbed::primitivesAt(truth.times.objects, truth.times.prevObjects);
+    testbed::TestbedRenderer renderer;
+    renderer.resize({kWidth, kHeight});
+    truth.jitter = {0.37f, -0.21f};
+    renderer.draw({.camera = &camera, .jitter = truth.jitter, .primitives = &prims});
+    const std::vector<float> depth = readDepthTexture(renderer.depth());
+    const ImageF jitteredMotion = readTextureF(renderer.motion());
+    const ImageF ids = testbed::renderTruth(testbed::TruthKind::ObjectId, truth);
+    const ImageF tDepth = testbed::renderTruth(testbed::TruthKind::Depth, truth);
+    const ImageF tMotion = testbed::renderTruth(testbed::TruthKind::Motion, truth);
+    Stat d, m;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            if (!awayFromEdges(ids, x, y)) {
+                continue;
+            }
+            const glm::vec2 mr(jitteredMotion.at(x, y)[0] * kWidth, jitteredMotion.at(x, y)[1] * kHeight);
+            const glm::vec2 mt(tMotion.at(x, y)[0] * kWidth, tMotion.at(x, y)[1] * kHeight);
+            m.add(double(glm::length(mr - mt)));
+            if (ids.at(x, y)[0] != 0.0f) {
+                const float linear = linearDepthFromWindow(depth[std::size_t(y * kWidth + x)],
+                                                           camera.nearPlane, camera.farPlane);
+                d.add(double(std::abs(linear - tDepth.at(x, y)[0]) / tDepth.at(x, y)[0]));
+            }
+        }
+    }
+    std::printf("jittered: depth max %.2e (relative), motion max %.4f px\n", d.max, m.max);
+    EXPECT_LE(d.max, 1e-3);
+    EXPECT_LE(m.max, 0.05);
+}
+
+// The lighting stage's hook: an ambient-occlusion texture multiplies the ambient term and a sun-visibility
+// texture the sun term; both at 0 leave only emission on objects, and the sky untouched.
+TEST_F(TestbedTest, LightingTexturesMultiplyTheAmbientAndSunTerms) {
+    const FrameTime time{.dt = kDt, .frameIndex = 10};
+    const testbed::TruthOptions truth = scene->truthOptions(time);
+    const Camera camera = testbed::truthCamera(truth);
+    const std::vector<testbed::Primitive> prims =
+        testbed::primitivesAt(truth.times.objects, truth.times.prevObjects);
+    testbed::TestbedRenderer renderer;
+    renderer.resize({kWidth, kHeight});
+    renderer.draw({.camera = &camera, .primitives = &prims});
+    const ImageF plain = readTextureF(renderer.color());
+    const Texture one = makeTexture(ImageF(kWidth, kHeight, 1.0f), "ones");
+    renderer.draw({.camera = &camera, .primitives = &prims, .ambientOcclusion = &one, .sunVisibility = &one});
+    EXPECT_EQ(readTextureF(renderer.color()).rgba, plain.rgba);
+    const Texture zero = makeTexture(ImageF(kWidth, kHeight, 0.0f), "zeros");
+    renderer.draw(
+        {.camera = &camera, .primitives = &prims, .ambientOcclusion = &zero, .sunVisibility = &zero});
+    const ImageF dark = readTextureF(renderer.color());
+    const ImageF ids = testbed::renderTruth(testbed::TruthKind::ObjectId, truth);
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            const float id = ids.at(x, y)[0];
+            if (!awayFromEdges(ids, x, y)) {
+                continue;
+            }
+            if (id == 0.0f) {
+                EXPECT_EQ(dark.at(x, y)[0], plain.at(x, y)[0]);
+            } else if (id != float(testbed::ids::kMover)) {
+                EXPECT_EQ(dark.at(x, y)[0], 0.0f) << x << "," << y;
+            }
+        }
+    }
 }
 
 // The scene's frame as an EXR frame: linear Z, world normals, motion in pixels with y down.

@@ -66,8 +66,16 @@ TEST(TestbedPath, OnlyTheFirstFrameOfTheSecondShotIsACut) {
     EXPECT_EQ(cameraPoseAt(kCutTime).shot, 1);
 }
 
-TEST(TestbedPath, FrozenClocksHoldTheFrame) {
-    const FrameTimes t = frameTimes(30, kDt, 0.25, 0.5);
+TEST(TestbedPath, ClocksStartAndRunAtTheirRates) {
+    const FrameTimes t = frameTimes(30, kDt, {0.5, 0.1}, {2.0, 2.0});
+    EXPECT_NEAR(t.camera, 0.5 + 0.1, 1e-12);
+    EXPECT_NEAR(t.prevCamera, 0.5 + 0.1 * 29.0 * kDt, 1e-12);
+    EXPECT_NEAR(t.objects, 2.0 + 2.0, 1e-12);
+    EXPECT_NEAR(t.prevObjects, 2.0 + 2.0 * 29.0 * kDt, 1e-12);
+}
+
+TEST(TestbedPath, StoppedClocksHoldTheFrame) {
+    const FrameTimes t = frameTimes(30, kDt, {0.25, 0.0}, {0.5, 0.0});
     EXPECT_EQ(t.camera, 0.25);
     EXPECT_EQ(t.prevCamera, 0.25);
     EXPECT_EQ(t.objects, 0.5);
@@ -130,7 +138,7 @@ TEST(TestbedTruth, AoImageIsAVisibilityWithOpenSky) {
 TEST(TestbedTruth, ShutterWithNoMotionEqualsColourAndDiffersWithMotion) {
     TruthOptions o = options(10, 64, 36);
     o.samples = 4;
-    o.times = frameTimes(10, kDt, 0.3, 0.3);
+    o.times = frameTimes(10, kDt, {0.3, 0.0}, {0.3, 0.0});
     EXPECT_EQ(renderTruth(TruthKind::Shutter, o).rgba, renderTruth(TruthKind::Color, o).rgba);
     o.times = frameTimes(10, kDt);
     EXPECT_GT(rmse(renderTruth(TruthKind::Shutter, o), renderTruth(TruthKind::Color, o)), 1e-3);

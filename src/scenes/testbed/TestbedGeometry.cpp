@@ -172,16 +172,16 @@ glm::mat4 viewMatrix(const CameraPose& pose) {
     return glm::lookAt(pose.position, pose.position + forward, glm::vec3(0.0f, 1.0f, 0.0f));
 }
 
-FrameTimes frameTimes(std::uint64_t frameIndex, double dt, double cameraTime, double objectTime) {
+FrameTimes frameTimes(std::uint64_t frameIndex, double dt, const Clock& camera, const Clock& objects) {
     const double now = double(frameIndex) * dt;
     const double before = frameIndex == 0 ? now : now - dt;
     FrameTimes t;
-    t.cameraFrozen = cameraTime >= 0.0;
-    t.objectsFrozen = objectTime >= 0.0;
-    t.camera = t.cameraFrozen ? cameraTime : now;
-    t.prevCamera = t.cameraFrozen ? cameraTime : before;
-    t.objects = t.objectsFrozen ? objectTime : now;
-    t.prevObjects = t.objectsFrozen ? objectTime : before;
+    t.camera = camera.start + camera.rate * now;
+    t.prevCamera = camera.start + camera.rate * before;
+    t.objects = objects.start + objects.rate * now;
+    t.prevObjects = objects.start + objects.rate * before;
+    t.cameraRate = camera.rate;
+    t.objectRate = objects.rate;
     return t;
 }
 

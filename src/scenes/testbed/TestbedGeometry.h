@@ -91,19 +91,25 @@ struct CameraPose {
 [[nodiscard]] Camera testbedCamera(double seconds, double prevSeconds, int width, int height,
                                    const Lens& lens = {});
 
-/// The path and object times of one frame. A frozen clock (cameraTime/objectTime >= 0 in the scene's
-/// settings) holds its time and has no motion; a running one is frameIndex * dt.
-struct FrameTimes {
-    double camera = 0.0;     ///< s, the camera path's time this frame
-    double prevCamera = 0.0; ///< s, ... the previous frame
-    double objects = 0.0;    ///< s, the objects' time this frame
-    double prevObjects = 0.0;
-    bool cameraFrozen = false;
-    bool objectsFrozen = false;
+/// A clock of the scene: path time = start + rate * frame time (rate 0 holds it at `start`).
+struct Clock {
+    double start = 0.0; ///< s
+    double rate = 1.0;  ///< path seconds per second of frame time, >= 0
 };
-/// Frame `frameIndex` at interval `dt`; `cameraTime` / `objectTime` < 0: running, else frozen there.
-[[nodiscard]] FrameTimes frameTimes(std::uint64_t frameIndex, double dt, double cameraTime = -1.0,
-                                    double objectTime = -1.0);
+
+/// The camera's and the objects' times in one frame and the one before it, and their rates (the shutter
+/// interval, in frame time, maps to rate x interval of path time).
+struct FrameTimes {
+    double camera = 0.0;
+    double prevCamera = 0.0;
+    double objects = 0.0;
+    double prevObjects = 0.0;
+    double cameraRate = 1.0;
+    double objectRate = 1.0;
+};
+/// Frame `frameIndex` at interval `dt` (frame time = frameIndex * dt; frame 0's previous frame is itself).
+[[nodiscard]] FrameTimes frameTimes(std::uint64_t frameIndex, double dt, const Clock& camera = {},
+                                    const Clock& objects = {});
 
 [[nodiscard]] const Environment& environment();
 /// Every object at `seconds`, with its placement at `prevSeconds` (the previous frame) as prevToWorld.

@@ -134,7 +134,7 @@ int shutterStratum(const TruthOptions& o, int x, int y, int k) {
 }
 
 void pixelCentreKinds(TruthKind kind, const Frame& f, const TruthOptions& o, int x, int y, float* out) {
-    const Ray ray = cameraRay(f.camera, ndcOf(o, float(x) + 0.5f, float(y) + 0.5f));
+    const Ray ray = cameraRay(f.camera, ndcOf(o, float(x) + 0.5f - o.jitter.x, float(y) + 0.5f + o.jitter.y));
     Hit hit;
     const bool found = intersectScene(f.prims, ray, 0.0f, kFar * 2.0f, hit);
     const Primitive* prim = found ? &f.prims[std::size_t(hit.primitive)] : nullptr;
@@ -196,16 +196,16 @@ ImageF renderColour(TruthKind kind, const TruthOptions& o) {
     const double shutter = o.lens.exposureTimeS > 0.0f ? double(o.lens.exposureTimeS)
                                                        : double(o.lens.shutterAngleDeg) / 360.0 * o.dt;
     const bool moving =
-        kind == TruthKind::Shutter && shutter > 0.0 && !(o.times.cameraFrozen && o.times.objectsFrozen);
+        kind == TruthKind::Shutter && shutter > 0.0 && (o.times.cameraRate > 0.0 || o.times.objectRate > 0.0);
     const Frame still = frameAt(o, o.times.camera, o.times.objects);
-    // The shutter's instants: the centres of N^2 equal strata of [t - s/2, t + s/2].
+    // The shutter's instants: the centres of N^2 equal strata of [t - s/2, t + s/2] in frame time.
     std::vector<Frame> instants;
     if (moving) {
         instants.reserve(std::size_t(count));
         for (int i = 0; i < count; ++i) {
             const double offset = ((double(i) + 0.5) / double(count) - 0.5) * shutter;
-            instants.push_back(frameAt(o, o.times.camera + (o.times.cameraFrozen ? 0.0 : offset),
-                                       o.times.objects + (o.times.objectsFrozen ? 0.0 : offset)));
+            instants.push_back(frameAt(o, o.times.camera + o.times.cameraRate * offset,
+                                       o.times.objects + o.times.objectRate * offset));
         }
     }
     // Thin lens: aperture diameter = focal length / f-number (mm -> scene metres).

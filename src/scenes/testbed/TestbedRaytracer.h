@@ -4,11 +4,11 @@
 // out over std::thread workers. Conventions are the pipeline's inputs' (core/Camera.h, pipeline/Pipeline.h):
 //
 //   kind        channels          what
-//   color       RGB, A = 1        N x N stratified supersampled colour of the local shading
-//   (TestbedGeometry.h) depth       R                 linear view depth at the pixel centre (+inf: sky)
-//   normals     RGB               view-space unit normal at the pixel centre (0: sky)
-//   motion      RG                UV displacement at the pixel centre, current minus previous (v up)
-//   objectid    R                 the object's id at the pixel centre (0: sky)
+//   color       RGB, A = 1        N x N stratified supersampled colour of the local shading model
+//   depth       R                 linear view depth (+inf: sky)                       } at the pixel
+//   normals     RGB               view-space unit normal (0: sky)                     } centre (see
+//   motion      RG                UV displacement, current minus previous (v up)      } TruthOptions::
+//   objectid    R                 the object's id (0: sky)                            } jitter)
 //   ao          RGB = visibility  cosine-weighted fraction of the hemisphere above the pixel-centre point
 //                                 that no surface within aoRadius occludes (1: open; sky 1)
 //   sun         RGB = visibility  fraction of shadow rays towards the sun's disc (sunSamples^2 of them, or
@@ -54,6 +54,10 @@ struct TruthOptions {
     float sunMaxDistance = 0.0f; ///< scene units; 0: any distance
     int sunSamples = 1;          ///< 1: one ray to the sun's centre; n: n x n over its disc
     int threads = 0;             ///< 0: one per hardware thread
+    /// Pixels, x right, y up (Pipeline::beginFrame's): the pixel-centre kinds take the samples a rasteriser
+    /// rendering with jitteredProjection(projection, jitter) takes: the image moves by the jitter, so each
+    /// pixel centre sees the unjittered image at centre - jitter.
+    glm::vec2 jitter{0.0f};
 };
 
 /// The Camera the truth and the rasteriser see for `options` (the path's, at the frame's camera time).

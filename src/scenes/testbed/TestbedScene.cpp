@@ -40,8 +40,9 @@ Lens TestbedScene::lens() const {
 }
 
 testbed::FrameTimes TestbedScene::frameTimes(const FrameTime& time) const {
-    return testbed::frameTimes(time.frameIndex, double(time.dt), double(mSettings.cameraTime),
-                               double(mSettings.objectTime));
+    return testbed::frameTimes(time.frameIndex, double(time.dt),
+                               {double(mSettings.cameraStart), double(mSettings.cameraSpeed)},
+                               {double(mSettings.objectStart), double(mSettings.objectSpeed)});
 }
 
 testbed::TruthOptions TestbedScene::truthOptions(const FrameTime& time) const {

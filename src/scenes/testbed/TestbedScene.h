@@ -13,11 +13,12 @@
 namespace photopic {
 
 struct TestbedSceneSettings {
-    float cameraTime =
-        -1.0f; ///< s, [-1, 1000], default -1: the camera follows frame time; >= 0 holds it there
-    float objectTime = -1.0f;   ///< s, [-1, 1000], default -1: the objects follow frame time; >= 0 holds them
-    float fNumber = 2.8f;       ///< [0.5, 256], default 2.8: the lens (thin-lens truth, the camera's lens)
-    float focusDistance = 0.0f; ///< m, [0, 1000], default 0: the camera path's focus
+    float cameraStart = 0.0f;    ///< s, [0, 1000], default 0: the camera path's time at frame 0
+    float cameraSpeed = 1.0f;    ///< [0, 100], default 1: path seconds per second (0 holds the camera still)
+    float objectStart = 0.0f;    ///< s, [0, 1000], default 0: the objects' time at frame 0
+    float objectSpeed = 1.0f;    ///< [0, 100], default 1: object seconds per second (0 holds them still)
+    float fNumber = 2.8f;        ///< [0.5, 256], default 2.8: the lens (thin-lens truth, the camera's lens)
+    float focusDistance = 0.0f;  ///< m, [0, 1000], default 0: the camera path's focus
     float shutterAngle = 180.0f; ///< degrees, [0, 360], default 180 (shutter truth, the camera's lens)
     int samples = 16;            ///< [1, 64], default 16: colour truths take samples x samples per pixel
     float aoRadius = 1.0f;       ///< m, [0.01, 100], default 1: the ao truth's occluder distance
@@ -27,8 +28,10 @@ struct TestbedSceneSettings {
 
     template <class V>
     void visit(V& v) {
-        v.field("cameraTime", cameraTime, Range{-1, 1000});
-        v.field("objectTime", objectTime, Range{-1, 1000});
+        v.field("cameraStart", cameraStart, Range{0, 1000});
+        v.field("cameraSpeed", cameraSpeed, Range{0, 100});
+        v.field("objectStart", objectStart, Range{0, 1000});
+        v.field("objectSpeed", objectSpeed, Range{0, 100});
         v.field("fNumber", fNumber, Range{0.5, 256});
         v.field("focusDistance", focusDistance, Range{0, 1000});
         v.field("shutterAngle", shutterAngle, Range{0, 360});
@@ -57,7 +60,7 @@ public:
     FrameInputs render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) override;
 
     [[nodiscard]] const TestbedSceneSettings& settings() const { return mSettings; }
-    /// The frame times of frame `time` under the settings (frozen clocks applied).
+    /// The camera's and objects' times of frame `time` under the settings.
     [[nodiscard]] testbed::FrameTimes frameTimes(const FrameTime& time) const;
     /// The truth options matching frame `time` at this scene's size and settings.
     [[nodiscard]] testbed::TruthOptions truthOptions(const FrameTime& time) const;

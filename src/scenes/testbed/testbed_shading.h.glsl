@@ -11,7 +11,8 @@ struct TestbedPrimitive {
     mat4 toWorld;
     mat4 toObject;
     mat4 prevToWorld;
-    vec4 shape;    // x: TESTBED_* type, yzw: size (sphere radius; box half extents; cylinder radius, half height)
+    vec4
+        shape; // x: TESTBED_* type, yzw: size (sphere radius; box half extents; cylinder radius, half height)
     vec4 albedo;   // rgb, w: checker square size (0: plain)
     vec4 albedo2;  // rgb: the checker's second colour, w: metallic
     vec4 emissive; // rgb, w: object id
@@ -40,7 +41,8 @@ layout(std140, binding = 0) uniform TestbedFrame {
     ivec4 uFlags; // x: multiply the ambient term by uAmbientOcclusion, y: the sun term by uSunVisibility
 };
 
-// World-space ray through a window position (pixel units, GL origin bottom-left) with the jittered projection.
+// World-space ray through a window position (pixel units, GL origin bottom-left) with the jittered
+// projection.
 void testbedCameraRay(vec2 fragCoord, out vec3 origin, out vec3 direction) {
     vec2 ndc = fragCoord * uViewport.zw * 2.0 - 1.0;
     vec3 viewDir = vec3((ndc.x + uProjection[2][0]) / uProjection[0][0],
