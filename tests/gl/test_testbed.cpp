@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 namespace photopic::test {
 
@@ -253,6 +254,39 @@ TEST_F(TestbedTest, TheExrFrameUsesTheFileConventions) {
     EXPECT_NEAR(f.motion[2 * i + 1], -tMotion.at(x, y)[1] * kHeight, 0.05f);
     EXPECT_TRUE(f.camera.worldToCamera.has_value());
     EXPECT_TRUE(f.camera.worldToNDC.has_value());
+}
+
+// What the CLI writes for a frame reads back: the camera (view, projection, previous view-projection from the
+// previous frame's file) and the layers.
+TEST_F(TestbedTest, TheExrFrameRoundTripsThroughTheReader) {
+    const std::filesystem::path dir = std::filesystem::path(PHOTOPIC_BINARY_DIR) / "test-testbed-exr";
+    std::filesystem::create_directories(dir);
+    std::vector<double> telemetry;
+    const ExrFrame before =
+        exrFrameFromInputs(scene->render({.dt = kDt, .frameIndex = 9}, *pipeline, telemetry));
+    const FrameInputs in = scene->render({.dt = kDt, .frameIndex = 10}, *pipeline, telemetry);
+    const ExrFrame written = exrFrameFromInputs(in);
+    writeExrFrame(dir / "frame_0009.exr", before);
+    writeExrFrame(dir / "frame_0010.exr", written);
+    const ExrFrame previous = readExrFrame(dir / "frame_0009.exr");
+    const ExrFrame read = readExrFrame(dir / "frame_0010.exr");
+    ASSERT_EQ(read.depth.size(), written.depth.size());
+    EXPECT_EQ(read.depth, written.depth);
+    EXPECT_EQ(read.motion, written.motion);
+    const std::optional<Camera> camera = cameraFromExr(read.camera, kWidth, kHeight, &previous.camera);
+    ASSERT_TRUE(camera.has_value());
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            EXPECT_NEAR(camera->view[c][r], in.camera->view[c][r], 1e-4f) << c << r;
+            EXPECT_NEAR(camera->projection[c][r], in.camera->projection[c][r], 1e-3f) << c << r;
+            EXPECT_NEAR(camera->prevViewProjection[c][r], in.camera->prevViewProjection[c][r], 1e-3f)
+                << c << r;
+        }
+    }
+    EXPECT_NEAR(camera->nearPlane, in.camera->nearPlane, 1e-6f);
+    EXPECT_NEAR(camera->farPlane, in.camera->farPlane, 1e-2f);
+    EXPECT_NEAR(camera->lens.fNumber, in.camera->lens.fNumber, 1e-6f);
+    EXPECT_NEAR(camera->lens.focusDistance, in.camera->lens.focusDistance, 1e-4f);
 }
 
 } // namespace photopic::test
