@@ -136,6 +136,38 @@ TEST_F(TestbedTest, RasterisedDepthNormalsAndMotionAgreeWithTheRayTracer) {
     EXPECT_LE(motion.max, 0.05);
 }
 
+// The GLSL shading twin matches the CPU's: rasterised colour against the ray tracer's one-sample (pixel
+// centre) colour, relative to the pixel's value, over pixels away from object edges. Checker squares' own
+// edges can fall either side of a pixel centre, so 99% of the pixels must agree within 0.5% (half floats
+// hold 3 digits), and the mean error is that of rounding.
+TEST_F(TestbedTest, RasterisedColourMatchesTheRayTracersPixelCentreColour) {
+    for (const std::uint64_t frame : {10u, 44u}) {
+        const Raster r = rasterise(*scene, *pipeline, frame);
+        testbed::TruthOptions truth = scene->truthOptions({.dt = kDt, .frameIndex = frame});
+        truth.samples = 1;
+        const ImageF ids = testbed::renderTruth(testbed::TruthKind::ObjectId, truth);
+        const ImageF colour = testbed::renderTruth(testbed::TruthKind::Color, truth);
+        Stat error;
+        long within = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                if (!awayFromEdges(ids, x, y)) {
+                    continue;
+                }
+                const glm::vec3 a(r.color.at(x, y)[0], r.color.at(x, y)[1], r.color.at(x, y)[2]);
+                const glm::vec3 b(colour.at(x, y)[0], colour.at(x, y)[1], colour.at(x, y)[2]);
+                const double e = double(glm::length(a - b) / std::max(glm::length(b), 1e-3f));
+                error.add(e);
+                within += e <= 5e-3 ? 1 : 0;
+            }
+        }
+        std::printf("frame %d colour: %.2f%% of %ld pixels within 0.5%%, mean relative error %.2e\n",
+                    int(frame), 100.0 * double(within) / double(error.count), error.count, error.mean());
+        EXPECT_GE(double(within), 0.99 * double(error.count)) << "frame " << frame;
+        EXPECT_LE(error.mean(), 2e-3) << "frame " << frame;
+    }
+}
+
 TEST_F(TestbedTest, TheSameFrameRendersBitIdentically) {
     const Raster a = rasterise(*scene, *pipeline, 40);
     rasterise(*scene, *pipeline, 7);

@@ -121,6 +121,9 @@ float surfaceEpsilon(const glm::vec3& p) {
 
 /// Colour sub-sample k of pixel (x, y): the same sub-pixel position for color, shutter and thinlens.
 glm::vec2 subPixel(const TruthOptions& o, int x, int y, int k) {
+    if (o.samples == 1) {
+        return glm::vec2(float(x) + 0.5f - o.jitter.x, float(y) + 0.5f + o.jitter.y);
+    }
     const std::uint32_t pixel = std::uint32_t(y * o.width + x);
     return glm::vec2(float(x), float(y)) + stratified(k, o.samples, pixel, 1u);
 }
@@ -277,7 +280,7 @@ const std::vector<TruthKind>& allTruthKinds() {
 }
 
 float ambientOcclusionAt(const std::vector<Primitive>& prims, const glm::vec3& p, const glm::vec3& n,
-                         float radius, int samples, std::uint32_t seed) {
+                         float radius, int samples, std::uint32_t salt) {
     glm::vec3 b1, b2;
     basis(n, b1, b2);
     const glm::vec3 origin = p + surfaceEpsilon(p) * n;
@@ -285,7 +288,7 @@ float ambientOcclusionAt(const std::vector<Primitive>& prims, const glm::vec3& p
     int open = 0;
     for (int k = 0; k < count; ++k) {
         // Cosine-weighted by Malley's method: uniform on the disc, lifted onto the hemisphere.
-        const glm::vec2 d = concentricDisc(stratified(k, samples, seed, 11u));
+        const glm::vec2 d = concentricDisc(stratified(k, samples, salt, 11u));
         const float z = std::sqrt(std::max(0.0f, 1.0f - glm::dot(d, d)));
         const glm::vec3 dir = glm::normalize(d.x * b1 + d.y * b2 + z * n);
         open += occluded(prims, {origin, dir}, 0.0f, radius) ? 0 : 1;
@@ -294,7 +297,7 @@ float ambientOcclusionAt(const std::vector<Primitive>& prims, const glm::vec3& p
 }
 
 float sunVisibilityAt(const std::vector<Primitive>& prims, const glm::vec3& p, const glm::vec3& n,
-                      float maxDistance, int samples, std::uint32_t seed) {
+                      float maxDistance, int samples, std::uint32_t salt) {
     const Environment& env = environment();
     if (glm::dot(n, env.sunDirection) <= 0.0f) {
         return 0.0f;
@@ -310,7 +313,7 @@ float sunVisibilityAt(const std::vector<Primitive>& prims, const glm::vec3& p, c
     const int count = samples * samples;
     int open = 0;
     for (int k = 0; k < count; ++k) {
-        const glm::vec2 d = spread * concentricDisc(stratified(k, samples, seed, 21u));
+        const glm::vec2 d = spread * concentricDisc(stratified(k, samples, salt, 21u));
         const glm::vec3 dir = glm::normalize(env.sunDirection + d.x * b1 + d.y * b2);
         open += occluded(prims, {origin, dir}, 0.0f, tMax) ? 0 : 1;
     }

@@ -47,8 +47,10 @@ struct TruthOptions {
     FrameTimes times;       ///< the frame (frameTimes())
     double dt = 1.0 / 30.0; ///< s, the frame interval (the shutter's length follows it)
     Lens lens;              ///< f-number, shutter angle or exposure time (focal length, focus: the path's)
-    float focusDistance = 0.0f;  ///< scene units; 0: the camera path's
-    int samples = 16;            ///< colour, shutter, thin lens: samples x samples per pixel
+    float focusDistance = 0.0f; ///< scene units; 0: the camera path's
+    /// Colour, shutter, thin lens: samples x samples per pixel; 1: one sample at the pixel centre (moved by
+    /// the jitter), the rasteriser's colour.
+    int samples = 16;
     float aoRadius = 1.0f;       ///< scene units
     int aoSamples = 16;          ///< aoSamples x aoSamples cosine-weighted rays per pixel
     float sunMaxDistance = 0.0f; ///< scene units; 0: any distance
@@ -64,16 +66,16 @@ struct TruthOptions {
 [[nodiscard]] Camera truthCamera(const TruthOptions& options);
 
 /// Ambient occlusion at a surface point p with unit normal n (the `ao` kind's value): the cosine-weighted
-/// fraction of samples x samples stratified rays that no primitive within `radius` blocks. `seed` varies the
+/// fraction of samples x samples stratified rays that no primitive within `radius` blocks. `salt` varies the
 /// offsets within the strata.
 [[nodiscard]] float ambientOcclusionAt(const std::vector<Primitive>& prims, const glm::vec3& p,
-                                       const glm::vec3& n, float radius, int samples, std::uint32_t seed = 0);
+                                       const glm::vec3& n, float radius, int samples, std::uint32_t salt = 0);
 /// Sun visibility at a surface point (the `sun` kind's value): 0 when n faces away from the sun, else the
 /// fraction of shadow rays (one to the disc's centre, or samples x samples over it) that no primitive within
 /// `maxDistance` (0: any) blocks.
 [[nodiscard]] float sunVisibilityAt(const std::vector<Primitive>& prims, const glm::vec3& p,
                                     const glm::vec3& n, float maxDistance, int samples,
-                                    std::uint32_t seed = 0);
+                                    std::uint32_t salt = 0);
 
 /// Renders one truth kind.
 [[nodiscard]] ImageF renderTruth(TruthKind kind, const TruthOptions& options);
