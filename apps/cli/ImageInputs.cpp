@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -197,9 +198,12 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
         } catch (const IoError& e) {
             throw InputError(e.what());
         }
-        if (mCameraJson)
+        if (mCameraJson) {
             out.camera = mCameraJson->camera(out.color.width, out.color.height);
+            out.camera->cut = mFirst;
+        }
         mPrevious.reset();
+        mFirst = false;
         return out;
     }
     ExrFrame frame;
