@@ -54,6 +54,8 @@ struct SceneOptions {
     std::string canvasColour;   ///< --canvas FILE: canvas scene only, = --set canvas.colour=FILE
     std::string canvasMaterial; ///< --material FILE: canvas scene only, = --set canvas.material=FILE
     std::string motion;         ///< --motion FILE.csv: canvas scene only, = --set canvas.motion=FILE
+    std::string truth;          ///< --truth KIND|all: testbed scene only, write ray-traced references instead
+    int start = 0;              ///< --start N: the first frame index (--truth)
 };
 
 /// "1920x1080" -> {1920, 1080} with each side in [minSide, 16384]; throws InputError naming the text.

@@ -2,16 +2,23 @@
 
 #include "Commands.h"
 
+#include "core/Color.h"
+#include "core/Hash.h"
 #include "core/settings/SettingsJson.h"
 #include "gl/Context.h"
 #include "gl/TextureIo.h"
+#include "io/ExrFrame.h"
 #include "io/ImageIO.h"
 #include "scenes/Scene.h"
+#include "scenes/SceneExr.h"
+#include "scenes/testbed/TestbedScene.h"
 
 #include <fmt/format.h>
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <tuple>
 
@@ -27,6 +34,128 @@ Extent parseSize(const std::string& text, int minSide) {
     }
     return *size;
 }
+
+namespace {
+
+/// A PNG preview of a truth image: colours tone mapped (x / (1 + x)), values as grey, normals as
+/// 0.5 + 0.5 n, motion as 0.5 + px / 20 in red (x) and green (y down), ids as hashed colours.
+Image8 truthPreview(testbed::TruthKind kind, const ImageF& image) {
+    using testbed::TruthKind;
+    Image8 out(image.width, image.height);
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const float* p = image.at(x, y);
+            glm::vec3 c(0.0f);
+            switch (kind) {
+            case TruthKind::Depth:
+                c = glm::vec3(std::isfinite(p[0]) ? 1.0f / (1.0f + p[0] / 5.0f) : 0.0f);
+                break;
+            case TruthKind::Normals:
+                c = 0.5f + 0.5f * glm::vec3(p[0], p[1], p[2]);
+                break;
+            case TruthKind::Motion:
+                c = glm::vec3(0.5f + p[0] * float(image.width) / 20.0f,
+                              0.5f - p[1] * float(image.height) / 20.0f, 0.5f);
+                break;
+            case TruthKind::ObjectId: {
+                const std::uint32_t h = p[0] > 0.0f ? hash32(std::uint32_t(p[0])) : 0u;
+                c = glm::vec3(float(h & 255u), float((h >> 8) & 255u), float((h >> 16) & 255u)) / 255.0f;
+                break;
+            }
+            case TruthKind::Ao:
+            case TruthKind::Sun:
+                c = glm::vec3(p[0]);
+                break;
+            default:
+                c = glm::vec3(p[0], p[1], p[2]) / (1.0f + glm::vec3(p[0], p[1], p[2]));
+                break;
+            }
+            const bool encoded =
+                kind != TruthKind::Normals && kind != TruthKind::Motion && kind != TruthKind::ObjectId;
+            const glm::vec3 v = glm::clamp(encoded ? srgbEncode(c) : c, 0.0f, 1.0f);
+            std::uint8_t* o = out.at(x, y);
+            o[0] = std::uint8_t(std::lround(v.r * 255.0f));
+            o[1] = std::uint8_t(std::lround(v.g * 255.0f));
+            o[2] = std::uint8_t(std::lround(v.b * 255.0f));
+            o[3] = 255;
+        }
+    }
+    return out;
+}
+
+/// A truth image as an EXR frame: RGBA as the ray tracer produced it (view-space normals, UV motion), plus
+/// the file-convention layers for depth (Z), normals (N, world) and motion (pixels, y down), and the camera.
+ExrFrame truthExr(testbed::TruthKind kind, const ImageF& image, const Camera& camera) {
+    using testbed::TruthKind;
+    ExrFrame f;
+    f.color = image;
+    const std::size_t pixels = image.pixelCount();
+    if (kind == TruthKind::Depth) {
+        f.depth.resize(pixels);
+        for (std::size_t i = 0; i < pixels; ++i) {
+            f.depth[i] = image.rgba[4 * i];
+        }
+    } else if (kind == TruthKind::Normals) {
+        const glm::mat3 toWorld = glm::transpose(glm::mat3(camera.view));
+        f.normals.resize(pixels * 3);
+        for (std::size_t i = 0; i < pixels; ++i) {
+            const glm::vec3 n =
+                toWorld * glm::vec3(image.rgba[4 * i], image.rgba[4 * i + 1], image.rgba[4 * i + 2]);
+            f.normals[3 * i] = n.x;
+            f.normals[3 * i + 1] = n.y;
+            f.normals[3 * i + 2] = n.z;
+        }
+    } else if (kind == TruthKind::Motion) {
+        f.motion.resize(pixels * 2);
+        for (std::size_t i = 0; i < pixels; ++i) {
+            f.motion[2 * i] = image.rgba[4 * i] * float(image.width);
+            f.motion[2 * i + 1] = -image.rgba[4 * i + 1] * float(image.height);
+        }
+    }
+    f.camera = exrFromCamera(camera, image.width, image.height);
+    return f;
+}
+
+/// `--truth KIND`: the testbed's ray-traced references for frames [start, start + frames).
+int runTruth(const SceneOptions& options, Scene& scene, const fs::path& outDir) {
+    auto* testbedScene = dynamic_cast<TestbedScene*>(&scene);
+    if (testbedScene == nullptr) {
+        throw InputError(fmt::format("--truth is an option of the testbed scene, not of '{}'", scene.name()));
+    }
+    std::vector<testbed::TruthKind> kinds;
+    if (options.truth == "all") {
+        kinds = testbed::allTruthKinds();
+    } else if (const auto kind = testbed::parseTruthKind(options.truth)) {
+        kinds.push_back(*kind);
+    } else {
+        std::string known;
+        for (const testbed::TruthKind k : testbed::allTruthKinds()) {
+            known += std::string(testbed::truthKindName(k)) + ", ";
+        }
+        throw InputError(fmt::format("--truth '{}' is not a truth kind ({}or all)", options.truth, known));
+    }
+    const float dt = 1.0f / options.fps;
+    for (int i = options.start; i < options.start + options.frames; ++i) {
+        const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
+        const testbed::TruthOptions truth = testbedScene->truthOptions(time);
+        const Camera camera = testbed::truthCamera(truth);
+        for (const testbed::TruthKind kind : kinds) {
+            const auto begin = std::chrono::steady_clock::now();
+            const ImageF image = testbed::renderTruth(kind, truth);
+            const double seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+            const std::string stem = fmt::format("truth_{}_{:04d}", testbed::truthKindName(kind), i);
+            writeExrFrame(outDir / (stem + ".exr"), truthExr(kind, image, camera));
+            writePng(outDir / (stem + ".png"), truthPreview(kind, image));
+            std::printf("%s: %.3f s\n", stem.c_str(), seconds);
+        }
+    }
+    std::printf("testbed truth: %zu kind(s) x %d frame(s) from frame %d -> %s\n", kinds.size(),
+                options.frames, options.start, outDir.string().c_str());
+    return kOk;
+}
+
+} // namespace
 
 int runScene(const SceneOptions& options) {
     const Extent size = parseSize(options.size);
@@ -78,6 +207,10 @@ int runScene(const SceneOptions& options) {
             fmt::format("cannot create output folder {}: {}", outDir.string(), ec.message()));
     }
 
+    if (!options.truth.empty()) {
+        return runTruth(options, *scene, outDir);
+    }
+
     Pipeline pipeline({.settings = resolved, .forceLdr = options.forceLdr, .keepTelemetryHistory = true});
     const std::vector<std::string> sceneColumns = scene->telemetryColumns();
     std::vector<std::vector<double>> sceneValues(std::size_t(options.frames));
@@ -85,8 +218,13 @@ int runScene(const SceneOptions& options) {
     const float dt = 1.0f / options.fps;
     for (int i = 0; i < options.frames; ++i) {
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
-        const Texture& color = scene->render(time, pipeline, sceneValues[std::size_t(i)]);
-        const Texture& display = pipeline.execute({.color = &color}, time);
+        const FrameInputs inputs = scene->render(time, pipeline, sceneValues[std::size_t(i)]);
+        const Texture& display = pipeline.execute(inputs, time);
+        if (inputs.camera != nullptr) {
+            // A 3D scene: its scene-referred colour, depth, normals, motion and camera, as `photopic image`
+            // reads them.
+            writeExrFrame(outDir / fmt::format("scene_{:04d}.exr", i), exrFrameFromInputs(inputs));
+        }
         const fs::path frame = outDir / fmt::format("frame_{:04d}.{}", i, options.format);
         if (options.format == "exr") {
             writeExr(frame, readTextureF(pipeline.sceneReferred()));

@@ -99,6 +99,12 @@ int main(int argc, char** argv) {
     sceneCmd->add_option("--material", scene.canvasMaterial,
                          "canvas scene: material PNG (RGBA: normal x, y; shininess; glitter mask)");
     sceneCmd->add_option("--motion", scene.motion, "canvas scene: device motion CSV (time_s,pitch,roll,yaw)");
+    sceneCmd->add_option(
+        "--truth", scene.truth,
+        "testbed scene: write the CPU ray tracer's KIND (color, depth, normals, motion, objectid, "
+        "ao, sun, shutter, thinlens, reflection, or all) for the frames instead of rendering");
+    sceneCmd->add_option("--start", scene.start, "first frame index (--truth)")
+        ->check(CLI::Range(0, 10000000));
     addSettingsOptions(sceneCmd, scene.settings);
 
     TabletopWalkOptions walk;

@@ -31,6 +31,21 @@ ImageF readTextureF(const Texture& texture) {
     return image;
 }
 
+std::vector<float> readDepthTexture(const Texture& texture) {
+    const Extent e = texture.extent();
+    std::vector<float> depth(std::size_t(e.width) * std::size_t(e.height));
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(texture.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * sizeof(float)),
+                      depth.data());
+    const auto row = std::size_t(e.width);
+    for (int y = 0; y < e.height / 2; ++y) {
+        std::swap_ranges(depth.begin() + std::ptrdiff_t(std::size_t(y) * row),
+                         depth.begin() + std::ptrdiff_t(std::size_t(y + 1) * row),
+                         depth.begin() + std::ptrdiff_t(std::size_t(e.height - 1 - y) * row));
+    }
+    return depth;
+}
+
 Image8 readTexture8(const Texture& texture) {
     Image8 image(texture.extent().width, texture.extent().height);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);

@@ -6,6 +6,7 @@
 #include "gl/Objects.h"
 
 #include <string_view>
+#include <vector>
 
 namespace photopic {
 
@@ -13,6 +14,9 @@ namespace photopic {
 Texture makeTexture(const ImageF& image, std::string_view debugName);
 /// Blocking read of level 0 as float RGBA (offline paths: CLI, tests).
 ImageF readTextureF(const Texture& texture);
+/// Blocking read of level 0 of a depth texture (GL_DEPTH_COMPONENT*): width*height window depths, rows top
+/// to bottom like the images.
+std::vector<float> readDepthTexture(const Texture& texture);
 /// Blocking read of level 0 as 8-bit RGBA.
 Image8 readTexture8(const Texture& texture);
 

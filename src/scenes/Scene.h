@@ -1,7 +1,8 @@
 #pragma once
 // Built-in scenes: procedural, deterministic HDR content that hosts the library through its public API only
 // (DESIGN.md: "A scene is a host of the library"). A scene renders frame N the same way every time, from the
-// caller's FrameTime, into an HDR texture it owns; the caller hands that texture to a Pipeline.
+// caller's FrameTime, into textures it owns, and returns them as the frame's FrameInputs: colour always; a 3D
+// scene adds depth, normals, motion and its camera. The caller hands them to Pipeline::execute as they are.
 
 #include "core/Settings.h"
 #include "gl/Objects.h"
@@ -49,10 +50,10 @@ public:
     /// Names of the scene's own telemetry columns (written after frame,time_s, before the pipeline's).
     [[nodiscard]] virtual std::vector<std::string> telemetryColumns() const = 0;
 
-    /// Renders frame `time.frameIndex` into the scene's HDR texture (valid until the next call), prepares the
-    /// pipeline for it (e.g. subjects), and writes one value per telemetry column into `telemetry`.
-    virtual const Texture& render(const FrameTime& time, Pipeline& pipeline,
-                                  std::vector<double>& telemetry) = 0;
+    /// Renders frame `time.frameIndex` into the scene's textures, prepares the pipeline for it (subjects; a
+    /// 3D scene's beginFrame and lighting stage), writes one value per telemetry column into `telemetry`, and
+    /// returns the frame's inputs for Pipeline::execute (textures and camera valid until the next call).
+    virtual FrameInputs render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) = 0;
 };
 
 struct SceneInfo {

@@ -5,6 +5,7 @@
 #include "scenes/canvas/CanvasScene.h"
 #include "scenes/gradient/GradientScene.h"
 #include "scenes/tabletop/TabletopScene.h"
+#include "scenes/testbed/TestbedScene.h"
 
 #include <stdexcept>
 
@@ -20,6 +21,12 @@ const std::vector<SceneInfo>& builtInScenes() {
         {"tabletop",
          "a battle map: a player token walks from a torch-lit building into the sun and back (seed 000)",
          makeTabletopScene},
+        {"testbed",
+         "an analytic 3D scene (spheres, boxes, poles, a wire fence, a checker wall, a metal strip, a "
+         "spinning "
+         "and a moving object; a pan, a dolly and a cut) with depth, normals, motion and the camera; --truth "
+         "KIND writes its CPU ray-traced references",
+         makeTestbedScene},
     };
     return kScenes;
 }

@@ -54,9 +54,9 @@ struct Rendered {
 Rendered renderFrame(Scene& scene, Pipeline& pipeline, std::uint64_t frame, float dt = 1.0f) {
     Rendered r;
     const FrameTime time{.dt = dt, .frameIndex = frame};
-    const Texture& colour = scene.render(time, pipeline, r.telemetry);
-    r.hdr = readTextureF(colour);
-    r.display = readTexture8(pipeline.execute({.color = &colour}, time));
+    const FrameInputs inputs = scene.render(time, pipeline, r.telemetry);
+    r.hdr = readTextureF(*inputs.color);
+    r.display = readTexture8(pipeline.execute(inputs, time));
     return r;
 }
 

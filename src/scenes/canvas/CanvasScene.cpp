@@ -45,7 +45,7 @@ public:
         return {"pitch", "roll", "yaw", "light_x", "light_y", "light_z", "tiles_shaded", "tiles_total"};
     }
 
-    const Texture& render(const FrameTime& time, Pipeline&, std::vector<double>& telemetry) override {
+    FrameInputs render(const FrameTime& time, Pipeline&, std::vector<double>& telemetry) override {
         prepare();
         // Time is frameIndex * dt, never a clock: frame N is identical on every run.
         const double t = double(time.frameIndex) * double(time.dt);
@@ -70,7 +70,7 @@ public:
                      double(seedLight.z),
                      double(mRenderer->tilesShaded(mSettings.shading)),
                      double(mRenderer->grid().count())};
-        return out;
+        return {.color = &out};
     }
 
 private:

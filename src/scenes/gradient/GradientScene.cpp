@@ -31,7 +31,7 @@ public:
 
     [[nodiscard]] std::vector<std::string> telemetryColumns() const override { return {"sun_height"}; }
 
-    const Texture& render(const FrameTime& time, Pipeline&, std::vector<double>& telemetry) override {
+    FrameInputs render(const FrameTime& time, Pipeline&, std::vector<double>& telemetry) override {
         // Time is frameIndex * dt, never a clock: frame N is identical on every run.
         const double t = double(time.frameIndex) * double(time.dt);
         const double phase = 2.0 * std::numbers::pi * t / double(mSettings.period);
@@ -47,7 +47,7 @@ public:
         glDispatchCompute(GLuint((e.width + 7) / 8), GLuint((e.height + 7) / 8), 1);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         telemetry = {double(height)};
-        return mColor;
+        return {.color = &mColor};
     }
 
 private:

@@ -195,8 +195,7 @@ float TabletopScene::torchFlicker(int index, double seconds, float amplitude) {
     return float(1.0 + double(amplitude) * n);
 }
 
-const Texture& TabletopScene::render(const FrameTime& time, Pipeline& pipeline,
-                                     std::vector<double>& telemetry) {
+FrameInputs TabletopScene::render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) {
     // Time is frameIndex * dt, never a clock: frame N is identical on every run.
     const double t = double(time.frameIndex) * double(time.dt);
     const Extent e = mColor.extent();
@@ -278,7 +277,7 @@ const Texture& TabletopScene::render(const FrameTime& time, Pipeline& pipeline,
     telemetry = {double(s.id),         double(s.world.x),
                  double(s.world.y),    double(s.screenUv.x),
                  double(s.screenUv.y), double(pipeline.outdoorsAtWorld(s.world.x, s.world.y))};
-    return mColor;
+    return {.color = &mColor};
 }
 
 std::unique_ptr<Scene> makeTabletopScene() {

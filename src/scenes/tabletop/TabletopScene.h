@@ -52,7 +52,7 @@ public:
     void resize(Extent extent) override;
     /// subject,world_x,world_y,screen_u,screen_v,outdoors: the subject of the view (seed 000's rule).
     [[nodiscard]] std::vector<std::string> telemetryColumns() const override;
-    const Texture& render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) override;
+    FrameInputs render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) override;
 
     [[nodiscard]] const TabletopSceneSettings& settings() const { return mSettings; }
     /// The subjects of the last rendered frame: every token, the player controlled and the user's character.

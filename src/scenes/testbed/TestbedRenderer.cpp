@@ -1,0 +1,160 @@
+#include "scenes/testbed/TestbedRenderer.h"
+
+#include "gl/ShaderLibrary.h"
+
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <stdexcept>
+
+namespace photopic::testbed {
+
+namespace {
+
+/// std430 mirror of testbed_shading.h.glsl's TestbedPrimitive.
+struct GpuPrimitive {
+    glm::mat4 toWorld;
+    glm::mat4 toObject;
+    glm::mat4 prevToWorld;
+    glm::vec4 shape;
+    glm::vec4 albedo;
+    glm::vec4 albedo2;
+    glm::vec4 emissive;
+};
+static_assert(sizeof(GpuPrimitive) == 3 * 64 + 4 * 16);
+
+/// std140 mirror of the TestbedFrame block.
+struct GpuFrame {
+    glm::mat4 view;
+    glm::mat4 invView;
+    glm::mat4 projection;
+    glm::mat4 viewProjection;
+    glm::mat4 currViewProj;
+    glm::mat4 prevViewProj;
+    glm::vec4 viewport;
+    glm::vec4 sunDirection;
+    glm::vec4 sunIlluminance;
+    glm::vec4 skyZenith;
+    glm::vec4 skyHorizon;
+    glm::vec4 groundRadiance;
+    glm::vec4 ambientSky;
+    glm::vec4 ambientGround;
+    glm::ivec4 flags;
+};
+static_assert(sizeof(GpuFrame) == 6 * 64 + 9 * 16);
+static_assert(offsetof(GpuFrame, viewport) == 384 && offsetof(GpuFrame, flags) == 512);
+
+GpuPrimitive toGpu(const Primitive& p) {
+    return {p.toWorld,
+            p.toObject,
+            p.prevToWorld,
+            glm::vec4(float(p.shape), p.size),
+            glm::vec4(p.material.albedo, p.material.checker),
+            glm::vec4(p.material.albedo2, p.material.metallic),
+            glm::vec4(p.material.emissive, float(p.id))};
+}
+
+} // namespace
+
+TestbedRenderer::TestbedRenderer()
+    : mObjects(makeGraphicsProgram("scenes/testbed/testbed_objects.vert.glsl",
+                                   "scenes/testbed/testbed_objects.frag.glsl"))
+    , mSky(makeGraphicsProgram("passes/common/fullscreen.vert.glsl", "scenes/testbed/testbed_sky.frag.glsl"))
+    , mVao(VertexArray::create("testbed"))
+    , mPrimitives({.size = sizeof(GpuPrimitive) * kMaxPrimitives, .debugName = "testbed primitives"})
+    , mFrame({.size = sizeof(GpuFrame), .debugName = "testbed frame"}) {}
+
+void TestbedRenderer::resize(Extent extent) {
+    if (mColor.valid() && mColor.extent() == extent) {
+        return;
+    }
+    mColor = Texture({.extent = extent, .format = GL_RGBA16F, .debugName = "testbed colour"});
+    mDepth = Texture({.extent = extent,
+                      .format = GL_DEPTH_COMPONENT32F,
+                      .minFilter = GL_NEAREST,
+                      .magFilter = GL_NEAREST,
+                      .debugName = "testbed depth"});
+    mNormals = Texture({.extent = extent,
+                        .format = GL_RGBA16F,
+                        .minFilter = GL_NEAREST,
+                        .magFilter = GL_NEAREST,
+                        .debugName = "testbed normals"});
+    mMotion = Texture({.extent = extent,
+                       .format = GL_RG16F,
+                       .minFilter = GL_NEAREST,
+                       .magFilter = GL_NEAREST,
+                       .debugName = "testbed motion"});
+    mTargets = Framebuffer(
+        {.colour = {&mColor, &mNormals, &mMotion}, .depth = &mDepth, .debugName = "testbed targets"});
+}
+
+void TestbedRenderer::draw(const DrawInfo& info) {
+    const std::vector<Primitive>& prims = *info.primitives;
+    if (prims.size() > std::size_t(kMaxPrimitives)) {
+        throw std::logic_error("testbed: more primitives than TestbedRenderer::kMaxPrimitives");
+    }
+    const Camera& camera = *info.camera;
+    const Extent e = mColor.extent();
+    const Environment& env = environment();
+
+    GpuPrimitive gpu[kMaxPrimitives];
+    for (std::size_t i = 0; i < prims.size(); ++i) {
+        gpu[i] = toGpu(prims[i]);
+    }
+    mPrimitives.update(gpu, sizeof(GpuPrimitive) * prims.size());
+
+    GpuFrame f{};
+    f.view = camera.view;
+    f.invView = glm::inverse(camera.view);
+    f.projection = jitteredProjection(camera.projection, info.jitter, e.width, e.height);
+    f.viewProjection = f.projection * camera.view;
+    f.currViewProj = camera.viewProjection();
+    f.prevViewProj = camera.prevViewProjection;
+    f.viewport = {float(e.width), float(e.height), 1.0f / float(e.width), 1.0f / float(e.height)};
+    f.sunDirection = glm::vec4(env.sunDirection, std::cos(env.sunAngularRadius));
+    f.sunIlluminance = glm::vec4(
+        env.sunIlluminance, 1.0f / (std::numbers::pi_v<float> * env.sunAngularRadius * env.sunAngularRadius));
+    f.skyZenith = glm::vec4(env.skyZenith, 0.0f);
+    f.skyHorizon = glm::vec4(env.skyHorizon, 0.0f);
+    f.groundRadiance = glm::vec4(env.groundRadiance, 0.0f);
+    f.ambientSky = glm::vec4(env.ambientSky, 0.0f);
+    f.ambientGround = glm::vec4(env.ambientGround, 0.0f);
+    f.flags = {info.ambientOcclusion != nullptr ? 1 : 0, info.sunVisibility != nullptr ? 1 : 0, 0, 0};
+    mFrame.update(&f, sizeof(f));
+
+    DebugGroup group("testbed scene");
+    mTargets.bind();
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    for (int i = 0; i < 3; ++i) {
+        glClearNamedFramebufferfv(mTargets.id(), GL_COLOR, i, zero);
+    }
+    const float far = 1.0f;
+    glClearNamedFramebufferfv(mTargets.id(), GL_DEPTH, 0, &far);
+    glBindBufferBase(GL_UNIFORM_BUFFER, 0, mFrame.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mPrimitives.id());
+    glBindVertexArray(mVao.id());
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+
+    // The sky everywhere (no depth), then the objects over it with the depth test.
+    glDisable(GL_DEPTH_TEST);
+    mSky.use();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    if (info.ambientOcclusion != nullptr) {
+        glBindTextureUnit(0, info.ambientOcclusion->id());
+    }
+    if (info.sunVisibility != nullptr) {
+        glBindTextureUnit(1, info.sunVisibility->id());
+    }
+    mObjects.use();
+    glDrawArraysInstanced(GL_TRIANGLES, 0, 36, GLsizei(prims.size()));
+    glDisable(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+}
+
+} // namespace photopic::testbed

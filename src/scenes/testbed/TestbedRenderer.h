@@ -1,0 +1,51 @@
+#pragma once
+// The testbed's GL rasteriser: each primitive's bounding box is drawn as a proxy and its fragment shader
+// ray-casts the exact shape (testbed_shading.h.glsl), writing colour (RGBA16F, the local shading), depth
+// (DEPTH_COMPONENT32F through gl_FragDepth, standard GL depth), view-space normals (RGBA16F) and motion
+// (RG16F, UV current minus previous, jitter removed) as one MRT pass after a full-screen sky.
+
+#include "core/Camera.h"
+#include "gl/Objects.h"
+#include "scenes/testbed/TestbedGeometry.h"
+
+#include <vector>
+
+namespace photopic::testbed {
+
+class TestbedRenderer {
+public:
+    static constexpr int kMaxPrimitives = 64;
+
+    /// Needs a current GL 4.5 context (compiles the shaders).
+    TestbedRenderer();
+
+    void resize(Extent extent);
+
+    struct DrawInfo {
+        const Camera* camera = nullptr; ///< unjittered projection
+        glm::vec2 jitter{0.0f};         ///< pixels, x right, y up (Pipeline::beginFrame)
+        const std::vector<Primitive>* primitives = nullptr;
+        const Texture* ambientOcclusion = nullptr; ///< R visibility; multiplies the ambient term
+        const Texture* sunVisibility = nullptr;    ///< R visibility; multiplies the sun term
+    };
+    void draw(const DrawInfo& info);
+
+    [[nodiscard]] const Texture& color() const { return mColor; }
+    [[nodiscard]] const Texture& depth() const { return mDepth; }
+    [[nodiscard]] const Texture& normals() const { return mNormals; }
+    [[nodiscard]] const Texture& motion() const { return mMotion; }
+
+private:
+    Program mObjects;
+    Program mSky;
+    VertexArray mVao;
+    Buffer mPrimitives;
+    Buffer mFrame;
+    Texture mColor;
+    Texture mDepth;
+    Texture mNormals;
+    Texture mMotion;
+    Framebuffer mTargets;
+};
+
+} // namespace photopic::testbed

@@ -1,0 +1,93 @@
+#include "scenes/testbed/TestbedScene.h"
+
+#include "scenes/SceneSettings.h"
+
+namespace photopic {
+
+TestbedScene::TestbedScene() = default;
+
+Settings TestbedScene::defaultSettings() const {
+    Settings s;
+    // A sunlit exterior: the eye adapts to the whole frame, the sun's disc blooms.
+    s.tonemapping.mode = ToneMapper::AcesFitted;
+    s.autoExposure.enabled = true;
+    s.bloom.enabled = true;
+    return s;
+}
+
+std::vector<SettingsIssue> TestbedScene::applyOverride(std::string_view assignment) {
+    return applySceneOverride(mSettings, name(), assignment);
+}
+
+std::string TestbedScene::settingsJson() const {
+    return sceneSettingsJson(mSettings);
+}
+
+void TestbedScene::resize(Extent extent) {
+    mExtent = extent;
+    mRenderer.resize(extent);
+}
+
+std::vector<std::string> TestbedScene::telemetryColumns() const {
+    return {"shot", "cut"};
+}
+
+Lens TestbedScene::lens() const {
+    Lens l;
+    l.fNumber = mSettings.fNumber;
+    l.shutterAngleDeg = mSettings.shutterAngle;
+    return l;
+}
+
+testbed::FrameTimes TestbedScene::frameTimes(const FrameTime& time) const {
+    return testbed::frameTimes(time.frameIndex, double(time.dt),
+                               {double(mSettings.cameraStart), double(mSettings.cameraSpeed)},
+                               {double(mSettings.objectStart), double(mSettings.objectSpeed)});
+}
+
+testbed::TruthOptions TestbedScene::truthOptions(const FrameTime& time) const {
+    testbed::TruthOptions o;
+    o.width = mExtent.width;
+    o.height = mExtent.height;
+    o.times = frameTimes(time);
+    o.dt = double(time.dt);
+    o.lens = lens();
+    o.focusDistance = mSettings.focusDistance;
+    o.samples = mSettings.samples;
+    o.aoRadius = mSettings.aoRadius;
+    o.aoSamples = mSettings.aoSamples;
+    o.sunMaxDistance = mSettings.sunMaxDistance;
+    o.sunSamples = mSettings.sunSamples;
+    return o;
+}
+
+FrameInputs TestbedScene::render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) {
+    const testbed::FrameTimes t = frameTimes(time);
+    mCamera = testbed::truthCamera(truthOptions(time));
+    const std::vector<testbed::Primitive> prims = testbed::primitivesAt(t.objects, t.prevObjects);
+
+    const glm::vec2 jitter = pipeline.beginFrame(time, &mCamera);
+    testbed::TestbedRenderer::DrawInfo draw{.camera = &mCamera, .jitter = jitter, .primitives = &prims};
+    mRenderer.draw(draw);
+    const FrameInputs inputs{.color = &mRenderer.color(),
+                             .depth = &mRenderer.depth(),
+                             .depthKind = DepthKind::Standard,
+                             .normals = &mRenderer.normals(),
+                             .normalEncoding = NormalEncoding::ViewXyz,
+                             .motion = &mRenderer.motion(),
+                             .camera = &mCamera};
+    const LightingOutputs& lighting = pipeline.renderLighting(inputs, time);
+    if (lighting.ambientOcclusion != nullptr || lighting.contactShadows != nullptr) {
+        draw.ambientOcclusion = lighting.ambientOcclusion;
+        draw.sunVisibility = lighting.contactShadows;
+        mRenderer.draw(draw);
+    }
+    telemetry = {double(testbed::cameraPoseAt(t.camera).shot), mCamera.cut ? 1.0 : 0.0};
+    return inputs;
+}
+
+std::unique_ptr<Scene> makeTestbedScene() {
+    return std::make_unique<TestbedScene>();
+}
+
+} // namespace photopic

@@ -1,0 +1,16 @@
+// The background: sky gradient and sun disc; no normal; the motion of directions (points at infinity).
+#include "testbed_shading.h.glsl"
+
+layout(location = 0) in vec2 vUv;
+
+layout(location = 0) out vec4 oColor;
+layout(location = 1) out vec4 oNormal;
+layout(location = 2) out vec2 oMotion;
+
+void main() {
+    vec3 origin, direction;
+    testbedCameraRay(gl_FragCoord.xy, origin, direction);
+    oColor = vec4(testbedSky(direction), 1.0);
+    oNormal = vec4(0.0);
+    oMotion = testbedMotion(vec4(direction, 0.0), vec4(direction, 0.0));
+}

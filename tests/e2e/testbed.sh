@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# The testbed scene: display PNGs plus the scene-referred EXR frames `photopic image` reads back, and the
+# ray tracer's references (--truth).
+source "$(dirname "$0")/lib.bash"
+S="$SCRATCH"
+
+expect 0 "testbed renders" -- "$PHOTOPIC" scene testbed -o "$S/tb" --frames 3 --size 96x54
+check "display frames written" test -s "$S/tb/frame_0000.png" -a -s "$S/tb/frame_0002.png"
+check "scene EXR frames written" test -s "$S/tb/scene_0000.exr" -a -s "$S/tb/scene_0002.exr"
+check "telemetry has shot and cut columns" test "$(head -1 "$S/tb/telemetry.csv" | cut -d, -f1-4)" = "frame,time_s,shot,cut"
+expect 0 "image --info reads the scene EXR" -- "$PHOTOPIC" image --info "$S/tb/scene_0002.exr"
+check "depth found" contains "Z -> depth"
+check "normals found" contains "N.X -> normals"
+check "motion found" contains "motion.X -> motion"
+check "camera found" contains "worldToNDC"
+
+expect 0 "ao truth" -- "$PHOTOPIC" scene testbed --truth ao -o "$S/truth" --frames 1 --start 10 --size 64x36 \
+    --set testbed.aoSamples=4
+check "ao EXR and preview written" test -s "$S/truth/truth_ao_0010.exr" -a -s "$S/truth/truth_ao_0010.png"
+expect 0 "depth truth" -- "$PHOTOPIC" scene testbed --truth depth -o "$S/truth" --frames 1 --size 64x36
+expect 0 "image --info reads the depth truth" -- "$PHOTOPIC" image --info "$S/truth/truth_depth_0000.exr"
+check "its Z is found" contains "Z -> depth"
+expect 2 "unknown truth kind" -- "$PHOTOPIC" scene testbed --truth fog -o "$S/bad" --frames 1 --size 64x36
+check "kinds listed" contains "thinlens"
+expect 2 "truth of another scene" -- "$PHOTOPIC" scene gradient --truth ao -o "$S/bad2" --frames 1 --size 64x36
+check "says it is the testbed's" contains "testbed"
+
+finish
