@@ -13,6 +13,11 @@ check "depth found" contains "Z -> depth"
 check "normals found" contains "N.X -> normals"
 check "motion found" contains "motion.X -> motion"
 check "camera found" contains "worldToNDC"
+expect 0 "the testbed's EXR sequence renders through photopic image with its 3D layers" -- \
+    "$PHOTOPIC" image "$S"/tb/scene_*.exr -o "$S/img/" --write-aux "$S/aux" --debug motion
+check "one image per frame" test "$(ls "$S"/img/*.png | wc -l)" -eq 3
+check "the decoded layers written back" test -s "$S/aux/scene_0002.aux.exr"
+check "no input problem reported" bash -c "! grep -qi 'ignored\|skipped' <<< \"\$1\"" _ "$OUTPUT"
 
 expect 0 "ao truth" -- "$PHOTOPIC" scene testbed --truth ao -o "$S/truth" --frames 1 --start 10 --size 64x36 \
     --set testbed.aoSamples=4
