@@ -2,6 +2,7 @@
 // Every setting of the pipeline, one typed struct per effect (see core/settings/), gathered here.
 // JSON: {"version": 1, "postEffects": {<key>: {...}}} with the keys below.
 
+#include "core/settings/AntiAliasingSettings.h"
 #include "core/settings/AutoExposureSettings.h"
 #include "core/settings/DebugSettings.h"
 #include "core/settings/BloomSettings.h"
@@ -30,6 +31,20 @@ struct Settings {
     DazzleSettings dazzle;
     SubjectSettings subjects;
     TemporalSettings temporal;
+    AntiAliasingSettings aa;
+    TaaSettings taa;
+
+    /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
+    /// is none.
+    [[nodiscard]] AntiAliasing antiAliasing() const noexcept {
+        if (aa.mode != AntiAliasing::None) {
+            return aa.mode;
+        }
+        if (taa.enabled) {
+            return AntiAliasing::Taa;
+        }
+        return fxaa.enabled ? AntiAliasing::Fxaa : AntiAliasing::None;
+    }
 
     template <class V>
     void visit(V& v) {
@@ -47,6 +62,8 @@ struct Settings {
         v.object("dazzle", dazzle);
         v.object("subjects", subjects);
         v.object("temporal", temporal);
+        v.object("aa", aa);
+        v.object("taa", taa);
     }
 };
 

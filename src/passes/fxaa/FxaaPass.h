@@ -12,7 +12,7 @@ public:
     [[nodiscard]] std::string_view name() const override { return "fxaa"; }
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
     [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
-        return ctx.tier.fxaa && ctx.settings.fxaa.enabled;
+        return ctx.tier.fxaa && ctx.settings.antiAliasing() == AntiAliasing::Fxaa;
     }
     void execute(FrameContext& ctx, FrameResources& resources) override;
 

@@ -1,0 +1,64 @@
+#pragma once
+// Anti-aliasing: one mode for the frame, and each method's own settings. FXAA and SMAA work on the
+// display-referred image after tone mapping; TAA resolves in the HDR domain before metering; SSAA renders
+// several jittered sub-frames through the host and accumulates them in HDR.
+
+#include "core/settings/Reflect.h"
+
+#include <array>
+#include <span>
+#include <string_view>
+
+namespace photopic {
+
+enum class AntiAliasing {
+    None,
+    Fxaa,    ///< FXAA 3.11 on display-referred values
+    Smaa,    ///< SMAA 1x on display-referred values
+    Taa,     ///< temporal resolve with motion vectors (needs jitter from the host and motion or depth)
+    Ssaa,    ///< jittered sub-frames accumulated in HDR (built-in scenes and two-stage hosts)
+    TaaSmaa, ///< SMAA's edges, then TAA's temporal gather
+};
+
+inline std::span<const std::string_view> antiAliasingNames() {
+    static constexpr std::array<std::string_view, 6> kNames{"none", "fxaa", "smaa", "taa", "ssaa", "taa+smaa"};
+    return kNames;
+}
+
+struct AntiAliasingSettings {
+    /// none, fxaa, smaa, taa, ssaa, taa+smaa; default none. The older switches `fxaa.enabled` and
+    /// `taa.enabled` still select FXAA and TAA when this is none.
+    AntiAliasing mode = AntiAliasing::None;
+    int level = 2; ///< SSAA: 2^level sub-frames per frame, [1, 4], default 2
+
+    template <class V>
+    void visit(V& v) {
+        v.field("mode", mode, antiAliasingNames());
+        v.field("level", level, Range{1, 4});
+    }
+};
+
+/// Temporal anti-aliasing (Karis 2014; Salvi 2016 variance clipping; Playdead's adaptive feedback).
+struct TaaSettings {
+    bool enabled = false;       ///< default off; selects TAA when aa.mode is none
+    float blendFactor = 0.9f;   ///< [0, 0.99], default 0.9: the history's weight in the blend
+    float varianceGamma = 1.0f; ///< [0.5, 2], default 1: the clip box is mean +- gamma * sigma (YCoCg)
+    /// Default off: the history weight rises from feedbackMin to feedbackMax where the history agrees with
+    /// the current frame (less blur on moving edges, longer accumulation where it is stable).
+    bool adaptiveFeedback = false;
+    float feedbackMin = 0.88f; ///< [0, 0.99], default 0.88
+    float feedbackMax = 0.97f; ///< [0, 0.99], default 0.97
+
+    template <class V>
+    void visit(V& v) {
+        v.field("enabled", enabled);
+        v.field("blendFactor", blendFactor, Range{0, 0.99});
+        v.field("varianceGamma", varianceGamma, Range{0.5, 2});
+        v.field("adaptiveFeedback", adaptiveFeedback);
+        v.field("feedbackMin", feedbackMin, Range{0, 0.99});
+        v.field("feedbackMax", feedbackMax, Range{0, 0.99});
+        v.require(feedbackMin <= feedbackMax, "feedbackMin", "must not exceed feedbackMax");
+    }
+};
+
+} // namespace photopic
