@@ -33,6 +33,7 @@ struct Settings {
     TemporalSettings temporal;
     AntiAliasingSettings aa;
     TaaSettings taa;
+    SmaaSettings smaa;
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
     /// is none.
@@ -64,6 +65,7 @@ struct Settings {
         v.object("temporal", temporal);
         v.object("aa", aa);
         v.object("taa", taa);
+        v.object("smaa", smaa);
     }
 };
 

@@ -38,6 +38,26 @@ struct AntiAliasingSettings {
     }
 };
 
+enum class SmaaQuality { Low, Medium, High, Ultra };
+
+inline std::span<const std::string_view> smaaQualityNames() {
+    static constexpr std::array<std::string_view, 4> kNames{"low", "medium", "high", "ultra"};
+    return kNames;
+}
+
+/// SMAA 1x (Jimenez et al. 2012) on the display-referred image.
+struct SmaaSettings {
+    /// low, medium, high, ultra; default high. The reference presets: luma threshold 0.15 / 0.1 / 0.1 /
+    /// 0.05, orthogonal search steps 4 / 8 / 16 / 32, diagonal steps - / - / 8 / 16, corner rounding
+    /// - / - / 25% / 25%.
+    SmaaQuality quality = SmaaQuality::High;
+
+    template <class V>
+    void visit(V& v) {
+        v.field("quality", quality, smaaQualityNames());
+    }
+};
+
 /// Temporal anti-aliasing (Karis 2014; Salvi 2016 variance clipping; Playdead's adaptive feedback).
 struct TaaSettings {
     bool enabled = false;       ///< default off; selects TAA when aa.mode is none
