@@ -130,16 +130,21 @@ Area orthogonalArea(int startCross, int endCross, int left, int right) {
 }
 
 Area diagonalArea(int startEnd, int endEnd, int left, int right) {
-    // Staircase pixels (k, k), k = 0..d-1, y growing downwards along the staircase; the steps' midpoints
-    // lie on y = x + 0.5. The side y - x > 0.5 holds the +y neighbours (k, k + 1).
-    const double d = double(left + right + 1);
-    const Point start{0.0, startEnd != 0 ? 0.5 : 0.0};
-    const Point end{d, endEnd != 0 ? d + 0.5 : d};
+    // Staircase pixels (k, k), k = 0..d-1, y growing downwards along the staircase; the silhouette is the
+    // line through the steps' midpoints, y = x + 0.5 (a continuation along x or y at an end meets that
+    // same line, so it does not bend it). The side y - x > 0.5 holds the +y neighbours (k, k + 1).
+    const int d = left + right + 1;
+    const Point start{0.0, 0.5};
+    const Point end{double(d), double(d) + 0.5};
     const double k = double(left);
     // Left of a -> b (x right, y down) is the +y neighbours' side.
     const double staircaseCut = halfPlaneCoverage(start, end, k, k);
     const double neighbourCut = 1.0 - halfPlaneCoverage(start, end, k, k + 1.0);
-    return {float(neighbourCut), float(staircaseCut)};
+    // An end with nothing beyond it may be where the silhouette stops or where it turns: its pixel takes
+    // the mean of the two possibilities (cut, not cut), as the paper blends unknown ends.
+    const bool openEnd = (left == 0 && startEnd == 0) || (right == 0 && endEnd == 0);
+    const double scale = openEnd ? 0.5 : 1.0;
+    return {float(scale * neighbourCut), float(scale * staircaseCut)};
 }
 
 const AreaTables& areaTables() {

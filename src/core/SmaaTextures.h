@@ -28,10 +28,10 @@ enum CrossingBits : int { kCrossNone = 0, kCrossPlus = 1, kCrossMinus = 2, kCros
 
 inline constexpr int kOrthoMaxDistance = 64; ///< distances 0..63 per side (32 search steps of 2 pixels)
 inline constexpr int kOrthoSize = 4 * kOrthoMaxDistance; ///< 4 x 4 patterns of 64 x 64
-inline constexpr int kDiagMaxDistance = 20;               ///< distances 0..19 per side (16 diagonal steps)
-inline constexpr int kDiagSize = 4 * kDiagMaxDistance;    ///< 4 x 4 patterns of 20 x 20
-inline constexpr int kSearchLevels = 33;                  ///< one bilinear fetch encodes 0..32 / 32
-inline constexpr int kSearchWidth = 2 * kSearchLevels;    ///< left/up half, right/down half
+inline constexpr int kDiagMaxDistance = 20;              ///< distances 0..19 per side (16 diagonal steps)
+inline constexpr int kDiagSize = 4 * kDiagMaxDistance;   ///< 4 x 4 patterns of 20 x 20
+inline constexpr int kSearchLevels = 33;                 ///< one bilinear fetch encodes 0..32 / 32
+inline constexpr int kSearchWidth = 2 * kSearchLevels;   ///< left/up half, right/down half
 inline constexpr int kSearchHeight = kSearchLevels;
 
 /// Coverage of the pixel on each side of an edge: `plus` is cut off the pixel on the +y side of the edge
@@ -48,9 +48,8 @@ struct Area {
 /// Diagonal runs: the staircase whose pixels k = 0..d-1 sit at (k, k) with an edge on their -x and +y
 /// sides (d = left + right + 1, the pixel of interest is k = left). `plus` is the share of the +y
 /// neighbour (k, k + 1) on the staircase's side of the line, `minus` the share of the staircase pixel on
-/// the other side: the two pixels of the edge between them. An end with a continuation (bit 0: the edge goes on along x, bit 1: along y, 3:
-/// the search ran out) keeps the 45-degree line through the steps' midpoints; an end without one pulls the
-/// line to the step's corner, so a staircase that stops is not smeared past its end.
+/// the other side: the two pixels of the edge between them. Ends: bit 0, the edge goes on along x; bit 1,
+/// along y; 3, the search ran out. An end pixel with neither gets half the cut.
 [[nodiscard]] Area diagonalArea(int startEnd, int endEnd, int left, int right);
 
 /// RG8 tables, row-major from texel (0, 0).
@@ -74,11 +73,12 @@ struct AreaTables {
 
 /// The per-preset constants (SMAA's reference presets).
 struct Preset {
-    float threshold;        ///< luma contrast that makes an edge
-    int searchSteps;        ///< orthogonal search steps (2 pixels each)
-    int diagonalSteps;      ///< diagonal search steps (1 pixel each), 0: no diagonal patterns
-    float cornerRounding;   ///< percent, 0: no corner detection
-    float contrastFactor;   ///< local contrast adaptation: an edge is dropped where a neighbour's is this much larger
+    float threshold;      ///< luma contrast that makes an edge
+    int searchSteps;      ///< orthogonal search steps (2 pixels each)
+    int diagonalSteps;    ///< diagonal search steps (1 pixel each), 0: no diagonal patterns
+    float cornerRounding; ///< percent, 0: no corner detection
+    float contrastFactor; ///< local contrast adaptation: an edge is dropped where a neighbour's is this much
+                          ///< larger
 };
 [[nodiscard]] Preset preset(int quality);
 

@@ -15,6 +15,7 @@
 #include "passes/probe/ProbePass.h"
 #include "passes/probe/SubjectContextsPass.h"
 #include "passes/sanitize/SanitizePass.h"
+#include "passes/smaa/SmaaPass.h"
 #include "passes/tonemap/TonemapPass.h"
 
 #include <span>
@@ -47,6 +48,7 @@ public:
     DebugViewPass debugView;
     TonemapPass tonemap;
     FxaaPass fxaa;
+    SmaaPass smaa;
     LensFlarePass lensFlare;
     DisplayEffectsPass displayEffects;
     HistogramOverlayPass histogramOverlay;
