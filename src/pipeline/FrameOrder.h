@@ -15,6 +15,7 @@
 #include "passes/probe/ProbePass.h"
 #include "passes/probe/SubjectContextsPass.h"
 #include "passes/sanitize/SanitizePass.h"
+#include "passes/taa/TaaPass.h"
 #include "passes/tonemap/TonemapPass.h"
 
 #include <span>
@@ -39,6 +40,7 @@ public:
     SanitizePass sanitize;
     LinearDepthPass linearDepth;
     CameraMotionPass cameraMotion;
+    TaaPass taa;
     MeteringPass metering;
     ProbePass probes;
     ExposurePass exposure;

@@ -17,14 +17,17 @@ enum class DebugView {
     Metering,  ///< the weight each pixel gets in the metering mode
     Histogram, ///< overlay over the normal image: 256 bins, percentile window, average, target, current
     Bloom,     ///< the bloom texture alone (black when the pipeline has no bloom)
-    Depth,     ///< linear view depth as grey, logarithmic from near (white) to far (black); needs depth + camera
-    Normals,   ///< view-space normals as colour, 0.5 + 0.5 n; needs normals
-    Motion,    ///< motion vectors: hue is the direction, brightness the length (8 px saturates); needs motion
+    Depth, ///< linear view depth as grey, logarithmic from near (white) to far (black); needs depth + camera
+    Normals, ///< view-space normals as colour, 0.5 + 0.5 n; needs normals
+    Motion,  ///< motion vectors: hue is the direction, brightness the length (8 px saturates); needs motion
+    TaaHistoryWeight, ///< TAA's history weight per pixel as grey (black: no history used); needs TAA on
+    Disocclusion, ///< white where TAA found the history disoccluded (or off screen: see weight); needs TAA
 };
 
 inline std::span<const std::string_view> debugViewNames() {
-    static constexpr std::array<std::string_view, 10> kNames{
-        "none", "exposure", "luma", "ev", "metering", "histogram", "bloom", "depth", "normals", "motion"};
+    static constexpr std::array<std::string_view, 12> kNames{
+        "none",  "exposure", "luma",    "ev",     "metering",           "histogram",
+        "bloom", "depth",    "normals", "motion", "taa-history-weight", "disocclusion"};
     return kNames;
 }
 
