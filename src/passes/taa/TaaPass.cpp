@@ -8,6 +8,10 @@
 namespace photopic {
 
 namespace {
+/// Motion, in pixels per frame, from which the history is clipped fully to the neighbourhood box; slower
+/// pixels are clipped in proportion (see taa_resolve.comp.glsl).
+constexpr float kFullClipPixels = 1.0f;
+
 void setMatrix(const Program& p, const char* name, const glm::mat4& m) {
     glProgramUniformMatrix4fv(p.id(), glGetUniformLocation(p.id(), name), 1, GL_FALSE, glm::value_ptr(m));
 }
@@ -66,6 +70,7 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     setUniform(mProgram, "uWriteDebug", debug ? 1 : 0);
     setUniform(mProgram, "uBlend", s.blendFactor);
     setUniform(mProgram, "uGamma", s.varianceGamma);
+    setUniform(mProgram, "uStaticPixels", kFullClipPixels);
     setUniform(mProgram, "uAdaptive", s.adaptiveFeedback ? 1 : 0);
     setUniform(mProgram, "uFeedbackMin", s.feedbackMin);
     setUniform(mProgram, "uFeedbackMax", s.feedbackMax);

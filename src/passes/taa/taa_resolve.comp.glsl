@@ -27,6 +27,7 @@ uniform int uHasCamera;
 uniform int uWriteDebug;
 uniform float uBlend;
 uniform float uGamma;
+uniform float uStaticPixels; // motion (pixels) from which the history is clipped fully
 uniform int uAdaptive;
 uniform float uFeedbackMin;
 uniform float uFeedbackMax;
@@ -34,14 +35,12 @@ uniform mat4 uInvProjection;
 uniform mat4 uInvView;
 uniform mat4 uPrevViewProjection;
 
-float gExposureScale;
-
-vec3 toWorking(vec3 c) {
-    c *= gExposureScale;
+vec3 toWorking(vec3 c, float exposure) {
+    c *= exposure;
     return c / (1.0 + luma709(c));
 }
 
-vec3 fromWorking(vec3 w) { return w / (max(1.0 - luma709(w), 1e-4) * gExposureScale); }
+vec3 fromWorking(vec3 w, float exposure) { return w / (max(1.0 - luma709(w), 1e-4) * exposure); }
 
 // Motion may be negative; only NaN and infinity are dropped (a broken motion input must not smear).
 vec2 finiteMotion(vec2 m) {
@@ -95,7 +94,7 @@ void main() {
     if (any(greaterThanEqual(p, size))) {
         return;
     }
-    gExposureScale = max(gExposure.exposure, 1e-8);
+    float exposure = max(gExposure.exposure, 1e-8);
     vec3 current = texelFetch(uCurrent, p, 0).rgb;
     float depth = uHasDepth != 0 ? texelFetch(uDepth, p, 0).r : 0.0;
 
@@ -107,7 +106,7 @@ void main() {
     for (int y = -1; y <= 1; ++y) {
         for (int x = -1; x <= 1; ++x) {
             ivec2 q = clamp(p + ivec2(x, y), ivec2(0), size - 1);
-            vec3 c = rgbToYCoCg(toWorking(texelFetch(uCurrent, q, 0).rgb));
+            vec3 c = rgbToYCoCg(toWorking(texelFetch(uCurrent, q, 0).rgb, exposure));
             m1 += c;
             m2 += c * c;
             lo = min(lo, c);
@@ -140,9 +139,16 @@ void main() {
         vec3 ray = near.xyz / near.w;
         vec4 world = uInvView * vec4(ray * (depth / -ray.z), 1.0);
         float predicted = (uPrevViewProjection * world).w;
+        // Disoccluded means hidden last frame: every depth the history stored around the point is nearer than
+        // the point was. The history's depths come from jittered samples (at an edge, or on a wire thinner
+        // than a pixel, a pixel holds either surface from frame to frame), hence the 3x3 neighbourhood; a
+        // history that is farther than the point (a thin feature this frame's sample hit) is not disocclusion.
         ivec2 hp = clamp(ivec2(prevUv * vec2(size)), ivec2(0), size - 1);
-        float stored = texelFetch(uHistory, hp, 0).a;
-        disoccluded = !(abs(stored - predicted) <= 0.1 * predicted);
+        disoccluded = true;
+        for (int i = 0; i < 9 && disoccluded; ++i) {
+            ivec2 q = clamp(hp + ivec2(i % 3 - 1, i / 3 - 1), ivec2(0), size - 1);
+            disoccluded = texelFetch(uHistory, q, 0).a < 0.9 * predicted;
+        }
     }
 
     vec4 result;
@@ -150,9 +156,19 @@ void main() {
     if (!history || disoccluded) {
         result = vec4(current, depth); // exactly the current sample: a cut frame equals the no-history frame
     } else {
-        vec3 h = rgbToYCoCg(toWorking(sanitize(sampleHistoryCatmullRom(prevUv, vec2(size)))));
-        h = clipToBox(boxMin, boxMax, h);
-        vec3 c = rgbToYCoCg(toWorking(current));
+        vec3 h = rgbToYCoCg(toWorking(sanitize(sampleHistoryCatmullRom(prevUv, vec2(size))), exposure));
+        vec3 c = rgbToYCoCg(toWorking(current, exposure));
+        // The variance box can exclude the centre sample itself (a thin dark pole among bright neighbours):
+        // keep it inside, or a history equal to this frame would be pulled away from it.
+        boxMin = min(boxMin, c);
+        boxMax = max(boxMax, c);
+        // Clip as strongly as the pixel moves. A static pixel's history is this surface's own (disocclusion is
+        // caught by depth), and clipping it against one jittered frame would erase thin features that this
+        // frame's samples happen to miss (poles, wires: they break into dashes). Without depth there is no
+        // other guard against ghosts, so the clip stays full.
+        float motionPixels = length(motion * vec2(size));
+        float clipStrength = (uHasDepth != 0 && uHasCamera != 0) ? clamp(motionPixels / uStaticPixels, 0.0, 1.0) : 1.0;
+        h = mix(h, clipToBox(boxMin, boxMax, h), clipStrength);
         weight = uBlend;
         if (uAdaptive != 0) {
             // Where the clipped history and the current sample agree in luma, keep the history longer.
@@ -160,7 +176,7 @@ void main() {
             float agreement = 1.0 - difference;
             weight = mix(uFeedbackMin, uFeedbackMax, agreement * agreement);
         }
-        vec3 resolved = fromWorking(yCoCgToRgb(mix(c, h, weight)));
+        vec3 resolved = fromWorking(yCoCgToRgb(mix(c, h, weight)), exposure);
         result = vec4(sanitize(resolved), depth);
     }
     imageStore(uOutput, p, result);
