@@ -84,7 +84,7 @@ CanvasSceneSettings canvasBenchSettings(const SettingsSources& sources) {
             "apply (use --set canvas.KEY=VALUE)");
     }
     CanvasSceneSettings s;
-    s.occupancy = 0.3f; // seed 003's benchmark case: 30% of the tiles hold material
+    s.occupancy = 0.3f; // the benchmark case: 30% of the tiles hold material
     std::vector<SettingsIssue> issues;
     for (const auto& o : sources.overrides) {
         constexpr std::string_view kPrefix = "canvas.";
@@ -106,8 +106,8 @@ struct CanvasPathResult {
     std::vector<double> wallMs; ///< glFinish-bracketed wall time of one frame's shading
 };
 
-/// seed 003 §5: the tiled shading (specular + sparkle only on tiles with material, indirect dispatch) against
-/// the full-screen shading, after checking that both give the same image.
+/// Tile-based lighting's claim: the tiled shading (specular + sparkle only on tiles with material, indirect
+/// dispatch) against the full-screen shading, after checking that both give the same image.
 int runCanvasBench(const BenchOptions& options) {
     if (options.frames < 1) {
         throw InputError("--frames must be at least 1");

@@ -1,5 +1,5 @@
 #pragma once
-// `photopic demo` (DESIGN.md: the tabletop is the main demo; seed 000): the tabletop walk through the GPU
+// `photopic demo` (the main demo): the tabletop walk through the GPU
 // pipeline with `subject` metering -- the pipeline probes the tokens and exposure follows the light under the
 // player -- then telemetry -> plot, key frames, an MP4 when ffmpeg is there, and a summary per transition.
 

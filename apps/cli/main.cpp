@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
     std::filesystem::path demoData; // empty: findDataDir() looks it up
     std::string demoSize = "320x180";
     auto* demo = app.add_subcommand(
-        "demo", "the main demo: the tabletop walk (seed 000's eye adaptation) into out/demo (or -o DIR)");
+        "demo", "the main demo: the tabletop walk (eye adaptation) into out/demo (or -o DIR)");
     demo->add_option("-o,--output", walk.output, "output folder");
     demo->add_option("--size", demoSize, "WIDTHxHEIGHT")->capture_default_str();
     demo->add_option("--fps", walk.fps, "frame rate")->check(CLI::Range(1.0f, 240.0f))->capture_default_str();

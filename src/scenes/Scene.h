@@ -1,6 +1,6 @@
 #pragma once
-// Built-in scenes: procedural, deterministic HDR content that hosts the library through its public API only
-// (DESIGN.md: "A scene is a host of the library"). A scene renders frame N the same way every time, from the
+// Built-in scenes: procedural, deterministic HDR content that hosts the library through its public API only,
+// as any other host would. A scene renders frame N the same way every time, from the
 // caller's FrameTime, into an HDR texture it owns; the caller hands that texture to a Pipeline.
 
 #include "core/Settings.h"

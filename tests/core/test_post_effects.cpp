@@ -1,5 +1,5 @@
 // CPU side of bloom, grading, display effects and quality tiers: the constants the shaders get, and the new
-// settings keys (paths, ranges, seed 002's keys).
+// settings keys (paths, ranges, the common keys of older files).
 
 #include "core/Bloom.h"
 #include "core/ColorGrading.h"
@@ -135,7 +135,7 @@ TEST(PostEffectSettings, Seed002KeysLoad) {
         "vignette": {"enabled": false, "intensity": 0.5, "chromaticAberration": 0.003},
         "colorGrading": {"enabled": false, "contrast": 1.0, "saturation": 1.0, "temperature": 0.0}}})";
     Settings s;
-    // Seed 002's bloom pairs a threshold with an additive intensity: threshold mode.
+    // Older files' bloom pairs a threshold with an additive intensity: threshold mode.
     ASSERT_TRUE(readSettingsJson(R"({"postEffects": {"bloom": {"mode": "threshold"}}})", s).empty());
     const auto issues = readSettingsJson(doc, s);
     ASSERT_TRUE(issues.empty()) << formatSettingsIssues(issues);

@@ -122,7 +122,7 @@ TEST(ToneCurves, HillFitPublishedValues) {
 }
 
 TEST(ToneCurves, AcesGreysMatchPublishedCodeValues) {
-    // sRGB code values of the full RRT + ODT.Academy.sRGB_100nits_dim for Rec.709 greys (REFERENCES.md; the
+    // sRGB code values of the full RRT + ODT.Academy.sRGB_100nits_dim for Rec.709 greys (aces-dev's CTL; the
     // same as OpenColorIO 2.1's built-ins). The brief allows 1e-3; the implementation holds 2e-5.
     struct Row {
         float in;

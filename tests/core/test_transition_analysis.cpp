@@ -97,7 +97,7 @@ TEST(TransitionAnalysis, OtherTimeConstantsAndFrameRates) {
 
 TEST(TransitionAnalysis, ClampedTargetsStillShowTheLag) {
     AutoExposureSettings ae = seed000();
-    ae.minEV = -2.0f; // seed 000's multiplier bounds 0.25 .. 4
+    ae.minEV = -2.0f; // multiplier bounds 0.25 .. 4
     ae.maxEV = 2.0f;
     const auto transitions = analyzeTransitions(simulate(ae, {}, 30.0f, 20.0f), ae);
     ASSERT_EQ(transitions.size(), 2u);

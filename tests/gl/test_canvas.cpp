@@ -1,4 +1,4 @@
-// The canvas scene (seed 003) on the GPU: highlights travel with the tilt, glitter sparkles above 1.0 only at
+// The canvas scene on the GPU: highlights travel with the tilt, glitter sparkles above 1.0 only at
 // its peak, the tiled and full-screen paths agree, the tile count, and bad input files.
 
 #include "GlTest.h"

@@ -5,8 +5,8 @@
 // weighted by 1 / (1 + luma) and the result renormalised ("Karis average"), so a single firefly cannot
 // dominate a whole region; only the first level needs it, the later ones already see averaged colour.
 // With PREFILTER the taps are scene colour multiplied by the frame's exposure (bloom works on exposed colour,
-// DESIGN.md step 6) and, in threshold mode, the soft knee (REFERENCES.md "Bloom"; constants from
-// core/Bloom.cpp) keeps only what lies above the threshold.
+// so what blooms does not depend on the scene's absolute level) and, in threshold mode, the soft knee
+// (constants from core/Bloom.cpp) keeps only what lies above the threshold.
 #include "passes/common/color.h.glsl"
 #ifdef PREFILTER
 #include "passes/common/exposure.h.glsl"

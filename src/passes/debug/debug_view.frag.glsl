@@ -1,8 +1,8 @@
-// Scene-value debug views (DESIGN.md frame order step 8): they replace the image before tone mapping and are shown
-// as they are, never tone mapped. Values are exposed scene values (colour x gExposure.exposure).
-// References: seed 001 and REFERENCES.md "Debug views" (false-colour bands: blue ramp below 1, yellow >= 1,
-// orange >= 2, magenta >= 4, white >= 8; stops log2(Y exposure / 0.18), one colour per stop -6..+6, as in the
-// EL Zone System); core/Metering.h for the metering weights.
+// Scene-value debug views (frame order: docs/architecture.md): they replace the image before tone mapping and
+// are shown as they are, never tone mapped. Values are exposed scene values (colour x gExposure.exposure).
+// Conventions (false-colour bands: blue ramp below 1, yellow >= 1, orange >= 2, magenta >= 4, white >= 8;
+// stops log2(Y exposure / 0.18), one colour per stop -6..+6, as in the EL Zone System); core/Metering.h for
+// the metering weights.
 #include "passes/common/color.h.glsl"
 #include "passes/common/exposure.h.glsl"
 #include "passes/common/sanitize.h.glsl"

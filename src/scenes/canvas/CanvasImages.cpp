@@ -175,7 +175,8 @@ CanvasImages makeProceduralCanvas(const ProceduralCanvasInfo& info) {
         }
     }
 
-    // Material: normals everywhere; varnish and glitter only on the chosen tiles (seed 003's hasMaterial).
+    // Material: normals everywhere; varnish and glitter only on the chosen tiles, so the others have no
+    // material.
     const TileGrid grid = makeTileGrid(w, h, info.tileSize);
     const std::vector<std::uint8_t> chosen = chooseTiles(grid, info.occupancy, info.seed);
     const int facet = std::max(2, int(std::lround(H / 216.0f))); // glitter flake size, px

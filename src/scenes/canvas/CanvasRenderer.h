@@ -1,7 +1,7 @@
 #pragma once
 // The canvas's shading on the GPU, usable without the Scene wrapper (the benchmark and tests drive it
-// directly): uploads a canvas, builds seed 003's tile occupancy and tile lists on the GPU, and shades a frame
-// into an RGBA16F scene-linear target either tile by tile or full screen.
+// directly): uploads a canvas, builds the tile occupancy (which tiles hold material) and tile lists on the
+// GPU, and shades a frame into an RGBA16F scene-linear target either tile by tile or full screen.
 
 #include "core/CanvasMaterial.h"
 #include "gl/GpuTimers.h"

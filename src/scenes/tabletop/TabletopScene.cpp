@@ -134,8 +134,8 @@ TabletopScene::TabletopScene()
 Settings TabletopScene::defaultSettings() const {
     Settings s;
     s.tonemapping.mode = ToneMapper::AcesFitted;
-    // Seed 000: the eye follows the light under the player token (subject metering on the GPU), key 0.18,
-    // x0.25..x4 (-2..+2 EV, DESIGN.md), tauBrighten 1 s, tauDarken 0.3 s.
+    // The eye follows the light under the player token (subject metering on the GPU), key 0.18,
+    // x0.25..x4 (-2..+2 EV), tauBrighten 1 s, tauDarken 0.3 s.
     s.autoExposure.enabled = true;
     s.autoExposure.metering = MeteringMode::Subject;
     s.autoExposure.adaptation = AdaptationMode::Exponential;
@@ -213,7 +213,8 @@ const Texture& TabletopScene::render(const FrameTime& time, Pipeline& pipeline,
         std::max(kMapRect.y + 0.5f * viewSize.y, kMapRect.y + kMapRect.height - 0.5f * viewSize.y));
     const glm::vec2 viewMin = centre - 0.5f * viewSize;
 
-    // Subjects: every token; the player is controlled and the user's character (seed 000's rule picks it).
+    // Subjects: every token; the player is controlled and the user's character (the selection rule picks the
+    // controlled one first).
     mSubjects.clear();
     std::vector<float> tokens, tokenColours;
     for (const Token& token : kTokens) {
@@ -269,7 +270,7 @@ const Texture& TabletopScene::render(const FrameTime& time, Pipeline& pipeline,
     glDispatchCompute(GLuint((e.width + 7) / 8), GLuint((e.height + 7) / 8), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
-    // The tokens go to the pipeline (seed 000's subjects: it probes them and its `subject` metering follows
+    // The tokens go to the pipeline (as subjects: it probes them and its `subject` metering follows
     // the player); the roof mask answers "outdoors?" for them.
     pipeline.setOutdoorsMask(&mMask);
     pipeline.setSubjects(mSubjects, centre);
