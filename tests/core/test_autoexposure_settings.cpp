@@ -134,7 +134,7 @@ TEST(AutoExposureSettings, ConstraintsBetweenFields) {
     EXPECT_EQ(ok.autoExposure.compensationCurve.size(), 3u);
 }
 
-TEST(AutoExposureSettings, Seed002KeysStayReadable) {
+TEST(AutoExposureSettings, LegacyKeysStayReadable) {
     Settings settings;
     // An older post_effects.json entry, verbatim, in a document without "version".
     const auto issues =

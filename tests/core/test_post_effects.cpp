@@ -128,7 +128,7 @@ TEST(Quality, TiersShrinkWorkAndLegacyIsLdr) {
     EXPECT_EQ(qualityName(Quality::Legacy), "legacy");
 }
 
-TEST(PostEffectSettings, Seed002KeysLoad) {
+TEST(PostEffectSettings, LegacyKeysLoad) {
     const char* doc = R"({"postEffects": {
         "bloom": {"enabled": true, "threshold": 1.0, "intensity": 0.5},
         "fxaa": {"enabled": true},

@@ -397,7 +397,7 @@ TEST(OutdoorsCoupling, TrackerTargetsMatchCoupledSettings) {
 // ---- contexts
 // -------------------------------------------------------------------------------------------------
 
-TEST(SubjectContexts, HoldSeed000FieldsAndKeepProbeHistoryById) {
+TEST(SubjectContexts, HoldContextFieldsAndKeepProbeHistoryById) {
     SubjectSettings settings;
     settings.probe.hz = 5.0f;
     SubjectTracker tracker(settings);
