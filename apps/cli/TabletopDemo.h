@@ -4,7 +4,7 @@
 // player -- then telemetry -> plot, key frames, an MP4 when ffmpeg is there, and a summary per transition.
 
 #include "core/Image.h"
-#include "core/TransitionAnalysis.h"
+#include "common/TransitionAnalysis.h"
 
 #include <cstddef>
 #include <filesystem>

@@ -7,7 +7,7 @@
 
 #include "core/ExposureController.h"
 #include "core/Subjects.h"
-#include "core/TransitionAnalysis.h"
+#include "common/TransitionAnalysis.h"
 #include "gl/ReadbackRing.h"
 #include "gl/TextureIo.h"
 #include "pipeline/Pipeline.h"

@@ -90,7 +90,7 @@ Stroke makeStroke(std::uint32_t seed, std::uint32_t i, float aspect) {
     return s;
 }
 
-/// Exponent n of the Blinn-Phong lobe encoded as B (core/CanvasMaterial.h): the inverse of decodeShininess.
+/// Exponent n of the Blinn-Phong lobe encoded as B (CanvasMaterial.h): the inverse of decodeShininess.
 std::uint8_t encodeShininess(float n) {
     return std::uint8_t(std::clamp(std::lround(std::log2(n) / kMaxShininessLog2 * 255.0f), 1L, 255L));
 }

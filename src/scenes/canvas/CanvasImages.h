@@ -1,8 +1,8 @@
 #pragma once
 // The canvas scene's CPU-side content: a painting (linear colour) and its material map (encoding in
-// core/CanvasMaterial.h), either procedural or loaded from files, always at the render size.
+// CanvasMaterial.h), either procedural or loaded from files, always at the render size.
 
-#include "core/CanvasMaterial.h"
+#include "scenes/canvas/CanvasMaterial.h"
 #include "core/Image.h"
 
 #include <cstdint>
@@ -12,7 +12,7 @@ namespace photopic {
 
 struct CanvasImages {
     ImageF colour;   ///< scene-linear Rec.709 albedo, rows top to bottom
-    Image8 material; ///< same size as colour; see core/CanvasMaterial.h for the channels
+    Image8 material; ///< same size as colour; see CanvasMaterial.h for the channels
 };
 
 struct ProceduralCanvasInfo {

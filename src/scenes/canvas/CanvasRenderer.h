@@ -3,7 +3,7 @@
 // directly): uploads a canvas, builds the tile occupancy (which tiles hold material) and tile lists on the
 // GPU, and shades a frame into an RGBA16F scene-linear target either tile by tile or full screen.
 
-#include "core/CanvasMaterial.h"
+#include "scenes/canvas/CanvasMaterial.h"
 #include "gl/GpuTimers.h"
 #include "gl/Objects.h"
 #include "scenes/canvas/CanvasImages.h"

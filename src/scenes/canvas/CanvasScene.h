@@ -12,7 +12,7 @@ namespace photopic {
 /// tiles with material. `photopic scene canvas`.
 struct CanvasSceneSettings {
     std::string colour;   ///< path, default "" (procedural painting): the painting's colour (EXR, HDR, PNG)
-    std::string material; ///< path, default "" (procedural): material PNG (RGBA, see core/CanvasMaterial.h)
+    std::string material; ///< path, default "" (procedural): material PNG (RGBA, see CanvasMaterial.h)
     std::string motion;   ///< path, default "" (scripted tilt): CSV "time_s,pitch,roll,yaw" in radians
     CanvasShading shading = CanvasShading::Tiled; ///< tiled | fullscreen, default tiled
     int tileSize = 256;                           ///< px, [16, 1024], multiple of 16, default 256

@@ -1,5 +1,5 @@
 // Canvas lighting shared by every shading path (tilt-driven lamp, Blinn-Phong, sparkle): the material
-// decoding of core/CanvasMaterial.h and the diffuse term, which is all an unoccupied tile needs. References:
+// decoding of CanvasMaterial.h and the diffuse term, which is all an unoccupied tile needs. References:
 // J. F. Blinn, "Models of Light Reflection for Computer Synthesized Pictures", SIGGRAPH 1977 (the half-vector
 // highlight).
 

@@ -1,4 +1,4 @@
-#include "core/CanvasMaterial.h"
+#include "scenes/canvas/CanvasMaterial.h"
 
 #include "core/Hash.h"
 

@@ -1,6 +1,6 @@
 // The canvas scene's GL-free maths: the tilt's light vector, the motion CSV, tile occupancy, material codes.
 
-#include "core/CanvasMaterial.h"
+#include "scenes/canvas/CanvasMaterial.h"
 #include "core/Motion.h"
 
 #include <glm/geometric.hpp>

@@ -2,7 +2,7 @@
 // the blow-out sign and recover tauDarken / tauBrighten.
 
 #include "core/ExposureController.h"
-#include "core/TransitionAnalysis.h"
+#include "common/TransitionAnalysis.h"
 
 #include <gtest/gtest.h>
 
