@@ -128,8 +128,8 @@ int runCanvasBench(const BenchOptions& options) {
                                                 .occupancy = cs.occupancy,
                                                 .seed = std::uint32_t(cs.seed)});
     try {
-        if (!cs.colour.empty()) {
-            images.colour = loadCanvasColour(cs.colour, width, height);
+        if (!cs.color.empty()) {
+            images.color = loadCanvasColor(cs.color, width, height);
         }
         if (!cs.material.empty()) {
             images.material = loadCanvasMaterial(cs.material, width, height);
@@ -145,7 +145,7 @@ int runCanvasBench(const BenchOptions& options) {
     const auto lighting = [&](int frame) {
         const Attitude a = tilt.at(frame / 30.0);
         return CanvasLighting{.light = canvasLightDirection(a.pitch, a.roll),
-                              .lightColour = glm::vec3(cs.lightIntensity),
+                              .lightColor = glm::vec3(cs.lightIntensity),
                               .ambient = cs.ambient,
                               .specular = cs.specular,
                               .sparkleExposure = cs.sparkleExposure,

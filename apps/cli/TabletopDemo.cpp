@@ -102,8 +102,8 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     for (int i = 0; i < frames; ++i) {
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
         // The scene registers its tokens with the pipeline; exposure follows the player on the GPU.
-        const Texture& colour = scene.render(time, pipeline, sceneValues[std::size_t(i)]);
-        Image8 display = readTexture8(pipeline.execute({.color = &colour}, time));
+        const Texture& color = scene.render(time, pipeline, sceneValues[std::size_t(i)]);
+        Image8 display = readTexture8(pipeline.execute({.color = &color}, time));
         if (i % every == 0) {
             writePng(options.output / fmt::format("frame_{:04d}.png", i / every), display);
         }

@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
     sceneCmd->add_option("--format", scene.format, "frame files: png (display) or exr (scene-referred)")
         ->check(CLI::IsMember({"png", "exr"}));
     sceneCmd->add_flag("--force-ldr", scene.forceLdr, "run the LDR (RGBA8) path");
-    sceneCmd->add_option("--canvas", scene.canvasColour, "canvas scene: the painting's colour image");
+    sceneCmd->add_option("--canvas", scene.canvasColor, "canvas scene: the painting's colour image");
     sceneCmd->add_option("--material", scene.canvasMaterial,
                          "canvas scene: material PNG (RGBA: normal x, y; shininess; glitter mask)");
     sceneCmd->add_option("--motion", scene.motion, "canvas scene: device motion CSV (time_s,pitch,roll,yaw)");

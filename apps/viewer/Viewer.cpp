@@ -333,8 +333,8 @@ int run(const ViewerOptions& options) {
         const FrameTime time{.dt = ui.dt, .frameIndex = frame};
 
         sceneTelemetry.clear();
-        const Texture& colour = scene->render(time, pipeline, sceneTelemetry);
-        const Texture& display = pipeline.execute({.color = &colour}, time);
+        const Texture& color = scene->render(time, pipeline, sceneTelemetry);
+        const Texture& display = pipeline.execute({.color = &color}, time);
 
         if (display.id() != displayFboTexture) {
             displayFbo = Framebuffer(display, 0, "photopic-view display");

@@ -12,11 +12,11 @@ namespace photopic {
 
 namespace {
 
-void store(std::uint8_t* pixel, Rgba8 colour) {
-    pixel[0] = colour.r;
-    pixel[1] = colour.g;
-    pixel[2] = colour.b;
-    pixel[3] = colour.a;
+void store(std::uint8_t* pixel, Rgba8 color) {
+    pixel[0] = color.r;
+    pixel[1] = color.g;
+    pixel[2] = color.b;
+    pixel[3] = color.a;
 }
 
 /// Liang-Barsky: clips the segment to [lo, hi] in both axes; false when nothing is left. Keeps Bresenham's
@@ -105,17 +105,17 @@ std::string fitText(const std::string& text, int maxWidth) {
 
 } // namespace
 
-void fillRect(Image8& dst, int x, int y, int w, int h, Rgba8 colour) {
+void fillRect(Image8& dst, int x, int y, int w, int h, Rgba8 color) {
     const int x0 = std::max(x, 0);
     const int y0 = std::max(y, 0);
     const int x1 = int(std::min<long long>(static_cast<long long>(x) + w, dst.width));
     const int y1 = int(std::min<long long>(static_cast<long long>(y) + h, dst.height));
     for (int yy = y0; yy < y1; ++yy)
         for (int xx = x0; xx < x1; ++xx)
-            store(dst.at(xx, yy), colour);
+            store(dst.at(xx, yy), color);
 }
 
-void drawLine(Image8& dst, int x0, int y0, int x1, int y1, Rgba8 colour, int thickness) {
+void drawLine(Image8& dst, int x0, int y0, int x1, int y1, Rgba8 color, int thickness) {
     thickness = std::clamp(thickness, 1, 3);
     const int offset = (thickness - 1) / 2;
     double fx0 = x0, fy0 = y0, fx1 = x1, fy1 = y1;
@@ -126,7 +126,7 @@ void drawLine(Image8& dst, int x0, int y0, int x1, int y1, Rgba8 colour, int thi
     const int dx = std::abs(bx - ax), sx = ax < bx ? 1 : -1;
     const int dy = -std::abs(by - ay), sy = ay < by ? 1 : -1;
     for (int err = dx + dy;;) {
-        fillRect(dst, ax - offset, ay - offset, thickness, thickness, colour);
+        fillRect(dst, ax - offset, ay - offset, thickness, thickness, color);
         if (ax == bx && ay == by)
             break;
         const int e2 = 2 * err;
@@ -141,11 +141,11 @@ void drawLine(Image8& dst, int x0, int y0, int x1, int y1, Rgba8 colour, int thi
     }
 }
 
-void drawPolyline(Image8& dst, std::span<const Point2i> points, Rgba8 colour, int thickness) {
+void drawPolyline(Image8& dst, std::span<const Point2i> points, Rgba8 color, int thickness) {
     if (points.size() == 1)
-        drawLine(dst, points[0].x, points[0].y, points[0].x, points[0].y, colour, thickness);
+        drawLine(dst, points[0].x, points[0].y, points[0].x, points[0].y, color, thickness);
     for (std::size_t i = 1; i < points.size(); ++i)
-        drawLine(dst, points[i - 1].x, points[i - 1].y, points[i].x, points[i].y, colour, thickness);
+        drawLine(dst, points[i - 1].x, points[i - 1].y, points[i].x, points[i].y, color, thickness);
 }
 
 void blit(Image8& dst, const Image8& src, int x, int y) {
@@ -191,7 +191,7 @@ int textHeight(int scale) {
     return kGlyphHeight * std::max(scale, 1);
 }
 
-void drawText(Image8& dst, int x, int y, std::string_view text, Rgba8 colour, int scale) {
+void drawText(Image8& dst, int x, int y, std::string_view text, Rgba8 color, int scale) {
     scale = std::max(scale, 1);
     for (std::size_t i = 0; i < text.size(); ++i) {
         const Glyph5x7& glyph = glyph5x7(text[i]);
@@ -199,7 +199,7 @@ void drawText(Image8& dst, int x, int y, std::string_view text, Rgba8 colour, in
         for (int row = 0; row < kGlyphHeight; ++row)
             for (int col = 0; col < kGlyphWidth; ++col)
                 if (glyph[std::size_t(row)] >> (kGlyphWidth - 1 - col) & 1)
-                    fillRect(dst, left + col * scale, y + row * scale, scale, scale, colour);
+                    fillRect(dst, left + col * scale, y + row * scale, scale, scale, color);
     }
 }
 
@@ -391,9 +391,9 @@ Image8 plotLines(const std::vector<PlotSeries>& series, int width, int height, s
         std::vector<Point2i> run;
         const auto flush = [&] {
             if (run.size() == 1)
-                fillRect(image, run[0].x - 1, run[0].y - 1, 3, 3, s.colour);
+                fillRect(image, run[0].x - 1, run[0].y - 1, 3, 3, s.color);
             else
-                drawPolyline(image, run, s.colour, 2);
+                drawPolyline(image, run, s.color, 2);
             run.clear();
         };
         for (std::size_t i = 0; i < s.x.size(); ++i) {
@@ -424,7 +424,7 @@ Image8 plotLines(const std::vector<PlotSeries>& series, int width, int height, s
         for (const PlotSeries& s : series) {
             if (s.name.empty())
                 continue;
-            drawLine(image, boxX + 8, entryY + 3, boxX + 24, entryY + 3, s.colour, 2);
+            drawLine(image, boxX + 8, entryY + 3, boxX + 24, entryY + 3, s.color, 2);
             drawText(image, boxX + 30, entryY, s.name, kInk);
             entryY += kRow;
         }

@@ -319,8 +319,8 @@ TEST_F(GlTest, TabletopWalkThroughTheGpuPipeline) {
     std::vector<double> brightness; // mean display value: how bright the frame looks
     for (int i = 0; i < frames; ++i) {
         const FrameTime time{.dt = kDt, .frameIndex = std::uint64_t(i)};
-        const Texture& colour = scene.render(time, pipeline, values[std::size_t(i)]);
-        const Image8 display = readTexture8(pipeline.execute({.color = &colour}, time));
+        const Texture& color = scene.render(time, pipeline, values[std::size_t(i)]);
+        const Image8 display = readTexture8(pipeline.execute({.color = &color}, time));
         double sum = 0.0;
         for (std::size_t p = 0; p < display.rgba.size(); p += 4) {
             sum += display.rgba[p] + display.rgba[p + 1] + display.rgba[p + 2];

@@ -28,8 +28,8 @@ struct Rendered {
 
 Rendered renderFrame(TabletopScene& scene, Pipeline& pipeline, std::uint64_t frame, float fps = kFps) {
     Rendered r;
-    const Texture& colour = scene.render({.dt = 1.0f / fps, .frameIndex = frame}, pipeline, r.telemetry);
-    r.hdr = readTextureF(colour);
+    const Texture& color = scene.render({.dt = 1.0f / fps, .frameIndex = frame}, pipeline, r.telemetry);
+    r.hdr = readTextureF(color);
     return r;
 }
 

@@ -66,19 +66,19 @@ void main() {
     float w1 = 0.125 * karisWeight(topRight);
     float w2 = 0.125 * karisWeight(bottomLeft);
     float w3 = 0.125 * karisWeight(bottomRight);
-    vec3 colour = (centre * wc + topLeft * w0 + topRight * w1 + bottomLeft * w2 + bottomRight * w3) /
+    vec3 color = (centre * wc + topLeft * w0 + topRight * w1 + bottomLeft * w2 + bottomRight * w3) /
                   (wc + w0 + w1 + w2 + w3);
 #else
-    vec3 colour = centre * 0.5 + (topLeft + topRight + bottomLeft + bottomRight) * 0.125;
+    vec3 color = centre * 0.5 + (topLeft + topRight + bottomLeft + bottomRight) * 0.125;
 #endif
 
 #ifdef PREFILTER
     if (uThreshold != 0) {
-        float br = max(colour.r, max(colour.g, colour.b));
+        float br = max(color.r, max(color.g, color.b));
         float rq = clamp(br - uKnee.y, 0.0, uKnee.z);
         rq = rq * rq * uKnee.w;
-        colour *= max(rq, br - uKnee.x) / max(br, 1e-4);
+        color *= max(rq, br - uKnee.x) / max(br, 1e-4);
     }
 #endif
-    oColor = vec4(colour, 1.0);
+    oColor = vec4(color, 1.0);
 }

@@ -64,7 +64,7 @@ std::vector<std::uint8_t> tileOccupancy(const Image8& material, const TileGrid& 
 struct CanvasLighting {
     glm::vec3 light{0, 0,
                     1}; ///< canvasLightDirection(): unit, towards the lamp, canvas frame (z to the viewer)
-    glm::vec3 lightColour{1, 1, 1};
+    glm::vec3 lightColor{1, 1, 1};
     float ambient = 0.25f;        ///< fraction of the lamp reaching the canvas as fill
     float specular = 1.0f;        ///< Blinn-Phong strength ks
     float sparkleExposure = 4.0f; ///< exposure multiplying the sparkle

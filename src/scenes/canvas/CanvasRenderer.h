@@ -61,7 +61,7 @@ private:
     Program mFullscreenProgram;
     Program mTiledSpecularProgram;
     Program mTiledDiffuseProgram;
-    Texture mColour;
+    Texture mColor;
     Texture mMaterial;
     Texture mOutput;
     Buffer mTileLists;

@@ -57,7 +57,7 @@ public:
                                          .at(t);
         const glm::vec3 seedLight = seedLightVector(a.pitch, a.roll);
         const CanvasLighting lighting{.light = canvasLightDirection(a.pitch, a.roll),
-                                      .lightColour = glm::vec3(mSettings.lightIntensity),
+                                      .lightColor = glm::vec3(mSettings.lightIntensity),
                                       .ambient = mSettings.ambient,
                                       .specular = mSettings.specular,
                                       .sparkleExposure = mSettings.sparkleExposure,
@@ -82,7 +82,7 @@ private:
             mRenderer.emplace();
         }
         const auto canvasKey =
-            std::make_tuple(mExtent.width, mExtent.height, mSettings.colour, mSettings.material,
+            std::make_tuple(mExtent.width, mExtent.height, mSettings.color, mSettings.material,
                             mSettings.tileSize, mSettings.occupancy, mSettings.seed);
         try {
             if (mMotionPath != mSettings.motion || (!mMotion && !mSettings.motion.empty())) {
@@ -98,8 +98,8 @@ private:
                                                             .tileSize = mSettings.tileSize,
                                                             .occupancy = mSettings.occupancy,
                                                             .seed = std::uint32_t(mSettings.seed)});
-                if (!mSettings.colour.empty()) {
-                    images.colour = loadCanvasColour(mSettings.colour, mExtent.width, mExtent.height);
+                if (!mSettings.color.empty()) {
+                    images.color = loadCanvasColor(mSettings.color, mExtent.width, mExtent.height);
                 }
                 if (!mSettings.material.empty()) {
                     images.material = loadCanvasMaterial(mSettings.material, mExtent.width, mExtent.height);

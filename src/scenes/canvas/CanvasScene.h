@@ -11,7 +11,7 @@ namespace photopic {
 /// follows pitch and roll, Blinn-Phong highlights from a material map, glitter that sparkles, shading only on
 /// tiles with material. `photopic scene canvas`.
 struct CanvasSceneSettings {
-    std::string colour;   ///< path, default "" (procedural painting): the painting's colour (EXR, HDR, PNG)
+    std::string color;    ///< path, default "" (procedural painting): the painting's colour (EXR, HDR, PNG)
     std::string material; ///< path, default "" (procedural): material PNG (RGBA, see CanvasMaterial.h)
     std::string motion;   ///< path, default "" (scripted tilt): CSV "time_s,pitch,roll,yaw" in radians
     CanvasShading shading = CanvasShading::Tiled; ///< tiled | fullscreen, default tiled
@@ -29,7 +29,7 @@ struct CanvasSceneSettings {
 
     template <class V>
     void visit(V& v) {
-        v.field("colour", colour);
+        v.field("colour", color);
         v.field("material", material);
         v.field("motion", motion);
         v.field("shading", shading, canvasShadingNames());

@@ -33,7 +33,7 @@ void main() {
     if (any(greaterThanEqual(p, size))) {
         return;
     }
-    vec3 base = texelFetch(uColour, p, 0).rgb;
+    vec3 base = texelFetch(uColor, p, 0).rgb;
     uvec4 m = texelFetch(uMaterial, p, 0);
     vec3 n = decodeNormal(m);
     vec3 c = shadeDiffuse(base, n);

@@ -3,11 +3,11 @@
 // J. F. Blinn, "Models of Light Reflection for Computer Synthesized Pictures", SIGGRAPH 1977 (the half-vector
 // highlight).
 
-layout(binding = 0) uniform sampler2D uColour;   // scene-linear albedo
+layout(binding = 0) uniform sampler2D uColor;   // scene-linear albedo
 layout(binding = 1) uniform usampler2D uMaterial; // RGBA8UI: normal xy, shininess code, glitter mask
 
 uniform vec3 uLight;        // unit, towards the lamp, canvas frame (x right, y up, z towards the viewer)
-uniform vec3 uLightColour;  // scene-linear
+uniform vec3 uLightColor;  // scene-linear
 uniform float uAmbient;     // fill light as a fraction of the lamp
 uniform float uSpecular;    // Blinn-Phong strength
 uniform float uSparkleExposure;
@@ -23,7 +23,7 @@ vec3 decodeNormal(uvec4 m) {
 
 // Ambient + Lambert: every pixel gets this, material or not (the impasto normals shape it).
 vec3 shadeDiffuse(vec3 base, vec3 n) {
-    return base * uLightColour * (uAmbient + max(dot(n, uLight), 0.0));
+    return base * uLightColor * (uAmbient + max(dot(n, uLight), 0.0));
 }
 
 // Blinn-Phong (N.H)^n with a per-pixel view vector (the eye sits uViewDistance in front of the canvas, so the
@@ -39,12 +39,12 @@ vec3 shadeSpecular(vec3 n, uvec4 m, ivec2 p, ivec2 size) {
         vec3 position = vec3((vec2(p) + 0.5 - 0.5 * vec2(size)) / float(size.y), 0.0);
         vec3 v = normalize(vec3(0.0, 0.0, uViewDistance) - position);
         vec3 h = normalize(uLight + v);
-        c += uSpecular * pow(max(dot(n, h), 0.0), shininess) * uLightColour;
+        c += uSpecular * pow(max(dot(n, h), 0.0), shininess) * uLightColor;
     }
     if (m.a >= 128u) {
         float sparkle = pow(max(nl, 0.0), uSparkleExponent);
         if (sparkle > uSparkleGate) {
-            c += sparkle * uLightColour * uSparkleExposure;
+            c += sparkle * uLightColor * uSparkleExposure;
         }
     }
     return c;

@@ -216,7 +216,7 @@ const Texture& TabletopScene::render(const FrameTime& time, Pipeline& pipeline,
     // Subjects: every token; the player is controlled and the user's character (the selection rule picks the
     // controlled one first).
     mSubjects.clear();
-    std::vector<float> tokens, tokenColours;
+    std::vector<float> tokens, tokenColors;
     for (const Token& token : kTokens) {
         const glm::vec2 pos = token.id == kPlayerId ? player : token.pos;
         Subject s;
@@ -227,21 +227,21 @@ const Texture& TabletopScene::render(const FrameTime& time, Pipeline& pipeline,
         s.ownCharacter = token.id == kPlayerId;
         mSubjects.push_back(s);
         tokens.insert(tokens.end(), {pos.x, pos.y, kTokenRadius, token.id == kPlayerId ? 1.0f : 0.0f});
-        tokenColours.insert(tokenColours.end(), {token.albedo.r, token.albedo.g, token.albedo.b, 1.0f});
+        tokenColors.insert(tokenColors.end(), {token.albedo.r, token.albedo.g, token.albedo.b, 1.0f});
     }
 
     std::vector<float> walls;
     for (const Rect& r : kWalls) {
         walls.insert(walls.end(), {r.x0, r.y0, r.x1, r.y1});
     }
-    std::vector<float> lightPos, lightColour, lightRoom;
+    std::vector<float> lightPos, lightColor, lightRoom;
     // Warm torch light (~1900 K), normalised to unit luma so torchIntensity is the luma of the irradiance.
     const glm::vec3 warm = glm::vec3(1.0f, 0.56f, 0.22f) / (0.2126f + 0.7152f * 0.56f + 0.0722f * 0.22f);
     for (std::size_t i = 0; i < kTorches.size(); ++i) {
         const Torch& torch = kTorches[i];
         const float k = mSettings.torchIntensity * torchFlicker(int(i), t, mSettings.flicker);
         lightPos.insert(lightPos.end(), {torch.pos.x, torch.pos.y, kTorchCore, kTorchRange});
-        lightColour.insert(lightColour.end(), {warm.r * k, warm.g * k, warm.b * k, kFlameLuminance * k});
+        lightColor.insert(lightColor.end(), {warm.r * k, warm.g * k, warm.b * k, kFlameLuminance * k});
         // A torch lights its room and the inner half of the walls around it.
         lightRoom.insert(lightRoom.end(), {torch.room.x0 - 12.0f, torch.room.y0 - 12.0f,
                                            torch.room.x1 + 12.0f, torch.room.y1 + 12.0f});
@@ -259,11 +259,11 @@ const Texture& TabletopScene::render(const FrameTime& time, Pipeline& pipeline,
     setArray4(mProgram, "uWalls", walls);
     setUniform(mProgram, "uLightCount", int(kTorches.size()));
     setArray4(mProgram, "uLightPos", lightPos);
-    setArray4(mProgram, "uLightColor", lightColour);
+    setArray4(mProgram, "uLightColor", lightColor);
     setArray4(mProgram, "uLightRoom", lightRoom);
     setUniform(mProgram, "uTokenCount", int(kTokens.size()));
     setArray4(mProgram, "uTokens", tokens);
-    setArray4(mProgram, "uTokenColor", tokenColours);
+    setArray4(mProgram, "uTokenColor", tokenColors);
     mProgram.use();
     glBindTextureUnit(0, mMaskTexture.id());
     glBindImageTexture(0, mColor.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);

@@ -130,8 +130,8 @@ void main() {
         if (d < t.z) {
             float rim = smoothstep(t.z - 8.0, t.z - 6.0, d);
             vec3 inner = uTokenColor[i].rgb;
-            vec3 rimColour = t.w > 0.5 ? vec3(0.75, 0.6, 0.2) : vec3(0.6, 0.6, 0.6);
-            albedo = mix(inner, rimColour, rim);
+            vec3 rimColor = t.w > 0.5 ? vec3(0.75, 0.6, 0.2) : vec3(0.6, 0.6, 0.6);
+            albedo = mix(inner, rimColor, rim);
             isWall = false;
         } else if (d < t.z + 10.0) {
             shadow = min(shadow, mix(0.45, 1.0, (d - t.z) / 10.0));
