@@ -5,10 +5,10 @@
 
 #include "Commands.h"
 
+#include "common/Raster.h"
 #include "gl/Context.h"
 #include "gl/TextureIo.h"
 #include "io/ImageIO.h"
-#include "io/Raster.h"
 #include "scenes/tabletop/TabletopScene.h"
 
 #include <fmt/format.h>

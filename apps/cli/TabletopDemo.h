@@ -12,7 +12,8 @@
 
 namespace photopic::cli {
 
-/// measured luma (log2), target, applied (EV) and outdoors (0..1) over time, drawn by io/Raster.h plotLines.
+/// measured luma (log2), target, applied (EV) and outdoors (0..1) over time, drawn by common/Raster.h
+/// plotLines.
 [[nodiscard]] Image8 plotExposureTelemetry(const std::vector<TelemetrySample>& samples, int width,
                                            int height);
 

@@ -1,4 +1,4 @@
-#include "io/Raster.h"
+#include "common/Raster.h"
 
 #include "core/Color.h"
 

@@ -41,7 +41,7 @@ void blit(Image8& dst, const Image8& src, int x, int y);
 void blitScaled(Image8& dst, const Image8& src, int x, int y, int w, int h);
 
 // ---------------------------------------------------------------------------------------------------------------
-// Text: a built-in 5x7 bitmap font (src/io/Font5x7.cpp) for printable ASCII 32..126; other bytes draw as '?'.
+// Text: a built-in 5x7 bitmap font (Font5x7.cpp) for printable ASCII 32..126; other bytes draw as '?'.
 
 inline constexpr int kGlyphWidth = 5;   ///< px, ink columns of a glyph at scale 1
 inline constexpr int kGlyphHeight = 7;  ///< px, rows of a glyph at scale 1
