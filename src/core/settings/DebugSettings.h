@@ -1,5 +1,6 @@
 #pragma once
-// Debug views (DESIGN.md frame order steps 8 and 12): what the pipeline shows instead of, or over, the image.
+// Debug views (scene values before tone mapping, overlays last; docs/architecture.md): what the pipeline
+// shows instead of, or over, the image.
 
 #include "core/settings/Reflect.h"
 
@@ -11,7 +12,7 @@ namespace photopic {
 
 enum class DebugView {
     None,      ///< the normal image
-    Exposure,  ///< false colour of exposed scene values (seed 001 bands; REFERENCES.md "Debug views")
+    Exposure,  ///< false colour of exposed scene values (a band per stop)
     Luma,      ///< exposed Rec.709 luma as grey
     Ev,        ///< stops around middle grey, log2(Y exposure / 0.18), one colour per stop -6..+6
     Metering,  ///< the weight each pixel gets in the metering mode
