@@ -1,4 +1,4 @@
-// Canvas scene (seed 003 §5): GPU time of the tiled shading (specular + sparkle only on the tiles with
+// Canvas scene: GPU time of the tiled shading (specular + sparkle only on the tiles with
 // material, indirect dispatch) against the full-screen shading, at 1920x1080 with 30% of the 256 px tiles
 // occupied. Timed with GL_TIME_ELAPSED queries around each dispatch, after warm-up; the output is checked
 // (the two paths must give the same image, and the tiled path must list 30% of the tiles) before anything is

@@ -84,7 +84,7 @@ CanvasSceneSettings canvasBenchSettings(const SettingsSources& sources) {
             "apply (use --set canvas.KEY=VALUE)");
     }
     CanvasSceneSettings s;
-    s.occupancy = 0.3f; // seed 003's benchmark case: 30% of the tiles hold material
+    s.occupancy = 0.3f; // the benchmark case: 30% of the tiles hold material
     std::vector<SettingsIssue> issues;
     for (const auto& o : sources.overrides) {
         constexpr std::string_view kPrefix = "canvas.";
@@ -106,30 +106,16 @@ struct CanvasPathResult {
     std::vector<double> wallMs; ///< glFinish-bracketed wall time of one frame's shading
 };
 
-/// seed 003 §5: the tiled shading (specular + sparkle only on tiles with material, indirect dispatch) against
-/// the full-screen shading, after checking that both give the same image.
-int runCanvasBench(const BenchOptions& options) {
-    if (options.frames < 1) {
-        throw InputError("--frames must be at least 1");
-    }
-    if (!options.input.empty() || options.forceLdr) {
-        throw InputError("bench --scene canvas renders its own canvas: --input and --force-ldr do not apply");
-    }
-    const CanvasSceneSettings cs = canvasBenchSettings(options.settings);
-    const auto [width, height] = parseSize(options.size, 8);
-
-    HeadlessContext context;
-    if (!detectCapabilities(false).timerQueries) {
-        throw std::runtime_error("this GL implementation has no timer queries; nothing to measure");
-    }
+/// The benchmark's canvas: procedural, or the colour and material files the settings name.
+CanvasImages benchCanvas(const CanvasSceneSettings& cs, int width, int height) {
     CanvasImages images = makeProceduralCanvas({.width = width,
                                                 .height = height,
                                                 .tileSize = cs.tileSize,
                                                 .occupancy = cs.occupancy,
                                                 .seed = std::uint32_t(cs.seed)});
     try {
-        if (!cs.colour.empty()) {
-            images.colour = loadCanvasColour(cs.colour, width, height);
+        if (!cs.color.empty()) {
+            images.color = loadCanvasColor(cs.color, width, height);
         }
         if (!cs.material.empty()) {
             images.material = loadCanvasMaterial(cs.material, width, height);
@@ -137,74 +123,76 @@ int runCanvasBench(const BenchOptions& options) {
     } catch (const IoError& e) {
         throw InputError(e.what());
     }
-    CanvasRenderer renderer;
-    renderer.setCanvas(images, cs.tileSize);
+    return images;
+}
 
+/// The lamp at `frame` of the scripted tilt, at 30 frames per second.
+CanvasLighting benchCanvasLighting(const CanvasSceneSettings& cs, int frame) {
     const ScriptedTilt tilt{
         .period = cs.sweepPeriod, .rollAmplitude = cs.sweepRoll, .pitchAmplitude = cs.sweepPitch};
-    const auto lighting = [&](int frame) {
-        const Attitude a = tilt.at(frame / 30.0);
-        return CanvasLighting{.light = canvasLightDirection(a.pitch, a.roll),
-                              .lightColour = glm::vec3(cs.lightIntensity),
-                              .ambient = cs.ambient,
-                              .specular = cs.specular,
-                              .sparkleExposure = cs.sparkleExposure,
-                              .viewDistance = cs.viewDistance};
-    };
+    const Attitude a = tilt.at(frame / 30.0);
+    return CanvasLighting{.light = canvasLightDirection(a.pitch, a.roll),
+                          .lightColor = glm::vec3(cs.lightIntensity),
+                          .ambient = cs.ambient,
+                          .specular = cs.specular,
+                          .sparkleExposure = cs.sparkleExposure,
+                          .viewDistance = cs.viewDistance};
+}
 
-    // The output check comes first: timing two paths that disagree would compare different work. A frame a
-    // quarter into the sweep, where the highlight and the sparkles are on the canvas.
+/// Largest |difference| between the tiled and the full-screen image of one frame a quarter into the sweep,
+/// where the highlight and the sparkles are on the canvas.
+double canvasPathsDifference(CanvasRenderer& renderer, const CanvasSceneSettings& cs) {
     const int checkFrame = int(std::lround(cs.sweepPeriod * 30.0 / 4.0));
-    const ImageF tiled = readTextureF(renderer.execute(lighting(checkFrame), CanvasShading::Tiled));
-    const ImageF full = readTextureF(renderer.execute(lighting(checkFrame), CanvasShading::Fullscreen));
+    const CanvasLighting lighting = benchCanvasLighting(cs, checkFrame);
+    const ImageF tiled = readTextureF(renderer.execute(lighting, CanvasShading::Tiled));
+    const ImageF full = readTextureF(renderer.execute(lighting, CanvasShading::Fullscreen));
     double maxDiff = 0;
     for (std::size_t i = 0; i < tiled.rgba.size(); ++i) {
         maxDiff = std::max(maxDiff, double(std::abs(tiled.rgba[i] - full.rgba[i])));
     }
-    // Both paths evaluate the same shading function per pixel; anything above half-float rounding is a bug.
-    constexpr double kTolerance = 1.0 / 1024.0;
-    if (!(maxDiff <= kTolerance)) {
-        std::fprintf(stderr,
-                     "photopic: bench --scene canvas: tiled and full-screen shading differ by %g (> %g)\n",
-                     maxDiff, kTolerance);
-        return kFailure;
-    }
+    return maxDiff;
+}
 
-    std::vector<CanvasPathResult> results;
-    for (const CanvasShading shading : {CanvasShading::Tiled, CanvasShading::Fullscreen}) {
-        CanvasPathResult r{.shading = shading};
-        int frame = 0;
-        for (int i = 0; i < options.warmup; ++i) { // shader JIT, first touch of the targets
-            renderer.execute(lighting(frame++), shading);
+/// Warm-up, then GPU timer queries over back-to-back frames, then glFinish-bracketed wall times.
+CanvasPathResult timeCanvasPath(CanvasRenderer& renderer, const CanvasSceneSettings& cs,
+                                CanvasShading shading, const BenchOptions& options) {
+    CanvasPathResult r{.shading = shading};
+    int frame = 0;
+    for (int i = 0; i < options.warmup; ++i) { // shader JIT, first touch of the targets
+        renderer.execute(benchCanvasLighting(cs, frame++), shading);
+    }
+    glFinish();
+    // Timer queries as a frame loop takes them: N-buffered in GpuTimers, harvested when available. The
+    // flush stands in for a swap; the drain at the end collects what is still in flight.
+    GpuTimers timers;
+    for (int i = 0; i < options.frames; ++i) {
+        timers.beginFrame();
+        renderer.execute(benchCanvasLighting(cs, frame++), shading, &timers);
+        timers.endFrame();
+        glFlush();
+    }
+    for (const auto& passes : timers.drain()) {
+        for (const PassTiming& p : passes) {
+            r.gpuMs.push_back(p.gpuMs);
         }
+    }
+    // Wall clock with glFinish on both sides: everything the shading costs, wherever the driver runs it.
+    for (int i = 0; i < options.frames; ++i) {
         glFinish();
-        // Timer queries as a frame loop takes them: N-buffered in GpuTimers, harvested when available. The
-        // flush stands in for a swap; the drain at the end collects what is still in flight.
-        GpuTimers timers;
-        for (int i = 0; i < options.frames; ++i) {
-            timers.beginFrame();
-            renderer.execute(lighting(frame++), shading, &timers);
-            timers.endFrame();
-            glFlush();
-        }
-        for (const auto& passes : timers.drain()) {
-            for (const PassTiming& p : passes) {
-                r.gpuMs.push_back(p.gpuMs);
-            }
-        }
-        // Wall clock with glFinish on both sides: everything the shading costs, wherever the driver runs it.
-        for (int i = 0; i < options.frames; ++i) {
-            glFinish();
-            const auto start = std::chrono::steady_clock::now();
-            renderer.execute(lighting(frame++), shading);
-            glFinish();
-            r.wallMs.push_back(
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-        }
-        results.push_back(std::move(r));
+        const auto start = std::chrono::steady_clock::now();
+        renderer.execute(benchCanvasLighting(cs, frame++), shading);
+        glFinish();
+        r.wallMs.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
+    return r;
+}
 
-    const ContextInfo& info = context.info();
+/// The console report of the canvas benchmark; returns the per-path entries of its JSON.
+nlohmann::json printCanvasBench(const BenchOptions& options, const CanvasSceneSettings& cs,
+                                const CanvasRenderer& renderer, const ContextInfo& info, double maxDiff,
+                                const std::vector<CanvasPathResult>& results) {
+    const auto [width, height] = parseSize(options.size, 8);
     const int total = renderer.grid().count();
     std::printf("photopic bench --scene canvas: %dx%d, %d frames per path after %d warm-up, %s\n", width,
                 height, options.frames, options.warmup, info.renderer.c_str());
@@ -235,6 +223,46 @@ int runCanvasBench(const BenchOptions& options) {
                          {"gpuSamples", r.gpuMs.size()},
                          {"wallSamples", r.wallMs.size()}});
     }
+    return paths;
+}
+
+/// Tile-based lighting's claim: the tiled shading (specular + sparkle only on tiles with material, indirect
+/// dispatch) against the full-screen shading, after checking that both give the same image.
+int runCanvasBench(const BenchOptions& options) {
+    if (options.frames < 1) {
+        throw InputError("--frames must be at least 1");
+    }
+    if (!options.input.empty() || options.forceLdr) {
+        throw InputError("bench --scene canvas renders its own canvas: --input and --force-ldr do not apply");
+    }
+    const CanvasSceneSettings cs = canvasBenchSettings(options.settings);
+    const auto [width, height] = parseSize(options.size, 8);
+
+    HeadlessContext context;
+    if (!detectCapabilities(false).timerQueries) {
+        throw std::runtime_error("this GL implementation has no timer queries; nothing to measure");
+    }
+    CanvasRenderer renderer;
+    renderer.setCanvas(benchCanvas(cs, width, height), cs.tileSize);
+
+    // The output check comes first: timing two paths that disagree would compare different work.
+    const double maxDiff = canvasPathsDifference(renderer, cs);
+    // Both paths evaluate the same shading function per pixel; anything above half-float rounding is a bug.
+    constexpr double kTolerance = 1.0 / 1024.0;
+    if (!(maxDiff <= kTolerance)) {
+        std::fprintf(stderr,
+                     "photopic: bench --scene canvas: tiled and full-screen shading differ by %g (> %g)\n",
+                     maxDiff, kTolerance);
+        return kFailure;
+    }
+
+    std::vector<CanvasPathResult> results;
+    for (const CanvasShading shading : {CanvasShading::Tiled, CanvasShading::Fullscreen}) {
+        results.push_back(timeCanvasPath(renderer, cs, shading, options));
+    }
+
+    const ContextInfo& info = context.info();
+    const nlohmann::json paths = printCanvasBench(options, cs, renderer, info, maxDiff, results);
 
     if (!options.json.empty()) {
         const nlohmann::json doc = {{"scene", "canvas"},
@@ -256,50 +284,29 @@ int runCanvasBench(const BenchOptions& options) {
 
 } // namespace
 
-int runBench(const BenchOptions& options) {
-    if (!options.scene.empty()) {
-        if (options.scene != "canvas") {
-            throw InputError(
-                fmt::format("bench --scene {}: the only scene with a benchmark is 'canvas'", options.scene));
-        }
-        return runCanvasBench(options);
-    }
-    const Settings settings = resolveSettings(options.settings);
-    if (options.frames < 1) {
-        throw InputError("--frames must be at least 1");
-    }
-    ImageF image;
-    if (!options.input.empty()) {
-        try {
-            image = readImage(options.input);
-        } catch (const IoError& e) {
-            throw InputError(e.what());
-        }
-    } else {
+/// The image the pipeline benchmark processes: --input, or a synthetic HDR frame of --size.
+ImageF benchInput(const BenchOptions& options) {
+    if (options.input.empty()) {
         const auto [w, h] = parseSize(options.size, 8);
-        image = makeSyntheticHdr(w, h);
+        return makeSyntheticHdr(w, h);
     }
+    try {
+        return readImage(options.input);
+    } catch (const IoError& e) {
+        throw InputError(e.what());
+    }
+}
 
-    HeadlessContext context;
-    Pipeline pipeline({.settings = settings, .forceLdr = options.forceLdr});
-    if (!pipeline.capabilities().timerQueries) {
-        throw std::runtime_error("this GL implementation has no timer queries; nothing to measure");
-    }
-    pipeline.timers().setSynchronous(options.sync);
-    const Texture input = makeTexture(image, "bench input");
-    std::uint64_t frame = 0;
-    for (int i = 0; i < options.warmup; ++i) {
-        pipeline.execute({.color = &input}, {.frameIndex = frame++});
-        pipeline.timers().drain();
-    }
+/// Per-pass timings over the measured frames, passes in the order they first ran.
+struct PassSamples {
     std::vector<std::string> order;
-    std::map<std::string, std::vector<double>> times;
-    std::map<std::string, std::vector<double>> walls;
-    std::map<std::string, double> bytes;
-    std::vector<double> totals, wallTotals;
-    for (int i = 0; i < options.frames; ++i) {
-        pipeline.execute({.color = &input}, {.frameIndex = frame++});
-        for (const auto& passes : pipeline.timers().drain()) {
+    std::map<std::string, std::vector<double>> times; ///< GPU ms per frame
+    std::map<std::string, std::vector<double>> walls; ///< wall ms per frame, where measured (--sync)
+    std::map<std::string, double> bytes;              ///< bytes moved per frame
+    std::vector<double> totals, wallTotals;           ///< per-frame sums
+
+    void add(const std::vector<std::vector<PassTiming>>& frames) {
+        for (const auto& passes : frames) {
             double total = 0, wallTotal = 0;
             for (const PassTiming& p : passes) {
                 if (!times.contains(p.name)) {
@@ -317,6 +324,80 @@ int runBench(const BenchOptions& options) {
             wallTotals.push_back(wallTotal);
         }
     }
+};
+
+struct PassTable {
+    nlohmann::json passes;
+    double totalBytes = 0, totalMs = 0, totalWallMs = 0;
+};
+
+/// The per-pass table on stdout: median GPU time, bytes moved, bandwidth (and wall time with --sync).
+PassTable printPassTable(const BenchOptions& options, PassSamples& samples) {
+    std::printf("%-36s %12s %12s %10s%s\n", "pass", "median ms", "MB moved", "GB/s",
+                options.sync ? "      wall ms" : "");
+    PassTable table{.passes = nlohmann::json::array()};
+    double& totalBytes = table.totalBytes;
+    for (const auto& name : samples.order) {
+        const double ms = median(samples.times[name]);
+        const double b = samples.bytes[name];
+        const double gbps = ms > 0 ? b / (ms * 1e6) : 0.0;
+        totalBytes += b;
+        nlohmann::json row = {{"name", name},
+                              {"medianGpuMs", ms},
+                              {"bytesMoved", b},
+                              {"gbPerSecond", gbps},
+                              {"samples", samples.times[name].size()}};
+        if (options.sync) {
+            const double wall = median(samples.walls[name]);
+            std::printf("%-36s %12.3f %12.2f %10.2f %12.3f\n", name.c_str(), ms, b / 1e6, gbps, wall);
+            row["medianWallMs"] = wall;
+        } else {
+            std::printf("%-36s %12.3f %12.2f %10.2f\n", name.c_str(), ms, b / 1e6, gbps);
+        }
+        table.passes.push_back(row);
+    }
+    const double totalMs = table.totalMs = median(samples.totals);
+    const double totalWallMs = table.totalWallMs = median(samples.wallTotals);
+    std::printf("%-36s %12.3f %12.2f %10.2f", "total (median of frame sums)", totalMs, totalBytes / 1e6,
+                totalMs > 0 ? totalBytes / (totalMs * 1e6) : 0.0);
+    if (options.sync) {
+        std::printf(" %12.3f", totalWallMs);
+    }
+    std::printf("\n");
+    return table;
+}
+
+int runBench(const BenchOptions& options) {
+    if (!options.scene.empty()) {
+        if (options.scene != "canvas") {
+            throw InputError(
+                fmt::format("bench --scene {}: the only scene with a benchmark is 'canvas'", options.scene));
+        }
+        return runCanvasBench(options);
+    }
+    const Settings settings = resolveSettings(options.settings);
+    if (options.frames < 1) {
+        throw InputError("--frames must be at least 1");
+    }
+    const ImageF image = benchInput(options);
+
+    HeadlessContext context;
+    Pipeline pipeline({.settings = settings, .forceLdr = options.forceLdr});
+    if (!pipeline.capabilities().timerQueries) {
+        throw std::runtime_error("this GL implementation has no timer queries; nothing to measure");
+    }
+    pipeline.timers().setSynchronous(options.sync);
+    const Texture input = makeTexture(image, "bench input");
+    std::uint64_t frame = 0;
+    for (int i = 0; i < options.warmup; ++i) {
+        pipeline.execute({.color = &input}, {.frameIndex = frame++});
+        pipeline.timers().drain();
+    }
+    PassSamples samples;
+    for (int i = 0; i < options.frames; ++i) {
+        pipeline.execute({.color = &input}, {.frameIndex = frame++});
+        samples.add(pipeline.timers().drain());
+    }
 
     const PipelineStatus t = pipeline.status();
     const ContextInfo& info = context.info();
@@ -333,37 +414,9 @@ int runBench(const BenchOptions& options) {
                     "timestamps and into a later pass's: run with --sync for per-pass wall times\n",
                     info.renderer.c_str());
     }
-    std::printf("%-36s %12s %12s %10s%s\n", "pass", "median ms", "MB moved", "GB/s",
-                options.sync ? "      wall ms" : "");
-    nlohmann::json passesJson = nlohmann::json::array();
-    double totalBytes = 0;
-    for (const auto& name : order) {
-        const double ms = median(times[name]);
-        const double b = bytes[name];
-        const double gbps = ms > 0 ? b / (ms * 1e6) : 0.0;
-        totalBytes += b;
-        nlohmann::json row = {{"name", name},
-                              {"medianGpuMs", ms},
-                              {"bytesMoved", b},
-                              {"gbPerSecond", gbps},
-                              {"samples", times[name].size()}};
-        if (options.sync) {
-            const double wall = median(walls[name]);
-            std::printf("%-36s %12.3f %12.2f %10.2f %12.3f\n", name.c_str(), ms, b / 1e6, gbps, wall);
-            row["medianWallMs"] = wall;
-        } else {
-            std::printf("%-36s %12.3f %12.2f %10.2f\n", name.c_str(), ms, b / 1e6, gbps);
-        }
-        passesJson.push_back(row);
-    }
-    const double totalMs = median(totals);
-    const double totalWallMs = median(wallTotals);
-    std::printf("%-36s %12.3f %12.2f %10.2f", "total (median of frame sums)", totalMs, totalBytes / 1e6,
-                totalMs > 0 ? totalBytes / (totalMs * 1e6) : 0.0);
-    if (options.sync) {
-        std::printf(" %12.3f", totalWallMs);
-    }
-    std::printf("\n");
+    const PassTable table = printPassTable(options, samples);
+    const nlohmann::json& passesJson = table.passes;
+    const double totalBytes = table.totalBytes, totalMs = table.totalMs, totalWallMs = table.totalWallMs;
 
     if (!options.json.empty()) {
         nlohmann::json doc = {

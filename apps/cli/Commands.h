@@ -51,7 +51,7 @@ struct SceneOptions {
     std::string format = "png";   ///< frames as png (display) or exr (scene-referred)
     SettingsSources settings; ///< --set NAME.key=value goes to the scene, other paths to the post settings
     bool forceLdr = false;
-    std::string canvasColour;   ///< --canvas FILE: canvas scene only, = --set canvas.colour=FILE
+    std::string canvasColor;    ///< --canvas FILE: canvas scene only, = --set canvas.colour=FILE
     std::string canvasMaterial; ///< --material FILE: canvas scene only, = --set canvas.material=FILE
     std::string motion;         ///< --motion FILE.csv: canvas scene only, = --set canvas.motion=FILE
     std::string truth;          ///< --truth KIND|all: testbed scene only, write ray-traced references instead

@@ -3,11 +3,11 @@
 
 #include "Commands.h"
 
+#include "common/Raster.h"
 #include "core/Metering.h"
 #include "core/ToneCurves.h"
 #include "gl/Context.h"
 #include "io/ImageIO.h"
-#include "io/Raster.h"
 #include "pipeline/Pipeline.h"
 
 #include <fmt/format.h>

@@ -172,7 +172,7 @@ int runScene(const SceneOptions& options) {
 
     // The canvas scene's file flags are shorthands for its settings, applied before the --set overrides.
     std::vector<std::string> overrides;
-    for (const auto& [flag, key, value] : {std::tuple{"--canvas", "colour", options.canvasColour},
+    for (const auto& [flag, key, value] : {std::tuple{"--canvas", "colour", options.canvasColor},
                                            std::tuple{"--material", "material", options.canvasMaterial},
                                            std::tuple{"--motion", "motion", options.motion}}) {
         if (!value.empty()) {

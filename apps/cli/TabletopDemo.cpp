@@ -1,14 +1,14 @@
 // `photopic demo`: the tabletop walk through the GPU pipeline, exposure driven by `subject` metering (the
-// pipeline's probe under the player token). Seed 000's eye lag, made visible.
+// pipeline's probe under the player token). The eye's lag, made visible.
 
 #include "TabletopDemo.h"
 
 #include "Commands.h"
 
+#include "common/Raster.h"
 #include "gl/Context.h"
 #include "gl/TextureIo.h"
 #include "io/ImageIO.h"
-#include "io/Raster.h"
 #include "scenes/tabletop/TabletopScene.h"
 
 #include <fmt/format.h>
@@ -87,7 +87,7 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     }
     HeadlessContext context;
     TabletopScene scene;
-    const Settings settings = scene.defaultSettings(); // subject metering, seed 000's constants
+    const Settings settings = scene.defaultSettings(); // subject metering, the eye-lag defaults
     const AutoExposureSettings& ae = settings.autoExposure;
     Pipeline pipeline({.settings = settings, .keepTelemetryHistory = true});
     scene.resize({options.width, options.height});

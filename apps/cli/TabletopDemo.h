@@ -1,10 +1,10 @@
 #pragma once
-// `photopic demo` (DESIGN.md: the tabletop is the main demo; seed 000): the tabletop walk through the GPU
+// `photopic demo` (the main demo): the tabletop walk through the GPU
 // pipeline with `subject` metering -- the pipeline probes the tokens and exposure follows the light under the
 // player -- then telemetry -> plot, key frames, an MP4 when ffmpeg is there, and a summary per transition.
 
 #include "core/Image.h"
-#include "core/TransitionAnalysis.h"
+#include "common/TransitionAnalysis.h"
 
 #include <cstddef>
 #include <filesystem>
@@ -12,7 +12,8 @@
 
 namespace photopic::cli {
 
-/// measured luma (log2), target, applied (EV) and outdoors (0..1) over time, drawn by io/Raster.h plotLines.
+/// measured luma (log2), target, applied (EV) and outdoors (0..1) over time, drawn by common/Raster.h
+/// plotLines.
 [[nodiscard]] Image8 plotExposureTelemetry(const std::vector<TelemetrySample>& samples, int width,
                                            int height);
 

@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
     sceneCmd->add_option("--format", scene.format, "frame files: png (display) or exr (scene-referred)")
         ->check(CLI::IsMember({"png", "exr"}));
     sceneCmd->add_flag("--force-ldr", scene.forceLdr, "run the LDR (RGBA8) path");
-    sceneCmd->add_option("--canvas", scene.canvasColour, "canvas scene: the painting's colour image");
+    sceneCmd->add_option("--canvas", scene.canvasColor, "canvas scene: the painting's colour image");
     sceneCmd->add_option("--material", scene.canvasMaterial,
                          "canvas scene: material PNG (RGBA: normal x, y; shininess; glitter mask)");
     sceneCmd->add_option("--motion", scene.motion, "canvas scene: device motion CSV (time_s,pitch,roll,yaw)");
@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
     std::filesystem::path demoData; // empty: findDataDir() looks it up
     std::string demoSize = "320x180";
     auto* demo = app.add_subcommand(
-        "demo", "the main demo: the tabletop walk (seed 000's eye adaptation) into out/demo (or -o DIR)");
+        "demo", "the main demo: the tabletop walk (eye adaptation) into out/demo (or -o DIR)");
     demo->add_option("-o,--output", walk.output, "output folder");
     demo->add_option("--size", demoSize, "WIDTHxHEIGHT")->capture_default_str();
     demo->add_option("--fps", walk.fps, "frame rate")->check(CLI::Range(1.0f, 240.0f))->capture_default_str();

@@ -92,12 +92,12 @@ void row(const char* name, const std::string& value) {
 }
 
 bool evSlider(const char* label, float& ev) {
-    // Shown as EV with the multiplier beside it: seed 000 states the bounds as multipliers (0.25 .. 4).
+    // Shown as EV with the multiplier beside it: users think of the bounds as multipliers (0.25 .. 4).
     const std::string format = fmt::format("%.2f EV (x{:.3g})", std::exp2(ev));
     return ImGui::SliderFloat(label, &ev, -8.0f, 8.0f, format.c_str(), ImGuiSliderFlags_AlwaysClamp);
 }
 
-/// Seed 000's "Dynamic Exposure" folder: the adaptation bounds and timing.
+/// The "Dynamic Exposure" folder: the adaptation bounds and timing.
 bool dynamicExposurePanel(Settings& s) {
     bool changed = false;
     AutoExposureSettings& ae = s.autoExposure;
@@ -133,7 +133,7 @@ const char* sourceName(SubjectSource source) {
     return "none";
 }
 
-/// Seed 000's "Debug (Selected Token)": read from the context API, which never waits on the GPU (probe
+/// "Debug (Selected Token)": read from the context API, which never waits on the GPU (probe
 /// results are a frame or more old), so drawing it cannot stall the frame.
 void debugPanel(const Pipeline& pipeline) {
     const SubjectTracker& tracker = pipeline.subjects();

@@ -1,6 +1,6 @@
 #pragma once
 // photopic-view: a built-in scene through the pipeline in a GLFW window, with Dear ImGui panels that tune
-// every setting live (DESIGN.md "apps/viewer"), seed 000's Dynamic Exposure controls and its read-only
+// every setting live, the Dynamic Exposure controls (adaptation bounds and timing) and a read-only
 // debug readout of the selected subject.
 
 #include <cstdint>

@@ -1,9 +1,10 @@
 #pragma once
 // CPU side of the bloom pass (passes/bloom/): the soft-knee constants the prefilter shader needs and the
-// chain's shape, computed and tested here (STYLE.md).
+// chain's shape, computed and tested here, without a GPU.
 //
 // Reference: J. Jimenez, "Next Generation Post Processing in Call of Duty: Advanced Warfare", SIGGRAPH 2014
-// (13-tap downsample, Karis average, tent upsample); the soft-knee threshold as in REFERENCES.md "Bloom".
+// (13-tap downsample, Karis average, tent upsample); the quadratic soft-knee threshold of
+// Unity's and Bevy's bloom prefilter.
 
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>

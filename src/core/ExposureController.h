@@ -2,9 +2,9 @@
 // Auto exposure on the CPU: metered luminance -> target EV -> adaptation over time, all in log2 space.
 // The GPU adaptation shader mirrors these functions line for line (float32; exp, exp2, log2, min, max only),
 // and a test holds the two within 1e-3 EV over scripted sequences.
-// DESIGN.md "Exposure"; REFERENCES.md "Exposure"; seed 000 (eye lag), seed 002 (speed form).
+// Three adaptation models: an exponential eye lag per direction, a speed form, and Unreal's hybrid.
 //
-// Target (DESIGN.md; seed 000 for key 0.18 and Lmin = 1e-4), with clamp(a, lo, hi) = min(max(a, lo), hi):
+// Target (key 0.18 = mid grey; Lmin = 1e-4 keeps black finite), with clamp(a, lo, hi) = min(max(a, lo), hi):
 //   x      = log2(L > Lmin ? L : Lmin)
 //   target = clamp(log2(keyValue) - x + compensationEV + curve(x), minEV, maxEV)
 //   curve(x): through [x, EV] points, y0 + (y1 - y0) * ((x - x0) / (x1 - x0)) on the segment holding x
@@ -16,9 +16,9 @@
 //               adapting and |gap| < 0.1 deadbandEV -> not adapting (then applied stays put).
 //   The rate follows the direction: gap > 0 (exposure rises; the scene got darker) uses tauBrighten or
 //   speedDown, otherwise tauDarken or speedUp.
-//   exponential (seed 000): alpha = clamp(1 - exp(-h / max(tau, 1e-6)), 0, 1); applied += gap * alpha
-//   speed (seed 002):       alpha = clamp(1 - exp(-speed * h), 0, 1);          applied += gap * alpha
-//   hybrid (Unreal's eye adaptation; REFERENCES.md "Hybrid adaptation"): s = max(speed, 1e-6) EV/s,
+//   exponential:            alpha = clamp(1 - exp(-h / max(tau, 1e-6)), 0, 1); applied += gap * alpha
+//   speed:                  alpha = clamp(1 - exp(-speed * h), 0, 1);          applied += gap * alpha
+//   hybrid (Unreal's eye adaptation): s = max(speed, 1e-6) EV/s,
 //     D = max(transitionEV, 1e-6), k = s / D (the exponential's slope k D equals s at |gap| = D), g = |gap|;
 //     the new distance r is the exact solution over h, also when h crosses from linear into exponential:
 //       g > D:  tl = (g - D) / s;  r = h <= tl ? g - s h : D exp(-k (h - tl))
@@ -34,7 +34,8 @@
 
 namespace photopic {
 
-/// Lmin of the target formula: luminance is floored here before log2 (seed 000's 1e-4).
+/// Lmin of the target formula: luminance is floored here before log2, so black meters as very dark but
+/// finite.
 inline constexpr float kExposureMinLuminance = 1e-4f;
 /// Hysteresis: once adapting, keep going until |gap| < kDeadbandExitFraction * deadbandEV.
 inline constexpr float kDeadbandExitFraction = 0.1f;

@@ -1,6 +1,6 @@
 #pragma once
 // One log for the library: a sink the host may replace (default: stderr), and warnOnce for degradations that
-// must be visible but not repeated every frame (DESIGN.md: "logged once").
+// must be visible but not repeated every frame (a missing capability is logged once, never silent).
 
 #include <fmt/format.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 // CPU reference metering: the luminance that drives auto exposure, measured on the sanitised HDR image before
-// exposure is applied (DESIGN.md frame order step 4: no feedback loop). The GPU metering passes mirror these
-// functions; the GL tests compare the two on small images.
+// exposure is applied (so exposure never feeds back into its own measurement). The GPU metering passes mirror
+// these functions; the GL tests compare the two on small images.
 //
 // Conventions a shader must copy exactly:
 //  - Luminance: Rec.709 luma of linear RGB (ITU-R BT.709-6), 0.2126 r + 0.7152 g + 0.0722 b (core/Color.h).
@@ -15,8 +15,8 @@
 //  - Per-pixel values are float32 as in GLSL; the CPU sums them in double because it sums serially (a GPU
 //    tree reduction in float lands close to the exact sum; a serial float sum over 10^6 pixels does not).
 //
-// Histogram: A. Tardif, "Automatic Exposure Using a Luminance Histogram" (2019), as in REFERENCES.md
-// "Exposure". 256 bins. Bin 0 holds L below 2^log2Min and every non-positive L; it counts (those are the
+// Histogram: A. Tardif, "Automatic Exposure Using a Luminance Histogram" (2019).
+// 256 bins. Bin 0 holds L below 2^log2Min and every non-positive L; it counts (those are the
 // darkest pixels of the percentile window). Otherwise bin = int(1 + 254 * saturate((log2 L - log2Min) /
 // (log2Max - log2Min))): bins 1..254 split the range evenly and bin 255 holds L >= 2^log2Max. Non-finite L
 // is in no bin. Bin b's centre is log2Min + (b - 0.5) * (log2Max - log2Min) / 254 for every b (bin 0 half a

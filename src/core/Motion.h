@@ -1,6 +1,6 @@
 #pragma once
-// Device motion for the canvas scene (seed 003): pitch/roll/yaw samples from a CSV file or a built-in
-// scripted tilt, interpolated by frame time, and seed 003's light vector. No GL here, so all of it is
+// Device motion for the canvas scene: pitch/roll/yaw samples from a CSV file or a built-in
+// scripted tilt, interpolated by frame time, and the light vector it gives. No GL here, so all of it is
 // unit-tested.
 
 #include <glm/vec3.hpp>
@@ -18,7 +18,7 @@ namespace photopic {
 struct Attitude {
     double pitch = 0; ///< rad; positive moves the lamp's highlight up the image
     double roll = 0;  ///< rad; positive moves the lamp's highlight right
-    double yaw = 0;   ///< rad, carried to telemetry; seed 003's light vector does not use it
+    double yaw = 0;   ///< rad, carried to telemetry; the light vector does not use it
 };
 
 struct MotionSample {
@@ -67,8 +67,8 @@ struct ScriptedTilt {
     [[nodiscard]] Attitude at(double time) const;
 };
 
-/// Seed 003 §2.1, verbatim: normalize(sin(roll), sin(pitch), -cos(pitch) cos(roll)) -- "the lamp over the
-/// user's shoulder". The frame is the seed's (Metal) canvas frame: x right, y up, z into the screen, so the
+/// The tilt-to-lamp rule: normalize(sin(roll), sin(pitch), -cos(pitch) cos(roll)) -- "the lamp over the
+/// user's shoulder". The frame is a Metal-style canvas frame: x right, y up, z into the screen, so the
 /// canvas faces the viewer along -z and the vector points from the canvas towards the lamp. Level -> (0, 0,
 /// -1).
 glm::vec3 seedLightVector(double pitch, double roll);

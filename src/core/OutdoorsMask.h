@@ -1,8 +1,8 @@
 #pragma once
-// The outdoors (roof) mask on the CPU, seed 000's "_Outdoors": 8-bit, 255 = open sky, 0 = under a roof,
+// The outdoors (roof) mask on the CPU: 8-bit, 255 = open sky, 0 = under a roof,
 // queried bilinearly at a world position for "is this subject outdoors?" without touching the GPU.
 //
-// Coordinate contract (seed 000, "Outdoors Detection"; every caller goes through worldToMaskUv):
+// Coordinate contract (every caller goes through worldToMaskUv):
 //   world: x right, y DOWN (map / Foundry pixels); the scene rect is [x, x + width) x [y, y + height).
 //   mask UV: u = (wx - rect.x) / rect.width, v = 1 - (wy - rect.y) / rect.height   (V flipped).
 //   The mask is stored the way a GL texture is: row 0 at v = 0, i.e. the BOTTOM of the map (its largest world
@@ -42,7 +42,7 @@ public:
 
     /// Bilinear outdoors value in [0, 1] at mask UV (v up). 0 when the mask is empty; NaN UV reads as 0.5.
     [[nodiscard]] float sampleUv(glm::vec2 uv) const noexcept;
-    /// Bilinear outdoors value in [0, 1] at a world position (seed 000's getOutdoorsAtWorld).
+    /// Bilinear outdoors value in [0, 1] at a world position.
     [[nodiscard]] float atWorld(float x, float y) const noexcept {
         return sampleUv(worldToMaskUv(mRect, {x, y}));
     }

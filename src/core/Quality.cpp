@@ -25,7 +25,7 @@ QualityTier qualityTier(Quality quality) noexcept {
     case Quality::Legacy:
         t.hdrPath = false;
         t.bloom = false;
-        t.glow = true; // seed 003: "bloom skipped or replaced by a simplest glow without blur"
+        t.glow = true; // highlights still glow on the cheapest tier, without the blur chain
         t.bloomMips = 0;
         t.lensFlare = false;
         t.chromaticAberration = false;

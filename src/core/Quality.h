@@ -1,5 +1,5 @@
 #pragma once
-// The quality tiers (seed 003: "Ultra/Pro: full multi-pass bloom; Legacy: bloom skipped or a simple glow"):
+// The quality tiers (high tiers run the multi-pass bloom, the legacy tier only a cheap glow):
 // what each tier runs and at what size. One table, tested in tests/core, read by the pipeline.
 
 #include "core/settings/QualitySettings.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Subjects: what the eye follows (seed 000, "Dynamic Exposure"; DESIGN.md "Subjects"). GL-free: the selection
+// Subjects: what the eye follows (a token or character whose light drives exposure). GL-free: the selection
 // rule, the probe schedule, the multi-tap probe on the CPU (the reference the GPU probe copies), the deadband
 // on the measured luma, outdoors coupling and the per-subject context that game logic and UI read.
 //
@@ -12,7 +12,7 @@
 //   tracker.subjectContext(), contextForSubject(id), outdoorsAtWorld(x, y)
 //
 // Screen UV is image UV as in core/Metering.h: u right, v DOWN, (0, 0) = top-left. A host that projects to GL
-// NDC (seed 000: v = ndc.y * 0.5 + 0.5, v up) hands the library v = 0.5 - 0.5 * ndc.y.
+// NDC (where v = ndc.y * 0.5 + 0.5 runs up) hands the library v = 0.5 - 0.5 * ndc.y.
 
 #include "core/Image.h"
 #include "core/Metering.h"
@@ -44,7 +44,7 @@ struct Subject {
     bool ownCharacter = false;     ///< the user's own character (Foundry: game.user.character's token)
 };
 
-/// Where the subject of the view came from (seed 000's rule, in order).
+/// Where the subject of the view came from (the selection rule's cases, in order).
 enum class SubjectSource { None, Controlled, OwnCharacter, Center };
 
 struct SubjectSelection {
@@ -52,8 +52,8 @@ struct SubjectSelection {
     std::size_t index = 0; ///< into the subjects, for Controlled and OwnCharacter
 };
 
-/// Seed 000: the first controlled subject, else the first that is the user's own character, else the screen
-/// centre when `fallback` is center, else none.
+/// The eye is the user's: the first controlled subject, else the first that is the user's own character, else
+/// the screen centre when `fallback` is center, else none.
 [[nodiscard]] SubjectSelection selectSubject(std::span<const Subject> subjects,
                                              SubjectFallback fallback) noexcept;
 
@@ -72,13 +72,13 @@ static_assert(kProbeTapCount <= int(kSpotTaps.size()));
 [[nodiscard]] TexelCoord probeTapTexel(glm::vec2 uv, int tap, float radius, int width, int height) noexcept;
 
 /// The CPU reference probe: the ARITHMETIC mean of the Rec.709 luma at the first `taps` taps (1, 5 or 9;
-/// other counts are clamped to 1..9). Seed 000: "Output average luminance". A tap whose luma is not finite
-/// or is negative counts as 0 (the pipeline sanitises its input, so this only guards the CPU path).
-/// 0 for an empty image or a NaN UV.
+/// other counts are clamped to 1..9). Averaging linear light keeps it a luminance. A tap whose luma is not
+/// finite or is negative counts as 0 (the pipeline sanitises its input, so this only guards the CPU path). 0
+/// for an empty image or a NaN UV.
 [[nodiscard]] float probeImage(const ImageF& image, glm::vec2 uv, int taps, float radius) noexcept;
 
 /// Probes due this frame (ProbeScheduler) for `probe.hz`, counted in frame time: the caller's dt, never a
-/// clock (seed 000's TimeManager rule). The first advance() is due; then one is due each time the frame
+/// clock, so replays are deterministic. The first advance() is due; then one is due each time the frame
 /// time accumulated since the last due one reaches 1 / hz (within 1e-4 of a period, so float dt that sums
 /// to the period counts: hz = 5 at dt = 1/30 is due every 6th frame exactly). The remainder carries over;
 /// after a long frame at most one probe is due (no bursts to catch up).
@@ -104,7 +104,7 @@ private:
 [[nodiscard]] float applyLumaDeadband(float kept, float measured, float deadbandEV) noexcept;
 
 // ---------------------------------------------------------------------------------------------------------------
-// Outdoors coupling (seed 000, optional, default off).
+// Outdoors coupling (optional, default off).
 
 /// Exposure bounds and adaptation speed for an outdoors value t = clamp(outdoors, 0, 1) (NaN -> 0):
 ///   maxEV' = base.maxEV + (min(base.maxEV, c.maxEV) - base.maxEV) * t      (tighter outdoors, never looser)
@@ -116,7 +116,7 @@ private:
                                                            float outdoors);
 
 // ---------------------------------------------------------------------------------------------------------------
-// Per-subject context (seed 000's "shared exposure context API").
+// Per-subject context: what game logic and UI read about each subject.
 
 struct SubjectContext {
     std::uint32_t id = 0;
@@ -124,8 +124,8 @@ struct SubjectContext {
     float outdoors = 0.0f;     ///< 0..1: the subject's own value, else the mask at `world`, else 0
     float measuredLuma = 0.0f; ///< scene-linear luma kept after the deadband; 0 before the first probe
     float targetLog2 = 0.0f;   ///< EV, target exposure for measuredLuma (exposure multiplier = 2^targetLog2)
-    float appliedLog2 = 0.0f;  ///< EV, the view's adapted exposure (one eye per view: seed 000's non-goal
-                               ///< of per-token exposures on screen)
+    float appliedLog2 = 0.0f;  ///< EV, the view's adapted exposure (one eye per view: several
+                               ///< exposures on one screen would conflict)
     glm::vec2 screenUv{0.5f};  ///< image UV this frame (u right, v down)
     float lastProbeAt = -1.0f; ///< s of frame time (SubjectTracker::time()) of the last kept probe; -1: never
     bool moving = false;       ///< faster than probe.moveThreshold this frame
@@ -166,11 +166,11 @@ public:
     /// view's) for every subject.
     void updateExposure(const AutoExposureSettings& autoExposure, float viewAppliedLog2) noexcept;
 
-    /// Seed 000's getContextForToken: this frame's context, nullptr when the id is not registered.
+    /// This frame's context, nullptr when the id is not registered.
     [[nodiscard]] const SubjectContext* contextForSubject(std::uint32_t id) const noexcept;
-    /// Seed 000's getSubjectContext: the subject of the view, nullptr when there is none.
+    /// The subject of the view, nullptr when there is none.
     [[nodiscard]] const SubjectContext* subjectContext() const noexcept;
-    /// Seed 000's getOutdoorsAtWorld: the mask at a world position, 0 without a mask.
+    /// The mask at a world position, 0 without a mask.
     [[nodiscard]] float outdoorsAtWorld(float x, float y) const noexcept;
 
     [[nodiscard]] SubjectSelection selection() const { return mSelection; }

@@ -433,7 +433,7 @@ glm::vec3 agxLogEncode(glm::vec3 x) {
 // slope/offset/power result. Wrensch's listing takes the luma before slope/offset/power instead; with
 // punchy's power 1.35 and saturation 1.4 that makes greys 1.4 v^1.35 - 0.4 v, which falls for v < 0.012 (not
 // monotonic near black), so we keep the CDL's order. Golden's saturation is Wrensch's 0.8; Filament's port
-// (and REFERENCES.md) use 1.3.
+// uses 1.3.
 glm::vec3 agxLook(glm::vec3 val, AgxLook look) {
     glm::vec3 offset{0.0f};
     glm::vec3 slope{1.0f};

@@ -104,19 +104,19 @@ void Buffer::update(const void* data, std::size_t bytes, std::size_t offset) con
     glNamedBufferSubData(id(), GLintptr(offset), GLsizeiptr(bytes), data);
 }
 
-Framebuffer::Framebuffer(const Texture& colour, int level, std::string_view debugName)
-    : mExtent(colour.levelExtent(level)) {
+Framebuffer::Framebuffer(const Texture& color, int level, std::string_view debugName)
+    : mExtent(color.levelExtent(level)) {
     GLuint id = 0;
     glCreateFramebuffers(1, &id);
     mObject = GlObject<detail::FramebufferDeleter>(id);
-    glNamedFramebufferTexture(id, GL_COLOR_ATTACHMENT0, colour.id(), level);
+    glNamedFramebufferTexture(id, GL_COLOR_ATTACHMENT0, color.id(), level);
     label(GL_FRAMEBUFFER, id, debugName);
-    checkComplete(id, debugName, colour.format());
+    checkComplete(id, debugName, color.format());
 }
 
 Framebuffer::Framebuffer(const FramebufferCreateInfo& info) {
-    const Texture* first = info.colour.size() > 0 ? *info.colour.begin() : info.depth;
-    if (first == nullptr || info.colour.size() > 8) {
+    const Texture* first = info.color.size() > 0 ? *info.color.begin() : info.depth;
+    if (first == nullptr || info.color.size() > 8) {
         throw GlError("framebuffer '" + std::string(info.debugName) +
                       "': no attachment, or more than 8 colour");
     }
@@ -126,7 +126,7 @@ Framebuffer::Framebuffer(const FramebufferCreateInfo& info) {
     mObject = GlObject<detail::FramebufferDeleter>(id);
     GLenum drawBuffers[8] = {};
     GLsizei count = 0;
-    for (const Texture* t : info.colour) {
+    for (const Texture* t : info.color) {
         if (t == nullptr || t->levelExtent(info.level) != mExtent) {
             throw GlError("framebuffer '" + std::string(info.debugName) +
                           "': a colour attachment is missing or of another size");

@@ -134,7 +134,7 @@ private:
 /// Attachments of a framebuffer: colour targets in draw-buffer order (MRT) and an optional depth or
 /// depth-stencil texture, all at mip `level` and the same size.
 struct FramebufferCreateInfo {
-    std::initializer_list<const Texture*> colour;
+    std::initializer_list<const Texture*> color;
     const Texture* depth = nullptr; ///< GL_DEPTH_COMPONENT* or GL_DEPTH24_STENCIL8 / GL_DEPTH32F_STENCIL8
     int level = 0;
     std::string_view debugName;
@@ -145,7 +145,7 @@ struct FramebufferCreateInfo {
 class Framebuffer {
 public:
     Framebuffer() = default;
-    Framebuffer(const Texture& colour, int level, std::string_view debugName);
+    Framebuffer(const Texture& color, int level, std::string_view debugName);
     explicit Framebuffer(const FramebufferCreateInfo& info);
     [[nodiscard]] GLuint id() const { return mObject.id(); }
     [[nodiscard]] Extent extent() const { return mExtent; }

@@ -1,8 +1,8 @@
 #pragma once
-// Non-blocking GPU -> CPU readback (seeds 002 and 004): N slots, each a persistently mapped buffer and a
-// fence. The GPU copies into a free slot; the CPU takes the newest slot whose fence has signalled. When
-// nothing new has finished, the caller keeps its last result (seed 004's continuity cache). The frame path
-// never waits.
+// Non-blocking GPU -> CPU readback (a CPU reader never stalls the GPU): N slots, each a persistently mapped
+// buffer and a fence. The GPU copies into a free slot; the CPU takes the newest slot whose fence has
+// signalled. When nothing new has finished, the caller keeps its last result, so a display of it never drops
+// to empty. The frame path never waits.
 
 #include "gl/Objects.h"
 
@@ -54,7 +54,7 @@ public:
     /// sequence).
     std::vector<Result> drain();
 
-    /// Test hook (seed 004's continuity test): while set, a non-blocking poll also needs `ready()` to return
+    /// Test hook (for the continuity test): while set, a non-blocking poll also needs `ready()` to return
     /// true before it takes a signalled slot, so a test can hold results "in flight". drain() ignores it.
     void setReadyOverride(std::function<bool()> ready) { mReadyOverride = std::move(ready); }
 

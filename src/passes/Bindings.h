@@ -1,6 +1,6 @@
 #pragma once
-// Binding indices and GPU struct mirrors shared by C++ and GLSL (STYLE.md: one header for both).
-// The same numbers are injected into every shader as #defines (see bindingDefines()).
+// Binding indices and GPU struct mirrors shared by C++ and GLSL (one header for both, so the two cannot drift
+// apart). The same numbers are injected into every shader as #defines (see bindingDefines()).
 
 #include "gl/ShaderLibrary.h"
 

@@ -30,6 +30,8 @@ std::string_view resourceName(Resource resource) noexcept {
         return "bloom";
     case Resource::LensFlare:
         return "lensFlare";
+    case Resource::TaaDebug:
+        return "taaDebug";
     case Resource::AmbientOcclusion:
         return "ambientOcclusion";
     case Resource::ContactShadows:

@@ -39,6 +39,7 @@ enum class Resource : std::uint8_t {
     ExposureState,    ///< SSBO: GpuExposureState, the exposure every later pass applies
     Bloom,            ///< the bloom chain's result (exposed)
     LensFlare,        ///< the lens flare features (exposed)
+    TaaDebug,         ///< RG8: TAA's history weight and disocclusion, when a debug view shows them
     AmbientOcclusion, ///< lighting stage: visibility for indirect light
     ContactShadows,   ///< lighting stage: visibility for the sun
     DebugColor,       ///< a scene-value debug view (replaces the display image)

@@ -18,6 +18,7 @@ FrameOrder::FrameOrder(const Capabilities& caps, bool keepTelemetryHistory)
         &sanitize,        // color -> sceneColor (NaN/Inf/negatives to 0, below the half maximum)
         &linearDepth,     // depth, camera -> linearDepth
         &cameraMotion,    // linearDepth, camera -> motion (only when the host gives none)
+        &taa,             // sceneColor, motion, exposure (last frame's), linearDepth?, camera? -> sceneColor
         &metering,        // sceneColor -> histogram, metering, meteringMask
         &probes,          // sceneColor, metering -> metering (subject probes; the subject's reading)
         &exposure,        // histogram, metering -> exposure (adaptation; telemetry readback)

@@ -16,6 +16,7 @@
 #include "passes/probe/SubjectContextsPass.h"
 #include "passes/sanitize/SanitizePass.h"
 #include "passes/smaa/SmaaPass.h"
+#include "passes/taa/TaaPass.h"
 #include "passes/tonemap/TonemapPass.h"
 
 #include <span>
@@ -40,6 +41,7 @@ public:
     SanitizePass sanitize;
     LinearDepthPass linearDepth;
     CameraMotionPass cameraMotion;
+    TaaPass taa;
     MeteringPass metering;
     ProbePass probes;
     ExposurePass exposure;

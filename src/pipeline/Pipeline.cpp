@@ -101,8 +101,9 @@ glm::vec2 Pipeline::beginFrame(const FrameTime& time, const Camera* camera) {
     if (camera && camera->cut) {
         reset();
     }
-    // No temporal pass exists yet, so `auto` means no jitter; `on` serves hosts that accumulate frames.
-    const bool jitter = mSettings.temporal.jitter == JitterMode::On;
+    mBeganFrame = true;
+    const JitterMode mode = mSettings.temporal.jitter;
+    const bool jitter = mode == JitterMode::On || (mode == JitterMode::Auto && TaaPass::selected(mSettings));
     mJitter = jitter ? haltonJitter(time.frameIndex, mSettings.temporal.jitterCycle) : glm::vec2(0.0f);
     return mJitter;
 }
@@ -117,6 +118,9 @@ bool Pipeline::bindInputs(const FrameInputs& in) {
     const Extent extent = in.color->extent();
     mResources.bind(Resource::Color, *in.color);
     mResources.bind(Resource::SceneColor, *in.color); // replaced by the sanitised copy on the HDR path
+    // Last frame's exposure until the adaptation pass writes this frame's: passes before metering (TAA)
+    // weight with the exposure the frame will most nearly be shown at.
+    mResources.bind(Resource::ExposureState, mOrder->exposure.state());
 
     const auto optional = [&](Resource r, const char* name, const Texture* t,
                               std::initializer_list<GLenum> formats) {
@@ -220,6 +224,14 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
     if (lighting.ambientOcclusion == nullptr && lighting.contactShadows == nullptr) {
         mResources.pool().beginFrame(); // else the lighting stage began it and its textures are in use
     }
+    if (!mBeganFrame && TaaPass::selected(mSettings)) {
+        try {
+            warnOnce("taa.no-jitter", "TAA is on but the host does not call beginFrame(): its frames are not "
+                                      "jittered, so TAA only filters over time and cannot anti-alias edges");
+        } catch (...) { // logging must not take the frame down
+        }
+    }
+    mBeganFrame = false;
     mOutput = mPostSequencer.run(mOrder->post(), {.resources = kPostOutputs, .firstAvailable = true}, ctx,
                                  mResources);
     mResetExposure = false;

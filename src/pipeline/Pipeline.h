@@ -159,6 +159,7 @@ private:
     bool mResetExposure = true;
     bool mResetHistory = true;
     glm::vec2 mJitter{0.0f};
+    bool mBeganFrame = false; ///< the host called beginFrame() for the frame execute() runs
     LightingOutputs mLighting;
     std::vector<std::string> mInputErrors;
     Texture mInvalid; ///< 1x1 black, returned for a frame without usable colour

@@ -1,8 +1,8 @@
 #pragma once
-// Built-in scenes: procedural, deterministic HDR content that hosts the library through its public API only
-// (DESIGN.md: "A scene is a host of the library"). A scene renders frame N the same way every time, from the
-// caller's FrameTime, into textures it owns, and returns them as the frame's FrameInputs: colour always; a 3D
-// scene adds depth, normals, motion and its camera. The caller hands them to Pipeline::execute as they are.
+// Built-in scenes: procedural, deterministic HDR content that hosts the library through its public API only,
+// as any other host would. A scene renders frame N the same way every time, from the caller's FrameTime, into
+// textures it owns, and returns them as the frame's FrameInputs: colour always; a 3D scene adds depth,
+// normals, motion and its camera. The caller hands them to Pipeline::execute as they are.
 
 #include "core/Settings.h"
 #include "gl/Objects.h"

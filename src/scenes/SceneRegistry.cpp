@@ -16,10 +16,9 @@ const std::vector<SceneInfo>& builtInScenes() {
     static const std::vector<SceneInfo> kScenes = {
         {"gradient", "a drifting HDR gradient with a bright sun disc (smoke test of the scene runner)",
          makeGradientScene},
-        {"canvas", "seed 003: a painted canvas lit by the device's tilt, glitter sparkle, tile-based shading",
+        {"canvas", "a painted canvas lit by the device's tilt, glitter sparkle, tile-based shading",
          makeCanvasScene},
-        {"tabletop",
-         "a battle map: a player token walks from a torch-lit building into the sun and back (seed 000)",
+        {"tabletop", "a battle map: a player token walks from a torch-lit building into the sun and back",
          makeTabletopScene},
         {"testbed",
          "an analytic 3D scene (spheres, boxes, poles, a wire fence, a checker wall, a metal strip, a "

@@ -134,9 +134,9 @@ TEST(AutoExposureSettings, ConstraintsBetweenFields) {
     EXPECT_EQ(ok.autoExposure.compensationCurve.size(), 3u);
 }
 
-TEST(AutoExposureSettings, Seed002KeysStayReadable) {
+TEST(AutoExposureSettings, LegacyKeysStayReadable) {
     Settings settings;
-    // Seed 002's post_effects.json entry, verbatim, in a document without "version".
+    // An older post_effects.json entry, verbatim, in a document without "version".
     const auto issues =
         readSettingsJson(R"({"postEffects": {"autoExposure": )"
                          R"({"enabled": true, "speed": 1.5, "min": 0.1, "max": 10.0, "keyValue": 0.18})"
@@ -150,11 +150,11 @@ TEST(AutoExposureSettings, Seed002KeysStayReadable) {
     EXPECT_FLOAT_EQ(ae.minEV, std::log2(0.1f));
     EXPECT_FLOAT_EQ(ae.maxEV, std::log2(10.0f));
     EXPECT_EQ(ae.keyValue, 0.18f);
-    // A file holding both the seed key and the new one keeps the new one.
+    // A file holding both the old key and the new one keeps the new one.
     Settings both;
     EXPECT_TRUE(readAutoExposure(R"({"min": 0.5, "minEV": -1.5})", both).empty());
     EXPECT_EQ(both.autoExposure.minEV, -1.5f);
-    // The seed's multipliers are checked too.
+    // The old multipliers are checked too.
     expectIssue(R"({"min": 0})", SettingsIssueCode::OutOfRange, "postEffects.autoExposure.min");
     expectIssue(R"({"min": 4, "max": 2})", SettingsIssueCode::Constraint, "postEffects.autoExposure.minEV");
 }

@@ -58,7 +58,7 @@ TEST(Exposure, FirstFrameSnapsToTarget) {
     EXPECT_EQ(s.meteredLuminance, 0.02f);
 }
 
-// Seed 000's eye lag: into the light with tauDarken, back into the dark with tauBrighten; after one time
+// The eye lag: into the light with tauDarken, back into the dark with tauBrighten; after one time
 // constant 1 - 1/e = 63.2% of the gap is covered.
 TEST(Exposure, ExponentialStepCoversOneMinusInverseEAfterOneTimeConstant) {
     const AutoExposureSettings settings = wideSettings();
@@ -300,7 +300,7 @@ TEST(Exposure, ManualEVMultipliesWithAutoExposure) {
 }
 
 TEST(Exposure, TargetIsClampedToMinMaxEV) {
-    AutoExposureSettings settings; // -2 .. +2 EV (seed 000's 0.25 .. 4)
+    AutoExposureSettings settings; // -2 .. +2 EV (multipliers 0.25 .. 4)
     EXPECT_FLOAT_EQ(exposureTargetLog2(settings, 0.18f), 0.0f);
     EXPECT_FLOAT_EQ(exposureTargetLog2(settings, 100.0f), -2.0f);
     EXPECT_FLOAT_EQ(exposureTargetLog2(settings, 1e-6f), 2.0f);

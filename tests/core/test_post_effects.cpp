@@ -1,5 +1,5 @@
 // CPU side of bloom, grading, display effects and quality tiers: the constants the shaders get, and the new
-// settings keys (paths, ranges, seed 002's keys).
+// settings keys (paths, ranges, the common keys of older files).
 
 #include "core/Bloom.h"
 #include "core/ColorGrading.h"
@@ -128,14 +128,14 @@ TEST(Quality, TiersShrinkWorkAndLegacyIsLdr) {
     EXPECT_EQ(qualityName(Quality::Legacy), "legacy");
 }
 
-TEST(PostEffectSettings, Seed002KeysLoad) {
+TEST(PostEffectSettings, LegacyKeysLoad) {
     const char* doc = R"({"postEffects": {
         "bloom": {"enabled": true, "threshold": 1.0, "intensity": 0.5},
         "fxaa": {"enabled": true},
         "vignette": {"enabled": false, "intensity": 0.5, "chromaticAberration": 0.003},
         "colorGrading": {"enabled": false, "contrast": 1.0, "saturation": 1.0, "temperature": 0.0}}})";
     Settings s;
-    // Seed 002's bloom pairs a threshold with an additive intensity: threshold mode.
+    // Older files' bloom pairs a threshold with an additive intensity: threshold mode.
     ASSERT_TRUE(readSettingsJson(R"({"postEffects": {"bloom": {"mode": "threshold"}}})", s).empty());
     const auto issues = readSettingsJson(doc, s);
     ASSERT_TRUE(issues.empty()) << formatSettingsIssues(issues);

@@ -60,7 +60,7 @@ TEST(Settings, PartialDocumentKeepsOtherDefaults) {
     EXPECT_TRUE(s.output.dither);
 }
 
-TEST(Settings, Seed002DocumentWithoutVersionLoads) {
+TEST(Settings, LegacyDocumentWithoutVersionLoads) {
     Settings s;
     const auto issues =
         readSettingsJson(R"({"postEffects": {"tonemapping": {"mode": "aces", "exposure": 1.0}}})", s);

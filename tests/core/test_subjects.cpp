@@ -1,4 +1,4 @@
-// Subjects (seed 000): selection rule, the outdoors mask's V-flip contract, probe throttling in frame time,
+// Subjects: selection rule, the outdoors mask's V-flip contract, probe throttling in frame time,
 // multi-tap probe, luma deadband, outdoors coupling, contexts, and no allocation per frame.
 
 #include "core/ExposureController.h"
@@ -93,7 +93,7 @@ TEST(Subjects, TrackerFollowsTheRuleAndTheCentreFallback) {
     EXPECT_EQ(requests.size(), 2u); // both never probed: probed at once
 }
 
-// ---- outdoors mask: seed 000's coordinate contract
+// ---- outdoors mask: its coordinate contract
 // ------------------------------------------------------------
 
 TEST(OutdoorsMask, WorldToUvFlipsV) {
@@ -397,7 +397,7 @@ TEST(OutdoorsCoupling, TrackerTargetsMatchCoupledSettings) {
 // ---- contexts
 // -------------------------------------------------------------------------------------------------
 
-TEST(SubjectContexts, HoldSeed000FieldsAndKeepProbeHistoryById) {
+TEST(SubjectContexts, HoldContextFieldsAndKeepProbeHistoryById) {
     SubjectSettings settings;
     settings.probe.hz = 5.0f;
     SubjectTracker tracker(settings);

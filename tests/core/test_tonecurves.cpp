@@ -122,7 +122,7 @@ TEST(ToneCurves, HillFitPublishedValues) {
 }
 
 TEST(ToneCurves, AcesGreysMatchPublishedCodeValues) {
-    // sRGB code values of the full RRT + ODT.Academy.sRGB_100nits_dim for Rec.709 greys (REFERENCES.md; the
+    // sRGB code values of the full RRT + ODT.Academy.sRGB_100nits_dim for Rec.709 greys (aces-dev's CTL; the
     // same as OpenColorIO 2.1's built-ins). The brief allows 1e-3; the implementation holds 2e-5.
     struct Row {
         float in;
@@ -143,7 +143,7 @@ TEST(ToneCurves, AcesGreysMatchPublishedCodeValues) {
     }
 }
 
-TEST(ToneCurves, AcesColoursMatchOpenColorIO) {
+TEST(ToneCurves, AcesColorsMatchOpenColorIO) {
     // Oracle: OpenColorIO 2.1.2 (Debian python3-pyopencolorio), a processor made of
     // MatrixTransform(Rec.709 -> XYZ D65)
     // -> inverse BuiltinTransform("UTILITY - ACES-AP0_to_CIE-XYZ-D65_BFD")
@@ -184,10 +184,10 @@ TEST(ToneCurves, AgxCurvePublishedValue) {
 }
 
 TEST(ToneCurves, AgxLooksDiffer) {
-    const glm::vec3 colour{0.5f, 0.3f, 0.1f};
-    const glm::vec3 base = toneMap(ToneMapper::Agx, colour, {.agxLook = AgxLook::Base});
-    const glm::vec3 punchy = toneMap(ToneMapper::Agx, colour, {.agxLook = AgxLook::Punchy});
-    const glm::vec3 golden = toneMap(ToneMapper::Agx, colour, {.agxLook = AgxLook::Golden});
+    const glm::vec3 color{0.5f, 0.3f, 0.1f};
+    const glm::vec3 base = toneMap(ToneMapper::Agx, color, {.agxLook = AgxLook::Base});
+    const glm::vec3 punchy = toneMap(ToneMapper::Agx, color, {.agxLook = AgxLook::Punchy});
+    const glm::vec3 golden = toneMap(ToneMapper::Agx, color, {.agxLook = AgxLook::Golden});
     EXPECT_GT(glm::length(base - punchy), 1e-3f);
     EXPECT_GT(glm::length(base - golden), 1e-3f);
     // Golden's blue slope of 0.5 warms the picture: less blue relative to red than the base look.

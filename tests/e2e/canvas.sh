@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The canvas scene (seed 003): frames and telemetry columns, motion and material files, their errors.
+# The canvas scene: frames and telemetry columns, motion and material files, their errors.
 source "$(dirname "$0")/lib.bash"
 S="$SCRATCH"
 

@@ -4,7 +4,7 @@
 // with tauBrighten; both fitted time constants within 10% of the model. Shared by the CPU-probe and GPU
 // walks.
 
-#include "core/TransitionAnalysis.h"
+#include "common/TransitionAnalysis.h"
 #include "core/settings/AutoExposureSettings.h"
 
 #include <gtest/gtest.h>

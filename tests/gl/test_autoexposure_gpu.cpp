@@ -1,5 +1,5 @@
-// Auto exposure through the whole GPU pipeline: adaptation against the model (DESIGN.md "Exposure"), GPU vs
-// CPU ExposureController over a scripted sequence, histogram metering, non-finite input, and seed 004's three
+// Auto exposure through the whole GPU pipeline: adaptation against the model, GPU vs
+// CPU ExposureController over a scripted sequence, histogram metering, non-finite input, and three
 // readback tests (caching and continuity, auto trigger with auto exposure off, no accumulation).
 
 #include "GlTest.h"
@@ -74,7 +74,7 @@ struct StepCase {
     float from, to;
 };
 
-/// Distance to the target after t seconds from distance g0, per adaptation model (DESIGN.md, REFERENCES.md).
+/// Distance to the target after t seconds from distance g0, per adaptation model (core/ExposureController.h).
 double modelRemaining(const AutoExposureSettings& s, AdaptationMode mode, double g0, bool rising, double t) {
     switch (mode) {
     case AdaptationMode::Exponential:
@@ -293,7 +293,7 @@ TEST_F(GlTest, NonFiniteFramesLeaveTelemetryFinite) {
     }
 }
 
-// Seed 004: test_histogram_caching_and_continuity.
+// The last result stays readable while no new one has arrived, and updates when one does.
 TEST_F(GlTest, TelemetryCachingAndContinuity) {
     Settings s = autoSettings();
     s.debug.view = DebugView::Histogram;
@@ -326,7 +326,7 @@ TEST_F(GlTest, TelemetryCachingAndContinuity) {
     EXPECT_NE(updated.histogram, first.histogram);
 }
 
-// Seed 004: test_histogram_auto_trigger_when_ae_off.
+// The debug histogram is measured even with auto exposure off.
 TEST_F(GlTest, TelemetryHistogramRunsForTheDebugViewWithAutoExposureOff) {
     Settings s;
     s.autoExposure.enabled = false;
@@ -354,7 +354,7 @@ TEST_F(GlTest, TelemetryHistogramRunsForTheDebugViewWithAutoExposureOff) {
     EXPECT_GT(t.maxLuminance, 0.0f);
 }
 
-// Seed 004: test_histogram_cache_no_accumulation.
+// Each frame's histogram starts empty: counts never climb over frames.
 TEST_F(GlTest, TelemetryHistogramDoesNotAccumulate) {
     Settings s = autoSettings();
     s.autoExposure.metering = MeteringMode::Histogram;

@@ -178,7 +178,7 @@ TEST_F(GlTest, GradingMatchesCpuAndReachesTheExrOutput) {
 }
 
 TEST_F(GlTest, LegacyTierGlowsAroundABrightDiscWithoutTheBloomChain) {
-    // Seed 003's legacy tier: no bloom chain, a single cheap glow of the bright parts. A disc of 20 on black:
+    // The legacy tier: no bloom chain, a single cheap glow of the bright parts. A disc of 20 on black:
     // with bloom.enabled the pixels just outside it light up, evenly left/right/up/down; without, they stay
     // 0.
     const int size = 96;

@@ -1,4 +1,4 @@
-// The canvas scene (seed 003) on the GPU: highlights travel with the tilt, glitter sparkles above 1.0 only at
+// The canvas scene on the GPU: highlights travel with the tilt, glitter sparkles above 1.0 only at
 // its peak, the tiled and full-screen paths agree, the tile count, and bad input files.
 
 #include "GlTest.h"
@@ -217,7 +217,7 @@ TEST_F(GlTest, CanvasGpuTileCountMatchesTheCpuOccupancyAndShadingMatchesTheCpuRe
     double worst = 0;
     for (int y = 0; y < 72; ++y) {
         for (int x = 0; x < 96; ++x) {
-            const float* b = images.colour.at(x, y);
+            const float* b = images.color.at(x, y);
             // Texel space is y up: image row y is texel row 71 - y.
             const glm::vec3 cpu = shadeCanvasPixel({b[0], b[1], b[2]}, images.material.at(x, y),
                                                    canvasPosition(float(x), float(71 - y), 96, 72), lighting);
@@ -269,11 +269,11 @@ TEST_F(GlTest, CanvasMalformedMaterialImageNamesTheFile) {
     EXPECT_THROW(loadCanvasMaterial(scratch("missing_material.png"), 16, 16), IoError);
 }
 
-TEST_F(GlTest, CanvasLoadsColourAndMaterialFiles) {
+TEST_F(GlTest, CanvasLoadsColorAndMaterialFiles) {
     // A grey canvas whose material is a glossy left half: only the left tiles hold material.
-    const fs::path colour = scratch("colour.png");
+    const fs::path color = scratch("colour.png");
     const fs::path material = scratch("material.png");
-    writePng(colour, Image8(32, 16, 128));
+    writePng(color, Image8(32, 16, 128));
     Image8 m(32, 16, 0);
     for (int y = 0; y < 16; ++y) {
         for (int x = 0; x < 32; ++x) {
@@ -285,7 +285,7 @@ TEST_F(GlTest, CanvasLoadsColourAndMaterialFiles) {
     }
     writePng(material, m);
     auto scene =
-        canvasScene({64, 32}, {"colour=" + colour.string(), "material=" + material.string(), "tileSize=16"});
+        canvasScene({64, 32}, {"colour=" + color.string(), "material=" + material.string(), "tileSize=16"});
     Pipeline pipeline;
     const Rendered r = renderFrame(*scene, pipeline, 0);
     EXPECT_EQ(r.telemetry[7], 8.0);

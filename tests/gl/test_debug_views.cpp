@@ -34,7 +34,7 @@ Image8 render(DebugView view, const ImageF& image) {
 
 } // namespace
 
-TEST_F(GlTest, ExposureFalseColourBands) {
+TEST_F(GlTest, ExposureFalseColorBands) {
     const Image8 out = render(DebugView::Exposure, bandImage());
     const std::uint8_t expected[4][3] = {{255, 255, 0}, {255, 128, 0}, {255, 0, 255}, {255, 255, 255}};
     const std::uint8_t* below = out.at(5, 1);

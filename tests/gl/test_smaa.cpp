@@ -114,7 +114,7 @@ TEST_F(SmaaTest, TestbedEdgeErrorAgainstSupersampledTruth) {
     testbed::TruthOptions truth = scene.truthOptions(time);
     truth.samples = 16;
     const ImageF ids = testbed::renderTruth(testbed::TruthKind::ObjectId, truth);
-    const ImageF colour = testbed::renderTruth(testbed::TruthKind::Color, truth);
+    const ImageF color = testbed::renderTruth(testbed::TruthKind::Color, truth);
 
     auto render = [&](AntiAliasing aa) {
         Settings s = scene.defaultSettings();
@@ -133,7 +133,7 @@ TEST_F(SmaaTest, TestbedEdgeErrorAgainstSupersampledTruth) {
     truthSettings.bloom.enabled = false;
     truthSettings.output.dither = false;
     truthSettings.autoExposure.enabled = false;
-    const Image8 reference = runImage(colour, truthSettings);
+    const Image8 reference = runImage(color, truthSettings);
 
     auto edgeRmse = [&](const Image8& image) {
         double sum = 0.0;

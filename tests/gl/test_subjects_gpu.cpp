@@ -1,4 +1,4 @@
-// Subjects on the GPU (seed 000, phase 2): the probe pass against core's probeImage, probe throttling in
+// Subjects on the GPU: the probe pass against core's probeImage, probe throttling in
 // frame time, `subject` metering driving exposure in the same frame, the context API after the readback, and
 // the demo's acceptance -- the tabletop walk through the pipeline, judged from its telemetry and its frames.
 
@@ -7,7 +7,7 @@
 
 #include "core/ExposureController.h"
 #include "core/Subjects.h"
-#include "core/TransitionAnalysis.h"
+#include "common/TransitionAnalysis.h"
 #include "gl/ReadbackRing.h"
 #include "gl/TextureIo.h"
 #include "pipeline/Pipeline.h"
@@ -306,7 +306,7 @@ TEST_F(GlTest, OutdoorsCouplingTightensExposureOnTheGpuPath) {
 }
 
 // Issue 5's "Done when", through the GPU pipeline: the tabletop walk at 96x54, 30 fps, 22 s, exposure by
-// subject metering with the scene's defaults (seed 000's constants).
+// subject metering with the scene's defaults (the eye-lag constants).
 TEST_F(GlTest, TabletopWalkThroughTheGpuPipeline) {
     TabletopScene scene;
     const Settings settings = scene.defaultSettings();

@@ -1,13 +1,13 @@
-// The tabletop scene (seed 000's host): deterministic frames, light under the player token outside vs inside,
+// The tabletop scene: deterministic frames, light under the player token outside vs inside,
 // the walk's crossings, and the whole idea on the CPU: probe under the token -> ExposureController -> the
-// blow-out on stepping out and the dark lag on stepping in, with seed 000's time constants.
+// blow-out on stepping out and the dark lag on stepping in, with the eye-lag time constants.
 
 #include "EyeLagChecks.h"
 #include "GlTest.h"
 
 #include "core/ExposureController.h"
 #include "core/Subjects.h"
-#include "core/TransitionAnalysis.h"
+#include "common/TransitionAnalysis.h"
 #include "gl/TextureIo.h"
 #include "scenes/tabletop/TabletopScene.h"
 
@@ -128,12 +128,12 @@ TEST_F(GlTest, TabletopWalkCrossesBothWaysWithinTwentySeconds) {
 }
 
 // The acceptance test in miniature: ~24 s of the walk at 96x54, the light under the token probed on the CPU
-// (SubjectTracker's schedule, probeImage), core's ExposureController with seed 000's defaults.
+// (SubjectTracker's schedule, probeImage), core's ExposureController with its defaults.
 TEST_F(GlTest, TabletopEyeLagOnTheCpu) {
     TabletopScene scene;
     Pipeline pipeline;
     scene.resize({96, 54});
-    AutoExposureSettings ae; // seed 000: key 0.18, -2..+2 EV, tauBrighten 1 s, tauDarken 0.3 s
+    AutoExposureSettings ae; // key 0.18, -2..+2 EV, tauBrighten 1 s, tauDarken 0.3 s
     ae.enabled = true;
     ExposureController controller(ae);
     SubjectSettings subjectSettings = scene.defaultSettings().subjects;

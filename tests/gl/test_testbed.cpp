@@ -146,7 +146,7 @@ TEST_F(TestbedTest, RasterisedColourMatchesTheRayTracersPixelCentreColour) {
         testbed::TruthOptions truth = scene->truthOptions({.dt = kDt, .frameIndex = frame});
         truth.samples = 1;
         const ImageF ids = testbed::renderTruth(testbed::TruthKind::ObjectId, truth);
-        const ImageF colour = testbed::renderTruth(testbed::TruthKind::Color, truth);
+        const ImageF color = testbed::renderTruth(testbed::TruthKind::Color, truth);
         Stat error;
         long within = 0;
         for (int y = 0; y < kHeight; ++y) {
@@ -155,7 +155,7 @@ TEST_F(TestbedTest, RasterisedColourMatchesTheRayTracersPixelCentreColour) {
                     continue;
                 }
                 const glm::vec3 a(r.color.at(x, y)[0], r.color.at(x, y)[1], r.color.at(x, y)[2]);
-                const glm::vec3 b(colour.at(x, y)[0], colour.at(x, y)[1], colour.at(x, y)[2]);
+                const glm::vec3 b(color.at(x, y)[0], color.at(x, y)[1], color.at(x, y)[2]);
                 const double e = double(glm::length(a - b) / std::max(glm::length(b), 1e-3f));
                 error.add(e);
                 within += e <= 5e-3 ? 1 : 0;

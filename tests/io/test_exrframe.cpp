@@ -133,7 +133,7 @@ TEST(ExrFrame, RoundTripsEveryLayerAndAttribute) {
     EXPECT_EQ(a.farClip, w.farClip);
 }
 
-TEST(ExrFrame, ColourOnlyFileHasNoLayersOrCamera) {
+TEST(ExrFrame, ColorOnlyFileHasNoLayersOrCamera) {
     const TempFolder folder;
     ImageF image(4, 3, 0.5f);
     writeExr(folder / "plain.exr", image);

@@ -296,12 +296,12 @@ std::string pngChunk(std::string_view type, std::string_view data) {
 }
 
 /// rows: filter-free sample bytes per row (big-endian for 16 bit).
-std::string makePng(int width, int height, int bitDepth, int colourType,
+std::string makePng(int width, int height, int bitDepth, int colorType,
                     const std::vector<std::string>& rows) {
     std::string header;
     appendBigEndian(header, std::uint32_t(width));
     appendBigEndian(header, std::uint32_t(height));
-    header += {char(bitDepth), char(colourType), 0, 0, 0};
+    header += {char(bitDepth), char(colorType), 0, 0, 0};
     std::string raw;
     for (const std::string& row : rows)
         raw += '\0' + row;                                   // filter type 0

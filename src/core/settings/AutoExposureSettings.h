@@ -1,11 +1,11 @@
 #pragma once
 // Auto exposure (eye adaptation): metering -> target -> adaptation, all in log2 (EV) space.
-// DESIGN.md "Exposure"; the math is in core/ExposureController.h and core/Metering.h.
+// The math is in core/ExposureController.h and core/Metering.h.
 //
-// Seed 002's keys stay readable: "enabled" and "keyValue" are fields; "speed" (sets speedUp and speedDown),
-// "min" and "max" (exposure multipliers: minEV = log2(min), maxEV = log2(max)) are aliases, read but never
-// written. Defaults follow seed 000 (key 0.18, multipliers 0.25..4 = -2..+2 EV, tauBrighten 1 s, tauDarken
-// 0.3 s), the big engines for speeds (3 / 1 EV/s) and percentiles (10 / 90), seed 002 for `enabled` (off).
+// Older settings files' keys stay readable: "enabled" and "keyValue" are fields; "speed" (sets speedUp and
+// speedDown), "min" and "max" (exposure multipliers: minEV = log2(min), maxEV = log2(max)) are aliases, read
+// but never written. Defaults: key 0.18, multipliers 0.25..4 = -2..+2 EV, tauBrighten 1 s, tauDarken 0.3 s
+// (an eye that lags visibly), the big engines' speeds (3 / 1 EV/s) and percentiles (10 / 90), `enabled` off.
 
 #include "core/settings/Reflect.h"
 
@@ -28,14 +28,14 @@ enum class MeteringMode {
     Spot,      ///< geometric mean of 1/5/9/13 taps on a disc (kSpotTaps in core/Metering.h)
     Center,    ///< geometric mean weighted by a Gaussian around the image centre (centerWeight)
     Mask,      ///< geometric mean weighted by a grey mask image
-    Subject,   ///< the probed luma under the subject of the view (seed 000; core/Subjects.h). No subject: no
+    Subject,   ///< the probed luma under the subject of the view (core/Subjects.h). No subject: no
                ///< reading, exposure holds (or the screen centre with subjects.fallback = center)
 };
 
 /// How exposure follows its target (core/ExposureController.h implements each).
 enum class AdaptationMode {
-    Exponential, ///< seed 000: alpha = 1 - exp(-dt / tau), tau per direction
-    Speed,       ///< seed 002: alpha = 1 - exp(-speed * dt), speed per direction
+    Exponential, ///< eye lag: alpha = 1 - exp(-dt / tau), tau per direction
+    Speed,       ///< alpha = 1 - exp(-speed * dt), speed per direction
     Hybrid,      ///< Unreal: linear speed EV/s far from the target, exponential within transitionEV
 };
 
@@ -78,20 +78,20 @@ struct AutoExposureSettings {
         }
     };
 
-    bool enabled = false; ///< default off (seed 002); off: exposure = 2^tonemapping.exposure
+    bool enabled = false; ///< default off; off: exposure = 2^tonemapping.exposure
     MeteringMode metering = MeteringMode::Average;           ///< what is measured, default average
     AdaptationMode adaptation = AdaptationMode::Exponential; ///< how exposure follows, default exponential
 
     float keyValue = 0.18f;      ///< scene-linear, [0.001, 10], default 0.18: what the metered L maps to
     float compensationEV = 0.0f; ///< EV, [-10, 10], default 0: added to the target before clamping
-    float minEV = -2.0f;         ///< EV, [-20, 20], default -2 (x0.25, seed 000): lowest, <= maxEV
-    float maxEV = 2.0f;          ///< EV, [-20, 20], default 2 (x4, seed 000): highest auto exposure
+    float minEV = -2.0f;         ///< EV, [-20, 20], default -2 (x0.25): lowest, <= maxEV
+    float maxEV = 2.0f;          ///< EV, [-20, 20], default 2 (x4): highest auto exposure
     /// [log2 L, EV] points, x and y in [-32, 32], x strictly increasing, at most 16, default empty (none):
     /// piecewise linear, flat past the ends; its EV at log2 L is added to the target.
     CurvePoints compensationCurve;
 
     // Rates by direction. Exposure rises when the scene darkens, falls when it brightens; the eye adapts to
-    // light faster than to dark (seed 000's 1 s / 0.3 s; Unreal "Speed Up"/"Speed Down" and Bevy's
+    // light faster than to dark (tauBrighten 1 s / tauDarken 0.3 s; Unreal "Speed Up"/"Speed Down" and Bevy's
     // speed_brighten/speed_darken, 3 / 1 EV/s, are named after the scene, as speedUp/speedDown are here).
     float tauBrighten = 1.0f;  ///< s, [0.001, 30], default 1: time constant while exposure rises
     float tauDarken = 0.3f;    ///< s, [0.001, 30], default 0.3: time constant while exposure falls
@@ -128,7 +128,7 @@ struct AutoExposureSettings {
         v.field("enabled", enabled);
         v.field("metering", metering, meteringModeNames());
         v.field("adaptation", adaptation, adaptationModeNames());
-        // Seed 002's aliases come before the fields they feed: a file holding both keeps the new key.
+        // The older keys' aliases come before the fields they feed: a file holding both keeps the new key.
         v.alias("speed", Range{0.001, 100}, [&](float s) {
             speedUp = s;
             speedDown = s;

@@ -1,6 +1,6 @@
 #pragma once
-// HDR bloom on exposed colour (DESIGN.md frame order step 6; passes/bloom/). Seed 002's keys `enabled`,
-// `threshold`, `intensity` are fields here and keep their meaning; seed 003's "> 1.0" is the threshold
+// HDR bloom on exposed colour (after metering; passes/bloom/). The common keys `enabled`,
+// `threshold`, `intensity` are fields here and keep their meaning; only what exceeds 1.0 blooms by
 // default.
 
 #include "core/settings/Reflect.h"
@@ -13,7 +13,7 @@ namespace photopic {
 
 enum class BloomMode {
     EnergyConserving, ///< mix(scene, bloom, intensity) over the whole image, no threshold (Jimenez 2014)
-    Threshold,        ///< scene + intensity * bloom of what lies above a soft-knee threshold (seeds 002, 003)
+    Threshold,        ///< scene + intensity * bloom of what lies above a soft-knee threshold
 };
 
 inline std::span<const std::string_view> bloomModeNames() {
@@ -25,7 +25,7 @@ struct BloomSettings {
     bool enabled = true; ///< default on: a modest energy-conserving glare is part of a photographic look
     BloomMode mode = BloomMode::EnergyConserving; ///< how bloom joins the scene, default energy-conserving
     float intensity = 0.04f; ///< [0, 10], default 0.04: mix factor (energy-conserving, <= 1) or additive gain
-    float threshold = 1.0f;  ///< exposed scene-linear, [0, 65000], default 1 (seed 003): threshold mode only
+    float threshold = 1.0f;  ///< exposed scene-linear, [0, 65000], default 1: threshold mode only
     float knee = 0.5f;       ///< fraction of threshold, [0, 1], default 0.5: soft-knee width, threshold mode
     float radius =
         0.85f;        ///< [0, 1], default 0.85: share each level hands to the wider ones (spread, roundness)

@@ -1,6 +1,6 @@
 #pragma once
-// Colour grading in HDR, after the composite and before the single tone mapping (DESIGN.md step 7). Seed
-// 002's keys `enabled`, `contrast`, `saturation`, `temperature` are fields here with their neutral values as
+// Colour grading in HDR, after the composite and before the single tone mapping (docs/architecture.md). The
+// common keys `enabled`, `contrast`, `saturation`, `temperature` are fields here with their neutral values as
 // defaults. The white-balance matrix is computed on the CPU (core/ColorGrading.h).
 
 #include "core/settings/Reflect.h"
@@ -10,7 +10,7 @@
 namespace photopic {
 
 struct ColorGradingSettings {
-    bool enabled = false;     ///< default off (seed 002)
+    bool enabled = false;     ///< default off
     float temperature = 0.0f; ///< [-1, 1], default 0: white balance, > 0 warmer (shifts the assumed white)
     float tint = 0.0f;        ///< [-1, 1], default 0: white balance, > 0 towards magenta, < 0 towards green
     float contrast = 1.0f;    ///< [0, 3], default 1: slope in log2 space around middle grey 0.18

@@ -1,5 +1,6 @@
 #pragma once
-// Debug views (DESIGN.md frame order steps 8 and 12): what the pipeline shows instead of, or over, the image.
+// Debug views (scene values before tone mapping, overlays last; docs/architecture.md): what the pipeline
+// shows instead of, or over, the image.
 
 #include "core/settings/Reflect.h"
 
@@ -11,20 +12,23 @@ namespace photopic {
 
 enum class DebugView {
     None,      ///< the normal image
-    Exposure,  ///< false colour of exposed scene values (seed 001 bands; REFERENCES.md "Debug views")
+    Exposure,  ///< false colour of exposed scene values (a band per stop)
     Luma,      ///< exposed Rec.709 luma as grey
     Ev,        ///< stops around middle grey, log2(Y exposure / 0.18), one colour per stop -6..+6
     Metering,  ///< the weight each pixel gets in the metering mode
     Histogram, ///< overlay over the normal image: 256 bins, percentile window, average, target, current
     Bloom,     ///< the bloom texture alone (black when the pipeline has no bloom)
-    Depth,     ///< linear view depth as grey, logarithmic from near (white) to far (black); needs depth + camera
-    Normals,   ///< view-space normals as colour, 0.5 + 0.5 n; needs normals
-    Motion,    ///< motion vectors: hue is the direction, brightness the length (8 px saturates); needs motion
+    Depth, ///< linear view depth as grey, logarithmic from near (white) to far (black); needs depth + camera
+    Normals, ///< view-space normals as colour, 0.5 + 0.5 n; needs normals
+    Motion,  ///< motion vectors: hue is the direction, brightness the length (8 px saturates); needs motion
+    TaaHistoryWeight, ///< TAA's history weight per pixel as grey (black: no history used); needs TAA on
+    Disocclusion, ///< white where TAA found the history disoccluded (or off screen: see weight); needs TAA
 };
 
 inline std::span<const std::string_view> debugViewNames() {
-    static constexpr std::array<std::string_view, 10> kNames{
-        "none", "exposure", "luma", "ev", "metering", "histogram", "bloom", "depth", "normals", "motion"};
+    static constexpr std::array<std::string_view, 12> kNames{
+        "none",  "exposure", "luma",    "ev",     "metering",           "histogram",
+        "bloom", "depth",    "normals", "motion", "taa-history-weight", "disocclusion"};
     return kNames;
 }
 

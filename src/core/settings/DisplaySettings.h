@@ -1,7 +1,7 @@
 #pragma once
-// Display-domain effects after the single tone mapping (DESIGN.md steps 10-11). Seed 002's keys: fxaa
+// Display-domain effects after the single tone mapping (docs/architecture.md). Common keys: fxaa
 // `enabled`; vignette `enabled`, `intensity`, `chromaticAberration`. Every effect here is off by default
-// (seed 002 ships them off; seed 001 wants them weak and opt-in).
+// (they are a look, so opt-in, and weak when on).
 
 #include "core/settings/Reflect.h"
 
@@ -25,10 +25,10 @@ struct FxaaSettings {
 
 /// Lens vignetting (light fall-off, in linear display light) and lateral chromatic aberration.
 struct VignetteSettings {
-    bool enabled = false;               ///< default off (seed 002)
-    float intensity = 0.5f;             ///< [0, 1], default 0.5 (seed 002): light lost in the corners
+    bool enabled = false;               ///< default off
+    float intensity = 0.5f;             ///< [0, 1], default 0.5: light lost in the corners
     float falloff = 2.0f;               ///< [0.5, 8], default 2: exponent of the normalised corner distance
-    float chromaticAberration = 0.003f; ///< UV, [0, 0.05], default 0.003 (seed 002): R/B scale at the corners
+    float chromaticAberration = 0.003f; ///< UV, [0, 0.05], default 0.003: R/B scale at the corners
 
     template <class V>
     void visit(V& v) {
@@ -51,8 +51,8 @@ struct GrainSettings {
     }
 };
 
-/// Post lens flare (seed 001 Phase 4C): ghosts and a halo from a thresholded, downsampled HDR buffer,
-/// independent of bloom, added in the display domain.
+/// Post lens flare (a lens artefact, so display-referred): ghosts and a halo from a thresholded, downsampled
+/// HDR buffer, independent of bloom, added in the display domain.
 struct LensFlareSettings {
     bool enabled = false;      ///< default off
     float intensity = 0.05f;   ///< [0, 10], default 0.05: gain of the flare before it is added

@@ -185,7 +185,8 @@ public:
         sub.visit(reader);
         reader.finish();
     }
-    /// A key kept for compatibility (seed 002's names): read, range-checked, handed to `set`, never written.
+    /// A key kept for compatibility (older files' names): read, range-checked, handed to `set`, never
+    /// written.
     template <class F>
     void alias(std::string_view key, Range range, F&& set) {
         if (const json* j = find(key)) {

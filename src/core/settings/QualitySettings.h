@@ -1,6 +1,6 @@
 #pragma once
-// Quality tiers (seed 003): how much of the frame order runs and at what resolution. The tier table is in
-// core/Quality.h.
+// Quality tiers (from full quality to old hardware): how much of the frame order runs and at what resolution.
+// The tier table is in core/Quality.h.
 
 #include <array>
 #include <span>
@@ -13,7 +13,7 @@ enum class Quality {
     High,   ///< every effect, 6 levels (default)
     Medium, ///< bloom from quarter size with 5 levels, lens flare at 1/8 size
     Low,    ///< bloom from quarter size with 4 levels, no lens flare, no chromatic aberration
-    Legacy, ///< the LDR path (RGBA8): no bloom, no lens flare (seed 003's "Legacy" skips bloom)
+    Legacy, ///< the LDR path (RGBA8): no bloom, no lens flare (too costly on old hardware)
 };
 
 inline std::span<const std::string_view> qualityNames() {

@@ -10,7 +10,7 @@
 //         v.require(tauDarken > 0, "tauDarken", "must be positive");
 //     }
 //
-// `v.alias("speed", Range{...}, [&](float s) { ... })` keeps an older key readable (seed 002) without writing
+// `v.alias("speed", Range{...}, [&](float s) { ... })` keeps an older key readable without writing
 // it.
 
 #include <glm/vec2.hpp>

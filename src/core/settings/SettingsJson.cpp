@@ -46,7 +46,7 @@ std::vector<SettingsIssue> readDocument(const json& doc, Settings& settings) {
         issues.push_back({SettingsIssueCode::WrongType, "", "the document must be a JSON object"});
         return issues;
     }
-    // "version" may be absent: seed 002's post_effects.json files carry none and stay valid as version 1.
+    // "version" may be absent: older post_effects.json files carry none and stay valid as version 1.
     if (const auto v = doc.find("version"); v != doc.end()) {
         if (!v->is_number_integer() || v->get<long long>() != kSettingsVersion) {
             issues.push_back({SettingsIssueCode::BadVersion, "version",

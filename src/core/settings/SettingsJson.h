@@ -1,5 +1,6 @@
 #pragma once
-// JSON form of the settings: {"version": 1, "postEffects": {...}} with seed 002's keys kept where they exist.
+// JSON form of the settings: {"version": 1, "postEffects": {...}} with the keys common to post-effect
+// settings files kept where they exist.
 
 #include "core/Settings.h"
 

@@ -1,10 +1,10 @@
 #pragma once
-// Subjects (seed 000, "Dynamic Exposure"; DESIGN.md "Subjects"): the host registers subjects each frame, a
-// selection rule picks the subject of the view, probes measure the light under every subject at `probe.hz`,
-// and the subject of the view can drive `subject` metering. The logic is in core/Subjects.h.
+// Subjects (exposure that follows the light a token or character stands in): the host registers subjects each
+// frame, a selection rule picks the subject of the view, probes measure the light under every subject at
+// `probe.hz`, and the subject of the view can drive `subject` metering. The logic is in core/Subjects.h.
 //
-// Defaults follow seed 000: probeHz 10 ("5-10 Hz"), a multi-tap probe (its phase 2) with a small deadband on
-// the measured luma (its "basic hysteresis"), outdoors coupling present but off ("default-off until tuned").
+// Defaults: probeHz 10 (walking pace needs no more), a multi-tap probe (steadier than one texel) with a small
+// deadband on the measured luma (against flicker), outdoors coupling present but off until tuned.
 
 #include "core/settings/Reflect.h"
 
@@ -14,8 +14,8 @@
 
 namespace photopic {
 
-/// What the view follows when no subject is controlled and the user has no character (seed 000's open
-/// question: "camera center when no token is selected?").
+/// What the view follows when no subject is controlled and the user has no character (no subject, or
+/// the centre of the screen).
 enum class SubjectFallback {
     None,   ///< no subject: subject metering gives no reading and exposure holds
     Center, ///< the screen centre, probed like a subject (id kCenterSubjectId)
@@ -29,7 +29,7 @@ inline std::span<const std::string_view> subjectFallbackNames() {
 struct SubjectSettings {
     /// The light probe under each subject.
     struct Probe {
-        float hz = 10.0f; ///< 1/s, [0.1, 240], default 10 (seed 000): probes per second of frame time
+        float hz = 10.0f; ///< 1/s, [0.1, 240], default 10: probes per second of frame time
         int taps = 5;     ///< 1, 5 or 9, default 5: the first taps of kSpotTaps (centre, plus, 3x3), averaged
         float radius = 0.02f;           ///< image heights, [0, 0.5], default 0.02: distance of the outer taps
         bool freezeWhileMoving = false; ///< default off: skip probes while the subject moves, force one when
@@ -50,10 +50,10 @@ struct SubjectSettings {
         }
     };
 
-    /// Outdoors coupling (seed 000: "clamp exposure tighter outdoors, adapt faster outdoors"): blended by the
+    /// Outdoors coupling (outdoors, exposure may clamp tighter and adapt faster): blended by the
     /// subject's outdoors value, 0 = indoors (settings unchanged) .. 1 = fully outdoors.
     struct OutdoorsCoupling {
-        bool enabled = false;    ///< default off (seed 000: "default-off until tuned")
+        bool enabled = false;    ///< default off until tuned for a scene
         float maxEV = 1.0f;      ///< EV, [-20, 20], default 1: highest auto exposure when fully outdoors
         float speedScale = 2.0f; ///< x, [1, 10], default 2: adaptation runs this much faster fully outdoors
 

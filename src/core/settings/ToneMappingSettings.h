@@ -5,7 +5,7 @@
 
 namespace photopic {
 
-/// The single tone mapping of the frame (DESIGN.md frame order step 9). Seed 002 keys: mode, exposure.
+/// The single tone mapping of the frame (docs/architecture.md). Common keys: mode, exposure.
 struct ToneMappingSettings {
     ToneMapper mode =
         ToneMapper::AcesFitted; ///< curve applied once, after every HDR effect; default aces-fitted

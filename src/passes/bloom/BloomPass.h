@@ -1,7 +1,8 @@
 #pragma once
-// HDR bloom on exposed colour (DESIGN.md step 6): prefilter + 13-tap downsample chain, tent upsample chain.
-// The result is the bloom image at the size of level 0 (half or a quarter of the scene); the tone-map pass
-// composites it (energy-conserving mix or threshold add).
+// HDR bloom on exposed colour (after metering, so the frame's exposure is known; docs/architecture.md):
+// prefilter + 13-tap downsample chain, tent upsample chain. The result is the bloom image at the size of
+// level 0 (half or a quarter of the scene); the tone-map pass composites it (energy-conserving mix or
+// threshold add).
 
 #include "core/settings/BloomSettings.h"
 #include "passes/FramePass.h"

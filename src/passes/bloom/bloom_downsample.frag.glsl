@@ -5,8 +5,8 @@
 // weighted by 1 / (1 + luma) and the result renormalised ("Karis average"), so a single firefly cannot
 // dominate a whole region; only the first level needs it, the later ones already see averaged colour.
 // With PREFILTER the taps are scene colour multiplied by the frame's exposure (bloom works on exposed colour,
-// DESIGN.md step 6) and, in threshold mode, the soft knee (REFERENCES.md "Bloom"; constants from
-// core/Bloom.cpp) keeps only what lies above the threshold.
+// so what blooms does not depend on the scene's absolute level) and, in threshold mode, the soft knee
+// (constants from core/Bloom.cpp) keeps only what lies above the threshold.
 #include "passes/common/color.h.glsl"
 #ifdef PREFILTER
 #include "passes/common/exposure.h.glsl"
@@ -66,19 +66,19 @@ void main() {
     float w1 = 0.125 * karisWeight(topRight);
     float w2 = 0.125 * karisWeight(bottomLeft);
     float w3 = 0.125 * karisWeight(bottomRight);
-    vec3 colour = (centre * wc + topLeft * w0 + topRight * w1 + bottomLeft * w2 + bottomRight * w3) /
+    vec3 color = (centre * wc + topLeft * w0 + topRight * w1 + bottomLeft * w2 + bottomRight * w3) /
                   (wc + w0 + w1 + w2 + w3);
 #else
-    vec3 colour = centre * 0.5 + (topLeft + topRight + bottomLeft + bottomRight) * 0.125;
+    vec3 color = centre * 0.5 + (topLeft + topRight + bottomLeft + bottomRight) * 0.125;
 #endif
 
 #ifdef PREFILTER
     if (uThreshold != 0) {
-        float br = max(colour.r, max(colour.g, colour.b));
+        float br = max(color.r, max(color.g, color.b));
         float rq = clamp(br - uKnee.y, 0.0, uKnee.z);
         rq = rq * rq * uKnee.w;
-        colour *= max(rq, br - uKnee.x) / max(br, 1e-4);
+        color *= max(rq, br - uKnee.x) / max(br, 1e-4);
     }
 #endif
-    oColor = vec4(colour, 1.0);
+    oColor = vec4(color, 1.0);
 }

@@ -1,6 +1,7 @@
-// The exposure state every pass after metering reads (DESIGN.md: GPU-resident, written once per frame by the
-// adaptation pass, passes/exposure/). Mirrors photopic::GpuExposureState (passes/Bindings.h), std430.
-// The adaptation pass defines EXPOSURE_STATE_WRITABLE before including this; every other reader gets it readonly.
+// The exposure state every pass after metering reads (GPU-resident, so nothing waits on the CPU; written once
+// per frame by the adaptation pass, passes/exposure/). Mirrors photopic::GpuExposureState
+// (passes/Bindings.h), std430. The adaptation pass defines EXPOSURE_STATE_WRITABLE before including this;
+// every other reader gets it readonly.
 #ifndef PHOTOPIC_EXPOSURE_H_GLSL
 #define PHOTOPIC_EXPOSURE_H_GLSL
 

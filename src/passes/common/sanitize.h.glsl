@@ -1,6 +1,7 @@
-// Sanitising scene input (DESIGN.md frame order step 1): NaN, +-Inf and negative values become 0, and values are
-// clamped below the half-float maximum (65504) so RGBA16F targets never hold Inf. Finite-ness is tested on the bit
-// pattern, which no compiler may optimise away (isnan/isinf can be folded under relaxed float rules).
+// Sanitising scene input (where the pipeline first reads it): NaN, +-Inf and negative values become 0, and
+// values are clamped below the half-float maximum (65504) so RGBA16F targets never hold Inf. Finite-ness is
+// tested on the bit pattern, which no compiler may optimise away (isnan/isinf can be folded under relaxed
+// float rules).
 const float kSanitizeMax = 65000.0;
 
 float sanitizeValue(float x) {

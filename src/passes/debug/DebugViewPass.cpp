@@ -27,6 +27,13 @@ constexpr ResourceUse kNormalsViewUses[] = {{Resource::Normals, Access::Read},
                                             {Resource::DebugColor, Access::Write}};
 constexpr ResourceUse kMotionViewUses[] = {{Resource::Motion, Access::Read},
                                            {Resource::DebugColor, Access::Write}};
+constexpr ResourceUse kTaaViewUses[] = {{Resource::TaaDebug, Access::Read},
+                                        {Resource::DebugColor, Access::Write}};
+
+bool isInputView(DebugView view) {
+    return view == DebugView::Depth || view == DebugView::Normals || view == DebugView::Motion ||
+           view == DebugView::TaaHistoryWeight || view == DebugView::Disocclusion;
+}
 } // namespace
 
 DebugViewPass::DebugViewPass()
@@ -42,6 +49,9 @@ std::span<const ResourceUse> DebugViewPass::uses() const {
         return kNormalsViewUses;
     case DebugView::Motion:
         return kMotionViewUses;
+    case DebugView::TaaHistoryWeight:
+    case DebugView::Disocclusion:
+        return kTaaViewUses;
     default:
         return kSceneViewUses;
     }
@@ -53,7 +63,7 @@ void DebugViewPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Extent e = ctx.extent;
     ScopedGpuTimer timer(ctx.timers, "debug view", double(e.width) * e.height * 12);
     out.framebuffer().bind();
-    if (mView == DebugView::Depth || mView == DebugView::Normals || mView == DebugView::Motion) {
+    if (isInputView(mView)) {
         drawInputView(ctx, resources);
     } else {
         drawSceneView(ctx, resources);
@@ -97,7 +107,8 @@ void DebugViewPass::drawSceneView(const FrameContext& ctx, const FrameResources&
 void DebugViewPass::drawInputView(const FrameContext& ctx, const FrameResources& resources) {
     const Resource source = mView == DebugView::Depth     ? Resource::LinearDepth
                             : mView == DebugView::Normals ? Resource::Normals
-                                                          : Resource::Motion;
+                            : mView == DebugView::Motion  ? Resource::Motion
+                                                          : Resource::TaaDebug;
     const Program& p = mInputProgram;
     const Camera* camera = ctx.inputs.camera;
     setUniform(p, "uView", int(mView));

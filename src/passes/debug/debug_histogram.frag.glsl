@@ -1,8 +1,9 @@
-// Histogram overlay (DESIGN.md frame order step 12, display domain), drawn straight from the GPU histogram buffer
-// over the tone-mapped image: 256 bars (bin 0 underflow at the left, 255 overflow at the right; height ~ sqrt of
-// the count so thin tails stay visible), the percentile window shaded blue, and vertical markers in log2 scene
-// luminance: the window's average (cyan), the luminance the target exposure maps to the key value (green) and the
-// one the current exposure maps to it (red). Seed 004 (auto exposure debug histogram); core/Metering.h binning.
+// Histogram overlay (an overlay, last in the display domain; docs/architecture.md), drawn straight from the
+// GPU histogram buffer over the tone-mapped image: 256 bars (bin 0 underflow at the left, 255 overflow at the
+// right; height ~ sqrt of the count so thin tails stay visible), the percentile window shaded blue, and
+// vertical markers in log2 scene luminance: the window's average (cyan), the luminance the target exposure
+// maps to the key value (green) and the one the current exposure maps to it (red). Binning as in
+// core/Metering.h.
 #include "passes/common/exposure.h.glsl"
 #include "passes/metering/metering.h.glsl"
 #include "passes/metering/metering_buffers.h.glsl"

@@ -4,7 +4,7 @@
 
 layout(binding = 0) uniform sampler2D uInput;
 
-uniform int uView; // DebugView: 7 depth, 8 normals, 9 motion
+uniform int uView; // DebugView: 7 depth, 8 normals, 9 motion, 10 TAA history weight, 11 disocclusion
 uniform int uOctahedral;
 uniform float uNear;
 uniform float uFar;
@@ -35,6 +35,10 @@ void main() {
         float len = length(pixels);
         float hue = len > 0.0 ? fract(atan(pixels.y, pixels.x) / 6.28318531 + 1.0) : 0.0;
         c = hsvToRgb(hue, 1.0, clamp(len / 8.0, 0.0, 1.0));
+    } else if (uView == 10) {
+        c = vec3(t.r);
+    } else if (uView == 11) {
+        c = vec3(t.g);
     }
     oColor = vec4(c, 1.0);
 }

@@ -1,8 +1,8 @@
-// Scene-value debug views (DESIGN.md frame order step 8): they replace the image before tone mapping and are shown
-// as they are, never tone mapped. Values are exposed scene values (colour x gExposure.exposure).
-// References: seed 001 and REFERENCES.md "Debug views" (false-colour bands: blue ramp below 1, yellow >= 1,
-// orange >= 2, magenta >= 4, white >= 8; stops log2(Y exposure / 0.18), one colour per stop -6..+6, as in the
-// EL Zone System); core/Metering.h for the metering weights.
+// Scene-value debug views (frame order: docs/architecture.md): they replace the image before tone mapping and
+// are shown as they are, never tone mapped. Values are exposed scene values (colour x gExposure.exposure).
+// Conventions (false-colour bands: blue ramp below 1, yellow >= 1, orange >= 2, magenta >= 4, white >= 8;
+// stops log2(Y exposure / 0.18), one colour per stop -6..+6, as in the EL Zone System); core/Metering.h for
+// the metering weights.
 #include "passes/common/color.h.glsl"
 #include "passes/common/exposure.h.glsl"
 #include "passes/common/sanitize.h.glsl"
@@ -24,7 +24,7 @@ uniform float uSpotRadius;
 layout(location = 0) out vec4 oColor;
 
 // Display colours (sRGB-encoded, written as they are).
-vec3 falseColour(float y) {
+vec3 falseColor(float y) {
     if (y >= 8.0) {
         return vec3(1.0);
     }
@@ -41,18 +41,18 @@ vec3 falseColour(float y) {
 }
 
 // One colour per stop from -6 to +6 around middle grey: cold to hot, middle grey itself grey.
-const vec3 kStopColours[13] = vec3[](vec3(0.10, 0.00, 0.25), vec3(0.25, 0.00, 0.55), vec3(0.20, 0.15, 0.85),
+const vec3 kStopColors[13] = vec3[](vec3(0.10, 0.00, 0.25), vec3(0.25, 0.00, 0.55), vec3(0.20, 0.15, 0.85),
                                      vec3(0.00, 0.40, 1.00), vec3(0.00, 0.70, 0.90), vec3(0.00, 0.75, 0.45),
                                      vec3(0.50, 0.50, 0.50), vec3(0.55, 0.85, 0.10), vec3(0.95, 0.90, 0.00),
                                      vec3(1.00, 0.65, 0.00), vec3(1.00, 0.35, 0.00), vec3(0.90, 0.00, 0.10),
                                      vec3(1.00, 1.00, 1.00));
 
-vec3 stopColour(float y) {
+vec3 stopColor(float y) {
     if (!(y > 0.0)) {
-        return kStopColours[0];
+        return kStopColors[0];
     }
     float stops = log2(y / 0.18);
-    return kStopColours[clamp(int(floor(stops + 0.5)), -6, 6) + 6];
+    return kStopColors[clamp(int(floor(stops + 0.5)), -6, 6) + 6];
 }
 
 // The weight this pixel gets in the current metering mode (core/Metering.h); 0 for luminance no mean takes.
@@ -91,11 +91,11 @@ void main() {
     float exposed = lum * gExposure.exposure;
     vec3 c = vec3(0.0);
     if (uView == 1) {
-        c = falseColour(exposed);
+        c = falseColor(exposed);
     } else if (uView == 2) {
         c = vec3(srgbEncode(exposed));
     } else if (uView == 3) {
-        c = stopColour(exposed);
+        c = stopColor(exposed);
     } else if (uView == 4) {
         float w = clamp(meteringWeight(p, size, lum), 0.0, 1.0);
         // The weight over a dim grey copy of the image, so the metered region reads against the scene.

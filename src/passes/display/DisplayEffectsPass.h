@@ -1,6 +1,7 @@
 #pragma once
-// Display-domain effects in one pass (DESIGN.md step 11 and "Cost"): chromatic aberration, lens flare
-// composite, dazzle, vignette and grain on the tone-mapped RGBA8 image, one read and one write.
+// Display-domain effects in one pass (after tone mapping; fused because full-resolution traffic is the cost):
+// chromatic aberration, lens flare composite, dazzle, vignette and grain on the tone-mapped RGBA8 image, one
+// read and one write.
 
 #include "passes/FramePass.h"
 

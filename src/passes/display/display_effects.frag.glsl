@@ -1,4 +1,4 @@
-// Display-domain effects fused into one pass (DESIGN.md steps 11 and "Cost"): chromatic aberration, lens
+// Display-domain effects fused into one pass (one full-resolution read and write): chromatic aberration, lens
 // flare composite, dazzle, vignette, grain, in that order, on the tone-mapped sRGB-encoded image.
 //  - Chromatic aberration: lateral colour, red and blue sampled at radially scaled positions (a lens images
 //    colours at slightly different magnifications).

@@ -1,8 +1,8 @@
 #pragma once
-// Exposure target and adaptation (DESIGN.md frame order step 4): one compute invocation reads the frame's
-// metering and updates the GPU exposure state (GpuExposureState) that every later pass reads. Same frame, no
-// CPU round trip. With auto exposure off it still runs: it writes exposure = 2^manualEV and the histogram
-// statistics a debug view may need.
+// Exposure target and adaptation (right after metering; docs/architecture.md): one compute invocation reads
+// the frame's metering and updates the GPU exposure state (GpuExposureState) that every later pass reads.
+// Same frame, no CPU round trip. With auto exposure off it still runs: it writes exposure = 2^manualEV and
+// the histogram statistics a debug view may need.
 
 #include "core/settings/AutoExposureSettings.h"
 #include "gl/ReadbackRing.h"

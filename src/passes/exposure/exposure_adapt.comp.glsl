@@ -1,9 +1,10 @@
-// Exposure target and adaptation on the GPU (DESIGN.md "Exposure"), one invocation per frame: reads this frame's
-// metering (passes/metering/), writes the exposure state every later pass reads. A line-for-line mirror of
-// core/ExposureController.cpp (target, adaptExposure with deadband hysteresis, dt clamp, snap, exposureMultiplier,
-// ExposureController::update) and core/Metering.cpp (histogramAverage), in float32 with exp, exp2, log2, min, max.
-// References: seed 000 (exponential eye lag, tauBrighten/tauDarken), seed 002 (speed form), Unreal's eye adaptation
-// (hybrid: linear then exponential, REFERENCES.md "Hybrid adaptation"), Tardif 2019 (histogram percentiles).
+// Exposure target and adaptation on the GPU, one invocation per frame: reads this frame's metering
+// (passes/metering/), writes the exposure state every later pass reads. A line-for-line mirror of
+// core/ExposureController.cpp (target, adaptExposure with deadband hysteresis, dt clamp, snap,
+// exposureMultiplier, ExposureController::update) and core/Metering.cpp (histogramAverage), in float32 with
+// exp, exp2, log2, min, max. Models: exponential eye lag (tauBrighten/tauDarken), a speed form (alpha = 1 -
+// exp(-speed dt)), Unreal's eye adaptation (hybrid: linear then exponential). Tardif 2019 for the histogram
+// percentiles.
 #define EXPOSURE_STATE_WRITABLE 1
 #include "passes/common/exposure.h.glsl"
 #include "passes/metering/metering.h.glsl"

@@ -1,5 +1,6 @@
-// FXAA on the display-referred image (DESIGN.md step 10), written from the description of FXAA 3.11's quality
-// path (T. Lottes, "FXAA", NVIDIA whitepaper, 2009, and the FXAA 3.11 source comments, 2011):
+// FXAA on the display-referred image (its edge test expects perceptual values), written from the description
+// of FXAA 3.11's quality path (T. Lottes, "FXAA", NVIDIA whitepaper, 2009, and the FXAA 3.11 source comments,
+// 2011):
 //  1. local contrast of the 4-neighbourhood; below max(edgeThresholdMin, edgeThreshold * max luma) the pixel
 //     is left exactly as it is (flat areas never change);
 //  2. the edge is horizontal or vertical by comparing second differences over the 3x3 neighbourhood;

@@ -1,6 +1,7 @@
 #pragma once
-// Post lens flare (DESIGN.md step 11; seed 001): thresholded, downsampled exposed HDR -> ghosts + halo, an
-// HDR buffer the display-effects pass adds in the display domain. Independent of bloom and its settings.
+// Post lens flare (a lens artefact, so added in the display domain): thresholded, downsampled exposed HDR ->
+// ghosts + halo, an HDR buffer the display-effects pass adds in the display domain. Independent of bloom and
+// its settings.
 
 #include "core/settings/DisplaySettings.h"
 #include "passes/FramePass.h"

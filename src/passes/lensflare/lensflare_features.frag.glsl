@@ -24,9 +24,9 @@ void main() {
     // Mirrored through the centre: a source at the top-left throws its ghosts towards the bottom-right.
     vec2 flipped = vec2(1.0) - uv;
     vec2 ghostVec = (vec2(0.5) - flipped) * uGhostSpacing;
-    vec3 colour = vec3(0.0);
+    vec3 color = vec3(0.0);
     for (int i = 0; i < uGhosts; ++i) {
-        colour += sampleFaded(flipped + ghostVec * float(i));
+        color += sampleFaded(flipped + ghostVec * float(i));
     }
     vec2 dir = vec2(0.5) - flipped;
     float len = length(dir * vec2(uAspect, 1.0));
@@ -34,7 +34,7 @@ void main() {
         vec2 haloVec = dir / len * uHaloRadius;
         vec2 haloUv = flipped + haloVec;
         float ring = 1.0 - clamp(abs(length((haloUv - 0.5) * vec2(uAspect, 1.0)) - uHaloRadius) / 0.1, 0.0, 1.0);
-        colour += sampleFaded(haloUv) * ring;
+        color += sampleFaded(haloUv) * ring;
     }
-    oColor = vec4(colour * uIntensity, 1.0);
+    oColor = vec4(color * uIntensity, 1.0);
 }

@@ -1,4 +1,4 @@
-// Lens flare source (seed 001 Phase 4C: a post pass driven by the bright parts of the HDR image, decoupled from
+// Lens flare source (a post pass driven by the bright parts of the HDR image, decoupled from
 // bloom): the exposed scene, reduced to a small buffer with a 2x2 bilinear box (4 taps = 4x4 texels), keeping
 // only what exceeds the flare threshold (a hard threshold; the ghosts are blurred, so no knee is needed).
 #include "passes/common/exposure.h.glsl"

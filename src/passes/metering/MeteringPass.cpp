@@ -124,7 +124,7 @@ MeteringPass::Outputs MeteringPass::execute(const Inputs& in) noexcept {
     DebugGroup group("metering");
     ScopedGpuTimer timer(in.timers, "metering", bytes);
 
-    // Every frame starts from empty bins (seed 004: no accumulation) and an empty min/max.
+    // Every frame starts from empty bins (nothing carries over between frames) and an empty min/max.
     const std::uint32_t zero = 0;
     glClearNamedBufferData(mHistogram.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     GpuMeteringHeader header;

@@ -1,7 +1,7 @@
 #pragma once
-// Metering (DESIGN.md frame order step 4): reads the sanitised HDR image before exposure and leaves, on the
-// GPU, the 256-bin histogram, the frame's min/max meterable luminance and the weighted geometric mean that
-// the adaptation pass (passes/exposure/) turns into exposure. Nothing is read back here.
+// Metering (frame order: docs/architecture.md): reads the sanitised HDR image before exposure and leaves, on
+// the GPU, the 256-bin histogram, the frame's min/max meterable luminance and the weighted geometric mean
+// that the adaptation pass (passes/exposure/) turns into exposure. Nothing is read back here.
 
 #include "core/settings/AutoExposureSettings.h"
 #include "passes/FramePass.h"

@@ -1,8 +1,8 @@
-// Metering of the sanitised HDR image before exposure (DESIGN.md frame order step 4), one read of the image in
-// one dispatch: the 256-bin log2 histogram (Tardif 2019: shared-memory atomics per workgroup, then one global
-// atomic per non-empty bin), the frame's min/max meterable luminance, and per-workgroup partial sums of w log2 L
-// and w for the weighted geometric means (average, centre, mask), reduced by metering_reduce.comp.glsl.
-// Formulas: core/Metering.h.
+// Metering of the sanitised HDR image before exposure (no feedback loop; docs/architecture.md), one read of
+// the image in one dispatch: the 256-bin log2 histogram (Tardif 2019: shared-memory atomics per workgroup,
+// then one global atomic per non-empty bin), the frame's min/max meterable luminance, and per-workgroup
+// partial sums of w log2 L and w for the weighted geometric means (average, centre, mask), reduced by
+// metering_reduce.comp.glsl. Formulas: core/Metering.h.
 #include "passes/common/sanitize.h.glsl"
 #include "passes/metering/metering.h.glsl"
 #include "passes/metering/metering_buffers.h.glsl"

@@ -1,5 +1,5 @@
 #pragma once
-// Subject probes (seed 000, "Brightness Measurement"; DESIGN.md "Subjects"): one compute dispatch measures
+// Subject probes (the light a subject stands in, for metering that follows it): one compute dispatch measures
 // the light under every subject scheduled this frame on the sanitised HDR image, before exposure, with the
 // multi-tap pattern of core's probeImage (kProbeTaps, probeTapTexel). The results stay in a small SSBO that
 // the pipeline copies into a readback ring (never waited on). For `subject` metering the same dispatch keeps

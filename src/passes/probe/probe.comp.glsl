@@ -1,4 +1,4 @@
-// Subject probes (seed 000, "Brightness Measurement", phase 2's multi-tap probe): one invocation per subject
+// Subject probes (multi-tap, steadier than one texel): one invocation per subject
 // averages the Rec.709 luma at the first `taps` kProbeTaps around its screen UV. A line-for-line mirror of core's
 // probeImage and probeTapTexel (core/Subjects.cpp); the texture's rows run bottom-up (gl/TextureIo.h), so the
 // image pixel is flipped to its texel. For `subject` metering the invocation of the subject of the view also keeps

@@ -1,4 +1,5 @@
-// Sanitise the host's HDR colour once, where the pipeline first reads it (DESIGN.md frame order step 1).
+// Sanitise the host's HDR colour once, where the pipeline first reads it (the first step of the frame order,
+// docs/architecture.md).
 #include "passes/common/sanitize.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;

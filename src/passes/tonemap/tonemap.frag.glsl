@@ -1,8 +1,8 @@
-// The "uber" pass (DESIGN.md "Cost"): composite (step 7), colour grading in HDR (step 7), then the single tone
-// mapping of the frame (step 9) with the sRGB output transform and dither.
+// The "uber" pass, fused to save full-resolution traffic: composite, colour grading in HDR, then the single
+// tone mapping of the frame with the sRGB output transform and dither.
 // Reads the scene-referred colour, multiplies by the frame's exposure (GPU exposure state), composites bloom
-// (BLOOM: the bloom chain's result, already exposed; energy-conserving mix or threshold add, REFERENCES.md
-// "Bloom"), grades (core/ColorGrading.cpp is the CPU reference), applies the curve
+// (BLOOM: the bloom chain's result, already exposed; energy-conserving mix or threshold add),
+// grades (core/ColorGrading.cpp is the CPU reference), applies the curve
 // (passes/tonemap/tonecurves.h.glsl mirrors core/ToneCurves.cpp), encodes sRGB, dithers by +-1 LSB (TPDF).
 // With OUTPUT_SCENE defined it stops before the curve and writes the graded scene-referred value (EXR output).
 // Variants are #defines, never uniform branches (TonemapPass.h: llvmpipe runs every case of a uniform switch):
@@ -49,9 +49,10 @@ vec3 bloomAt(vec2 uv) {
 #endif
 
 #ifdef GLOW
-// The legacy tier's single cheap glow (seed 003: "a simplest glow without blur"): no mip chain and no extra
-// target, 12 bilinear taps of the exposed input's part above the threshold on two hexagonal rings (the outer
-// one at half weight, rotated 30 degrees), added to the pixel. A wide-radius approximation, not a blur.
+// The legacy tier's single cheap glow (for hardware that cannot afford the chain: a glow without blur): no
+// mip chain and no extra target, 12 bilinear taps of the exposed input's part above the threshold on two
+// hexagonal rings (the outer one at half weight, rotated 30 degrees), added to the pixel. A wide-radius
+// approximation, not a blur.
 vec3 brightAt(vec2 p) {
     vec3 c = sanitize(textureLod(uScene, p / vec2(textureSize(uScene, 0)), 0.0).rgb) * gExposure.exposure;
     return max(c - vec3(uGlowThreshold), vec3(0.0));

@@ -35,7 +35,7 @@ struct Stroke {
     float angle = 0;  ///< rad, image space (y down)
     float halfLength = 0;
     float halfWidth = 0;
-    glm::vec3 colour{0};
+    glm::vec3 color{0};
     Paint paint = Paint::Matte;
 };
 
@@ -60,20 +60,20 @@ Stroke makeStroke(std::uint32_t seed, std::uint32_t i, float aspect) {
     if (sunDistance < 0.11f) {
         // Strokes around the sun follow circles (a Van Gogh swirl) and carry glitter.
         s.angle = std::atan2(toSun.y, toSun.x) + 0.5f * std::numbers::pi_v<float> + jitter * 0.4f;
-        s.colour = glm::mix(fromSrgb(0.98f, 0.84f, 0.30f), fromSrgb(0.95f, 0.55f, 0.15f), v);
+        s.color = glm::mix(fromSrgb(0.98f, 0.84f, 0.30f), fromSrgb(0.95f, 0.55f, 0.15f), v);
         s.paint = r(4) < 0.55f ? Paint::Glitter : Paint::Gloss;
     } else if (s.centre.y < kHorizon) {
         const float swirl = std::sin(s.centre.x * 7.0f + s.centre.y * 5.0f) * 0.6f;
         s.angle = swirl + jitter;
         const glm::vec3 deep = fromSrgb(0.16f, 0.27f, 0.58f), light = fromSrgb(0.55f, 0.70f, 0.88f),
                         cloud = fromSrgb(0.90f, 0.90f, 0.82f);
-        s.colour = v < 0.15f ? cloud : glm::mix(deep, light, v * (1.0f - s.centre.y / kHorizon * 0.5f));
+        s.color = v < 0.15f ? cloud : glm::mix(deep, light, v * (1.0f - s.centre.y / kHorizon * 0.5f));
         s.paint = r(4) < 0.4f ? Paint::Gloss : Paint::Matte;
     } else if (s.centre.y < kShore) {
         s.angle = -0.35f + 0.3f * std::sin(s.centre.x * 4.0f) + jitter;
         const glm::vec3 grass = fromSrgb(0.30f, 0.48f, 0.20f), ochre = fromSrgb(0.66f, 0.52f, 0.24f),
                         shade = fromSrgb(0.14f, 0.26f, 0.16f);
-        s.colour = v < 0.5f ? glm::mix(shade, grass, v * 2.0f) : glm::mix(grass, ochre, (v - 0.5f) * 2.0f);
+        s.color = v < 0.5f ? glm::mix(shade, grass, v * 2.0f) : glm::mix(grass, ochre, (v - 0.5f) * 2.0f);
         s.paint = r(4) < 0.25f ? Paint::Gloss : Paint::Matte;
     } else {
         s.angle = jitter * 0.3f;
@@ -81,7 +81,7 @@ Stroke makeStroke(std::uint32_t seed, std::uint32_t i, float aspect) {
                         glint = fromSrgb(0.85f, 0.80f, 0.60f);
         // The sun's path on the water: pale strokes with glitter under the sun.
         const bool path = std::abs(s.centre.x - sun.x) < 0.08f + 0.15f * (s.centre.y - kShore);
-        s.colour = path && v < 0.6f ? glint : glm::mix(sea, teal, v);
+        s.color = path && v < 0.6f ? glint : glm::mix(sea, teal, v);
         s.paint = path ? Paint::Glitter : (r(4) < 0.5f ? Paint::Gloss : Paint::Matte);
     }
     const float size = 0.6f + 0.8f * r(5);
@@ -90,7 +90,7 @@ Stroke makeStroke(std::uint32_t seed, std::uint32_t i, float aspect) {
     return s;
 }
 
-/// Exponent n of the Blinn-Phong lobe encoded as B (core/CanvasMaterial.h): the inverse of decodeShininess.
+/// Exponent n of the Blinn-Phong lobe encoded as B (CanvasMaterial.h): the inverse of decodeShininess.
 std::uint8_t encodeShininess(float n) {
     return std::uint8_t(std::clamp(std::lround(std::log2(n) / kMaxShininessLog2 * 255.0f), 1L, 255L));
 }
@@ -112,7 +112,7 @@ CanvasImages makeProceduralCanvas(const ProceduralCanvasInfo& info) {
             const float u = (float(x) + 0.5f) / H, v = (float(y) + 0.5f) / H;
             const glm::vec3 ground =
                 glm::mix(fromSrgb(0.62f, 0.58f, 0.50f), fromSrgb(0.45f, 0.36f, 0.26f), v);
-            float* c = out.colour.at(x, y);
+            float* c = out.color.at(x, y);
             c[0] = ground.r;
             c[1] = ground.g;
             c[2] = ground.b;
@@ -155,9 +155,9 @@ CanvasImages makeProceduralCanvas(const ProceduralCanvasInfo& info) {
                 const float streak =
                     0.85f + 0.3f * random01(info.seed, std::uint32_t(i), std::uint32_t(bristle + 5000));
                 const std::size_t k = std::size_t(y) * std::size_t(w) + std::size_t(x);
-                float* c = out.colour.at(x, y);
+                float* c = out.color.at(x, y);
                 for (int ch = 0; ch < 3; ++ch) {
-                    c[ch] = c[ch] + (std::min(s.colour[ch] * streak, 0.8f) - c[ch]) * alpha;
+                    c[ch] = c[ch] + (std::min(s.color[ch] * streak, 0.8f) - c[ch]) * alpha;
                 }
                 // Impasto: grooves between bristles and a ridge at the stroke's edges tilt the normal across
                 // it.
@@ -175,7 +175,8 @@ CanvasImages makeProceduralCanvas(const ProceduralCanvasInfo& info) {
         }
     }
 
-    // Material: normals everywhere; varnish and glitter only on the chosen tiles (seed 003's hasMaterial).
+    // Material: normals everywhere; varnish and glitter only on the chosen tiles, so the others have no
+    // material.
     const TileGrid grid = makeTileGrid(w, h, info.tileSize);
     const std::vector<std::uint8_t> chosen = chooseTiles(grid, info.occupancy, info.seed);
     const int facet = std::max(2, int(std::lround(H / 216.0f))); // glitter flake size, px
@@ -206,7 +207,7 @@ CanvasImages makeProceduralCanvas(const ProceduralCanvasInfo& info) {
     return out;
 }
 
-ImageF loadCanvasColour(const std::filesystem::path& path, int width, int height) {
+ImageF loadCanvasColor(const std::filesystem::path& path, int width, int height) {
     const ImageF src = readImage(path);
     ImageF out(width, height);
     for (int y = 0; y < height; ++y) {

@@ -1,8 +1,8 @@
 #pragma once
 // The canvas scene's CPU-side content: a painting (linear colour) and its material map (encoding in
-// core/CanvasMaterial.h), either procedural or loaded from files, always at the render size.
+// CanvasMaterial.h), either procedural or loaded from files, always at the render size.
 
-#include "core/CanvasMaterial.h"
+#include "scenes/canvas/CanvasMaterial.h"
 #include "core/Image.h"
 
 #include <cstdint>
@@ -11,8 +11,8 @@
 namespace photopic {
 
 struct CanvasImages {
-    ImageF colour;   ///< scene-linear Rec.709 albedo, rows top to bottom
-    Image8 material; ///< same size as colour; see core/CanvasMaterial.h for the channels
+    ImageF color;    ///< scene-linear Rec.709 albedo, rows top to bottom
+    Image8 material; ///< same size as colour; see CanvasMaterial.h for the channels
 };
 
 struct ProceduralCanvasInfo {
@@ -30,7 +30,7 @@ CanvasImages makeProceduralCanvas(const ProceduralCanvasInfo& info);
 
 /// The painting's colour from a file (any format readImage takes; a PNG is sRGB-decoded), resampled
 /// bilinearly to width x height. Throws IoError naming the file.
-ImageF loadCanvasColour(const std::filesystem::path& path, int width, int height);
+ImageF loadCanvasColor(const std::filesystem::path& path, int width, int height);
 
 /// A material map from an RGBA PNG, stored values, resampled nearest-neighbour to width x height. Throws
 /// IoError naming the file when it cannot be read or is not a valid material map (a normal outside the unit

@@ -45,7 +45,7 @@ void CanvasRenderer::setCanvas(const CanvasImages& images, int tileSize) {
         throw std::invalid_argument(
             fmt::format("canvas tile size {} is not a multiple of 16 in [16, 1024]", tileSize));
     }
-    const int w = images.colour.width, h = images.colour.height;
+    const int w = images.color.width, h = images.color.height;
     if (images.material.width != w || images.material.height != h || w <= 0 || h <= 0) {
         throw std::invalid_argument("canvas colour and material must have the same, non-empty size");
     }
@@ -58,8 +58,8 @@ void CanvasRenderer::setCanvas(const CanvasImages& images, int tileSize) {
     }
     mGrid = grid;
     DebugGroup group("canvas upload + tile lists");
-    if (!mColour.valid() || mColour.extent() != Extent{w, h}) {
-        mColour = Texture({.extent = {w, h}, .format = GL_RGBA16F, .debugName = "canvas colour"});
+    if (!mColor.valid() || mColor.extent() != Extent{w, h}) {
+        mColor = Texture({.extent = {w, h}, .format = GL_RGBA16F, .debugName = "canvas colour"});
         mMaterial = Texture({.extent = {w, h},
                              .format = GL_RGBA8UI,
                              .minFilter = GL_NEAREST,
@@ -67,7 +67,7 @@ void CanvasRenderer::setCanvas(const CanvasImages& images, int tileSize) {
                              .debugName = "canvas material"});
         mOutput = Texture({.extent = {w, h}, .format = GL_RGBA16F, .debugName = "canvas HDR"});
     }
-    mColour.uploadRgba32f(images.colour.rgba.data());
+    mColor.uploadRgba32f(images.color.rgba.data());
     // Rows flipped on upload: image row y (top-down) is texel row h-1-y (GL's bottom-left origin).
     std::vector<std::uint8_t> flipped(images.material.rgba.size());
     const std::size_t row = std::size_t(w) * 4;
@@ -104,7 +104,7 @@ void CanvasRenderer::setCanvas(const CanvasImages& images, int tileSize) {
 
 void CanvasRenderer::setLightingUniforms(const Program& p, const CanvasLighting& l) const {
     setUniform3(p, "uLight", l.light);
-    setUniform3(p, "uLightColour", l.lightColour);
+    setUniform3(p, "uLightColor", l.lightColor);
     setUniform(p, "uAmbient", l.ambient);
     setUniform(p, "uSpecular", l.specular);
     setUniform(p, "uSparkleExposure", l.sparkleExposure);
@@ -124,7 +124,7 @@ const Texture& CanvasRenderer::execute(const CanvasLighting& lighting, CanvasSha
         timers, shading == CanvasShading::Tiled ? "canvas shade (tiled)" : "canvas shade (fullscreen)",
         bytes);
     DebugGroup group(shading == CanvasShading::Tiled ? "canvas shade (tiled)" : "canvas shade (fullscreen)");
-    glBindTextureUnit(0, mColour.id());
+    glBindTextureUnit(0, mColor.id());
     glBindTextureUnit(1, mMaterial.id());
     glBindImageTexture(0, mOutput.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     if (shading == CanvasShading::Fullscreen) {

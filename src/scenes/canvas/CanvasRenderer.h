@@ -1,9 +1,9 @@
 #pragma once
 // The canvas's shading on the GPU, usable without the Scene wrapper (the benchmark and tests drive it
-// directly): uploads a canvas, builds seed 003's tile occupancy and tile lists on the GPU, and shades a frame
-// into an RGBA16F scene-linear target either tile by tile or full screen.
+// directly): uploads a canvas, builds the tile occupancy (which tiles hold material) and tile lists on the
+// GPU, and shades a frame into an RGBA16F scene-linear target either tile by tile or full screen.
 
-#include "core/CanvasMaterial.h"
+#include "scenes/canvas/CanvasMaterial.h"
 #include "gl/GpuTimers.h"
 #include "gl/Objects.h"
 #include "scenes/canvas/CanvasImages.h"
@@ -61,7 +61,7 @@ private:
     Program mFullscreenProgram;
     Program mTiledSpecularProgram;
     Program mTiledDiffuseProgram;
-    Texture mColour;
+    Texture mColor;
     Texture mMaterial;
     Texture mOutput;
     Buffer mTileLists;

@@ -17,11 +17,12 @@ public:
 
     [[nodiscard]] Settings defaultSettings() const override {
         Settings s;
-        // Seed 003 asks for ACES. aces-fitted (Hill's fit) keeps ACES's AP1 matrices, so the glitter's and
-        // the highlights' HDR peaks desaturate towards white as the RRT+ODT does, at a few ALU per pixel; the
-        // Narkowicz fit is per channel and keeps them saturated, the full CTL transform costs far more.
-        // Bloom as seed 003 §4.1 says: only what is above 1.0 (the highlights and the sparkles) blooms, added
-        // on top; the quality tier decides the chain (ultra/high multi-pass, legacy none).
+        // The canvas wants ACES's look. aces-fitted (Hill's fit) keeps ACES's AP1 matrices, so the glitter's
+        // and the highlights' HDR peaks desaturate towards white as the RRT+ODT does, at a few ALU per pixel;
+        // the Narkowicz fit is per channel and keeps them saturated, the full CTL transform costs far more.
+        // Bloom makes the highlights read as physically bright: only what is above 1.0 (the highlights and
+        // the sparkles) blooms, added on top; the quality tier decides the chain (ultra/high multi-pass,
+        // legacy none).
         s.tonemapping.mode = ToneMapper::AcesFitted;
         s.tonemapping.exposure = 0.5f; // the lit canvas sits around 0.5 linear; +0.5 EV puts it mid-display
         s.bloom.enabled = true;
@@ -56,7 +57,7 @@ public:
                                          .at(t);
         const glm::vec3 seedLight = seedLightVector(a.pitch, a.roll);
         const CanvasLighting lighting{.light = canvasLightDirection(a.pitch, a.roll),
-                                      .lightColour = glm::vec3(mSettings.lightIntensity),
+                                      .lightColor = glm::vec3(mSettings.lightIntensity),
                                       .ambient = mSettings.ambient,
                                       .specular = mSettings.specular,
                                       .sparkleExposure = mSettings.sparkleExposure,
@@ -81,7 +82,7 @@ private:
             mRenderer.emplace();
         }
         const auto canvasKey =
-            std::make_tuple(mExtent.width, mExtent.height, mSettings.colour, mSettings.material,
+            std::make_tuple(mExtent.width, mExtent.height, mSettings.color, mSettings.material,
                             mSettings.tileSize, mSettings.occupancy, mSettings.seed);
         try {
             if (mMotionPath != mSettings.motion || (!mMotion && !mSettings.motion.empty())) {
@@ -97,8 +98,8 @@ private:
                                                             .tileSize = mSettings.tileSize,
                                                             .occupancy = mSettings.occupancy,
                                                             .seed = std::uint32_t(mSettings.seed)});
-                if (!mSettings.colour.empty()) {
-                    images.colour = loadCanvasColour(mSettings.colour, mExtent.width, mExtent.height);
+                if (!mSettings.color.empty()) {
+                    images.color = loadCanvasColor(mSettings.color, mExtent.width, mExtent.height);
                 }
                 if (!mSettings.material.empty()) {
                     images.material = loadCanvasMaterial(mSettings.material, mExtent.width, mExtent.height);

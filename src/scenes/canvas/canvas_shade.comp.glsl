@@ -1,5 +1,5 @@
 // Canvas shading into the scene's HDR target (RGBA16F, scene-linear).
-// References: seed 003 (gyroscope lighting, tile-based lighting); Blinn 1977 (half-vector specular).
+// References: Blinn 1977 (half-vector specular).
 // Variants (#defines):
 //   CANVAS_TILED     1: one workgroup per 16x16 block of a listed tile, the tile from the list at uListOffset +
 //                       gl_WorkGroupID.z (glDispatchComputeIndirect); 0: one dispatch over the whole image
@@ -33,7 +33,7 @@ void main() {
     if (any(greaterThanEqual(p, size))) {
         return;
     }
-    vec3 base = texelFetch(uColour, p, 0).rgb;
+    vec3 base = texelFetch(uColor, p, 0).rgb;
     uvec4 m = texelFetch(uMaterial, p, 0);
     vec3 n = decodeNormal(m);
     vec3 c = shadeDiffuse(base, n);

@@ -1,4 +1,5 @@
-// Seed 003 §5 "Tile-based Lighting": builds the Global Occupancy Map and the two tile lists on the GPU. One
+// Tile-based lighting (specular and sparkle only where there is material, which saves most of the work on
+// a mostly matte canvas): builds the occupancy map and the two tile lists on the GPU. One
 // workgroup per tile: any pixel with material (shininess > 0 or glitter) flags the tile; thread 0 appends the
 // tile to the occupied or the empty list with an atomic add on the list's indirect-dispatch z count, so the
 // shading dispatches need no CPU round trip.

@@ -134,8 +134,8 @@ TabletopScene::TabletopScene()
 Settings TabletopScene::defaultSettings() const {
     Settings s;
     s.tonemapping.mode = ToneMapper::AcesFitted;
-    // Seed 000: the eye follows the light under the player token (subject metering on the GPU), key 0.18,
-    // x0.25..x4 (-2..+2 EV, DESIGN.md), tauBrighten 1 s, tauDarken 0.3 s.
+    // The eye follows the light under the player token (subject metering on the GPU), key 0.18,
+    // x0.25..x4 (-2..+2 EV), tauBrighten 1 s, tauDarken 0.3 s.
     s.autoExposure.enabled = true;
     s.autoExposure.metering = MeteringMode::Subject;
     s.autoExposure.adaptation = AdaptationMode::Exponential;
@@ -212,9 +212,10 @@ FrameInputs TabletopScene::render(const FrameTime& time, Pipeline& pipeline, std
         std::max(kMapRect.y + 0.5f * viewSize.y, kMapRect.y + kMapRect.height - 0.5f * viewSize.y));
     const glm::vec2 viewMin = centre - 0.5f * viewSize;
 
-    // Subjects: every token; the player is controlled and the user's character (seed 000's rule picks it).
+    // Subjects: every token; the player is controlled and the user's character (the selection rule picks the
+    // controlled one first).
     mSubjects.clear();
-    std::vector<float> tokens, tokenColours;
+    std::vector<float> tokens, tokenColors;
     for (const Token& token : kTokens) {
         const glm::vec2 pos = token.id == kPlayerId ? player : token.pos;
         Subject s;
@@ -225,21 +226,21 @@ FrameInputs TabletopScene::render(const FrameTime& time, Pipeline& pipeline, std
         s.ownCharacter = token.id == kPlayerId;
         mSubjects.push_back(s);
         tokens.insert(tokens.end(), {pos.x, pos.y, kTokenRadius, token.id == kPlayerId ? 1.0f : 0.0f});
-        tokenColours.insert(tokenColours.end(), {token.albedo.r, token.albedo.g, token.albedo.b, 1.0f});
+        tokenColors.insert(tokenColors.end(), {token.albedo.r, token.albedo.g, token.albedo.b, 1.0f});
     }
 
     std::vector<float> walls;
     for (const Rect& r : kWalls) {
         walls.insert(walls.end(), {r.x0, r.y0, r.x1, r.y1});
     }
-    std::vector<float> lightPos, lightColour, lightRoom;
+    std::vector<float> lightPos, lightColor, lightRoom;
     // Warm torch light (~1900 K), normalised to unit luma so torchIntensity is the luma of the irradiance.
     const glm::vec3 warm = glm::vec3(1.0f, 0.56f, 0.22f) / (0.2126f + 0.7152f * 0.56f + 0.0722f * 0.22f);
     for (std::size_t i = 0; i < kTorches.size(); ++i) {
         const Torch& torch = kTorches[i];
         const float k = mSettings.torchIntensity * torchFlicker(int(i), t, mSettings.flicker);
         lightPos.insert(lightPos.end(), {torch.pos.x, torch.pos.y, kTorchCore, kTorchRange});
-        lightColour.insert(lightColour.end(), {warm.r * k, warm.g * k, warm.b * k, kFlameLuminance * k});
+        lightColor.insert(lightColor.end(), {warm.r * k, warm.g * k, warm.b * k, kFlameLuminance * k});
         // A torch lights its room and the inner half of the walls around it.
         lightRoom.insert(lightRoom.end(), {torch.room.x0 - 12.0f, torch.room.y0 - 12.0f,
                                            torch.room.x1 + 12.0f, torch.room.y1 + 12.0f});
@@ -257,18 +258,18 @@ FrameInputs TabletopScene::render(const FrameTime& time, Pipeline& pipeline, std
     setArray4(mProgram, "uWalls", walls);
     setUniform(mProgram, "uLightCount", int(kTorches.size()));
     setArray4(mProgram, "uLightPos", lightPos);
-    setArray4(mProgram, "uLightColor", lightColour);
+    setArray4(mProgram, "uLightColor", lightColor);
     setArray4(mProgram, "uLightRoom", lightRoom);
     setUniform(mProgram, "uTokenCount", int(kTokens.size()));
     setArray4(mProgram, "uTokens", tokens);
-    setArray4(mProgram, "uTokenColor", tokenColours);
+    setArray4(mProgram, "uTokenColor", tokenColors);
     mProgram.use();
     glBindTextureUnit(0, mMaskTexture.id());
     glBindImageTexture(0, mColor.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glDispatchCompute(GLuint((e.width + 7) / 8), GLuint((e.height + 7) / 8), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
-    // The tokens go to the pipeline (seed 000's subjects: it probes them and its `subject` metering follows
+    // The tokens go to the pipeline (as subjects: it probes them and its `subject` metering follows
     // the player); the roof mask answers "outdoors?" for them.
     pipeline.setOutdoorsMask(&mMask);
     pipeline.setSubjects(mSubjects, centre);

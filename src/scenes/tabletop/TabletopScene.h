@@ -12,9 +12,9 @@
 
 namespace photopic {
 
-/// The tabletop (seed 000's host): a procedural battle map with a sunlit field, a roofed building with three
-/// torch-lit rooms, tokens, and a player token that walks out of the building and back in. Deterministic per
-/// frame index (time = frameIndex * dt). Its outdoors mask is the roof of the building.
+/// The tabletop, the eye-adaptation demo's host: a procedural battle map with a sunlit field, a roofed
+/// building with three torch-lit rooms, tokens, and a player token that walks out of the building and back
+/// in. Deterministic per frame index (time = frameIndex * dt). Its outdoors mask is the roof of the building.
 struct TabletopSceneSettings {
     float sunIlluminance = 5.0f; ///< scene-linear irradiance, [0, 1000], default 5: the field at noon; a
                                  ///< token outdoors reads ~25x what it reads by the torch inside the door
@@ -50,14 +50,15 @@ public:
     std::vector<SettingsIssue> applyOverride(std::string_view assignment) override;
     [[nodiscard]] std::string settingsJson() const override;
     void resize(Extent extent) override;
-    /// subject,world_x,world_y,screen_u,screen_v,outdoors: the subject of the view (seed 000's rule).
+    /// subject,world_x,world_y,screen_u,screen_v,outdoors: the subject of the view (controlled, else own
+    /// character).
     [[nodiscard]] std::vector<std::string> telemetryColumns() const override;
     FrameInputs render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) override;
 
     [[nodiscard]] const TabletopSceneSettings& settings() const { return mSettings; }
     /// The subjects of the last rendered frame: every token, the player controlled and the user's character.
     [[nodiscard]] const std::vector<Subject>& subjects() const { return mSubjects; }
-    /// The roof mask (8-bit, seed 000's coordinate contract).
+    /// The roof mask (8-bit; coordinates as core/OutdoorsMask.h states them).
     [[nodiscard]] const OutdoorsMask& outdoorsMask() const { return mMask; }
     /// World position of the player at `seconds` of frame time: inside until ~3.9 s, outside until ~11.7 s,
     /// inside again (standing by the door until 15 s, then by the fire), looping every loopSeconds.

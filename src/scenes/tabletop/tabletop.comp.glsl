@@ -1,15 +1,15 @@
-// Tabletop battle map, scene-linear Rec.709: the host of seed 000 ("Dynamic Exposure (Token-Based Eye
-// Adaptation)"). Sunlit grass and paths, a roofed building whose roof is the outdoors mask (seed 000's
-// "_Outdoors": 1 = open sky, 0 = under a roof), torch-lit rooms, a battle grid and tokens. Tokens are lit like
-// the ground under them, so a probe on a token reads "what the token is exposed to" (seed 000, "Brightness
-// Measurement"). Torch falloff: inverse-square with a core radius, windowed to zero at the light's range
-// (Karis, "Real Shading in Unreal Engine 4", SIGGRAPH 2013, the (1 - (d/R)^4)^2 window).
-// World: x right, y down (map units, 100 per grid square); the view window is [uViewMin, uViewMin + uViewSize].
+// Tabletop battle map, scene-linear Rec.709: the host for token-based eye adaptation (exposure follows the
+// light under a token). Sunlit grass and paths, a roofed building whose roof is the outdoors mask (1 = open
+// sky, 0 = under a roof), torch-lit rooms, a battle grid and tokens. Tokens are lit like the ground under
+// them, so a probe on a token reads what the token is exposed to. Torch falloff: inverse-square with a core
+// radius, windowed to zero at the light's range (Karis, "Real Shading in Unreal Engine 4", SIGGRAPH 2013, the
+// (1 - (d/R)^4)^2 window). World: x right, y down (map units, 100 per grid square); the view window is
+// [uViewMin, uViewMin + uViewSize].
 #include "passes/common/noise.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0, rgba16f) writeonly uniform image2D uOutput;
-layout(binding = 0) uniform sampler2D uOutdoorsMask; // R8, v = 1 - (y - rect.y) / rect.h (seed 000's V flip)
+layout(binding = 0) uniform sampler2D uOutdoorsMask; // R8, v = 1 - (y - rect.y) / rect.h (y down, v up)
 
 const int kMaxWalls = 16;
 const int kMaxLights = 8;
@@ -130,8 +130,8 @@ void main() {
         if (d < t.z) {
             float rim = smoothstep(t.z - 8.0, t.z - 6.0, d);
             vec3 inner = uTokenColor[i].rgb;
-            vec3 rimColour = t.w > 0.5 ? vec3(0.75, 0.6, 0.2) : vec3(0.6, 0.6, 0.6);
-            albedo = mix(inner, rimColour, rim);
+            vec3 rimColor = t.w > 0.5 ? vec3(0.75, 0.6, 0.2) : vec3(0.6, 0.6, 0.6);
+            albedo = mix(inner, rimColor, rim);
             isWall = false;
         } else if (d < t.z + 10.0) {
             shadow = min(shadow, mix(0.45, 1.0, (d - t.z) / 10.0));

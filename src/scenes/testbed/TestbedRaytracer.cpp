@@ -193,7 +193,7 @@ void pixelCentreKinds(TruthKind kind, const Frame& f, const TruthOptions& o, int
     }
 }
 
-ImageF renderColour(TruthKind kind, const TruthOptions& o) {
+ImageF renderColor(TruthKind kind, const TruthOptions& o) {
     ImageF image(o.width, o.height, 0.0f);
     const int count = o.samples * o.samples;
     const double shutter = o.lens.exposureTimeS > 0.0f ? double(o.lens.exposureTimeS)
@@ -326,7 +326,7 @@ Camera truthCamera(const TruthOptions& options) {
 
 ImageF renderTruth(TruthKind kind, const TruthOptions& options) {
     if (kind == TruthKind::Color || kind == TruthKind::Shutter || kind == TruthKind::ThinLens) {
-        return renderColour(kind, options);
+        return renderColor(kind, options);
     }
     ImageF image(options.width, options.height, 0.0f);
     const Frame f = frameAt(options, options.times.camera, options.times.objects);

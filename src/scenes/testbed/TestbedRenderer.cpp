@@ -85,7 +85,7 @@ void TestbedRenderer::resize(Extent extent) {
                        .magFilter = GL_NEAREST,
                        .debugName = "testbed motion"});
     mTargets = Framebuffer(
-        {.colour = {&mColor, &mNormals, &mMotion}, .depth = &mDepth, .debugName = "testbed targets"});
+        {.color = {&mColor, &mNormals, &mMotion}, .depth = &mDepth, .debugName = "testbed targets"});
 }
 
 void TestbedRenderer::draw(const DrawInfo& info) {

@@ -1,4 +1,4 @@
-#include "io/Raster.h"
+#include "common/Raster.h"
 
 #include <gtest/gtest.h>
 
@@ -12,15 +12,15 @@ constexpr Rgba8 kBlack{0, 0, 0, 255};
 constexpr Rgba8 kWhite{255, 255, 255, 255};
 constexpr Rgba8 kMagenta{200, 30, 160, 255};
 
-bool isColour(const std::uint8_t* p, Rgba8 c) {
+bool isColor(const std::uint8_t* p, Rgba8 c) {
     return p[0] == c.r && p[1] == c.g && p[2] == c.b && p[3] == c.a;
 }
 
-int countColour(const Image8& image, Rgba8 colour) {
+int countColor(const Image8& image, Rgba8 color) {
     int count = 0;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x)
-            count += isColour(image.at(x, y), colour) ? 1 : 0;
+            count += isColor(image.at(x, y), color) ? 1 : 0;
     return count;
 }
 
@@ -33,7 +33,7 @@ Box inkBox(const Image8& image, Rgba8 background) {
     Box box;
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {
-            if (isColour(image.at(x, y), background))
+            if (isColor(image.at(x, y), background))
                 continue;
             box.left = std::min(box.left, x);
             box.right = std::max(box.right, x);
@@ -44,28 +44,28 @@ Box inkBox(const Image8& image, Rgba8 background) {
     return box;
 }
 
-Image8 filled(int width, int height, Rgba8 colour) {
+Image8 filled(int width, int height, Rgba8 color) {
     Image8 image(width, height);
-    fillRect(image, 0, 0, width, height, colour);
+    fillRect(image, 0, 0, width, height, color);
     return image;
 }
 
 TEST(Raster, FillRectClipsToTheImage) {
     Image8 image = filled(10, 8, kBlack);
     fillRect(image, -3, 6, 5, 10, kWhite); // covers x 0..1, y 6..7
-    EXPECT_EQ(countColour(image, kWhite), 4);
+    EXPECT_EQ(countColor(image, kWhite), 4);
     fillRect(image, 20, 20, 5, 5, kWhite);
-    EXPECT_EQ(countColour(image, kWhite), 4);
+    EXPECT_EQ(countColor(image, kWhite), 4);
 }
 
 TEST(Raster, LinesCoverEndpointsAndThickness) {
     Image8 image = filled(20, 20, kBlack);
     drawLine(image, 2, 5, 12, 5, kWhite);
-    EXPECT_EQ(countColour(image, kWhite), 11);
+    EXPECT_EQ(countColor(image, kWhite), 11);
     drawLine(image, 0, 19, 19, 0, kMagenta);
-    EXPECT_TRUE(isColour(image.at(0, 19), kMagenta));
-    EXPECT_TRUE(isColour(image.at(19, 0), kMagenta));
-    EXPECT_EQ(countColour(image, kMagenta), 20);
+    EXPECT_TRUE(isColor(image.at(0, 19), kMagenta));
+    EXPECT_TRUE(isColor(image.at(19, 0), kMagenta));
+    EXPECT_EQ(countColor(image, kMagenta), 20);
 
     Image8 thick = filled(20, 20, kBlack);
     drawLine(thick, 3, 10, 16, 10, kWhite, 3);
@@ -79,25 +79,25 @@ TEST(Raster, LinesCoverEndpointsAndThickness) {
 TEST(Raster, FarOffscreenLineIsClippedQuickly) {
     Image8 image = filled(16, 16, kBlack);
     drawLine(image, -2000000000, 8, 2000000000, 8, kWhite);
-    EXPECT_EQ(countColour(image, kWhite), 16);
+    EXPECT_EQ(countColor(image, kWhite), 16);
     drawLine(image, -50, -50, -10, 200, kWhite);
-    EXPECT_EQ(countColour(image, kWhite), 16);
+    EXPECT_EQ(countColor(image, kWhite), 16);
 }
 
 TEST(Raster, PolylineJoinsPoints) {
     Image8 image = filled(10, 10, kBlack);
     const std::vector<Point2i> points{{1, 1}, {8, 1}, {8, 8}};
     drawPolyline(image, points, kWhite);
-    EXPECT_EQ(countColour(image, kWhite), 8 + 7);
+    EXPECT_EQ(countColor(image, kWhite), 8 + 7);
 }
 
 TEST(Raster, BlitCopiesAndClips) {
     Image8 dst = filled(6, 6, kBlack);
     const Image8 src = filled(4, 4, kMagenta);
     blit(dst, src, 4, -1); // only x 4..5, y 0..2 land
-    EXPECT_EQ(countColour(dst, kMagenta), 6);
-    EXPECT_TRUE(isColour(dst.at(5, 2), kMagenta));
-    EXPECT_TRUE(isColour(dst.at(5, 3), kBlack));
+    EXPECT_EQ(countColor(dst, kMagenta), 6);
+    EXPECT_TRUE(isColor(dst.at(5, 2), kMagenta));
+    EXPECT_TRUE(isColor(dst.at(5, 3), kBlack));
 }
 
 TEST(Raster, BlitScaledAtSameSizeIsExact) {
@@ -121,14 +121,14 @@ TEST(Raster, BlitScaledAveragesInLinearLight) {
     EXPECT_EQ(p[0], 188);
     EXPECT_EQ(p[1], 188);
     EXPECT_EQ(p[3], 255);
-    EXPECT_TRUE(isColour(dst.at(2, 2), kMagenta)) << "draws only the w x h target";
+    EXPECT_TRUE(isColor(dst.at(2, 2), kMagenta)) << "draws only the w x h target";
 }
 
 TEST(Raster, BlitScaledUpsamplesConstantExactly) {
     const Image8 src = filled(3, 2, kMagenta);
     Image8 dst = filled(10, 7, kBlack);
     blitScaled(dst, src, 1, 1, 8, 5);
-    EXPECT_EQ(countColour(dst, kMagenta), 40);
+    EXPECT_EQ(countColor(dst, kMagenta), 40);
 }
 
 TEST(Font, EveryPrintableGlyphIsDistinctAndInked) {
@@ -167,7 +167,7 @@ TEST(Font, DrawTextInksExactlyTheMeasuredBox) {
         EXPECT_EQ(box.top, 3);
         EXPECT_EQ(box.right - box.left + 1, textWidth("HMH", scale)) << "scale " << scale;
         EXPECT_EQ(box.bottom - box.top + 1, textHeight(scale)) << "scale " << scale;
-        EXPECT_GT(countColour(image, kWhite), 0);
+        EXPECT_GT(countColor(image, kWhite), 0);
     }
 }
 
@@ -183,7 +183,7 @@ TEST(ContactSheet, LayoutFollowsTheDocumentedSize) {
 
     // The tall tile fills its cell; the label band under row 0 holds light text.
     const int tallX = kSheetGap + 80 + kSheetGap;
-    EXPECT_TRUE(isColour(sheet.at(tallX + 40, kSheetGap + 80), kMagenta));
+    EXPECT_TRUE(isColor(sheet.at(tallX + 40, kSheetGap + 80), kMagenta));
     int labelInk = 0;
     for (int y = kSheetGap + 160; y < kSheetGap + 160 + kSheetLabelHeight; ++y)
         for (int x = kSheetGap; x < kSheetGap + 80; ++x)
@@ -214,8 +214,8 @@ TEST(Plot, HasTheAskedSizeAndDrawsTheSeries) {
     const Image8 plot = plotLines({sine, gappy}, 320, 200, "Response", "time (s)");
     EXPECT_EQ(plot.width, 320);
     EXPECT_EQ(plot.height, 200);
-    EXPECT_GT(countColour(plot, kMagenta), 200) << "the sine is drawn 2 px thick over most of the width";
-    EXPECT_GT(countColour(plot, gappy.colour), 100);
+    EXPECT_GT(countColor(plot, kMagenta), 200) << "the sine is drawn 2 px thick over most of the width";
+    EXPECT_GT(countColor(plot, gappy.color), 100);
 }
 
 TEST(Plot, DegenerateInputsStillPlot) {
@@ -223,7 +223,7 @@ TEST(Plot, DegenerateInputsStillPlot) {
     const PlotSeries allNan{"nan", kBlack, {NAN}, {NAN}};
     const Image8 plot = plotLines({flat, allNan}, 160, 100, "", "");
     EXPECT_EQ(plot.width, 160);
-    EXPECT_GT(countColour(plot, kMagenta), 0);
+    EXPECT_GT(countColor(plot, kMagenta), 0);
     EXPECT_EQ(plotLines({}, 120, 80, "empty", "x").height, 80);
     const PlotSeries mismatched{"bad", kBlack, {1.0f, 2.0f}, {1.0f}};
     EXPECT_THROW((void)plotLines({mismatched}, 320, 200, "", ""), std::invalid_argument);

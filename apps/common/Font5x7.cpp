@@ -1,6 +1,6 @@
 // The bitmap font behind drawText: 5x7 pixels, printable ASCII 32..126, drawn for Photopic.
 
-#include "io/Raster.h"
+#include "common/Raster.h"
 
 #include <string_view>
 

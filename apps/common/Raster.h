@@ -23,14 +23,14 @@ struct Point2i {
 };
 
 /// Fills the rectangle [x, x + w) x [y, y + h).
-void fillRect(Image8& dst, int x, int y, int w, int h, Rgba8 colour);
+void fillRect(Image8& dst, int x, int y, int w, int h, Rgba8 color);
 
 /// Bresenham line from (x0, y0) to (x1, y1), both ends included, stamped with a square pen of `thickness` px
 /// (clamped to 1..3; odd sizes are centred on the line, 2 extends right and down).
-void drawLine(Image8& dst, int x0, int y0, int x1, int y1, Rgba8 colour, int thickness = 1);
+void drawLine(Image8& dst, int x0, int y0, int x1, int y1, Rgba8 color, int thickness = 1);
 
 /// Lines joining consecutive points; a single point draws one pen stamp.
-void drawPolyline(Image8& dst, std::span<const Point2i> points, Rgba8 colour, int thickness = 1);
+void drawPolyline(Image8& dst, std::span<const Point2i> points, Rgba8 color, int thickness = 1);
 
 /// Copies `src` with its top-left corner at (x, y).
 void blit(Image8& dst, const Image8& src, int x, int y);
@@ -41,7 +41,7 @@ void blit(Image8& dst, const Image8& src, int x, int y);
 void blitScaled(Image8& dst, const Image8& src, int x, int y, int w, int h);
 
 // ---------------------------------------------------------------------------------------------------------------
-// Text: a built-in 5x7 bitmap font (src/io/Font5x7.cpp) for printable ASCII 32..126; other bytes draw as '?'.
+// Text: a built-in 5x7 bitmap font (Font5x7.cpp) for printable ASCII 32..126; other bytes draw as '?'.
 
 inline constexpr int kGlyphWidth = 5;   ///< px, ink columns of a glyph at scale 1
 inline constexpr int kGlyphHeight = 7;  ///< px, rows of a glyph at scale 1
@@ -56,7 +56,7 @@ using Glyph5x7 = std::array<std::uint8_t, kGlyphHeight>;
 /// Height in px of a line of text at `scale`.
 [[nodiscard]] int textHeight(int scale = 1);
 /// Draws one line of text with its top-left corner at (x, y); each font pixel becomes a scale x scale square.
-void drawText(Image8& dst, int x, int y, std::string_view text, Rgba8 colour, int scale = 1);
+void drawText(Image8& dst, int x, int y, std::string_view text, Rgba8 color, int scale = 1);
 
 // ---------------------------------------------------------------------------------------------------------------
 // Contact sheets and plots
@@ -75,7 +75,7 @@ inline constexpr int kSheetLabelHeight = 15; ///< px, the label band under each 
 
 struct PlotSeries {
     std::string name;     ///< legend entry; series with an empty name are left out of the legend
-    Rgba8 colour;         ///< line colour
+    Rgba8 color;          ///< line colour
     std::vector<float> x; ///< abscissae, same length as y
     std::vector<float> y; ///< ordinates; a non-finite x or y breaks the line there
 };

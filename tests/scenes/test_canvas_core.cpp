@@ -1,6 +1,6 @@
-// The canvas scene's GL-free maths: seed 003's light vector, the motion CSV, tile occupancy, material codes.
+// The canvas scene's GL-free maths: the tilt's light vector, the motion CSV, tile occupancy, material codes.
 
-#include "core/CanvasMaterial.h"
+#include "scenes/canvas/CanvasMaterial.h"
 #include "core/Motion.h"
 
 #include <glm/geometric.hpp>
@@ -56,7 +56,7 @@ TEST(CanvasLight, SignsFollowRollAndPitch) {
 }
 
 TEST(CanvasLight, IsNormalisedEvenWhereTheSeedsFormulaIsNot) {
-    // (sin r, sin p, -cos p cos r) has length > 1 when both angles are non-zero; the seed normalises it.
+    // (sin r, sin p, -cos p cos r) has length > 1 when both angles are non-zero; the rule normalises it.
     const glm::vec3 l = seedLightVector(0.5, 0.6);
     EXPECT_NEAR(glm::length(l), 1.0f, 1e-6f);
     const double raw = std::sqrt(std::pow(std::sin(0.6), 2) + std::pow(std::sin(0.5), 2) +

@@ -1,4 +1,4 @@
-#include "core/CanvasMaterial.h"
+#include "scenes/canvas/CanvasMaterial.h"
 
 #include "core/Hash.h"
 
@@ -77,17 +77,17 @@ glm::vec3 shadeCanvasPixel(glm::vec3 base, const std::uint8_t* material, glm::ve
     const glm::vec3 n = decodeMaterialNormal(material[0], material[1]);
     const glm::vec3& l = lighting.light;
     const float nl = glm::dot(n, l);
-    glm::vec3 c = base * lighting.lightColour * (lighting.ambient + std::max(nl, 0.0f));
+    glm::vec3 c = base * lighting.lightColor * (lighting.ambient + std::max(nl, 0.0f));
     const float shininess = decodeShininess(material[2]);
     if (shininess > 0.0f && nl > 0.0f) {
         const glm::vec3 v = glm::normalize(glm::vec3(0, 0, lighting.viewDistance) - position);
         const glm::vec3 h = glm::normalize(l + v);
-        c += lighting.specular * std::pow(std::max(glm::dot(n, h), 0.0f), shininess) * lighting.lightColour;
+        c += lighting.specular * std::pow(std::max(glm::dot(n, h), 0.0f), shininess) * lighting.lightColor;
     }
     if (material[3] >= 128) {
         const float sparkle = std::pow(std::max(nl, 0.0f), kSparkleExponent);
         if (sparkle > kSparkleGate) {
-            c += sparkle * lighting.lightColour * lighting.sparkleExposure;
+            c += sparkle * lighting.lightColor * lighting.sparkleExposure;
         }
     }
     return c;

@@ -1,4 +1,4 @@
-#include "core/TransitionAnalysis.h"
+#include "common/TransitionAnalysis.h"
 
 #include <fmt/format.h>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Eye-lag transitions in exposure telemetry (seed 000, "Exposure Adaptation Model"): where a subject crosses
+// Eye-lag transitions in exposure telemetry (the exposure lags, then settles): where a subject crosses
 // between indoors and outdoors, how far the applied exposure started from its target, how long it took to
 // settle and which time constant it followed. GL-free: the demo and the acceptance tests read it from
 // telemetry rows.

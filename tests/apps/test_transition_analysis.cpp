@@ -2,7 +2,7 @@
 // the blow-out sign and recover tauDarken / tauBrighten.
 
 #include "core/ExposureController.h"
-#include "core/TransitionAnalysis.h"
+#include "common/TransitionAnalysis.h"
 
 #include <gtest/gtest.h>
 
@@ -42,7 +42,7 @@ std::vector<TelemetrySample> simulate(const AutoExposureSettings& ae, const Walk
     return samples;
 }
 
-AutoExposureSettings seed000() {
+AutoExposureSettings eyeLagSettings() {
     AutoExposureSettings ae;
     ae.enabled = true;
     ae.minEV = -4.0f;
@@ -51,7 +51,7 @@ AutoExposureSettings seed000() {
 }
 
 TEST(TransitionAnalysis, RecoversBothTimeConstantsWithinTenPercent) {
-    const AutoExposureSettings ae = seed000();
+    const AutoExposureSettings ae = eyeLagSettings();
     const auto samples = simulate(ae, {}, 30.0f, 20.0f);
     const auto transitions = analyzeTransitions(samples, ae);
     ASSERT_EQ(transitions.size(), 2u);
@@ -83,7 +83,7 @@ TEST(TransitionAnalysis, RecoversBothTimeConstantsWithinTenPercent) {
 
 TEST(TransitionAnalysis, OtherTimeConstantsAndFrameRates) {
     for (const float fps : {15.0f, 24.0f, 60.0f}) {
-        AutoExposureSettings ae = seed000();
+        AutoExposureSettings ae = eyeLagSettings();
         ae.tauBrighten = 2.0f;
         ae.tauDarken = 0.5f;
         const auto transitions = analyzeTransitions(simulate(ae, {}, fps, 22.0f), ae);
@@ -96,8 +96,8 @@ TEST(TransitionAnalysis, OtherTimeConstantsAndFrameRates) {
 }
 
 TEST(TransitionAnalysis, ClampedTargetsStillShowTheLag) {
-    AutoExposureSettings ae = seed000();
-    ae.minEV = -2.0f; // seed 000's multiplier bounds 0.25 .. 4
+    AutoExposureSettings ae = eyeLagSettings();
+    ae.minEV = -2.0f; // multiplier bounds 0.25 .. 4
     ae.maxEV = 2.0f;
     const auto transitions = analyzeTransitions(simulate(ae, {}, 30.0f, 20.0f), ae);
     ASSERT_EQ(transitions.size(), 2u);
@@ -112,8 +112,8 @@ TEST(TransitionAnalysis, NoCrossingNoTransition) {
     for (std::size_t i = 0; i < samples.size(); ++i) {
         samples[i].timeS = float(i) / 30.0f;
     }
-    EXPECT_TRUE(analyzeTransitions(samples, seed000()).empty());
-    EXPECT_TRUE(analyzeTransitions({}, seed000()).empty());
+    EXPECT_TRUE(analyzeTransitions(samples, eyeLagSettings()).empty());
+    EXPECT_TRUE(analyzeTransitions({}, eyeLagSettings()).empty());
 }
 
 } // namespace

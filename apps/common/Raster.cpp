@@ -1,4 +1,4 @@
-#include "io/Raster.h"
+#include "common/Raster.h"
 
 #include "core/Color.h"
 
@@ -12,11 +12,11 @@ namespace photopic {
 
 namespace {
 
-void store(std::uint8_t* pixel, Rgba8 colour) {
-    pixel[0] = colour.r;
-    pixel[1] = colour.g;
-    pixel[2] = colour.b;
-    pixel[3] = colour.a;
+void store(std::uint8_t* pixel, Rgba8 color) {
+    pixel[0] = color.r;
+    pixel[1] = color.g;
+    pixel[2] = color.b;
+    pixel[3] = color.a;
 }
 
 /// Liang-Barsky: clips the segment to [lo, hi] in both axes; false when nothing is left. Keeps Bresenham's
@@ -105,17 +105,17 @@ std::string fitText(const std::string& text, int maxWidth) {
 
 } // namespace
 
-void fillRect(Image8& dst, int x, int y, int w, int h, Rgba8 colour) {
+void fillRect(Image8& dst, int x, int y, int w, int h, Rgba8 color) {
     const int x0 = std::max(x, 0);
     const int y0 = std::max(y, 0);
     const int x1 = int(std::min<long long>(static_cast<long long>(x) + w, dst.width));
     const int y1 = int(std::min<long long>(static_cast<long long>(y) + h, dst.height));
     for (int yy = y0; yy < y1; ++yy)
         for (int xx = x0; xx < x1; ++xx)
-            store(dst.at(xx, yy), colour);
+            store(dst.at(xx, yy), color);
 }
 
-void drawLine(Image8& dst, int x0, int y0, int x1, int y1, Rgba8 colour, int thickness) {
+void drawLine(Image8& dst, int x0, int y0, int x1, int y1, Rgba8 color, int thickness) {
     thickness = std::clamp(thickness, 1, 3);
     const int offset = (thickness - 1) / 2;
     double fx0 = x0, fy0 = y0, fx1 = x1, fy1 = y1;
@@ -126,7 +126,7 @@ void drawLine(Image8& dst, int x0, int y0, int x1, int y1, Rgba8 colour, int thi
     const int dx = std::abs(bx - ax), sx = ax < bx ? 1 : -1;
     const int dy = -std::abs(by - ay), sy = ay < by ? 1 : -1;
     for (int err = dx + dy;;) {
-        fillRect(dst, ax - offset, ay - offset, thickness, thickness, colour);
+        fillRect(dst, ax - offset, ay - offset, thickness, thickness, color);
         if (ax == bx && ay == by)
             break;
         const int e2 = 2 * err;
@@ -141,11 +141,11 @@ void drawLine(Image8& dst, int x0, int y0, int x1, int y1, Rgba8 colour, int thi
     }
 }
 
-void drawPolyline(Image8& dst, std::span<const Point2i> points, Rgba8 colour, int thickness) {
+void drawPolyline(Image8& dst, std::span<const Point2i> points, Rgba8 color, int thickness) {
     if (points.size() == 1)
-        drawLine(dst, points[0].x, points[0].y, points[0].x, points[0].y, colour, thickness);
+        drawLine(dst, points[0].x, points[0].y, points[0].x, points[0].y, color, thickness);
     for (std::size_t i = 1; i < points.size(); ++i)
-        drawLine(dst, points[i - 1].x, points[i - 1].y, points[i].x, points[i].y, colour, thickness);
+        drawLine(dst, points[i - 1].x, points[i - 1].y, points[i].x, points[i].y, color, thickness);
 }
 
 void blit(Image8& dst, const Image8& src, int x, int y) {
@@ -191,7 +191,7 @@ int textHeight(int scale) {
     return kGlyphHeight * std::max(scale, 1);
 }
 
-void drawText(Image8& dst, int x, int y, std::string_view text, Rgba8 colour, int scale) {
+void drawText(Image8& dst, int x, int y, std::string_view text, Rgba8 color, int scale) {
     scale = std::max(scale, 1);
     for (std::size_t i = 0; i < text.size(); ++i) {
         const Glyph5x7& glyph = glyph5x7(text[i]);
@@ -199,7 +199,7 @@ void drawText(Image8& dst, int x, int y, std::string_view text, Rgba8 colour, in
         for (int row = 0; row < kGlyphHeight; ++row)
             for (int col = 0; col < kGlyphWidth; ++col)
                 if (glyph[std::size_t(row)] >> (kGlyphWidth - 1 - col) & 1)
-                    fillRect(dst, left + col * scale, y + row * scale, scale, scale, colour);
+                    fillRect(dst, left + col * scale, y + row * scale, scale, scale, color);
     }
 }
 
@@ -312,19 +312,37 @@ std::string tickLabel(double value, double step) {
     return text.data();
 }
 
-} // namespace
+constexpr Rgba8 kPlotBackground{255, 255, 255, 255};
+constexpr Rgba8 kPlotInk{40, 40, 40, 255};
+constexpr Rgba8 kPlotGrid{228, 228, 228, 255};
+constexpr Rgba8 kPlotLegendBorder{170, 170, 170, 255};
+constexpr int kPlotTick = 4; // px, tick mark length outside the frame
 
-Image8 plotLines(const std::vector<PlotSeries>& series, int width, int height, std::string_view title,
-                 std::string_view xLabel) {
-    if (width < 120 || height < 80)
-        throw std::invalid_argument("plotLines: the plot must be at least 120 x 80 px");
-    constexpr Rgba8 kBackground{255, 255, 255, 255};
-    constexpr Rgba8 kInk{40, 40, 40, 255};
-    constexpr Rgba8 kGrid{228, 228, 228, 255};
-    constexpr Rgba8 kLegendBorder{170, 170, 170, 255};
-    constexpr int kTick = 4; // px, tick mark length outside the frame
+/// Where everything of a plot goes: the plot area in pixels and the two axes it maps.
+struct PlotLayout {
+    int width = 0, height = 0;
+    int titleScale = 1;
+    int left = 0, top = 0, plotWidth = 0, plotHeight = 0;
+    Axis xAxis, yAxis;
 
+    [[nodiscard]] int plotRight() const { return left + plotWidth - 1; }
+    [[nodiscard]] int plotBottom() const { return top + plotHeight - 1; }
+    [[nodiscard]] int toPixelX(double v) const {
+        return left + int(std::lround((v - xAxis.lo) / (xAxis.hi - xAxis.lo) * (plotWidth - 1)));
+    }
+    [[nodiscard]] int toPixelY(double v) const {
+        return top + plotHeight - 1 -
+               int(std::lround((v - yAxis.lo) / (yAxis.hi - yAxis.lo) * (plotHeight - 1)));
+    }
+};
+
+struct DataBounds {
     double xMin = std::numeric_limits<double>::infinity(), xMax = -xMin, yMin = xMin, yMax = -xMin;
+};
+
+/// The range of every finite point; throws when a series' x and y differ in length.
+DataBounds dataBounds(const std::vector<PlotSeries>& series) {
+    DataBounds b;
     for (const PlotSeries& s : series) {
         if (s.x.size() != s.y.size())
             throw std::invalid_argument("plotLines: series \"" + s.name + "\" has " +
@@ -333,78 +351,82 @@ Image8 plotLines(const std::vector<PlotSeries>& series, int width, int height, s
         for (std::size_t i = 0; i < s.x.size(); ++i) {
             if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]))
                 continue;
-            xMin = std::min(xMin, double(s.x[i]));
-            xMax = std::max(xMax, double(s.x[i]));
-            yMin = std::min(yMin, double(s.y[i]));
-            yMax = std::max(yMax, double(s.y[i]));
+            b.xMin = std::min(b.xMin, double(s.x[i]));
+            b.xMax = std::max(b.xMax, double(s.x[i]));
+            b.yMin = std::min(b.yMin, double(s.y[i]));
+            b.yMax = std::max(b.yMax, double(s.y[i]));
         }
     }
+    return b;
+}
 
-    // Layout: title, plot area, tick labels, x label; the left margin fits the widest y tick label.
-    const int titleScale = width >= 480 ? 2 : 1;
-    const int top = title.empty() ? 10 : textHeight(titleScale) + 14;
-    const int bottom = kTick + 4 + textHeight() + (xLabel.empty() ? 6 : textHeight() + 14);
-    const int plotHeight = height - top - bottom;
-    const Axis yAxis = niceAxis(yMin, yMax, std::max(2, plotHeight / 40));
+/// Title, plot area, tick labels, x label; the left margin fits the widest y tick label.
+PlotLayout plotLayout(const DataBounds& b, int width, int height, std::string_view title,
+                      std::string_view xLabel) {
+    PlotLayout l;
+    l.width = width;
+    l.height = height;
+    l.titleScale = width >= 480 ? 2 : 1;
+    l.top = title.empty() ? 10 : textHeight(l.titleScale) + 14;
+    const int bottom = kPlotTick + 4 + textHeight() + (xLabel.empty() ? 6 : textHeight() + 14);
+    l.plotHeight = height - l.top - bottom;
+    l.yAxis = niceAxis(b.yMin, b.yMax, std::max(2, l.plotHeight / 40));
     int yLabelWidth = 0;
-    for (int i = 0; i < yAxis.tickCount(); ++i)
-        yLabelWidth = std::max(yLabelWidth, textWidth(tickLabel(yAxis.tick(i), yAxis.step)));
-    const int left = yLabelWidth + kTick + 10;
+    for (int i = 0; i < l.yAxis.tickCount(); ++i)
+        yLabelWidth = std::max(yLabelWidth, textWidth(tickLabel(l.yAxis.tick(i), l.yAxis.step)));
+    l.left = yLabelWidth + kPlotTick + 10;
     const int right = 16;
-    const int plotWidth = width - left - right;
-    if (plotWidth < 16 || plotHeight < 16)
+    l.plotWidth = width - l.left - right;
+    if (l.plotWidth < 16 || l.plotHeight < 16)
         throw std::invalid_argument("plotLines: no room left for the plot area");
-    const Axis xAxis = niceAxis(xMin, xMax, std::max(2, plotWidth / 70));
+    l.xAxis = niceAxis(b.xMin, b.xMax, std::max(2, l.plotWidth / 70));
+    return l;
+}
 
-    const auto toPixelX = [&](double v) {
-        return left + int(std::lround((v - xAxis.lo) / (xAxis.hi - xAxis.lo) * (plotWidth - 1)));
-    };
-    const auto toPixelY = [&](double v) {
-        return top + plotHeight - 1 -
-               int(std::lround((v - yAxis.lo) / (yAxis.hi - yAxis.lo) * (plotHeight - 1)));
-    };
-
-    Image8 image(width, height);
-    fillRect(image, 0, 0, width, height, kBackground);
-    const int plotRight = left + plotWidth - 1;
-    const int plotBottom = top + plotHeight - 1;
-    for (int i = 0; i < xAxis.tickCount(); ++i) {
-        const int px = toPixelX(xAxis.tick(i));
-        drawLine(image, px, top, px, plotBottom, kGrid);
-        drawLine(image, px, plotBottom, px, plotBottom + kTick, kInk);
-        const std::string label = tickLabel(xAxis.tick(i), xAxis.step);
-        drawText(image, px - textWidth(label) / 2, plotBottom + kTick + 4, label, kInk);
+/// Grid lines, ticks and their labels, then the frame.
+void drawAxes(Image8& image, const PlotLayout& l) {
+    for (int i = 0; i < l.xAxis.tickCount(); ++i) {
+        const int px = l.toPixelX(l.xAxis.tick(i));
+        drawLine(image, px, l.top, px, l.plotBottom(), kPlotGrid);
+        drawLine(image, px, l.plotBottom(), px, l.plotBottom() + kPlotTick, kPlotInk);
+        const std::string label = tickLabel(l.xAxis.tick(i), l.xAxis.step);
+        drawText(image, px - textWidth(label) / 2, l.plotBottom() + kPlotTick + 4, label, kPlotInk);
     }
-    for (int i = 0; i < yAxis.tickCount(); ++i) {
-        const int py = toPixelY(yAxis.tick(i));
-        drawLine(image, left, py, plotRight, py, kGrid);
-        drawLine(image, left - kTick, py, left, py, kInk);
-        const std::string label = tickLabel(yAxis.tick(i), yAxis.step);
-        drawText(image, left - kTick - 4 - textWidth(label), py - kGlyphHeight / 2, label, kInk);
+    for (int i = 0; i < l.yAxis.tickCount(); ++i) {
+        const int py = l.toPixelY(l.yAxis.tick(i));
+        drawLine(image, l.left, py, l.plotRight(), py, kPlotGrid);
+        drawLine(image, l.left - kPlotTick, py, l.left, py, kPlotInk);
+        const std::string label = tickLabel(l.yAxis.tick(i), l.yAxis.step);
+        drawText(image, l.left - kPlotTick - 4 - textWidth(label), py - kGlyphHeight / 2, label, kPlotInk);
     }
-    const std::array<Point2i, 5> frame{
-        {{left, top}, {plotRight, top}, {plotRight, plotBottom}, {left, plotBottom}, {left, top}}};
-    drawPolyline(image, frame, kInk);
+    const int r = l.plotRight(), b = l.plotBottom();
+    const std::array<Point2i, 5> frame{{{l.left, l.top}, {r, l.top}, {r, b}, {l.left, b}, {l.left, l.top}}};
+    drawPolyline(image, frame, kPlotInk);
+}
 
-    // Each series as runs of finite points; a run of one point is a dot.
+/// Each series as runs of finite points; a run of one point is a dot.
+void drawSeries(Image8& image, const std::vector<PlotSeries>& series, const PlotLayout& l) {
     for (const PlotSeries& s : series) {
         std::vector<Point2i> run;
         const auto flush = [&] {
             if (run.size() == 1)
-                fillRect(image, run[0].x - 1, run[0].y - 1, 3, 3, s.colour);
+                fillRect(image, run[0].x - 1, run[0].y - 1, 3, 3, s.color);
             else
-                drawPolyline(image, run, s.colour, 2);
+                drawPolyline(image, run, s.color, 2);
             run.clear();
         };
         for (std::size_t i = 0; i < s.x.size(); ++i) {
             if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
-                run.push_back({toPixelX(s.x[i]), toPixelY(s.y[i])});
+                run.push_back({l.toPixelX(s.x[i]), l.toPixelY(s.y[i])});
             else
                 flush();
         }
         flush();
     }
+}
 
+/// The named series in a box in the top-right corner of the plot area.
+void drawLegend(Image8& image, const std::vector<PlotSeries>& series, const PlotLayout& l) {
     int legendEntries = 0;
     int legendTextWidth = 0;
     for (const PlotSeries& s : series) {
@@ -413,27 +435,42 @@ Image8 plotLines(const std::vector<PlotSeries>& series, int width, int height, s
             legendTextWidth = std::max(legendTextWidth, textWidth(s.name));
         }
     }
-    if (legendEntries > 0) {
-        constexpr int kRow = 12;
-        const int boxWidth = 8 + 16 + 6 + legendTextWidth + 8;
-        const int boxX = plotRight - 6 - boxWidth;
-        const int boxY = top + 6;
-        fillRect(image, boxX, boxY, boxWidth, 6 + legendEntries * kRow, kLegendBorder);
-        fillRect(image, boxX + 1, boxY + 1, boxWidth - 2, 4 + legendEntries * kRow, kBackground);
-        int entryY = boxY + 6;
-        for (const PlotSeries& s : series) {
-            if (s.name.empty())
-                continue;
-            drawLine(image, boxX + 8, entryY + 3, boxX + 24, entryY + 3, s.colour, 2);
-            drawText(image, boxX + 30, entryY, s.name, kInk);
-            entryY += kRow;
-        }
+    if (legendEntries == 0)
+        return;
+    constexpr int kRow = 12;
+    const int boxWidth = 8 + 16 + 6 + legendTextWidth + 8;
+    const int boxX = l.plotRight() - 6 - boxWidth;
+    const int boxY = l.top + 6;
+    fillRect(image, boxX, boxY, boxWidth, 6 + legendEntries * kRow, kPlotLegendBorder);
+    fillRect(image, boxX + 1, boxY + 1, boxWidth - 2, 4 + legendEntries * kRow, kPlotBackground);
+    int entryY = boxY + 6;
+    for (const PlotSeries& s : series) {
+        if (s.name.empty())
+            continue;
+        drawLine(image, boxX + 8, entryY + 3, boxX + 24, entryY + 3, s.color, 2);
+        drawText(image, boxX + 30, entryY, s.name, kPlotInk);
+        entryY += kRow;
     }
+}
 
+} // namespace
+
+Image8 plotLines(const std::vector<PlotSeries>& series, int width, int height, std::string_view title,
+                 std::string_view xLabel) {
+    if (width < 120 || height < 80)
+        throw std::invalid_argument("plotLines: the plot must be at least 120 x 80 px");
+    const PlotLayout layout = plotLayout(dataBounds(series), width, height, title, xLabel);
+    Image8 image(width, height);
+    fillRect(image, 0, 0, width, height, kPlotBackground);
+    drawAxes(image, layout);
+    drawSeries(image, series, layout);
+    drawLegend(image, series, layout);
     if (!title.empty())
-        drawText(image, (width - textWidth(title, titleScale)) / 2, 7, title, kInk, titleScale);
+        drawText(image, (width - textWidth(title, layout.titleScale)) / 2, 7, title, kPlotInk,
+                 layout.titleScale);
     if (!xLabel.empty())
-        drawText(image, left + (plotWidth - textWidth(xLabel)) / 2, height - 7 - textHeight(), xLabel, kInk);
+        drawText(image, layout.left + (layout.plotWidth - textWidth(xLabel)) / 2, height - 7 - textHeight(),
+                 xLabel, kPlotInk);
     return image;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-// The canvas scene's material map and tile occupancy (seed 003 §2.2, §3, §5), GL-free: the encoding of the
-// material texture, the tile grid, which tiles hold material, and a CPU reference of the per-pixel shading
-// that the GPU paths are tested against.
+// The canvas scene's material map and tile occupancy (per-pixel material, sparkle, tiles with material),
+// GL-free: the encoding of the material texture, the tile grid, which tiles hold material, and a CPU
+// reference of the per-pixel shading that the GPU paths are tested against.
 //
 // Material map, 8-bit RGBA, stored values (no sRGB decoding):
 //   R, G  normal x, y in [-1, 1] as (v + 1) / 2 (z = sqrt(1 - x^2 - y^2), towards the viewer); on glitter
@@ -20,7 +20,7 @@
 
 namespace photopic {
 
-/// Seed 003 §3: sparkle = pow(max(dot(facetNormal, L), 0), 128), added when > 0.9.
+/// Glitter sparkle: sparkle = pow(max(dot(facetNormal, L), 0), 128), added when > 0.9.
 inline constexpr float kSparkleExponent = 128.0f;
 inline constexpr float kSparkleGate = 0.9f;
 /// Largest shininess exponent the material encodes (B = 255 -> 2^11).
@@ -57,17 +57,17 @@ TileGrid makeTileGrid(int width, int height, int tileSize);
 /// Exactly round(fraction * count) tiles flagged 1, picked in a hashed order from `seed` (deterministic,
 /// spread over the image).
 std::vector<std::uint8_t> chooseTiles(const TileGrid& grid, double fraction, std::uint32_t seed);
-/// hasMaterial per tile of `material` (seed 003's Global Occupancy Map).
+/// hasMaterial per tile of `material` (the occupancy map that tiled shading reads).
 std::vector<std::uint8_t> tileOccupancy(const Image8& material, const TileGrid& grid);
 
 /// Everything a pixel's shading needs besides its textures (mirrors canvas_shade.comp.glsl's uniforms).
 struct CanvasLighting {
     glm::vec3 light{0, 0,
                     1}; ///< canvasLightDirection(): unit, towards the lamp, canvas frame (z to the viewer)
-    glm::vec3 lightColour{1, 1, 1};
+    glm::vec3 lightColor{1, 1, 1};
     float ambient = 0.25f;        ///< fraction of the lamp reaching the canvas as fill
     float specular = 1.0f;        ///< Blinn-Phong strength ks
-    float sparkleExposure = 4.0f; ///< seed 003's `exposure` multiplying the sparkle
+    float sparkleExposure = 4.0f; ///< exposure multiplying the sparkle
     float viewDistance = 1.5f;    ///< eye distance from the canvas centre, in image heights
 };
 

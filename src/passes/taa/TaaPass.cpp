@@ -1,0 +1,102 @@
+#include "passes/taa/TaaPass.h"
+
+#include "core/Log.h"
+#include "passes/Bindings.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace photopic {
+
+namespace {
+/// Motion, in pixels per frame, from which the history is clipped fully to the neighbourhood box; slower
+/// pixels are clipped in proportion (see taa_resolve.comp.glsl).
+constexpr float kFullClipPixels = 1.0f;
+
+void setMatrix(const Program& p, const char* name, const glm::mat4& m) {
+    glProgramUniformMatrix4fv(p.id(), glGetUniformLocation(p.id(), name), 1, GL_FALSE, glm::value_ptr(m));
+}
+} // namespace
+
+TaaPass::TaaPass()
+    : mProgram(makeComputeProgram("passes/taa/taa_resolve.comp.glsl", bindingDefines()))
+    , mNoDebug({.extent = {1, 1}, .format = GL_RG8, .debugName = "taa debug (unused)"}) {}
+
+std::span<const ResourceUse> TaaPass::uses() const {
+    static constexpr ResourceUse kUses[] = {
+        {Resource::SceneColor, Access::Read},     {Resource::Motion, Access::Read},
+        {Resource::ExposureState, Access::Read},  {Resource::LinearDepth, Access::ReadOptional},
+        {Resource::Camera, Access::ReadOptional}, {Resource::SceneColor, Access::Write},
+        {Resource::TaaDebug, Access::Write}};
+    return kUses;
+}
+
+bool TaaPass::selected(const Settings& settings) noexcept {
+    const AntiAliasing aa = settings.antiAliasing();
+    return aa == AntiAliasing::Taa || aa == AntiAliasing::TaaSmaa;
+}
+
+bool TaaPass::enabled(const FrameContext& ctx) const {
+    return ctx.hdr && selected(ctx.settings);
+}
+
+void TaaPass::resize(Extent extent) {
+    mHistory.ensure(extent, GL_RGBA16F, "taa history");
+}
+
+void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const Extent e = ctx.extent;
+    const TaaSettings& s = ctx.settings.taa;
+    const Texture* depth = resources.texture(Resource::LinearDepth);
+    const bool camera = resources.has(Resource::Camera);
+    const DebugView view = ctx.settings.debug.view;
+    const bool debug = view == DebugView::TaaHistoryWeight || view == DebugView::Disocclusion;
+    const Texture* debugTarget = nullptr;
+    if (debug) {
+        debugTarget = &resources.pool()
+                           .acquire({.extent = e,
+                                     .format = GL_RG8,
+                                     .minFilter = GL_NEAREST,
+                                     .magFilter = GL_NEAREST,
+                                     .debugName = "taa debug"})
+                           .texture();
+    }
+    const double bytes =
+        double(e.width) * e.height *
+        (8.0 /*current*/ + 8.0 /*history*/ + 4.0 /*motion*/ + (depth ? 4.0 : 0.0) + 8.0 /*output*/);
+    ScopedGpuTimer timer(ctx.timers, "taa", bytes);
+    setUniform(mProgram, "uHasHistory", mHistory.valid() && !ctx.resetHistory ? 1 : 0);
+    setUniform(mProgram, "uHasDepth", depth ? 1 : 0);
+    setUniform(mProgram, "uHasCamera", camera ? 1 : 0);
+    setUniform(mProgram, "uWriteDebug", debug ? 1 : 0);
+    setUniform(mProgram, "uBlend", s.blendFactor);
+    setUniform(mProgram, "uGamma", s.varianceGamma);
+    setUniform(mProgram, "uStaticPixels", kFullClipPixels);
+    setUniform(mProgram, "uAdaptive", s.adaptiveFeedback ? 1 : 0);
+    setUniform(mProgram, "uFeedbackMin", s.feedbackMin);
+    setUniform(mProgram, "uFeedbackMax", s.feedbackMax);
+    if (camera) {
+        const Camera& c = *ctx.inputs.camera;
+        setMatrix(mProgram, "uInvProjection", glm::inverse(c.projection));
+        setMatrix(mProgram, "uInvView", glm::inverse(c.view));
+        setMatrix(mProgram, "uPrevViewProjection", c.prevViewProjection);
+    }
+    mProgram.use();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
+                     resources.buffer(Resource::ExposureState)->id());
+    glBindTextureUnit(0, resources.texture(Resource::SceneColor)->id());
+    // Without a history the shader reads none; a bound texture keeps every sampler complete.
+    glBindTextureUnit(1, mHistory.previous() ? mHistory.previous()->id() : mHistory.current().id());
+    glBindTextureUnit(2, resources.texture(Resource::Motion)->id());
+    glBindTextureUnit(3, depth ? depth->id() : resources.texture(Resource::Motion)->id());
+    glBindImageTexture(0, mHistory.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(1, debugTarget ? debugTarget->id() : mNoDebug.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_RG8);
+    glDispatchCompute(GLuint((e.width + 7) / 8), GLuint((e.height + 7) / 8), 1);
+    resources.bind(Resource::SceneColor, mHistory.current());
+    if (debugTarget) {
+        resources.bind(Resource::TaaDebug, *debugTarget);
+    }
+    mHistory.advance();
+}
+
+} // namespace photopic

@@ -1,0 +1,186 @@
+// Temporal anti-aliasing resolve in the HDR domain, before metering.
+// References: Karis 2014, "High Quality Temporal Supersampling" (reprojection with motion vectors, YCoCg
+// neighbourhood clamp, luma weighting 1/(1 + luma) as a reversible tone map); Salvi 2016, "An Excursion in
+// Temporal Supersampling" (variance clipping: mean +- gamma * sigma); Pedersen 2016 (Playdead's INSIDE: clip
+// toward the box centre, closest-depth motion, feedback that rises where the history agrees); Jimenez 2016,
+// "Filmic SMAA" (Catmull-Rom history with five bilinear taps).
+//
+// Colours are blended in a working space c' = c E / (1 + luma(c E)), E the exposure the frame will be shown at
+// (last frame's: metering follows TAA): a blend there weights each sample by 1 / (1 + luma), so a firefly
+// cannot dominate the history, and the clamp box is measured as the eye will see it.
+#include "passes/common/color.h.glsl"
+#include "passes/common/exposure.h.glsl"
+#include "passes/common/sanitize.h.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 0) uniform sampler2D uCurrent; // sceneColor: sanitised HDR, this frame's jittered samples
+layout(binding = 1) uniform sampler2D uHistory; // last frame's resolve: rgb, a = its linear depth
+layout(binding = 2) uniform sampler2D uMotion;  // UV, current - previous
+layout(binding = 3) uniform sampler2D uDepth;   // linear view depth (when uHasDepth)
+layout(binding = 0, rgba16f) writeonly uniform image2D uOutput;
+layout(binding = 1, rg8) writeonly uniform image2D uDebug; // r: history weight, g: disoccluded
+
+uniform int uHasHistory;
+uniform int uHasDepth;
+uniform int uHasCamera;
+uniform int uWriteDebug;
+uniform float uBlend;
+uniform float uGamma;
+uniform float uStaticPixels; // motion (pixels) from which the history is clipped fully
+uniform int uAdaptive;
+uniform float uFeedbackMin;
+uniform float uFeedbackMax;
+uniform mat4 uInvProjection;
+uniform mat4 uInvView;
+uniform mat4 uPrevViewProjection;
+
+vec3 toWorking(vec3 c, float exposure) {
+    c *= exposure;
+    return c / (1.0 + luma709(c));
+}
+
+vec3 fromWorking(vec3 w, float exposure) { return w / (max(1.0 - luma709(w), 1e-4) * exposure); }
+
+// Motion may be negative; only NaN and infinity are dropped (a broken motion input must not smear).
+vec2 finiteMotion(vec2 m) {
+    return vec2(isnan(m.x) || isinf(m.x) ? 0.0 : m.x, isnan(m.y) || isinf(m.y) ? 0.0 : m.y);
+}
+
+vec3 rgbToYCoCg(vec3 c) {
+    return vec3(0.25 * c.r + 0.5 * c.g + 0.25 * c.b, 0.5 * c.r - 0.5 * c.b, -0.25 * c.r + 0.5 * c.g - 0.25 * c.b);
+}
+
+vec3 yCoCgToRgb(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
+
+// Catmull-Rom through five bilinear taps: the four corner taps of the 4x4 kernel carry little weight and
+// are dropped, the rest are merged pairwise into bilinear fetches (weights renormalised).
+vec3 sampleHistoryCatmullRom(vec2 uv, vec2 size) {
+    vec2 position = uv * size;
+    vec2 centre = floor(position - 0.5) + 0.5;
+    vec2 f = position - centre;
+    vec2 w0 = f * (-0.5 + f * (1.0 - 0.5 * f));
+    vec2 w1 = 1.0 + f * f * (-2.5 + 1.5 * f);
+    vec2 w2 = f * (0.5 + f * (2.0 - 1.5 * f));
+    vec2 w3 = f * f * (-0.5 + 0.5 * f);
+    vec2 w12 = w1 + w2;
+    vec2 tc12 = (centre + w2 / w12) / size;
+    vec2 tc0 = (centre - 1.0) / size;
+    vec2 tc3 = (centre + 2.0) / size;
+    vec3 sum = textureLod(uHistory, vec2(tc12.x, tc0.y), 0.0).rgb * (w12.x * w0.y) +
+               textureLod(uHistory, vec2(tc0.x, tc12.y), 0.0).rgb * (w0.x * w12.y) +
+               textureLod(uHistory, vec2(tc12.x, tc12.y), 0.0).rgb * (w12.x * w12.y) +
+               textureLod(uHistory, vec2(tc3.x, tc12.y), 0.0).rgb * (w3.x * w12.y) +
+               textureLod(uHistory, vec2(tc12.x, tc3.y), 0.0).rgb * (w12.x * w3.y);
+    float weight = w12.x * w0.y + w0.x * w12.y + w12.x * w12.y + w3.x * w12.y + w12.x * w3.y;
+    // The lobes overshoot at hard edges: no negative light.
+    return max(sum / weight, vec3(0.0));
+}
+
+// Moves `h` toward the box centre until it lies in the box (a ray-box clip, not a per-channel clamp, so the
+// hue of a clipped history stays on the line to the centre).
+vec3 clipToBox(vec3 boxMin, vec3 boxMax, vec3 h) {
+    vec3 centre = 0.5 * (boxMax + boxMin);
+    vec3 extent = 0.5 * (boxMax - boxMin) + 1e-6;
+    vec3 v = h - centre;
+    vec3 a = abs(v / extent);
+    float m = max(a.x, max(a.y, a.z));
+    return m > 1.0 ? centre + v / m : h;
+}
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = imageSize(uOutput);
+    if (any(greaterThanEqual(p, size))) {
+        return;
+    }
+    float exposure = max(gExposure.exposure, 1e-8);
+    vec3 current = texelFetch(uCurrent, p, 0).rgb;
+    float depth = uHasDepth != 0 ? texelFetch(uDepth, p, 0).r : 0.0;
+
+    // Neighbourhood statistics in working YCoCg, and the closest surface for the motion of edges.
+    vec3 m1 = vec3(0.0), m2 = vec3(0.0);
+    vec3 lo = vec3(1e9), hi = vec3(-1e9);
+    ivec2 closest = p;
+    float closestDepth = depth;
+    for (int y = -1; y <= 1; ++y) {
+        for (int x = -1; x <= 1; ++x) {
+            ivec2 q = clamp(p + ivec2(x, y), ivec2(0), size - 1);
+            vec3 c = rgbToYCoCg(toWorking(texelFetch(uCurrent, q, 0).rgb, exposure));
+            m1 += c;
+            m2 += c * c;
+            lo = min(lo, c);
+            hi = max(hi, c);
+            if (uHasDepth != 0) {
+                float d = texelFetch(uDepth, q, 0).r;
+                if (d < closestDepth) {
+                    closestDepth = d;
+                    closest = q;
+                }
+            }
+        }
+    }
+    vec3 mean = m1 / 9.0;
+    vec3 sigma = sqrt(max(m2 / 9.0 - mean * mean, vec3(0.0)));
+    vec3 boxMin = max(lo, mean - uGamma * sigma);
+    vec3 boxMax = min(hi, mean + uGamma * sigma);
+
+    vec2 motion = finiteMotion(texelFetch(uMotion, closest, 0).rg);
+    vec2 uv = (vec2(p) + 0.5) / vec2(size);
+    vec2 prevUv = uv - motion;
+    bool history = uHasHistory != 0 && all(greaterThanEqual(prevUv, vec2(0.0))) && all(lessThanEqual(prevUv, vec2(1.0)));
+
+    // Disocclusion: the surface seen now was not where the history was, e.g. it was behind an object that
+    // moved away. With depth and the camera, the point's depth last frame is predicted and compared with the
+    // depth the history stored.
+    bool disoccluded = false;
+    if (history && uHasDepth != 0 && uHasCamera != 0 && !isinf(depth)) {
+        vec4 near = uInvProjection * vec4(uv * 2.0 - 1.0, -1.0, 1.0);
+        vec3 ray = near.xyz / near.w;
+        vec4 world = uInvView * vec4(ray * (depth / -ray.z), 1.0);
+        float predicted = (uPrevViewProjection * world).w;
+        // Disoccluded means hidden last frame: every depth the history stored around the point is nearer than
+        // the point was. The history's depths come from jittered samples (at an edge, or on a wire thinner
+        // than a pixel, a pixel holds either surface from frame to frame), hence the 3x3 neighbourhood; a
+        // history that is farther than the point (a thin feature this frame's sample hit) is not disocclusion.
+        ivec2 hp = clamp(ivec2(prevUv * vec2(size)), ivec2(0), size - 1);
+        disoccluded = true;
+        for (int i = 0; i < 9 && disoccluded; ++i) {
+            ivec2 q = clamp(hp + ivec2(i % 3 - 1, i / 3 - 1), ivec2(0), size - 1);
+            disoccluded = texelFetch(uHistory, q, 0).a < 0.9 * predicted;
+        }
+    }
+
+    vec4 result;
+    float weight = 0.0;
+    if (!history || disoccluded) {
+        result = vec4(current, depth); // exactly the current sample: a cut frame equals the no-history frame
+    } else {
+        vec3 h = rgbToYCoCg(toWorking(sanitize(sampleHistoryCatmullRom(prevUv, vec2(size))), exposure));
+        vec3 c = rgbToYCoCg(toWorking(current, exposure));
+        // The variance box can exclude the centre sample itself (a thin dark pole among bright neighbours):
+        // keep it inside, or a history equal to this frame would be pulled away from it.
+        boxMin = min(boxMin, c);
+        boxMax = max(boxMax, c);
+        // Clip as strongly as the pixel moves. A static pixel's history is this surface's own (disocclusion is
+        // caught by depth), and clipping it against one jittered frame would erase thin features that this
+        // frame's samples happen to miss (poles, wires: they break into dashes). Without depth there is no
+        // other guard against ghosts, so the clip stays full.
+        float motionPixels = length(motion * vec2(size));
+        float clipStrength = (uHasDepth != 0 && uHasCamera != 0) ? clamp(motionPixels / uStaticPixels, 0.0, 1.0) : 1.0;
+        h = mix(h, clipToBox(boxMin, boxMax, h), clipStrength);
+        weight = uBlend;
+        if (uAdaptive != 0) {
+            // Where the clipped history and the current sample agree in luma, keep the history longer.
+            float difference = abs(c.x - h.x) / max(c.x, max(h.x, 0.2));
+            float agreement = 1.0 - difference;
+            weight = mix(uFeedbackMin, uFeedbackMax, agreement * agreement);
+        }
+        vec3 resolved = fromWorking(yCoCgToRgb(mix(c, h, weight)), exposure);
+        result = vec4(sanitize(resolved), depth);
+    }
+    imageStore(uOutput, p, result);
+    if (uWriteDebug != 0) {
+        imageStore(uDebug, p, vec4(weight, disoccluded ? 1.0 : 0.0, 0.0, 0.0));
+    }
+}
