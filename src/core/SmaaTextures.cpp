@@ -119,6 +119,19 @@ Area orthogonalArea(int startCross, int endCross, int left, int right) {
     }
     // L (one end) or U (both ends on the same side): the silhouette runs from each crossing to the middle
     // of the edge, and only the pixels of that half are cut.
+    if (h1 == h2) {
+        // U: short ones are smoothed (the paper's area texture): each half's share a becomes
+        // sqrt(2 a) / 2 for a one-pixel run, blending linearly back to a by 32 pixels, so a small bump
+        // is blended more than its two half-lines alone say.
+        const double p = std::clamp(d / 32.0, 0.0, 1.0);
+        auto smooth = [p](Area a) {
+            auto one = [p](float v) {
+                return float((1.0 - p) * std::sqrt(2.0 * double(v)) * 0.5 + p * double(v));
+            };
+            return Area{one(a.plus), one(a.minus)};
+        };
+        return sum(smooth(segmentArea(start, middle, x)), smooth(segmentArea(middle, end, x)));
+    }
     Area a;
     if (h1 != 0.0) {
         a = sum(a, segmentArea(start, middle, x));
@@ -130,21 +143,55 @@ Area orthogonalArea(int startCross, int endCross, int left, int right) {
 }
 
 Area diagonalArea(int startEnd, int endEnd, int left, int right) {
-    // Staircase pixels (k, k), k = 0..d-1, y growing downwards along the staircase; the silhouette is the
-    // line through the steps' midpoints, y = x + 0.5 (a continuation along x or y at an end meets that
-    // same line, so it does not bend it). The side y - x > 0.5 holds the +y neighbours (k, k + 1).
+    // Staircase pixels (k, k), k = 0..d-1 (x right, y down); the staircase's outline runs (0, 0) -> (0, 1)
+    // -> (1, 1) -> ... -> (d, d), its outer corners on y = x and its inner ones on y = x + 1. As for
+    // orthogonal runs, the edges that go on at the ends say which way the silhouette bends (the paper's
+    // diagonal patterns), and it is a line through step corners:
+    //  - start, an edge on along y (up from (0, 0)): the line leaves from (0, 0); on along x (left from
+    //    (0, 0)): from (0, 1), a flatter line; neither: from (-1, 0) or (0, 0), both possibilities blended;
+    //  - end, on along x (right from (d, d)): the line arrives at (d, d); on along y (down from (d, d)): at
+    //    (d, d + 1), a steeper line; neither: at (d - 1, d) or (d, d), blended;
+    //  - both at one end: the two possibilities, each paired with one line; neither at both ends: the two
+    //    45-degree lines through the outer and the inner corners, blended (1/4 on each side).
     const int d = left + right + 1;
-    const Point start{0.0, 0.5};
-    const Point end{double(d), double(d) + 0.5};
+    const double dd = double(d);
+    const Point s0{-1.0, 0.0}, sAlongY{0.0, 0.0}, sAlongX{0.0, 1.0};
+    const Point e0{dd - 1.0, dd}, eAlongX{dd, dd}, eAlongY{dd, dd + 1.0};
+    struct Line {
+        Point a;
+        Point b;
+    };
+    // [start][end], CrossingBits-like: 0 neither, 1 along x, 2 along y, 3 both. One or two lines, blended.
+    const std::array<std::array<std::array<Line, 2>, 4>, 4> patterns{{
+        {{{{{sAlongX, eAlongY}, {sAlongY, eAlongX}}},
+          {{{s0, eAlongX}, {sAlongY, eAlongX}}},
+          {{{s0, eAlongY}, {sAlongY, eAlongY}}},
+          {{{s0, eAlongY}, {sAlongY, eAlongX}}}}},
+        {{{{{sAlongX, e0}, {sAlongX, eAlongX}}},
+          {{{sAlongX, eAlongX}, {sAlongX, eAlongX}}},
+          {{{sAlongX, eAlongY}, {sAlongX, eAlongY}}},
+          {{{sAlongX, eAlongY}, {sAlongX, eAlongX}}}}},
+        {{{{{sAlongY, e0}, {sAlongY, eAlongX}}},
+          {{{sAlongY, eAlongX}, {sAlongY, eAlongX}}},
+          {{{sAlongY, eAlongY}, {sAlongY, eAlongY}}},
+          {{{sAlongY, eAlongY}, {sAlongY, eAlongX}}}}},
+        {{{{{sAlongX, e0}, {sAlongY, eAlongX}}},
+          {{{sAlongX, eAlongX}, {sAlongY, eAlongX}}},
+          {{{sAlongX, eAlongY}, {sAlongY, eAlongY}}},
+          {{{sAlongX, eAlongY}, {sAlongY, eAlongX}}}}},
+    }};
     const double k = double(left);
-    // Left of a -> b (x right, y down) is the +y neighbours' side.
-    const double staircaseCut = halfPlaneCoverage(start, end, k, k);
-    const double neighbourCut = 1.0 - halfPlaneCoverage(start, end, k, k + 1.0);
-    // An end with nothing beyond it may be where the silhouette stops or where it turns: its pixel takes
-    // the mean of the two possibilities (cut, not cut), as the paper blends unknown ends.
-    const bool openEnd = (left == 0 && startEnd == 0) || (right == 0 && endEnd == 0);
-    const double scale = openEnd ? 0.5 : 1.0;
-    return {float(scale * neighbourCut), float(scale * staircaseCut)};
+    double plus = 0.0;
+    double minus = 0.0;
+    for (const Line& line : patterns[std::size_t(startEnd & 3)][std::size_t(endEnd & 3)]) {
+        if (line.a.x == line.b.x && line.a.y == line.b.y) {
+            continue; // a one-pixel run with an open end: no line (never looked up, the shader needs 3 steps)
+        }
+        // Left of a -> b (x right, y down) is the +y neighbours' side.
+        minus += halfPlaneCoverage(line.a, line.b, k, k);
+        plus += 1.0 - halfPlaneCoverage(line.a, line.b, k, k + 1.0);
+    }
+    return {float(0.5 * plus), float(0.5 * minus)};
 }
 
 const AreaTables& areaTables() {

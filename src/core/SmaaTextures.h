@@ -5,7 +5,7 @@
 //
 // - the orthogonal area table: for an edge run of left + right + 1 pixels whose ends cross (or not) the
 //   edge line, the fraction of the pixel at `left` that the revectorised silhouette (L, Z and U shapes)
-//   cuts off on each side of the edge;
+//   cuts off on each side of the edge, short U shapes smoothed as in the paper's area texture;
 // - the diagonal area table: the same for 45-degree staircases;
 // - the search table: decodes one bilinear fetch of the edges texture (two pixels along the edge, and the
 //   row across it) into how far the edge run goes on in those two pixels.
@@ -48,8 +48,10 @@ struct Area {
 /// Diagonal runs: the staircase whose pixels k = 0..d-1 sit at (k, k) with an edge on their -x and +y
 /// sides (d = left + right + 1, the pixel of interest is k = left). `plus` is the share of the +y
 /// neighbour (k, k + 1) on the staircase's side of the line, `minus` the share of the staircase pixel on
-/// the other side: the two pixels of the edge between them. Ends: bit 0, the edge goes on along x; bit 1,
-/// along y; 3, the search ran out. An end pixel with neither gets half the cut.
+/// the other side: the two pixels of the edge between them. Ends: bit 0, the outline goes on along x past
+/// the end (left of (0, 0), right of (d, d)); bit 1, along y (up from (0, 0), down from (d, d)); 0 also
+/// where the search ran out. The ends bend the cutting line through the steps' corners (the paper's
+/// diagonal patterns, see the .cpp); with neither at both ends it is 1/4 on each side.
 [[nodiscard]] Area diagonalArea(int startEnd, int endEnd, int left, int right);
 
 /// RG8 tables, row-major from texel (0, 0).

@@ -41,12 +41,17 @@ TEST(SmaaTextures, ZShapeAreas) {
     expectArea(orthogonalArea(kCrossBoth, kCrossMinus, 0, 3), 0.375f, 0.0f, "+ then minus");
 }
 
-// U: both crossings on one row; two half-lines meet in the middle, and the run's total is twice an L's.
+// U: both crossings on one row; two half-lines meet in the middle (0.375 and 0.125 on each half of a
+// 4-pixel run, twice an L's), and, as in the paper's area texture, short U's are smoothed: a share a
+// becomes sqrt(2a)/2, blended back to a by 32 pixels (weight d/32). For d = 4: 0.375 -> 7/8 * sqrt(0.75)/2
+// + 1/8 * 0.375 = 0.42576; 0.125 -> 7/8 * 1/4 + 1/8 * 1/8 = 0.234375. From 32 pixels on it is the plain U.
 TEST(SmaaTextures, UShapeAreas) {
-    expectArea(orthogonalArea(kCrossMinus, kCrossMinus, 0, 3), 0.0f, 0.375f, "pixel 0");
-    expectArea(orthogonalArea(kCrossMinus, kCrossMinus, 1, 2), 0.0f, 0.125f, "pixel 1");
-    expectArea(orthogonalArea(kCrossMinus, kCrossMinus, 2, 1), 0.0f, 0.125f, "pixel 2");
-    expectArea(orthogonalArea(kCrossMinus, kCrossMinus, 3, 0), 0.0f, 0.375f, "pixel 3");
+    expectArea(orthogonalArea(kCrossMinus, kCrossMinus, 0, 3), 0.0f, 0.425761f, "pixel 0");
+    expectArea(orthogonalArea(kCrossMinus, kCrossMinus, 1, 2), 0.0f, 0.234375f, "pixel 1");
+    expectArea(orthogonalArea(kCrossMinus, kCrossMinus, 2, 1), 0.0f, 0.234375f, "pixel 2");
+    expectArea(orthogonalArea(kCrossMinus, kCrossMinus, 3, 0), 0.0f, 0.425761f, "pixel 3");
+    // d = 32: pixel 0 is cut by the line from (0, -1/2) to (16, 0): (0.5 + 15/32) / 2 = 31/64.
+    expectArea(orthogonalArea(kCrossPlus, kCrossPlus, 0, 31), 31.0f / 64.0f, 0.0f, "long, pixel 0");
 }
 
 // Straight edges and crossings that say nothing are not touched: SMAA leaves pixel-aligned edges alone.
@@ -94,15 +99,30 @@ TEST(SmaaTextures, OrthogonalSymmetriesRangeAndTotals) {
     }
 }
 
-// Diagonals: a staircase continuing at both ends is cut by the 45-degree line through its steps'
-// midpoints, a triangle of 1/8 on each side of every step; an end with nothing beyond it gets half.
+// Diagonals (the staircase (k, k), k = 0..d-1, outline (0, 0) -> (0, 1) -> (1, 1) -> ... -> (d, d)), worked
+// by hand:
+// - on along y at the start, along x at the end: the line through the outer corners, y = x; it halves
+//   every staircase pixel and misses the +y neighbours: (plus, minus) = (0, 1/2);
+// - on along x at the start, along y at the end: the inner corners, y = x + 1: (1/2, 0);
+// - neither at both ends: the blend of those two, (1/4, 1/4);
+// - on along x at both ends, d = 3: the line (0, 1) -> (3, 3), y = 1 + 2x/3, flatter than the staircase.
+//   Pixel 0: the neighbour (0, 1) keeps the part below the line, the integral of 2x/3 over [0, 1] = 1/3;
+//   the staircase pixel (0, 0) lies wholly above it: (1/3, 0). Pixel 1: the line enters (1, 1) at
+//   y = 5/3 and leaves its bottom at x = 3/2; the triangle cut off, the integral of 1 - 2x/3 over
+//   [1, 3/2], is 1/12, and likewise the neighbour's over [3/2, 2]: (1/12, 1/12). Pixel 2 mirrors pixel 0.
 TEST(SmaaTextures, DiagonalAreas) {
     for (int left = 0; left < 10; ++left) {
-        expectArea(diagonalArea(3, 3, left, 9 - left), 0.125f, 0.125f, "continuing");
-        const float open = (left == 0 || left == 9) ? 0.0625f : 0.125f;
-        expectArea(diagonalArea(0, 0, left, 9 - left), open, open, "open ends");
+        expectArea(diagonalArea(2, 1, left, 9 - left), 0.0f, 0.5f, "outer corners");
+        expectArea(diagonalArea(1, 2, left, 9 - left), 0.5f, 0.0f, "inner corners");
+        expectArea(diagonalArea(0, 0, left, 9 - left), 0.25f, 0.25f, "open ends");
     }
-    expectArea(diagonalArea(1, 2, 0, 0), 0.125f, 0.125f, "one step between continuations");
+    expectArea(diagonalArea(1, 1, 0, 2), 1.0f / 3.0f, 0.0f, "along x at both ends, pixel 0");
+    expectArea(diagonalArea(1, 1, 1, 1), 1.0f / 12.0f, 1.0f / 12.0f, "along x at both ends, pixel 1");
+    expectArea(diagonalArea(1, 1, 2, 0), 0.0f, 1.0f / 3.0f, "along x at both ends, pixel 2");
+    // Along y at both ends, d = 3: the line (0, 0) -> (3, 4), y = 4x/3, steeper. Pixel 0: it leaves the
+    // staircase pixel's bottom at x = 3/4, cutting off the integral of 1 - 4x/3 over [0, 3/4] = 3/8; the
+    // neighbour keeps the integral of 4x/3 - 1 over [3/4, 1] = 1/24.
+    expectArea(diagonalArea(2, 2, 0, 2), 1.0f / 24.0f, 3.0f / 8.0f, "along y at both ends, pixel 0");
     for (int e1 = 0; e1 < 4; ++e1) {
         for (int e2 = 0; e2 < 4; ++e2) {
             for (int left = 0; left < kDiagMaxDistance; ++left) {
@@ -135,10 +155,13 @@ TEST(SmaaTextures, TablesHoldTheAreasAtTheirTexels) {
     auto u =
         texel(t.ortho, kOrthoSize, kOrthoMaxDistance * kCrossMinus + 2, kOrthoMaxDistance * kCrossMinus + 1);
     EXPECT_EQ(u.first, 0);
-    EXPECT_EQ(u.second, 32); // 0.125 * 255 = 31.9
-    auto diag = texel(t.diag, kDiagSize, kDiagMaxDistance * 3 + 5, kDiagMaxDistance * 3 + 5);
-    EXPECT_EQ(diag.first, 32);
-    EXPECT_EQ(diag.second, 32);
+    EXPECT_EQ(u.second, 60); // smoothed U, 0.234375 * 255 = 59.8
+    auto diag = texel(t.diag, kDiagSize, kDiagMaxDistance * 0 + 5, kDiagMaxDistance * 0 + 5);
+    EXPECT_EQ(diag.first, 64); // 0.25 * 255 = 63.75
+    EXPECT_EQ(diag.second, 64);
+    auto bent = texel(t.diag, kDiagSize, kDiagMaxDistance * 1 + 2, kDiagMaxDistance * 1 + 0);
+    EXPECT_EQ(bent.first, 85); // 1/3
+    EXPECT_EQ(bent.second, 0);
     EXPECT_EQ(&areaTables(), &t) << "computed once";
 }
 

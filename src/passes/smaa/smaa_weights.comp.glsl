@@ -29,10 +29,14 @@ const int kOrthoMax = 64;
 const int kDiagMax = 20;
 const int kLevels = 33;
 
-ivec2 gSize;
+// The weights image is the size of the edges texture. (A global set in main() is read uninitialised as far
+// as the compiler can tell from the helper functions, and Mesa warns about it.)
+ivec2 gridSize() {
+    return imageSize(uWeights);
+}
 
 vec2 edgeAt(ivec2 p) {
-    return texelFetch(uEdges, clamp(p, ivec2(0), gSize - 1), 0).rg;
+    return texelFetch(uEdges, clamp(p, ivec2(0), gridSize() - 1), 0).rg;
 }
 bool edgeR(ivec2 p) {
     return edgeAt(p).r > 0.5;
@@ -53,7 +57,7 @@ float crossingAt(bool vertical, int along, int across) {
 // One bilinear fetch: x, the edges along the run; y, the crossing edges; as 32nds.
 ivec2 fetchPair(bool vertical, float along, float across) {
     vec2 pos = vertical ? vec2(across, along) : vec2(along, across);
-    vec2 e = textureLod(uEdges, pos / vec2(gSize), 0.0).rg;
+    vec2 e = textureLod(uEdges, pos / vec2(gridSize()), 0.0).rg;
     e = vertical ? e.rg : e.gr;
     return ivec2(round(e * 32.0));
 }
@@ -99,7 +103,7 @@ int crossingBits(bool vertical, int along, int across) {
 vec2 orthogonalWeights(ivec2 p, bool vertical) {
     int along = vertical ? p.y : p.x;
     int across = vertical ? p.x : p.y;
-    int limit = (vertical ? gSize.y : gSize.x) - 1;
+    int limit = (vertical ? gridSize().y : gridSize().x) - 1;
     int first = searchBackward(vertical, along, across);
     int last = searchForward(vertical, along, across, limit);
     int left = along - first;
@@ -138,10 +142,12 @@ vec2 diagonalDown(ivec2 q) {
     if (fwd + back < 2) {
         return vec2(0.0); // one or two steps: a corner, which the orthogonal patterns handle
     }
+    // The ends' continuations (bit 0 along x, bit 1 along y); none where the search ran out, as the
+    // reference drops the crossing edges of an end it did not find.
     ivec2 first = q - ivec2(back) - ivec2(0, 1);
     ivec2 last = q + ivec2(fwd) - ivec2(0, 1);
-    int e1 = back == uDiagSteps ? 3 : int(edgeG(first + ivec2(-1, 0))) | (int(edgeR(first + ivec2(0, -1))) << 1);
-    int e2 = fwd == uDiagSteps ? 3 : int(edgeG(last + ivec2(1, 1))) | (int(edgeR(last + ivec2(1, 1))) << 1);
+    int e1 = back == uDiagSteps ? 0 : int(edgeG(first + ivec2(-1, 0))) | (int(edgeR(first + ivec2(0, -1))) << 1);
+    int e2 = fwd == uDiagSteps ? 0 : int(edgeG(last + ivec2(1, 1))) | (int(edgeR(last + ivec2(1, 1))) << 1);
     return texelFetch(uAreaDiag, ivec2(kDiagMax * e2 + min(fwd, kDiagMax - 1), kDiagMax * e1 + min(back, kDiagMax - 1)), 0).rg;
 }
 
@@ -164,15 +170,14 @@ vec2 diagonalUp(ivec2 q) {
     }
     ivec2 first = q + ivec2(-back, back);
     ivec2 last = q + ivec2(fwd, -fwd);
-    int e1 = back == uDiagSteps ? 3 : int(edgeG(first + ivec2(-1, 1))) | (int(edgeR(first + ivec2(0, 1))) << 1);
-    int e2 = fwd == uDiagSteps ? 3 : int(edgeG(last + ivec2(1, 0))) | (int(edgeR(last + ivec2(1, -1))) << 1);
+    int e1 = back == uDiagSteps ? 0 : int(edgeG(first + ivec2(-1, 1))) | (int(edgeR(first + ivec2(0, 1))) << 1);
+    int e2 = fwd == uDiagSteps ? 0 : int(edgeG(last + ivec2(1, 0))) | (int(edgeR(last + ivec2(1, -1))) << 1);
     return texelFetch(uAreaDiag, ivec2(kDiagMax * e2 + min(fwd, kDiagMax - 1), kDiagMax * e1 + min(back, kDiagMax - 1)), 0).gr;
 }
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    gSize = imageSize(uWeights);
-    if (any(greaterThanEqual(p, gSize))) {
+    if (any(greaterThanEqual(p, gridSize()))) {
         return;
     }
     vec2 e = edgeAt(p);
