@@ -38,6 +38,16 @@ struct AntiAliasingSettings {
     }
 };
 
+enum class HistoryFilter {
+    CatmullRom, ///< sharp: a bicubic fetch keeps a moving image from softening frame after frame
+    Bilinear,   ///< cheaper, but every reprojection at a fractional position blurs the history a little
+};
+
+inline std::span<const std::string_view> historyFilterNames() {
+    static constexpr std::array<std::string_view, 2> kNames{"catmull-rom", "bilinear"};
+    return kNames;
+}
+
 /// Temporal anti-aliasing (Karis 2014; Salvi 2016 variance clipping; Playdead's adaptive feedback).
 struct TaaSettings {
     bool enabled = false;       ///< default off; selects TAA when aa.mode is none
@@ -48,6 +58,7 @@ struct TaaSettings {
     bool adaptiveFeedback = false;
     float feedbackMin = 0.88f; ///< [0, 0.99], default 0.88
     float feedbackMax = 0.97f; ///< [0, 0.99], default 0.97
+    HistoryFilter historyFilter = HistoryFilter::CatmullRom; ///< catmull-rom (default), bilinear
 
     template <class V>
     void visit(V& v) {
@@ -57,6 +68,7 @@ struct TaaSettings {
         v.field("adaptiveFeedback", adaptiveFeedback);
         v.field("feedbackMin", feedbackMin, Range{0, 0.99});
         v.field("feedbackMax", feedbackMax, Range{0, 0.99});
+        v.field("historyFilter", historyFilter, historyFilterNames());
         v.require(feedbackMin <= feedbackMax, "feedbackMin", "must not exceed feedbackMax");
     }
 };

@@ -8,9 +8,9 @@
 namespace photopic {
 
 namespace {
-/// Motion, in pixels per frame, from which the history is clipped fully to the neighbourhood box; slower
-/// pixels are clipped in proportion (see taa_resolve.comp.glsl).
-constexpr float kFullClipPixels = 1.0f;
+/// Motion, in pixels per frame, from which the history is clipped fully to the neighbourhood box; where the
+/// neighbourhood moves slower it is clipped in proportion (see taa_resolve.comp.glsl).
+constexpr float kFullClipPixels = 0.25f;
 
 void setMatrix(const Program& p, const char* name, const glm::mat4& m) {
     glProgramUniformMatrix4fv(p.id(), glGetUniformLocation(p.id(), name), 1, GL_FALSE, glm::value_ptr(m));
@@ -41,6 +41,7 @@ bool TaaPass::enabled(const FrameContext& ctx) const {
 
 void TaaPass::resize(Extent extent) {
     mHistory.ensure(extent, GL_RGBA16F, "taa history");
+    mHistoryAux.ensure(extent, GL_RG16F, "taa history depth and stability");
 }
 
 void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
@@ -62,7 +63,7 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     }
     const double bytes =
         double(e.width) * e.height *
-        (8.0 /*current*/ + 8.0 /*history*/ + 4.0 /*motion*/ + (depth ? 4.0 : 0.0) + 8.0 /*output*/);
+        (8.0 /*current*/ + 12.0 /*history*/ + 4.0 /*motion*/ + (depth ? 4.0 : 0.0) + 12.0 /*output*/);
     ScopedGpuTimer timer(ctx.timers, "taa", bytes);
     setUniform(mProgram, "uHasHistory", mHistory.valid() && !ctx.resetHistory ? 1 : 0);
     setUniform(mProgram, "uHasDepth", depth ? 1 : 0);
@@ -72,6 +73,7 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     setUniform(mProgram, "uGamma", s.varianceGamma);
     setUniform(mProgram, "uStaticPixels", kFullClipPixels);
     setUniform(mProgram, "uAdaptive", s.adaptiveFeedback ? 1 : 0);
+    setUniform(mProgram, "uBilinearHistory", s.historyFilter == HistoryFilter::Bilinear ? 1 : 0);
     setUniform(mProgram, "uFeedbackMin", s.feedbackMin);
     setUniform(mProgram, "uFeedbackMax", s.feedbackMax);
     if (camera) {
@@ -88,6 +90,8 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     glBindTextureUnit(1, mHistory.previous() ? mHistory.previous()->id() : mHistory.current().id());
     glBindTextureUnit(2, resources.texture(Resource::Motion)->id());
     glBindTextureUnit(3, depth ? depth->id() : resources.texture(Resource::Motion)->id());
+    glBindTextureUnit(4, mHistoryAux.previous() ? mHistoryAux.previous()->id() : mHistoryAux.current().id());
+    glBindImageTexture(2, mHistoryAux.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
     glBindImageTexture(0, mHistory.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glBindImageTexture(1, debugTarget ? debugTarget->id() : mNoDebug.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        GL_RG8);
@@ -97,6 +101,7 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
         resources.bind(Resource::TaaDebug, *debugTarget);
     }
     mHistory.advance();
+    mHistoryAux.advance();
 }
 
 } // namespace photopic

@@ -15,7 +15,10 @@ public:
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
     [[nodiscard]] bool enabled(const FrameContext& ctx) const override;
     void resize(Extent extent) override;
-    void invalidateHistory() override { mHistory.invalidate(); }
+    void invalidateHistory() override {
+        mHistory.invalidate();
+        mHistoryAux.invalidate();
+    }
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
     /// TAA runs on the HDR path when aa.mode (or taa.enabled) selects it.
@@ -23,8 +26,9 @@ public:
 
 private:
     Program mProgram;
-    HistoryTexture mHistory;
-    Texture mNoDebug; ///< bound to the debug image unit when no debug view asks for it
+    HistoryTexture mHistory;    ///< the resolved colour
+    HistoryTexture mHistoryAux; ///< per pixel: linear depth and stability (how long it has held still)
+    Texture mNoDebug;           ///< bound to the debug image unit when no debug view asks for it
 };
 
 } // namespace photopic
