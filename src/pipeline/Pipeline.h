@@ -17,6 +17,7 @@
 #include "gl/ReadbackRing.h"
 #include "passes/FrameInputs.h"
 #include "passes/exposure/ExposurePass.h"
+#include "passes/ssaa/SsaaAccumulator.h"
 #include "pipeline/FrameOrder.h"
 #include "pipeline/Sequencer.h"
 
@@ -83,6 +84,18 @@ public:
     glm::vec2 beginFrame(const FrameTime& time, const Camera* camera = nullptr);
     /// The jitter beginFrame returned for this frame.
     [[nodiscard]] glm::vec2 jitter() const { return mJitter; }
+
+    /// Supersampling (aa.mode = ssaa): the sub-frames a host renders per frame, 2^aa.level; 1 otherwise.
+    [[nodiscard]] int subframeCount() const noexcept;
+    /// The jitter of sub-frame `index` in [0, subframeCount()), in pixels (x right, y up): an N-rooks lattice
+    /// over the pixel. Sub-frame 0's is what beginFrame returns.
+    [[nodiscard]] glm::vec2 subframeJitter(int index) const noexcept;
+    /// Folds the host's HDR colour of sub-frame `index` (rendered with subframeJitter(index)) into the
+    /// frame's weighted mean in linear light; the first call of a frame starts the mean.
+    void accumulateSubframe(const Texture& color, int index);
+    /// The weighted mean of this frame's sub-frames (RGBA32F), the colour to hand to execute(); valid
+    /// until the next frame's first accumulateSubframe().
+    [[nodiscard]] const Texture& subframeMean() const;
 
     /// Lighting stage (3D hosts, after beginFrame, before the host shades): runs the passes whose outputs the
     /// host consumes while lighting and hands back their textures (null when that pass is off or lacks its
@@ -160,6 +173,8 @@ private:
     bool mResetHistory = true;
     glm::vec2 mJitter{0.0f};
     bool mBeganFrame = false; ///< the host called beginFrame() for the frame execute() runs
+    std::unique_ptr<SsaaAccumulator> mSsaa;
+    bool mAccumulating = false; ///< sub-frames were added since the last execute()
     LightingOutputs mLighting;
     std::vector<std::string> mInputErrors;
     Texture mInvalid; ///< 1x1 black, returned for a frame without usable colour

@@ -21,7 +21,18 @@ enum class AntiAliasing {
 };
 
 inline std::span<const std::string_view> antiAliasingNames() {
-    static constexpr std::array<std::string_view, 6> kNames{"none", "fxaa", "smaa", "taa", "ssaa", "taa+smaa"};
+    static constexpr std::array<std::string_view, 6> kNames{"none", "fxaa", "smaa",
+                                                            "taa",  "ssaa", "taa+smaa"};
+    return kNames;
+}
+
+enum class SsaaFilter {
+    Box,            ///< every sub-frame alike
+    BlackmanHarris, ///< sub-frames near the pixel centre count more
+};
+
+inline std::span<const std::string_view> ssaaFilterNames() {
+    static constexpr std::array<std::string_view, 2> kNames{"box", "blackman-harris"};
     return kNames;
 }
 
@@ -29,12 +40,14 @@ struct AntiAliasingSettings {
     /// none, fxaa, smaa, taa, ssaa, taa+smaa; default none. The older switches `fxaa.enabled` and
     /// `taa.enabled` still select FXAA and TAA when this is none.
     AntiAliasing mode = AntiAliasing::None;
-    int level = 2; ///< SSAA: 2^level sub-frames per frame, [1, 4], default 2
+    int level = 2;                           ///< SSAA: 2^level sub-frames per frame, [1, 4], default 2
+    SsaaFilter ssaaFilter = SsaaFilter::Box; ///< SSAA reconstruction: box (default), blackman-harris
 
     template <class V>
     void visit(V& v) {
         v.field("mode", mode, antiAliasingNames());
         v.field("level", level, Range{1, 4});
+        v.field("ssaaFilter", ssaaFilter, ssaaFilterNames());
     }
 };
 
@@ -56,8 +69,8 @@ struct TaaSettings {
     /// Default off: the history weight rises from feedbackMin to feedbackMax where the history agrees with
     /// the current frame (less blur on moving edges, longer accumulation where it is stable).
     bool adaptiveFeedback = false;
-    float feedbackMin = 0.88f; ///< [0, 0.99], default 0.88
-    float feedbackMax = 0.97f; ///< [0, 0.99], default 0.97
+    float feedbackMin = 0.88f;                               ///< [0, 0.99], default 0.88
+    float feedbackMax = 0.97f;                               ///< [0, 0.99], default 0.97
     HistoryFilter historyFilter = HistoryFilter::CatmullRom; ///< catmull-rom (default), bilinear
 
     template <class V>
