@@ -132,7 +132,8 @@ int runImage(const ImageOptions& options) {
     }
     // Read every input first: a bad input fails the run before any output is written.
     InputDecoder decoder(options.camera.empty() ? std::nullopt
-                                                : std::optional<CameraJson>(loadCameraJson(options.camera)));
+                                                : std::optional<CameraJson>(loadCameraJson(options.camera)),
+                         options.jitter == "halton" ? settings.temporal.jitterCycle : 0);
     std::vector<DecodedFrame> frames;
     frames.reserve(inputs.size());
     for (const auto& in : inputs) {
@@ -162,7 +163,11 @@ int runImage(const ImageOptions& options) {
     InputTextures textures; // created for the first frame, re-uploaded for the others
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         const auto start = std::chrono::steady_clock::now();
-        const Texture& display = pipeline.execute(textures.upload(frames[i]), {.dt = dt, .frameIndex = i});
+        const FrameTime time{.dt = dt, .frameIndex = i};
+        if (frames[i].jittered) {
+            pipeline.beginFrame(time); // the renderer jittered this frame, as a two-stage host would
+        }
+        const Texture& display = pipeline.execute(textures.upload(frames[i]), time);
         const std::string ext = toFolder ? "." + options.format : outExt;
         const fs::path out = toFolder ? options.output / (inputs[i].stem().string() + ext) : options.output;
         if (ext == ".exr") {

@@ -40,6 +40,8 @@ struct ImageOptions {
     bool info = false; ///< list each input's channels and attributes and what they feed; no rendering
     std::filesystem::path camera;   ///< camera JSON for EXR files without camera attributes; empty: none
     std::filesystem::path writeAux; ///< folder for the decoded depth/normals/motion; empty: none
+    std::string jitter =
+        "attribute"; ///< attribute: the EXR `jitter` attribute when present; halton: Photopic's
 };
 
 struct SceneOptions {

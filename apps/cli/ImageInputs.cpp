@@ -187,8 +187,9 @@ bool isExr(const fs::path& path) {
 
 } // namespace
 
-InputDecoder::InputDecoder(std::optional<CameraJson> cameraJson)
-    : mCameraJson(std::move(cameraJson)) {}
+InputDecoder::InputDecoder(std::optional<CameraJson> cameraJson, int haltonCycle)
+    : mCameraJson(std::move(cameraJson))
+    , mHaltonCycle(haltonCycle) {}
 
 DecodedFrame InputDecoder::decode(const fs::path& path) {
     DecodedFrame out;
@@ -241,14 +242,23 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
                                  path.string()));
         }
     }
+    // The file's jitter attribute, else the sample offset of the Halton jitter Photopic would have handed
+    // out: moving the image by j (x right, y up) samples it at the pixel centre - j, which in the file's
+    // y-down convention is (-j.x, j.y).
+    std::optional<glm::vec2> jitter = frame.camera.jitter;
+    if (!jitter && mHaltonCycle > 0) {
+        const glm::vec2 halton = haltonJitter(mIndex, mHaltonCycle);
+        jitter = glm::vec2(-halton.x, halton.y);
+    }
+    out.jittered = jitter.has_value();
     if (!frame.motion.empty()) {
-        const glm::vec2 previousJitter =
-            mPrevious && mPrevious->jitter ? *mPrevious->jitter : glm::vec2(0.0f);
-        out.motion = uvMotion(frame.motion, width, height, frame.camera.jitter.value_or(glm::vec2(0.0f)),
-                              previousJitter);
+        out.motion = uvMotion(frame.motion, width, height, jitter.value_or(glm::vec2(0.0f)),
+                              mPreviousJitter.value_or(glm::vec2(0.0f)));
     }
     out.color = std::move(frame.color);
     mPrevious = frame.camera;
+    mPreviousJitter = jitter;
+    ++mIndex;
     mFirst = false;
     return out;
 }

@@ -216,6 +216,7 @@ int runScene(const SceneOptions& options) {
     std::vector<std::vector<double>> sceneValues(std::size_t(options.frames));
 
     const float dt = 1.0f / options.fps;
+    glm::vec2 previousJitter(0.0f); ///< the last scene EXR's jitter attribute (pixels, y down)
     for (int i = 0; i < options.frames; ++i) {
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
         const FrameInputs inputs = scene->render(time, pipeline, sceneValues[std::size_t(i)]);
@@ -223,7 +224,21 @@ int runScene(const SceneOptions& options) {
         if (inputs.camera != nullptr) {
             // A 3D scene: its scene-referred colour, depth, normals, motion and camera, as `photopic image`
             // reads them.
-            writeExrFrame(outDir / fmt::format("scene_{:04d}.exr", i), exrFrameFromInputs(inputs));
+            ExrFrame exr = exrFrameFromInputs(inputs);
+            if (pipeline.jitter() != glm::vec2(0.0f)) {
+                // The sample offset this frame was rendered with, so TAA over the files knows the frames were
+                // jittered; the file's motion is that of the jittered samples, as a renderer writes it, and
+                // the reader takes the jitter out again. Moving the image by j (x right, y up) samples it at
+                // the pixel centre - j: in the file's convention (y down) that offset is (-j.x, j.y).
+                const glm::vec2 jitter(-pipeline.jitter().x, pipeline.jitter().y);
+                for (std::size_t m = 0; m + 1 < exr.motion.size(); m += 2) {
+                    exr.motion[m] += jitter.x - previousJitter.x;
+                    exr.motion[m + 1] += jitter.y - previousJitter.y;
+                }
+                exr.camera.jitter = jitter;
+                previousJitter = jitter;
+            }
+            writeExrFrame(outDir / fmt::format("scene_{:04d}.exr", i), exr);
         }
         const fs::path frame = outDir / fmt::format("frame_{:04d}.{}", i, options.format);
         if (options.format == "exr") {

@@ -73,6 +73,12 @@ int main(int argc, char** argv) {
         "--write-aux", image.writeAux,
         "write each frame's decoded depth (linear view), normals (view space) and motion (UV, "
         "y up) as DIR/NAME.aux.exr");
+    imageCmd
+        ->add_option("--jitter", image.jitter,
+                     "how a sequence's frames were jittered, for TAA and the motion unjitter: attribute (the "
+                     "EXR `jitter` attribute, pixels, x right, y down; none when absent) or halton "
+                     "(Photopic's Halton(2,3) from index 1, as Pipeline::beginFrame hands it out)")
+        ->check(CLI::IsMember({"attribute", "halton"}));
     addSettingsOptions(imageCmd, image.settings);
 
     auto* settingsCmd = app.add_subcommand("settings", "print the default settings or check a settings file");
