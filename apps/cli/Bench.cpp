@@ -297,6 +297,34 @@ ImageF benchInput(const BenchOptions& options) {
     }
 }
 
+/// Depth (R32F linear), motion (RG16F, zero) and a camera for the benchmark frame.
+class BenchInputs3d {
+public:
+    BenchInputs3d(int width, int height)
+        : mDepth({.extent = {width, height}, .format = GL_R32F, .debugName = "bench depth"})
+        , mMotion({.extent = {width, height}, .format = GL_RG16F, .debugName = "bench motion"}) {
+        const float depth = 10.0f;
+        glClearTexImage(mDepth.id(), 0, GL_RED, GL_FLOAT, &depth);
+        const float zero[2] = {0.0f, 0.0f};
+        glClearTexImage(mMotion.id(), 0, GL_RG, GL_FLOAT, zero);
+        mCamera.projection = perspectiveProjection(mCamera.verticalFov, float(width) / float(height),
+                                                   mCamera.nearPlane, mCamera.farPlane);
+        mCamera.prevViewProjection = mCamera.viewProjection();
+    }
+    [[nodiscard]] FrameInputs frame(const Texture& color) const {
+        return {.color = &color,
+                .depth = &mDepth,
+                .depthKind = DepthKind::LinearView,
+                .motion = &mMotion,
+                .camera = &mCamera};
+    }
+
+private:
+    Texture mDepth;
+    Texture mMotion;
+    Camera mCamera;
+};
+
 /// Per-pass timings over the measured frames, passes in the order they first ran.
 struct PassSamples {
     std::vector<std::string> order;
@@ -388,14 +416,20 @@ int runBench(const BenchOptions& options) {
     }
     pipeline.timers().setSynchronous(options.sync);
     const Texture input = makeTexture(image, "bench input");
+    // 3D inputs for the passes that need them (TAA): a wall 10 units away, still, seen by a still camera. The
+    // sequencer runs nothing on them unless such a pass is on, so the 2D chain's figures are unchanged.
+    const BenchInputs3d inputs3d(image.width, image.height);
+    const FrameInputs inputs = inputs3d.frame(input);
     std::uint64_t frame = 0;
     for (int i = 0; i < options.warmup; ++i) {
-        pipeline.execute({.color = &input}, {.frameIndex = frame++});
+        pipeline.beginFrame({.frameIndex = frame});
+        pipeline.execute(inputs, {.frameIndex = frame++});
         pipeline.timers().drain();
     }
     PassSamples samples;
     for (int i = 0; i < options.frames; ++i) {
-        pipeline.execute({.color = &input}, {.frameIndex = frame++});
+        pipeline.beginFrame({.frameIndex = frame});
+        pipeline.execute(inputs, {.frameIndex = frame++});
         samples.add(pipeline.timers().drain());
     }
 
