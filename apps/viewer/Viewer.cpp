@@ -82,6 +82,7 @@ struct UiState {
     std::vector<std::string> problems; ///< why `edited` is not applied yet
     std::string message;               ///< last Save / Reset result
     float dt = 0.0f;
+    bool taaKeyDown = false; ///< T was down last frame (a press toggles once)
 };
 
 void row(const char* name, const std::string& value) {
@@ -352,10 +353,26 @@ private:
     std::vector<std::pair<GLuint, Framebuffer>> mSources;
 };
 
-void drawUi(Pipeline& pipeline, const ViewerOptions& options, UiState& ui) {
+/// Keys that switch a setting live (when no widget has the keyboard): T toggles TAA.
+void handleKeys(GLFWwindow* window, Pipeline& pipeline, UiState& ui) {
+    const bool down = glfwGetKey(window, GLFW_KEY_T) == GLFW_PRESS;
+    const bool pressed = down && !ui.taaKeyDown;
+    ui.taaKeyDown = down;
+    if (!pressed || ImGui::GetIO().WantCaptureKeyboard) {
+        return;
+    }
+    const bool taa = ui.edited.antiAliasing() == AntiAliasing::Taa;
+    ui.edited.aa.mode = taa ? AntiAliasing::None : AntiAliasing::Taa;
+    ui.edited.taa.enabled = false;
+    pipeline.setSettings(ui.edited);
+    ui.message = taa ? "TAA off (T)" : "TAA on (T)";
+}
+
+void drawUi(GLFWwindow* window, Pipeline& pipeline, const ViewerOptions& options, UiState& ui) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
+    handleKeys(window, pipeline, ui);
     drawPanels(pipeline, options, ui);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -392,7 +409,7 @@ int run(const ViewerOptions& options) {
         int fbw = 0, fbh = 0;
         glfwGetFramebufferSize(window.get(), &fbw, &fbh);
         presenter.present(display, fbw, fbh);
-        drawUi(pipeline, options, ui);
+        drawUi(window.get(), pipeline, options, ui);
 
         const bool lastFrame = options.frames > 0 && frame + 1 >= std::uint64_t(options.frames);
         if (lastFrame && !options.screenshot.empty()) {
