@@ -3,14 +3,9 @@
 #include "core/Log.h"
 #include "passes/Bindings.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 namespace photopic {
 
 namespace {
-void setMatrix(const Program& p, const char* name, const glm::mat4& m) {
-    glProgramUniformMatrix4fv(p.id(), glGetUniformLocation(p.id(), name), 1, GL_FALSE, glm::value_ptr(m));
-}
 GLuint groups(int size) {
     return GLuint((size + 7) / 8);
 }
@@ -83,9 +78,9 @@ void CameraMotionPass::execute(FrameContext& ctx, FrameResources& resources) {
                                        .debugName = "camera motion"})
                              .texture();
     ScopedGpuTimer timer(ctx.timers, "camera motion", double(ctx.extent.width) * ctx.extent.height * 8);
-    setMatrix(mProgram, "uInvProjection", glm::inverse(camera.projection));
-    setMatrix(mProgram, "uInvView", glm::inverse(camera.view));
-    setMatrix(mProgram, "uPrevViewProjection", camera.prevViewProjection);
+    setUniform(mProgram, "uInvProjection", glm::inverse(camera.projection));
+    setUniform(mProgram, "uInvView", glm::inverse(camera.view));
+    setUniform(mProgram, "uPrevViewProjection", camera.prevViewProjection);
     setUniform(mProgram, "uCut", camera.cut ? 1 : 0);
     mProgram.use();
     glBindTextureUnit(0, resources.texture(Resource::LinearDepth)->id());

@@ -3,18 +3,13 @@
 #include "core/Log.h"
 #include "passes/Bindings.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 namespace photopic {
 
 namespace {
 /// Motion, in pixels per frame, from which the history is clipped fully to the neighbourhood box; where the
 /// neighbourhood moves slower it is clipped in proportion (see taa_resolve.comp.glsl).
-constexpr float kFullClipPixels = 0.25f;
+constexpr float kStillPixels = 0.25f;
 
-void setMatrix(const Program& p, const char* name, const glm::mat4& m) {
-    glProgramUniformMatrix4fv(p.id(), glGetUniformLocation(p.id(), name), 1, GL_FALSE, glm::value_ptr(m));
-}
 } // namespace
 
 TaaPass::TaaPass()
@@ -71,16 +66,16 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     setUniform(mProgram, "uWriteDebug", debug ? 1 : 0);
     setUniform(mProgram, "uBlend", s.blendFactor);
     setUniform(mProgram, "uGamma", s.varianceGamma);
-    setUniform(mProgram, "uStaticPixels", kFullClipPixels);
+    setUniform(mProgram, "uStaticPixels", kStillPixels);
     setUniform(mProgram, "uAdaptive", s.adaptiveFeedback ? 1 : 0);
     setUniform(mProgram, "uBilinearHistory", s.historyFilter == HistoryFilter::Bilinear ? 1 : 0);
     setUniform(mProgram, "uFeedbackMin", s.feedbackMin);
     setUniform(mProgram, "uFeedbackMax", s.feedbackMax);
     if (camera) {
         const Camera& c = *ctx.inputs.camera;
-        setMatrix(mProgram, "uInvProjection", glm::inverse(c.projection));
-        setMatrix(mProgram, "uInvView", glm::inverse(c.view));
-        setMatrix(mProgram, "uPrevViewProjection", c.prevViewProjection);
+        setUniform(mProgram, "uInvProjection", glm::inverse(c.projection));
+        setUniform(mProgram, "uInvView", glm::inverse(c.view));
+        setUniform(mProgram, "uPrevViewProjection", c.prevViewProjection);
     }
     mProgram.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,

@@ -29,7 +29,7 @@ uniform int uHasCamera;
 uniform int uWriteDebug;
 uniform float uBlend;
 uniform float uGamma;
-uniform float uStaticPixels; // motion (pixels) from which the history is clipped fully
+uniform float uStaticPixels; // motion (pixels per frame) below which a neighbourhood counts as still
 uniform int uAdaptive;
 uniform int uBilinearHistory;
 uniform float uFeedbackMin;
