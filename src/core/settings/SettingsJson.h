@@ -5,7 +5,9 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
@@ -25,7 +27,8 @@ private:
 };
 
 /// Reads JSON text over `settings` (keys that are absent keep their current values). Returns the issues
-/// found; fields with issues are left unchanged.
+/// found; fields with issues are left unchanged. Never throws for any text: JSON the parser rejects (bad
+/// syntax, bad UTF-8, a number beyond double range) is a ParseError issue.
 std::vector<SettingsIssue> readSettingsJson(std::string_view text, Settings& settings);
 
 /// Loads a file over `base` (the defaults unless given); throws SettingsError naming the file and every
@@ -39,6 +42,10 @@ nlohmann::json settingsToJsonValue(const Settings& settings);
 /// Applies "path=value" (path below postEffects, e.g. "tonemapping.mode=agx"). The value is parsed as JSON
 /// when it is valid JSON, else taken as a string. Throws SettingsError naming the override.
 void applySettingsOverride(Settings& settings, std::string_view assignment);
+
+/// The offset of the first byte that does not belong to well-formed UTF-8 (RFC 3629: no overlong forms, no
+/// surrogates, nothing above U+10FFFF), or nullopt when all of `text` is UTF-8.
+[[nodiscard]] std::optional<std::size_t> invalidUtf8Offset(std::string_view text);
 
 /// "postEffects.a.b: message (allowed ...)" lines, one per issue.
 std::string formatSettingsIssues(const std::vector<SettingsIssue>& issues);
