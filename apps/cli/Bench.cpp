@@ -11,6 +11,8 @@
 
 #include "Bench.h"
 
+#include "Outputs.h"
+
 #include "core/Log.h"
 #include "core/Motion.h"
 #include "core/settings/SettingsJson.h"
@@ -257,6 +259,9 @@ int runCanvasBench(const BenchOptions& options) {
 } // namespace
 
 int runBench(const BenchOptions& options) {
+    if (!options.json.empty()) {
+        RunOutputs::requireFile(options.json); // before the minutes of timing, not after
+    }
     if (!options.scene.empty()) {
         if (options.scene != "canvas") {
             throw InputError(
@@ -270,17 +275,16 @@ int runBench(const BenchOptions& options) {
     }
     ImageF image;
     if (!options.input.empty()) {
-        try {
-            image = readImage(options.input);
-        } catch (const IoError& e) {
-            throw InputError(e.what());
-        }
+        image = readInput(options.input, options.maxPixels);
     } else {
         const auto [w, h] = parseSize(options.size, 8);
         image = makeSyntheticHdr(w, h);
     }
 
     HeadlessContext context;
+    if (!options.input.empty()) {
+        requireTextureFits(options.input, image.width, image.height);
+    }
     Pipeline pipeline({.settings = settings, .forceLdr = options.forceLdr});
     if (!pipeline.capabilities().timerQueries) {
         throw std::runtime_error("this GL implementation has no timer queries; nothing to measure");
