@@ -11,6 +11,8 @@
 
 #include "Bench.h"
 
+#include "Outputs.h"
+
 #include "core/Log.h"
 #include "core/Motion.h"
 #include "core/settings/SettingsJson.h"
@@ -290,11 +292,7 @@ ImageF benchInput(const BenchOptions& options) {
         const auto [w, h] = parseSize(options.size, 8);
         return makeSyntheticHdr(w, h);
     }
-    try {
-        return readImage(options.input);
-    } catch (const IoError& e) {
-        throw InputError(e.what());
-    }
+    return readInput(options.input, options.maxPixels);
 }
 
 /// Depth (R32F linear), motion (RG16F, zero) and a camera for the benchmark frame.
@@ -396,6 +394,9 @@ PassTable printPassTable(const BenchOptions& options, PassSamples& samples) {
 }
 
 int runBench(const BenchOptions& options) {
+    if (!options.json.empty()) {
+        RunOutputs::requireFile(options.json); // before the minutes of timing, not after
+    }
     if (!options.scene.empty()) {
         if (options.scene != "canvas") {
             throw InputError(
@@ -410,6 +411,9 @@ int runBench(const BenchOptions& options) {
     const ImageF image = benchInput(options);
 
     HeadlessContext context;
+    if (!options.input.empty()) {
+        requireTextureFits(options.input, image.width, image.height);
+    }
     Pipeline pipeline({.settings = settings, .forceLdr = options.forceLdr});
     if (!pipeline.capabilities().timerQueries) {
         throw std::runtime_error("this GL implementation has no timer queries; nothing to measure");

@@ -1,9 +1,12 @@
 #include "Commands.h"
 
 #include "ImageInputs.h"
+#include "Outputs.h"
+#include "TelemetryCsv.h"
 
 #include "core/settings/SettingsJson.h"
 #include "gl/Context.h"
+#include "gl/Gl.h"
 #include "gl/TextureIo.h"
 #include "io/ImageIO.h"
 #include "pipeline/Pipeline.h"
@@ -14,6 +17,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 namespace photopic::cli {
 
@@ -29,6 +33,15 @@ std::string exposureTelemetryRow(const ExposureTelemetry& t) {
                        t.histogramLowLog2, t.histogramHighLog2, t.histogramAverageLog2);
 }
 
+std::string telemetryCsvRow(const ExposureTelemetry& t, float dt, std::size_t sceneColumns,
+                            const std::vector<double>& sceneValues) {
+    std::string row = fmt::format("{},{:.6f}", t.frame, double(t.frame) * double(dt));
+    for (std::size_t c = 0; c < sceneColumns; ++c) {
+        row += fmt::format(",{:.9g}", c < sceneValues.size() ? sceneValues[c] : 0.0);
+    }
+    return row + "," + exposureTelemetryRow(t) + "\n";
+}
+
 std::string telemetryCsv(const std::vector<ExposureTelemetry>& rows, float dt,
                          const std::vector<std::string>& sceneColumns,
                          const std::vector<std::vector<double>>& sceneValues) {
@@ -37,13 +50,10 @@ std::string telemetryCsv(const std::vector<ExposureTelemetry>& rows, float dt,
         csv += "," + c;
     }
     csv += "," + exposureTelemetryHeader() + "\n";
+    static const std::vector<double> kNone;
     for (const ExposureTelemetry& t : rows) {
-        csv += fmt::format("{},{:.6f}", t.frame, double(t.frame) * double(dt));
-        for (std::size_t c = 0; c < sceneColumns.size(); ++c) {
-            const auto& values = t.frame < sceneValues.size() ? sceneValues[t.frame] : std::vector<double>{};
-            csv += fmt::format(",{:.9g}", c < values.size() ? values[c] : 0.0);
-        }
-        csv += "," + exposureTelemetryRow(t) + "\n";
+        csv += telemetryCsvRow(t, dt, sceneColumns.size(),
+                               t.frame < sceneValues.size() ? sceneValues[t.frame] : kNone);
     }
     return csv;
 }
@@ -104,6 +114,53 @@ std::string lowerExtension(const fs::path& p) {
 
 } // namespace
 
+ImageF readInput(const fs::path& path, std::int64_t maxPixels) {
+    try {
+        return readImage(path, {.maxPixels = maxPixels});
+    } catch (const IoError& e) {
+        throw InputError(e.what());
+    }
+}
+
+void requireTextureFits(const fs::path& path, int width, int height) {
+    GLint limit = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &limit);
+    if (width > limit || height > limit) {
+        throw InputError(fmt::format("\"{}\": image is {}x{}, larger than this GPU's largest texture ({}x{}, "
+                                     "GL_MAX_TEXTURE_SIZE); scale it down first",
+                                     path.string(), width, height, limit, limit));
+    }
+}
+
+namespace {
+
+/// Where runImage writes each input's result, every path checked before any work.
+std::vector<fs::path> plannedOutputs(const ImageOptions& options, const std::vector<fs::path>& inputs,
+                                     RunOutputs& outputs) {
+    const std::string outExt = lowerExtension(options.output);
+    const bool toFolder = inputs.size() > 1 || fs::is_directory(options.output) || outExt.empty();
+    if (!toFolder && outExt != ".png" && outExt != ".exr") {
+        throw InputError(
+            fmt::format("output {}: unsupported extension '{}' (use .png for the display image or "
+                        ".exr for the scene-referred image)",
+                        options.output.string(), outExt));
+    }
+    std::vector<fs::path> paths;
+    if (!toFolder) {
+        RunOutputs::requireFile(options.output);
+        paths.push_back(options.output);
+        return paths;
+    }
+    outputs.makeFolder(options.output);
+    for (const fs::path& in : inputs) {
+        paths.push_back(options.output / (in.stem().string() + "." + options.format));
+        RunOutputs::requireFile(paths.back());
+    }
+    return paths;
+}
+
+} // namespace
+
 int runImage(const ImageOptions& options) {
     std::vector<fs::path> inputs = options.inputs;
     std::sort(inputs.begin(), inputs.end());
@@ -114,44 +171,33 @@ int runImage(const ImageOptions& options) {
         throw InputError("image: an output is required (-o FILE or FOLDER), or --info");
     }
     const Settings settings = resolveSettings(options.settings);
-    const std::string outExt = lowerExtension(options.output);
-    const bool toFolder = inputs.size() > 1 || fs::is_directory(options.output) || outExt.empty();
-    if (!toFolder && outExt != ".png" && outExt != ".exr") {
-        throw InputError(
-            fmt::format("output {}: unsupported extension '{}' (use .png for the display image or "
-                        ".exr for the scene-referred image)",
-                        options.output.string(), outExt));
+    // Every output is checked before any work; a run that fails takes back what it wrote.
+    RunOutputs outputs;
+    const std::vector<fs::path> outPaths = plannedOutputs(options, inputs, outputs);
+    if (!options.writeAux.empty()) {
+        outputs.makeFolder(options.writeAux);
     }
-    if (toFolder) {
-        std::error_code ec;
-        fs::create_directories(options.output, ec);
-        if (ec) {
-            throw std::runtime_error(
-                fmt::format("cannot create output folder {}: {}", options.output.string(), ec.message()));
-        }
+    const float dt = 1.0f / options.fps;
+    std::optional<TelemetryCsv> telemetry;
+    if (!options.telemetry.empty()) {
+        telemetry.emplace(options.telemetry, dt, std::vector<std::string>{});
     }
     // Read every input first: a bad input fails the run before any output is written.
     InputDecoder decoder(options.camera.empty() ? std::nullopt
                                                 : std::optional<CameraJson>(loadCameraJson(options.camera)),
-                         options.jitter == "halton" ? settings.temporal.jitterCycle : 0);
+                         options.jitter == "halton" ? settings.temporal.jitterCycle : 0, options.maxPixels);
     std::vector<DecodedFrame> frames;
     frames.reserve(inputs.size());
     for (const auto& in : inputs) {
         frames.push_back(decoder.decode(in));
     }
-    if (!options.writeAux.empty()) {
-        std::error_code ec;
-        fs::create_directories(options.writeAux, ec);
-        if (ec) {
-            throw std::runtime_error(
-                fmt::format("cannot create aux folder {}: {}", options.writeAux.string(), ec.message()));
-        }
-    }
 
     HeadlessContext context;
-    const PipelineCreateInfo createInfo{.settings = settings,
-                                        .forceLdr = options.forceLdr,
-                                        .keepTelemetryHistory = !options.telemetry.empty()};
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        requireTextureFits(inputs[i], frames[i].color.width, frames[i].color.height);
+    }
+    const PipelineCreateInfo createInfo{
+        .settings = settings, .forceLdr = options.forceLdr, .keepTelemetryHistory = telemetry.has_value()};
     std::unique_ptr<Pipeline> pipelinePtr;
     try {
         pipelinePtr = std::make_unique<Pipeline>(createInfo);
@@ -159,7 +205,6 @@ int runImage(const ImageOptions& options) {
         throw InputError(fmt::format("autoExposure.mask.path: {}", e.what()));
     }
     Pipeline& pipeline = *pipelinePtr;
-    const float dt = 1.0f / options.fps;
     InputTextures textures; // created for the first frame, re-uploaded for the others
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         const auto start = std::chrono::steady_clock::now();
@@ -168,31 +213,30 @@ int runImage(const ImageOptions& options) {
             pipeline.beginFrame(time); // the renderer jittered this frame, as a two-stage host would
         }
         const Texture& display = pipeline.execute(textures.upload(frames[i]), time);
-        const std::string ext = toFolder ? "." + options.format : outExt;
-        const fs::path out = toFolder ? options.output / (inputs[i].stem().string() + ext) : options.output;
-        if (ext == ".exr") {
+        const fs::path& out = outPaths[i];
+        if (lowerExtension(out) == ".exr") {
             writeExr(out, readTextureF(pipeline.sceneReferred()));
         } else {
             writePng(out, readTexture8(display));
+        }
+        outputs.wrote(out);
+        if (telemetry) {
+            telemetry->take(pipeline, i, i + 1 == inputs.size());
         }
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         std::printf("%s -> %s (%dx%d, %.1f ms)\n", inputs[i].string().c_str(), out.string().c_str(),
                     frames[i].color.width, frames[i].color.height, ms);
         if (!options.writeAux.empty()) {
-            writeAux(options.writeAux, inputs[i], frames[i]);
+            outputs.wrote(writeAux(options.writeAux, inputs[i], frames[i]));
         }
     }
-    if (!options.telemetry.empty()) {
-        // Offline: drain the ring so every frame has its own row.
-        const std::vector<ExposureTelemetry> rows = pipeline.drainTelemetry();
-        if (rows.size() != inputs.size()) {
-            throw std::runtime_error(fmt::format("telemetry: {} of {} frames came back ({} dropped)",
-                                                 rows.size(), inputs.size(), pipeline.droppedTelemetry()));
-        }
-        writeTextFile(options.telemetry, telemetryCsv(rows, dt, {}, {}));
-        std::printf("telemetry -> %s (%zu frames)\n", options.telemetry.string().c_str(), rows.size());
+    if (telemetry) {
+        telemetry->commit(inputs.size(), pipeline.droppedTelemetry());
+        outputs.wrote(options.telemetry);
+        std::printf("telemetry -> %s (%zu frames)\n", options.telemetry.string().c_str(), inputs.size());
     }
+    outputs.commit();
     return kOk;
 }
 

@@ -187,15 +187,16 @@ bool isExr(const fs::path& path) {
 
 } // namespace
 
-InputDecoder::InputDecoder(std::optional<CameraJson> cameraJson, int haltonCycle)
+InputDecoder::InputDecoder(std::optional<CameraJson> cameraJson, int haltonCycle, std::int64_t maxPixels)
     : mCameraJson(std::move(cameraJson))
-    , mHaltonCycle(haltonCycle) {}
+    , mHaltonCycle(haltonCycle)
+    , mMaxPixels(maxPixels) {}
 
 DecodedFrame InputDecoder::decode(const fs::path& path) {
     DecodedFrame out;
     if (!isExr(path)) { // HDR, PNG, or a missing file: colour only, through readImage's errors
         try {
-            out.color = readImage(path);
+            out.color = readImage(path, {.maxPixels = mMaxPixels});
         } catch (const IoError& e) {
             throw InputError(e.what());
         }
@@ -209,7 +210,7 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
     }
     ExrFrame frame;
     try {
-        frame = readExrFrame(path);
+        frame = readExrFrame(path, {.maxPixels = mMaxPixels});
     } catch (const IoError& e) {
         throw InputError(e.what());
     }
@@ -430,7 +431,7 @@ int runImageInfo(const std::vector<fs::path>& inputs, const fs::path& cameraJson
     return kOk;
 }
 
-void writeAux(const fs::path& folder, const fs::path& input, const DecodedFrame& frame) {
+fs::path writeAux(const fs::path& folder, const fs::path& input, const DecodedFrame& frame) {
     ExrFrame aux;
     aux.color = frame.color;
     aux.depth = frame.depth;
@@ -438,7 +439,9 @@ void writeAux(const fs::path& folder, const fs::path& input, const DecodedFrame&
     aux.motion = frame.motion;
     if (frame.camera)
         aux.camera = exrFromCamera(*frame.camera, frame.color.width, frame.color.height);
-    writeExrFrame(folder / (input.stem().string() + ".aux.exr"), aux);
+    const fs::path path = folder / (input.stem().string() + ".aux.exr");
+    writeExrFrame(path, aux);
+    return path;
 }
 
 } // namespace photopic::cli

@@ -51,7 +51,9 @@ class InputDecoder {
 public:
     /// `haltonCycle` > 0: frames without a `jitter` attribute were rendered with Halton(2, 3) jitter of that
     /// cycle, from index 1 for the first frame (the jitter Pipeline::beginFrame hands out).
-    explicit InputDecoder(std::optional<CameraJson> cameraJson = std::nullopt, int haltonCycle = 0);
+    /// `maxPixels`: larger inputs are refused before they are decoded.
+    explicit InputDecoder(std::optional<CameraJson> cameraJson = std::nullopt, int haltonCycle = 0,
+                          std::int64_t maxPixels = kDefaultMaxPixels);
     /// Throws InputError naming the file for unreadable files and bad camera attributes.
     [[nodiscard]] DecodedFrame decode(const std::filesystem::path& path);
 
@@ -60,6 +62,7 @@ private:
     std::optional<ExrCameraAttributes> mPrevious;
     std::optional<glm::vec2> mPreviousJitter; ///< pixels, x right, y down
     int mHaltonCycle = 0;
+    std::int64_t mMaxPixels = kDefaultMaxPixels;
     std::uint64_t mIndex = 0;
     bool mFirst = true;
 };
@@ -84,8 +87,8 @@ private:
 int runImageInfo(const std::vector<std::filesystem::path>& inputs, const std::filesystem::path& cameraJson);
 
 /// `--write-aux DIR`: DIR/<input stem>.aux.exr with colour, Z (linear view depth), N.X/Y/Z (view space),
-/// motion.X/Y (UV, y up) and the camera's attributes, for the layers the frame has.
-void writeAux(const std::filesystem::path& folder, const std::filesystem::path& input,
-              const DecodedFrame& frame);
+/// motion.X/Y (UV, y up) and the camera's attributes, for the layers the frame has. Returns the file's path.
+std::filesystem::path writeAux(const std::filesystem::path& folder, const std::filesystem::path& input,
+                               const DecodedFrame& frame);
 
 } // namespace photopic::cli

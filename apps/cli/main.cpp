@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <cstdio>
 
 using namespace photopic;
@@ -30,6 +31,13 @@ void addSettingsOptions(CLI::App* cmd, SettingsSources& s) {
         "debug view: none, exposure, luma, ev, metering, histogram, bloom (same as --set debug.view=NAME)");
     cmd->add_option("--set", s.overrides, "override one setting: path=value, e.g. tonemapping.mode=agx")
         ->take_first();
+}
+
+void addMaxPixelsOption(CLI::App* cmd, std::int64_t& maxPixels) {
+    cmd->add_option("--max-pixels", maxPixels,
+                    "refuse input images with more pixels than this, before decoding them (memory bound)")
+        ->check(CLI::Range(std::int64_t(1), std::int64_t(1) << 40))
+        ->capture_default_str();
 }
 
 } // namespace
@@ -80,6 +88,7 @@ int main(int argc, char** argv) {
                      "(Photopic's Halton(2,3) from index 1, as Pipeline::beginFrame hands it out)")
         ->check(CLI::IsMember({"attribute", "halton"}));
     addSettingsOptions(imageCmd, image.settings);
+    addMaxPixelsOption(imageCmd, image.maxPixels);
 
     auto* settingsCmd = app.add_subcommand("settings", "print the default settings or check a settings file");
     bool defaults = false;
@@ -101,7 +110,11 @@ int main(int argc, char** argv) {
     sceneCmd->add_option("--format", scene.format, "frame files: png (display) or exr (scene-referred)")
         ->check(CLI::IsMember({"png", "exr"}));
     sceneCmd->add_flag("--force-ldr", scene.forceLdr, "run the LDR (RGBA8) path");
-    sceneCmd->add_option("--canvas", scene.canvasColor, "canvas scene: the painting's colour image");
+    sceneCmd->add_option("--every", scene.every, "write every Nth frame (telemetry keeps every frame)")
+        ->check(CLI::Range(1, 100000));
+    sceneCmd->add_flag("--report-rss", scene.reportRss,
+                       "print resident memory (VmRSS) after the first and the last frame");
+        sceneCmd->add_option("--canvas", scene.canvasColor, "canvas scene: the painting's colour image");
     sceneCmd->add_option("--material", scene.canvasMaterial,
                          "canvas scene: material PNG (RGBA: normal x, y; shininess; glitter mask)");
     sceneCmd->add_option("--motion", scene.motion, "canvas scene: device motion CSV (time_s,pitch,roll,yaw)");
@@ -135,6 +148,8 @@ int main(int argc, char** argv) {
     demo->add_option("--data", demoData,
                      "folder of HDR images for --images (default: $PHOTOPIC_DATA_DIR, else the installed "
                      "share/photopic/data, else the checkout's data/)");
+    std::int64_t demoMaxPixels = kDefaultMaxPixels;
+    addMaxPixelsOption(demo, demoMaxPixels);
 
     BenchOptions bench;
     auto* benchCmd =
@@ -157,6 +172,7 @@ int main(int argc, char** argv) {
                          "canvas: time the canvas scene's tiled and full-screen shading paths instead "
                          "(--set canvas.KEY=VALUE, e.g. canvas.occupancy=0.3, the default)");
     addSettingsOptions(benchCmd, bench.settings);
+    addMaxPixelsOption(benchCmd, bench.maxPixels);
 
     try {
         app.parse(argc, argv);
@@ -192,7 +208,7 @@ int main(int argc, char** argv) {
         }
         if (*demo) {
             if (demoImages) {
-                return runDemo(findDataDir(demoData), walk.output);
+                return runDemo(findDataDir(demoData), walk.output, demoMaxPixels);
             }
             const Extent size = parseSize(demoSize);
             walk.width = size.width;

@@ -30,6 +30,12 @@ inline std::string typeName(const json& j) {
     return j.type_name();
 }
 
+/// A value as JSON text for a message. Never throws: bytes that are not UTF-8 (a `--set` value is raw
+/// command-line text) become U+FFFD instead of making dump() throw type_error.316.
+inline std::string shown(const json& j) {
+    return j.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
 /// Writes every field of a settings struct to JSON.
 class JsonWriter {
 public:
@@ -137,14 +143,14 @@ public:
             const std::string at = fmt::format("{}[{}]", key, i);
             if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number()) {
                 add(SettingsIssueCode::WrongType, at,
-                    fmt::format("expected [x, y] numbers, got {}", p.dump()));
+                    fmt::format("expected [x, y] numbers, got {}", shown(p)));
                 return;
             }
             const double x = p[0].get<double>(), y = p[1].get<double>();
             if (!std::isfinite(x) || !std::isfinite(y) || x < range.min || x > range.max || y < range.min ||
                 y > range.max) {
                 add(SettingsIssueCode::OutOfRange, at,
-                    fmt::format("{} has a value outside [{}, {}]", p.dump(), range.min, range.max));
+                    fmt::format("{} has a value outside [{}, {}]", shown(p), range.min, range.max));
                 return;
             }
             parsed.emplace_back(static_cast<float>(x), static_cast<float>(y));
@@ -230,7 +236,7 @@ private:
     }
     void wrongType(std::string_view key, const json& j, const std::string& expected) {
         add(SettingsIssueCode::WrongType, key,
-            fmt::format("expected {}, got {} {}", expected, typeName(j), j.dump()));
+            fmt::format("expected {}, got {} {}", expected, typeName(j), shown(j)));
     }
     bool number(std::string_view key, const json& j, Range range, double& out) {
         if (!j.is_number()) {
@@ -240,7 +246,7 @@ private:
         out = j.get<double>();
         if (!std::isfinite(out) || out < range.min || out > range.max) {
             add(SettingsIssueCode::OutOfRange, key,
-                fmt::format("{} is outside [{}, {}]", j.dump(), range.min, range.max));
+                fmt::format("{} is outside [{}, {}]", shown(j), range.min, range.max));
             return false;
         }
         return true;
