@@ -1,7 +1,5 @@
 #include "gl/ShaderLibrary.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include <fmt/format.h>
 
 #include <set>
@@ -139,9 +137,6 @@ Program makeGraphicsProgram(std::string_view vertexName, std::string_view fragme
     return link({vs, fs}, fragmentName);
 }
 
-void setUniform(const Program& p, const char* name, const glm::mat4& m) {
-    glProgramUniformMatrix4fv(p.id(), glGetUniformLocation(p.id(), name), 1, GL_FALSE, glm::value_ptr(m));
-}
 void setUniform(const Program& p, const char* name, float v) {
     glProgramUniform1f(p.id(), glGetUniformLocation(p.id(), name), v);
 }

@@ -5,8 +5,6 @@
 
 #include "gl/Objects.h"
 
-#include <glm/mat4x4.hpp>
-
 #include <map>
 #include <string>
 #include <string_view>
@@ -35,6 +33,5 @@ void setUniform(const Program& p, const char* name, int v);
 void setUniform(const Program& p, const char* name, float x, float y);
 void setUniform(const Program& p, const char* name, float x, float y, float z);
 void setUniform(const Program& p, const char* name, float x, float y, float z, float w);
-void setUniform(const Program& p, const char* name, const glm::mat4& m);
 
 } // namespace photopic

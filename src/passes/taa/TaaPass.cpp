@@ -14,6 +14,7 @@ constexpr float kStillPixels = 0.25f;
 
 TaaPass::TaaPass()
     : mProgram(makeComputeProgram("passes/taa/taa_resolve.comp.glsl", bindingDefines()))
+    , mParameters("taa parameters")
     , mNoDebug({.extent = {1, 1}, .format = GL_RG8, .debugName = "taa debug (unused)"}) {}
 
 std::span<const ResourceUse> TaaPass::uses() const {
@@ -43,7 +44,7 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Extent e = ctx.extent;
     const TaaSettings& s = ctx.settings.taa;
     const Texture* depth = resources.texture(Resource::LinearDepth);
-    const bool camera = resources.has(Resource::Camera);
+    const bool hasCamera = resources.has(Resource::Camera);
     const DebugView view = ctx.settings.debug.view;
     const bool debug = view == DebugView::TaaHistoryWeight || view == DebugView::Disocclusion;
     const Texture* debugTarget = nullptr;
@@ -60,23 +61,23 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
         double(e.width) * e.height *
         (8.0 /*current*/ + 12.0 /*history*/ + 4.0 /*motion*/ + (depth ? 4.0 : 0.0) + 12.0 /*output*/);
     ScopedGpuTimer timer(ctx.timers, "taa", bytes);
-    setUniform(mProgram, "uHasHistory", mHistory.valid() && !ctx.resetHistory ? 1 : 0);
-    setUniform(mProgram, "uHasDepth", depth ? 1 : 0);
-    setUniform(mProgram, "uHasCamera", camera ? 1 : 0);
-    setUniform(mProgram, "uWriteDebug", debug ? 1 : 0);
-    setUniform(mProgram, "uBlend", s.blendFactor);
-    setUniform(mProgram, "uGamma", s.varianceGamma);
-    setUniform(mProgram, "uStaticPixels", kStillPixels);
-    setUniform(mProgram, "uAdaptive", s.adaptiveFeedback ? 1 : 0);
-    setUniform(mProgram, "uBilinearHistory", s.historyFilter == HistoryFilter::Bilinear ? 1 : 0);
-    setUniform(mProgram, "uFeedbackMin", s.feedbackMin);
-    setUniform(mProgram, "uFeedbackMax", s.feedbackMax);
-    if (camera) {
-        const Camera& c = *ctx.inputs.camera;
-        setUniform(mProgram, "uInvProjection", glm::inverse(c.projection));
-        setUniform(mProgram, "uInvView", glm::inverse(c.view));
-        setUniform(mProgram, "uPrevViewProjection", c.prevViewProjection);
-    }
+    const Camera* camera = hasCamera ? ctx.inputs.camera : nullptr; // null when validation dropped it
+    mParameters.update({.invProjection = camera ? glm::inverse(camera->projection) : glm::mat4(1.0f),
+                        .invView = camera ? glm::inverse(camera->view) : glm::mat4(1.0f),
+                        .prevViewProjection = camera ? camera->prevViewProjection : glm::mat4(1.0f),
+                        .blend = s.blendFactor,
+                        .gamma = s.varianceGamma,
+                        .feedbackMin = s.feedbackMin,
+                        .feedbackMax = s.feedbackMax,
+                        .stillPixels = kStillPixels,
+                        .hasHistory = mHistory.valid() && !ctx.resetHistory ? 1 : 0,
+                        .hasDepth = depth ? 1 : 0,
+                        .hasCamera = camera ? 1 : 0,
+                        .writeDebug = debug ? 1 : 0,
+                        .adaptive = s.adaptiveFeedback ? 1 : 0,
+                        .bilinearHistory = s.historyFilter == HistoryFilter::Bilinear ? 1 : 0,
+                        .padding = 0});
+    mParameters.bind(kBindingParameters);
     mProgram.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
                      resources.buffer(Resource::ExposureState)->id());

@@ -6,7 +6,33 @@
 #include "passes/FramePass.h"
 #include "passes/HistoryTexture.h"
 
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+
 namespace photopic {
+
+/// std140 mirror of taa_resolve.comp.glsl's parameter block.
+struct TaaParameters {
+    glm::mat4 invProjection{1.0f};
+    glm::mat4 invView{1.0f};
+    glm::mat4 prevViewProjection{1.0f};
+    float blend = 0.9f;
+    float gamma = 1.0f;
+    float feedbackMin = 0.88f;
+    float feedbackMax = 0.97f;
+    float stillPixels = 0.25f;
+    std::int32_t hasHistory = 0;
+    std::int32_t hasDepth = 0;
+    std::int32_t hasCamera = 0;
+    std::int32_t writeDebug = 0;
+    std::int32_t adaptive = 0;
+    std::int32_t bilinearHistory = 0;
+    std::int32_t padding = 0;
+};
+static_assert(sizeof(TaaParameters) == 240);
+static_assert(offsetof(TaaParameters, blend) == 192);
+static_assert(offsetof(TaaParameters, hasHistory) == 212);
+static_assert(offsetof(TaaParameters, bilinearHistory) == 232);
 
 class TaaPass final : public FramePass {
 public:
@@ -26,6 +52,7 @@ public:
 
 private:
     Program mProgram;
+    ParameterBlock<TaaParameters> mParameters;
     HistoryTexture mHistory;    ///< the resolved colour
     HistoryTexture mHistoryAux; ///< per pixel: linear depth and stability (how long it has held still)
     Texture mNoDebug;           ///< bound to the debug image unit when no debug view asks for it

@@ -23,20 +23,23 @@ layout(binding = 0, rgba16f) writeonly uniform image2D uOutput;
 layout(binding = 2, rg16f) writeonly uniform image2D uOutputAux;
 layout(binding = 1, rg8) writeonly uniform image2D uDebug; // r: history weight, g: disoccluded
 
-uniform int uHasHistory;
-uniform int uHasDepth;
-uniform int uHasCamera;
-uniform int uWriteDebug;
-uniform float uBlend;
-uniform float uGamma;
-uniform float uStaticPixels; // motion (pixels per frame) below which a neighbourhood counts as still
-uniform int uAdaptive;
-uniform int uBilinearHistory;
-uniform float uFeedbackMin;
-uniform float uFeedbackMax;
-uniform mat4 uInvProjection;
-uniform mat4 uInvView;
-uniform mat4 uPrevViewProjection;
+// Mirrors photopic::TaaParameters (passes/taa/TaaPass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform TaaParameters {
+    mat4 uInvProjection; // this frame's, unjittered (when uHasCamera)
+    mat4 uInvView;
+    mat4 uPrevViewProjection;
+    float uBlend;
+    float uGamma;
+    float uFeedbackMin;
+    float uFeedbackMax;
+    float uStaticPixels; // motion (pixels per frame) below which a neighbourhood counts as still
+    int uHasHistory;
+    int uHasDepth;
+    int uHasCamera;
+    int uWriteDebug;
+    int uAdaptive;
+    int uBilinearHistory;
+};
 
 // Frames a neighbourhood must hold still before its history is trusted without clipping.
 const float kStableFrames = 8.0;
