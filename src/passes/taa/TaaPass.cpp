@@ -35,12 +35,11 @@ bool TaaPass::enabled(const FrameContext& ctx) const {
     return ctx.hdr && selected(ctx.settings);
 }
 
-void TaaPass::resize(Extent extent) {
-    mHistory.ensure(extent, GL_RGBA16F, "taa history");
-    mHistoryAux.ensure(extent, GL_RG16F, "taa history depth and stability");
-}
-
 void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
+    // Made on the first frame TAA runs at a size (a pipeline with TAA off holds no history); a new size
+    // remakes them and the history starts over.
+    mHistory.ensure(ctx.extent, GL_RGBA16F, "taa history");
+    mHistoryAux.ensure(ctx.extent, GL_RG16F, "taa history depth and stability");
     const Extent e = ctx.extent;
     const TaaSettings& s = ctx.settings.taa;
     const Texture* depth = resources.texture(Resource::LinearDepth);

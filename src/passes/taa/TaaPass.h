@@ -40,7 +40,6 @@ public:
     [[nodiscard]] std::string_view name() const override { return "taa"; }
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
     [[nodiscard]] bool enabled(const FrameContext& ctx) const override;
-    void resize(Extent extent) override;
     void invalidateHistory() override {
         mHistory.invalidate();
         mHistoryAux.invalidate();
