@@ -135,8 +135,52 @@ void requireTextureFits(const fs::path& path, int width, int height) {
 namespace {
 
 /// Where runImage writes each input's result, every path checked before any work.
+/// The same file, whether or not it exists yet (links and relative paths resolved).
+bool sameFile(const fs::path& a, const fs::path& b) {
+    std::error_code ec;
+    if (fs::equivalent(a, b, ec)) {
+        return true;
+    }
+    const fs::path ca = fs::weakly_canonical(a, ec);
+    return !ec && ca == fs::weakly_canonical(b, ec) && !ec;
+}
+
+/// Refuses outputs that would destroy an input or each other: an output that is one of the inputs, and two
+/// inputs whose results would land on the same file.
+void requireDistinctOutputs(const std::vector<fs::path>& inputs, const std::vector<fs::path>& outputs) {
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        for (const fs::path& in : inputs) {
+            if (sameFile(outputs[i], in)) {
+                throw InputError(fmt::format("output {} is also an input; it would be overwritten: choose "
+                                             "another output",
+                                             outputs[i].string()));
+            }
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+            if (sameFile(outputs[i], outputs[j])) {
+                throw InputError(fmt::format("inputs {} and {} would both be written to {}: give them "
+                                             "different names or process them separately",
+                                             inputs[j].string(), inputs[i].string(), outputs[i].string()));
+            }
+        }
+    }
+}
+
 std::vector<fs::path> plannedOutputs(const ImageOptions& options, const std::vector<fs::path>& inputs,
                                      RunOutputs& outputs) {
+    if (options.output == "-") {
+        throw InputError(
+            "output '-': writing to standard output is not supported; name a file (.png, .exr) or "
+            "a folder");
+    }
+    std::error_code ec;
+    const fs::file_status status = fs::status(options.output, ec);
+    if (!ec && fs::exists(status) && !fs::is_directory(status) && !fs::is_regular_file(status)) {
+        throw InputError(
+            fmt::format("output {} is a device, pipe or socket, not a file or folder: writing to a "
+                        "stream is not supported; name a file (.png, .exr) or a folder",
+                        options.output.string()));
+    }
     const std::string outExt = lowerExtension(options.output);
     const bool toFolder = inputs.size() > 1 || fs::is_directory(options.output) || outExt.empty();
     if (!toFolder && outExt != ".png" && outExt != ".exr") {
@@ -147,14 +191,18 @@ std::vector<fs::path> plannedOutputs(const ImageOptions& options, const std::vec
     }
     std::vector<fs::path> paths;
     if (!toFolder) {
-        RunOutputs::requireFile(options.output);
         paths.push_back(options.output);
+        requireDistinctOutputs(inputs, paths);
+        RunOutputs::requireFile(options.output);
         return paths;
     }
-    outputs.makeFolder(options.output);
     for (const fs::path& in : inputs) {
         paths.push_back(options.output / (in.stem().string() + "." + options.format));
-        RunOutputs::requireFile(paths.back());
+    }
+    requireDistinctOutputs(inputs, paths);
+    outputs.makeFolder(options.output);
+    for (const fs::path& path : paths) {
+        RunOutputs::requireFile(path);
     }
     return paths;
 }

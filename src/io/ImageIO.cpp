@@ -741,8 +741,8 @@ ImageF detail::readExrColor(const fs::path& path, std::span<const unsigned char>
     const std::size_t yStride = xStride * std::size_t(width);
     // Every channel is read as FLOAT whatever it is stored as; absent channels take the fill value.
     const auto addSlice = [&](const char* name, std::size_t component, double fill) {
-        frameBuffer.insert(name, Imf::Slice::Make(Imf::FLOAT, image.rgba.data() + component, dataWindow, xStride,
-                                                  yStride, 1, 1, fill));
+        frameBuffer.insert(name, Imf::Slice::Make(Imf::FLOAT, image.rgba.data() + component, dataWindow,
+                                                  xStride, yStride, 1, 1, fill));
     };
     if (hasRgb) {
         addSlice("R", 0, 0.0);
@@ -831,6 +831,14 @@ void requireWritableFile(const fs::path& path) {
     std::error_code ec;
     if (fs::is_directory(path, ec))
         throw IoError(path, "is a folder, not a file");
+    // The atomic write renames a new file over the path: over a link that replaces the link, not what it
+    // points to, and a device or pipe (/dev/stdout) would be replaced by a regular file.
+    const fs::file_status link = fs::symlink_status(path, ec);
+    if (!ec && fs::is_symlink(link))
+        throw IoError(
+            path, "is a symbolic link; writing would replace the link itself: name the file it points to");
+    if (!ec && fs::exists(link) && !fs::is_regular_file(link))
+        throw IoError(path, "is not a regular file (a device, pipe or socket): write to a file");
     if (::access(folder.c_str(), W_OK | X_OK) != 0)
         throw IoError(path, "folder " + quoted(folder) + " is not writable: " + errnoMessage(errno));
 }

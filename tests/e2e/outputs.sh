@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# `-o` never destroys what it should not: an output that is one of the inputs, two inputs that would share an
+# output, `-`, a device such as /dev/stdout and a symbolic link are refused before any work (exit 2, the path
+# named), and the input is left as it was.
+source "$(dirname "$0")/lib.bash"
+S="$SCRATCH"
+cp "$DATA/Desk.exr" "$S/desk.exr"
+cp "$DATA/Desk.hdr" "$S/desk.hdr"
+before=$(sha256sum "$S/desk.exr" | cut -d' ' -f1)
+
+expect 2 "an output that is the input is refused" -- "$PHOTOPIC" image "$S/desk.exr" -o "$S/desk.exr"
+check "names it" contains "is also an input"
+check "the input is unchanged" [ "$(sha256sum "$S/desk.exr" | cut -d' ' -f1)" = "$before" ]
+expect 2 "the same file through another path is refused" -- "$PHOTOPIC" image "$S/desk.exr" -o "$S/./desk.exr"
+expect 2 "two inputs with one stem are refused" -- "$PHOTOPIC" image "$S/desk.exr" "$S/desk.hdr" -o "$S/out/"
+check "names both inputs" contains "would both be written to"
+check "no folder was made" [ ! -e "$S/out" ]
+expect 2 "-o - is refused, not a folder named -" -- "$PHOTOPIC" image "$S/desk.exr" -o -
+check "no file or folder named -" [ ! -e "-" ]
+expect 2 "a device is refused" -- "$PHOTOPIC" image "$S/desk.exr" -o /dev/null
+check "says it is not a file" contains "device, pipe or socket"
+ln -s "$S/target.png" "$S/link.png"
+expect 2 "a symbolic link is refused" -- "$PHOTOPIC" image "$S/desk.exr" -o "$S/link.png"
+check "says why" contains "symbolic link"
+check "the link is still a link" [ -L "$S/link.png" ]
+expect 0 "a plain output still works" -- "$PHOTOPIC" image "$S/desk.exr" -o "$S/desk.png"
+finish
