@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -135,6 +136,51 @@ void requireTextureFits(const fs::path& path, int width, int height) {
 namespace {
 
 /// Where runImage writes each input's result, every path checked before any work.
+/// Natural order of file names, as a person numbers frames: runs of digits compare by value, so f9 comes
+/// before f10 (a plain string sort would run f10 first and the adaptation would see frames out of order).
+bool naturalLess(const fs::path& a, const fs::path& b) {
+    const std::string x = a.string();
+    const std::string y = b.string();
+    std::size_t i = 0, j = 0;
+    while (i < x.size() && j < y.size()) {
+        const bool dx = std::isdigit(static_cast<unsigned char>(x[i])) != 0;
+        const bool dy = std::isdigit(static_cast<unsigned char>(y[j])) != 0;
+        if (dx && dy) {
+            std::size_t ei = i, ej = j;
+            while (ei < x.size() && std::isdigit(static_cast<unsigned char>(x[ei])) != 0) {
+                ++ei;
+            }
+            while (ej < y.size() && std::isdigit(static_cast<unsigned char>(y[ej])) != 0) {
+                ++ej;
+            }
+            // Compare by value without overflow: leading zeros off, then length, then digits.
+            std::size_t si = i, sj = j;
+            while (si + 1 < ei && x[si] == '0') {
+                ++si;
+            }
+            while (sj + 1 < ej && y[sj] == '0') {
+                ++sj;
+            }
+            if (ei - si != ej - sj) {
+                return ei - si < ej - sj;
+            }
+            const int c = x.compare(si, ei - si, y, sj, ej - sj);
+            if (c != 0) {
+                return c < 0;
+            }
+            i = ei;
+            j = ej;
+            continue;
+        }
+        if (x[i] != y[j]) {
+            return x[i] < y[j];
+        }
+        ++i;
+        ++j;
+    }
+    return x.size() - i < y.size() - j || (x.size() - i == y.size() - j && x < y);
+}
+
 /// The same file, whether or not it exists yet (links and relative paths resolved).
 bool sameFile(const fs::path& a, const fs::path& b) {
     std::error_code ec;
@@ -211,7 +257,7 @@ std::vector<fs::path> plannedOutputs(const ImageOptions& options, const std::vec
 
 int runImage(const ImageOptions& options) {
     std::vector<fs::path> inputs = options.inputs;
-    std::sort(inputs.begin(), inputs.end());
+    std::sort(inputs.begin(), inputs.end(), naturalLess);
     if (options.info) {
         return runImageInfo(inputs, options.camera);
     }

@@ -24,4 +24,10 @@ expect 2 "a symbolic link is refused" -- "$PHOTOPIC" image "$S/desk.exr" -o "$S/
 check "says why" contains "symbolic link"
 check "the link is still a link" [ -L "$S/link.png" ]
 expect 0 "a plain output still works" -- "$PHOTOPIC" image "$S/desk.exr" -o "$S/desk.png"
+
+# Frames in natural order: f9 before f10 (a string sort would run f10 first).
+mkdir -p "$S/seq"
+for n in 9 10 1; do cp "$S/desk.exr" "$S/seq/f$n.exr"; done
+expect 0 "a sequence in natural order" -- "$PHOTOPIC" image "$S/seq/f10.exr" "$S/seq/f9.exr" "$S/seq/f1.exr" -o "$S/seqout/"
+check "f1, f9, f10" [ "$(grep -o 'seq/f[0-9]*\.exr ->' <<< "$OUTPUT" | tr -d '\n')" = "seq/f1.exr ->seq/f9.exr ->seq/f10.exr ->" ]
 finish
