@@ -240,6 +240,7 @@ int runCommand(Cli& c) {
 
 int main(int argc, char** argv) {
     CLI::App app{"Photopic: HDR post-processing and eye adaptation on OpenGL 4.5"};
+    app.set_version_flag("--version", std::string("photopic ") + PHOTOPIC_VERSION);
     app.require_subcommand(1);
     Cli c;
     addInfoCommand(app, c);

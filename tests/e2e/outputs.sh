@@ -30,4 +30,8 @@ mkdir -p "$S/seq"
 for n in 9 10 1; do cp "$S/desk.exr" "$S/seq/f$n.exr"; done
 expect 0 "a sequence in natural order" -- "$PHOTOPIC" image "$S/seq/f10.exr" "$S/seq/f9.exr" "$S/seq/f1.exr" -o "$S/seqout/"
 check "f1, f9, f10" [ "$(grep -o 'seq/f[0-9]*\.exr ->' <<< "$OUTPUT" | tr -d '\n')" = "seq/f1.exr ->seq/f9.exr ->seq/f10.exr ->" ]
+expect 0 "--version" -- "$PHOTOPIC" --version
+check "prints the version" contains "photopic 0."
+expect 0 "photopic-view --version (no display needed)" -- "$(dirname "$PHOTOPIC")/photopic-view" --version
+check "prints its version" contains "photopic-view 0."
 finish
