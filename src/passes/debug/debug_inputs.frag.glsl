@@ -4,10 +4,13 @@
 
 layout(binding = 0) uniform sampler2D uInput;
 
-uniform int uView; // DebugView: 7 depth, 8 normals, 9 motion, 10 TAA history weight, 11 disocclusion
-uniform int uOctahedral;
-uniform float uNear;
-uniform float uFar;
+// Mirrors photopic::DebugInputViewParameters (passes/debug/DebugViewPass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform DebugInputViewParameters {
+    int uView; // DebugView: 7 depth, 8 normals, 9 motion, 10 TAA history weight, 11 disocclusion
+    int uOctahedral;
+    float uNear;
+    float uFar;
+};
 
 layout(location = 0) out vec4 oColor;
 

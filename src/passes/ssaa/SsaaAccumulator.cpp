@@ -21,7 +21,8 @@ float ssaaWeight(SsaaFilter filter, glm::vec2 offset) noexcept {
 }
 
 SsaaAccumulator::SsaaAccumulator()
-    : mProgram(makeComputeProgram("passes/ssaa/ssaa_accumulate.comp.glsl", bindingDefines())) {}
+    : mProgram(makeComputeProgram("passes/ssaa/ssaa_accumulate.comp.glsl", bindingDefines()))
+    , mParameters("ssaa accumulate parameters") {}
 
 void SsaaAccumulator::begin(Extent extent) {
     if (!mMean.valid() || mMean.extent() != extent) {
@@ -37,7 +38,8 @@ void SsaaAccumulator::add(const Texture& subframe, float weight, GpuTimers* time
                          double(e.width) * e.height * (bytesPerTexel(subframe.format()) + 32.0));
     weight = std::max(weight, 1e-6f);
     mWeightSum += weight;
-    setUniform(mProgram, "uFraction", mCount == 0 ? 1.0f : weight / mWeightSum);
+    mParameters.update({.fraction = mCount == 0 ? 1.0f : weight / mWeightSum});
+    mParameters.bind(kBindingParameters);
     mProgram.use();
     glBindTextureUnit(0, subframe.id());
     glBindImageTexture(0, mMean.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);

@@ -9,9 +9,17 @@
 #include "gl/GpuTimers.h"
 #include "gl/Objects.h"
 
+#include <cstddef>
 #include <glm/vec2.hpp>
 
 namespace photopic {
+
+/// std140 mirror of ssaa_accumulate.comp.glsl's parameter block.
+struct SsaaAccumulateParameters {
+    float fraction = 1.0f; ///< w_i / W_i; 1 for the first sub-frame
+    float padding[3] = {};
+};
+static_assert(sizeof(SsaaAccumulateParameters) == 16 && offsetof(SsaaAccumulateParameters, fraction) == 0);
 
 /// The reconstruction weight of a sample `offset` pixels from the pixel centre.
 [[nodiscard]] float ssaaWeight(SsaaFilter filter, glm::vec2 offset) noexcept;
@@ -29,6 +37,7 @@ public:
 
 private:
     Program mProgram;
+    ParameterBlock<SsaaAccumulateParameters> mParameters;
     Texture mMean;
     float mWeightSum = 0.0f;
     int mCount = 0;

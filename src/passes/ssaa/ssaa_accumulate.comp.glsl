@@ -8,7 +8,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D uSubframe;
 layout(binding = 0, rgba32f) uniform image2D uMean;
 
-uniform float uFraction; // w_i / W_i; 1 for the first sub-frame
+// Mirrors photopic::SsaaAccumulateParameters (passes/ssaa/SsaaAccumulator.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform SsaaAccumulateParameters {
+    float uFraction; // w_i / W_i; 1 for the first sub-frame
+};
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
