@@ -8,7 +8,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <set>
 #include <string>
 #include <vector>
@@ -36,6 +38,18 @@ inline std::string shown(const json& j) {
     return j.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
+/// `value` as the double whose shortest decimal is the float's own shortest (0.02f is written as 0.02, not
+/// 0.019999999552965164): what a person typed reads back as typed, and reading it gives the same float.
+inline double shortestDecimal(float value) {
+    char text[32];
+    const auto [end, error] = std::to_chars(text, text + sizeof(text), value);
+    if (error != std::errc()) {
+        return double(value);
+    }
+    *end = '\0';
+    return std::strtod(text, nullptr);
+}
+
 /// Writes every field of a settings struct to JSON.
 class JsonWriter {
 public:
@@ -43,17 +57,20 @@ public:
         : mOut(out) {}
 
     void field(std::string_view key, bool& value) { mOut[std::string(key)] = value; }
-    void field(std::string_view key, float& value, Range) { mOut[std::string(key)] = value; }
+    void field(std::string_view key, float& value, Range) { mOut[std::string(key)] = shortestDecimal(value); }
     void field(std::string_view key, int& value, Range) { mOut[std::string(key)] = value; }
     void field(std::string_view key, std::string& value) { mOut[std::string(key)] = value; }
-    void field(std::string_view key, glm::vec2& value, Range) { mOut[std::string(key)] = {value.x, value.y}; }
+    void field(std::string_view key, glm::vec2& value, Range) {
+        mOut[std::string(key)] = {shortestDecimal(value.x), shortestDecimal(value.y)};
+    }
     void field(std::string_view key, glm::vec3& value, Range) {
-        mOut[std::string(key)] = {value.x, value.y, value.z};
+        mOut[std::string(key)] = {shortestDecimal(value.x), shortestDecimal(value.y),
+                                  shortestDecimal(value.z)};
     }
     void field(std::string_view key, CurvePoints& points, Range) {
         json arr = json::array();
         for (const auto& p : points) {
-            arr.push_back({p.x, p.y});
+            arr.push_back({shortestDecimal(p.x), shortestDecimal(p.y)});
         }
         mOut[std::string(key)] = arr;
     }
