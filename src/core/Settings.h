@@ -2,6 +2,7 @@
 // Every setting of the pipeline, one typed struct per effect (see core/settings/), gathered here.
 // JSON: {"version": 1, "postEffects": {<key>: {...}}} with the keys below.
 
+#include "core/settings/AmbientOcclusionSettings.h"
 #include "core/settings/AntiAliasingSettings.h"
 #include "core/settings/AutoExposureSettings.h"
 #include "core/settings/DebugSettings.h"
@@ -33,6 +34,7 @@ struct Settings {
     TemporalSettings temporal;
     AntiAliasingSettings aa;
     TaaSettings taa;
+    AmbientOcclusionSettings ssao;
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
     /// is none.
@@ -64,6 +66,7 @@ struct Settings {
         v.object("temporal", temporal);
         v.object("aa", aa);
         v.object("taa", taa);
+        v.object("ssao", ssao);
     }
 };
 

@@ -187,8 +187,13 @@ const LightingOutputs& Pipeline::renderLighting(const FrameInputs& inputs, const
     const QualityTier tier = effectiveTier(mCaps, mSettings.quality);
     FrameContext ctx = makeContext(inputs, time, tier);
     mResources.pool().beginFrame();
+    if (!mLightingTimed) {
+        mTimers.beginFrame(); // the lighting stage's passes are timed with the frame execute() finishes
+        mLightingTimed = true;
+    }
     mLightingSequencer.run(mOrder->lighting(), {.resources = kLightingOutputs}, ctx, mResources);
     mLighting.ambientOcclusion = mResources.texture(Resource::AmbientOcclusion);
+    mLighting.ambientOcclusionPower = mSettings.ssao.power;
     mLighting.contactShadows = mResources.texture(Resource::ContactShadows);
     return mLighting;
 }
@@ -198,6 +203,10 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
     const LightingOutputs lighting = mLighting;
     mLighting = {};
     if (!bindInputs(inputs)) {
+        if (mLightingTimed) {
+            mTimers.endFrame();
+            mLightingTimed = false;
+        }
         try {
             warnOnce("input.color", "execute(): " + mInputErrors.front());
         } catch (...) { // logging must not take the frame down
@@ -222,7 +231,10 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
             pass->invalidateHistory();
         }
     }
-    mTimers.beginFrame();
+    if (!mLightingTimed) {
+        mTimers.beginFrame();
+    }
+    mLightingTimed = false;
     const QualityTier tier = effectiveTier(mCaps, mSettings.quality);
     FrameContext ctx = makeContext(inputs, time, tier);
     if (lighting.ambientOcclusion == nullptr && lighting.contactShadows == nullptr) {

@@ -56,8 +56,11 @@ struct PipelineCreateInfo {
 
 /// What the lighting stage hands the host for shading. Each is null when its pass did not run this frame.
 struct LightingOutputs {
-    /// R8/R16F visibility in [0, 1] for indirect (ambient, IBL) light only.
+    /// R8/R16F visibility in [0, 1] for indirect (ambient, IBL) light only: the raw visibility, before
+    /// ssao.power.
     const Texture* ambientOcclusion = nullptr;
+    /// ssao.power: the host multiplies its indirect light by pow(visibility, ambientOcclusionPower).
+    float ambientOcclusionPower = 1.0f;
     /// R8/R16F visibility in [0, 1] for the sun's direct light only.
     const Texture* contactShadows = nullptr;
 };
@@ -172,7 +175,8 @@ private:
     bool mResetExposure = true;
     bool mResetHistory = true;
     glm::vec2 mJitter{0.0f};
-    bool mBeganFrame = false; ///< the host called beginFrame() for the frame execute() runs
+    bool mLightingTimed = false; ///< renderLighting() opened this frame's GPU timers; execute() closes them
+    bool mBeganFrame = false;    ///< the host called beginFrame() for the frame execute() runs
     std::unique_ptr<SsaaAccumulator> mSsaa;
     bool mAccumulating = false; ///< sub-frames were added since the last execute()
     LightingOutputs mLighting;

@@ -78,6 +78,7 @@ FrameInputs TestbedScene::render(const FrameTime& time, Pipeline& pipeline, std:
                        .camera = &mCamera};
     const LightingOutputs& lighting = pipeline.renderLighting(inputs, time);
     draw.ambientOcclusion = lighting.ambientOcclusion;
+    draw.ambientOcclusionPower = lighting.ambientOcclusionPower;
     draw.sunVisibility = lighting.contactShadows;
     if (lighting.ambientOcclusion != nullptr || lighting.contactShadows != nullptr) {
         mRenderer.draw(draw);
