@@ -1,7 +1,7 @@
 #pragma once
 // Internal to the io library: the pieces of ImageIO.cpp that ExrFrame.cpp shares (the checked reading of an
-// OpenEXR file from memory, colour reading with extra layers in the same pass, file checks and the atomic
-// writer). Not part of the public API.
+// OpenEXR file from memory, colour reading with extra layers in the same pass, and the atomic writer). Not
+// part of the public API.
 
 #include "core/Image.h"
 #include "io/ImageIO.h"
@@ -18,11 +18,6 @@
 #include <vector>
 
 namespace photopic::detail {
-
-/// Throws IoError unless `path` names an existing regular file.
-void requireRegularFile(const std::filesystem::path& path);
-/// Throws IoError unless the file starts with OpenEXR's magic number.
-void requireExrFile(const std::filesystem::path& path);
 
 /// The whole file, checked before OpenEXR parses it: the magic number, every header attribute's declared size
 /// against the bytes left, and the data window against `limits` and against the bytes that could hold it

@@ -685,15 +685,6 @@ void requirePixels(const fs::path& path, const Image& image) {
 // ---------------------------------------------------------------------------------------------------------------
 // Shared with ExrFrame.cpp (io/ExrDetail.h)
 
-void detail::requireRegularFile(const fs::path& path) {
-    photopic::requireRegularFile(path);
-}
-
-void detail::requireExrFile(const fs::path& path) {
-    if (!startsWith(readBytes(path, kExrMagic.size()), kExrMagic))
-        throw IoError(path, "is not an OpenEXR file (no OpenEXR magic number)");
-}
-
 std::vector<unsigned char> detail::readCheckedExrBytes(const fs::path& path, const ImageReadLimits& limits) {
     requireRegularFile(path);
     Bytes bytes = readBytes(path);

@@ -31,7 +31,6 @@ public:
     void begin(Extent extent);
     /// Folds one sub-frame (any float colour format, `extent`) into the mean with weight `weight`.
     void add(const Texture& subframe, float weight, GpuTimers* timers);
-    [[nodiscard]] int count() const { return mCount; }
     /// The weighted mean of the sub-frames added since begin() (RGBA32F).
     [[nodiscard]] const Texture& mean() const { return mMean; }
 
