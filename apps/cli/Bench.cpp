@@ -11,6 +11,8 @@
 
 #include "Bench.h"
 
+#include "Outputs.h"
+
 #include "core/Log.h"
 #include "core/Motion.h"
 #include "core/settings/SettingsJson.h"
@@ -290,12 +292,36 @@ ImageF benchInput(const BenchOptions& options) {
         const auto [w, h] = parseSize(options.size, 8);
         return makeSyntheticHdr(w, h);
     }
-    try {
-        return readImage(options.input);
-    } catch (const IoError& e) {
-        throw InputError(e.what());
-    }
+    return readInput(options.input, options.maxPixels);
 }
+
+/// Depth (R32F linear), motion (RG16F, zero) and a camera for the benchmark frame.
+class BenchInputs3d {
+public:
+    BenchInputs3d(int width, int height)
+        : mDepth({.extent = {width, height}, .format = GL_R32F, .debugName = "bench depth"})
+        , mMotion({.extent = {width, height}, .format = GL_RG16F, .debugName = "bench motion"}) {
+        const float depth = 10.0f;
+        glClearTexImage(mDepth.id(), 0, GL_RED, GL_FLOAT, &depth);
+        const float zero[2] = {0.0f, 0.0f};
+        glClearTexImage(mMotion.id(), 0, GL_RG, GL_FLOAT, zero);
+        mCamera.projection = perspectiveProjection(mCamera.verticalFov, float(width) / float(height),
+                                                   mCamera.nearPlane, mCamera.farPlane);
+        mCamera.prevViewProjection = mCamera.viewProjection();
+    }
+    [[nodiscard]] FrameInputs frame(const Texture& color) const {
+        return {.color = &color,
+                .depth = &mDepth,
+                .depthKind = DepthKind::LinearView,
+                .motion = &mMotion,
+                .camera = &mCamera};
+    }
+
+private:
+    Texture mDepth;
+    Texture mMotion;
+    Camera mCamera;
+};
 
 /// Per-pass timings over the measured frames, passes in the order they first ran.
 struct PassSamples {
@@ -368,6 +394,9 @@ PassTable printPassTable(const BenchOptions& options, PassSamples& samples) {
 }
 
 int runBench(const BenchOptions& options) {
+    if (!options.json.empty()) {
+        RunOutputs::requireFile(options.json); // before the minutes of timing, not after
+    }
     if (!options.scene.empty()) {
         if (options.scene != "canvas") {
             throw InputError(
@@ -382,20 +411,29 @@ int runBench(const BenchOptions& options) {
     const ImageF image = benchInput(options);
 
     HeadlessContext context;
+    if (!options.input.empty()) {
+        requireTextureFits(options.input, image.width, image.height);
+    }
     Pipeline pipeline({.settings = settings, .forceLdr = options.forceLdr});
     if (!pipeline.capabilities().timerQueries) {
         throw std::runtime_error("this GL implementation has no timer queries; nothing to measure");
     }
     pipeline.timers().setSynchronous(options.sync);
     const Texture input = makeTexture(image, "bench input");
+    // 3D inputs for the passes that need them (TAA): a wall 10 units away, still, seen by a still camera. The
+    // sequencer runs nothing on them unless such a pass is on, so the 2D chain's figures are unchanged.
+    const BenchInputs3d inputs3d(image.width, image.height);
+    const FrameInputs inputs = inputs3d.frame(input);
     std::uint64_t frame = 0;
     for (int i = 0; i < options.warmup; ++i) {
-        pipeline.execute({.color = &input}, {.frameIndex = frame++});
+        pipeline.beginFrame({.frameIndex = frame});
+        pipeline.execute(inputs, {.frameIndex = frame++});
         pipeline.timers().drain();
     }
     PassSamples samples;
     for (int i = 0; i < options.frames; ++i) {
-        pipeline.execute({.color = &input}, {.frameIndex = frame++});
+        pipeline.beginFrame({.frameIndex = frame});
+        pipeline.execute(inputs, {.frameIndex = frame++});
         samples.add(pipeline.timers().drain());
     }
 

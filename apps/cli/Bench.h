@@ -14,7 +14,8 @@ struct BenchOptions {
     int frames = 60;                ///< timed frames, after the warm-up
     int warmup = 5;                 ///< untimed frames first (shader compilation, first-use allocations)
     std::filesystem::path input;    ///< an HDR image instead of the synthetic frame
-    std::filesystem::path json;     ///< also write the table here (atomically)
+    std::int64_t maxPixels = kDefaultMaxPixels; ///< a larger --input is refused before it is decoded
+    std::filesystem::path json;                 ///< also write the table here (atomically)
     SettingsSources settings;
     bool forceLdr = false;
     /// Debug: glFinish() around every pass and report its wall time beside the timer query (stalls every

@@ -1,9 +1,12 @@
 #include "Commands.h"
 
 #include "ImageInputs.h"
+#include "Outputs.h"
+#include "TelemetryCsv.h"
 
 #include "core/settings/SettingsJson.h"
 #include "gl/Context.h"
+#include "gl/Gl.h"
 #include "gl/TextureIo.h"
 #include "io/ImageIO.h"
 #include "pipeline/Pipeline.h"
@@ -11,9 +14,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 namespace photopic::cli {
 
@@ -29,6 +34,15 @@ std::string exposureTelemetryRow(const ExposureTelemetry& t) {
                        t.histogramLowLog2, t.histogramHighLog2, t.histogramAverageLog2);
 }
 
+std::string telemetryCsvRow(const ExposureTelemetry& t, float dt, std::size_t sceneColumns,
+                            const std::vector<double>& sceneValues) {
+    std::string row = fmt::format("{},{:.6f}", t.frame, double(t.frame) * double(dt));
+    for (std::size_t c = 0; c < sceneColumns; ++c) {
+        row += fmt::format(",{:.9g}", c < sceneValues.size() ? sceneValues[c] : 0.0);
+    }
+    return row + "," + exposureTelemetryRow(t) + "\n";
+}
+
 std::string telemetryCsv(const std::vector<ExposureTelemetry>& rows, float dt,
                          const std::vector<std::string>& sceneColumns,
                          const std::vector<std::vector<double>>& sceneValues) {
@@ -37,13 +51,10 @@ std::string telemetryCsv(const std::vector<ExposureTelemetry>& rows, float dt,
         csv += "," + c;
     }
     csv += "," + exposureTelemetryHeader() + "\n";
+    static const std::vector<double> kNone;
     for (const ExposureTelemetry& t : rows) {
-        csv += fmt::format("{},{:.6f}", t.frame, double(t.frame) * double(dt));
-        for (std::size_t c = 0; c < sceneColumns.size(); ++c) {
-            const auto& values = t.frame < sceneValues.size() ? sceneValues[t.frame] : std::vector<double>{};
-            csv += fmt::format(",{:.9g}", c < values.size() ? values[c] : 0.0);
-        }
-        csv += "," + exposureTelemetryRow(t) + "\n";
+        csv += telemetryCsvRow(t, dt, sceneColumns.size(),
+                               t.frame < sceneValues.size() ? sceneValues[t.frame] : kNone);
     }
     return csv;
 }
@@ -104,16 +115,118 @@ std::string lowerExtension(const fs::path& p) {
 
 } // namespace
 
-int runImage(const ImageOptions& options) {
-    std::vector<fs::path> inputs = options.inputs;
-    std::sort(inputs.begin(), inputs.end());
-    if (options.info) {
-        return runImageInfo(inputs, options.camera);
+ImageF readInput(const fs::path& path, std::int64_t maxPixels) {
+    try {
+        return readImage(path, {.maxPixels = maxPixels});
+    } catch (const IoError& e) {
+        throw InputError(e.what());
     }
-    if (options.output.empty()) {
-        throw InputError("image: an output is required (-o FILE or FOLDER), or --info");
+}
+
+void requireTextureFits(const fs::path& path, int width, int height) {
+    GLint limit = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &limit);
+    if (width > limit || height > limit) {
+        throw InputError(fmt::format("\"{}\": image is {}x{}, larger than this GPU's largest texture ({}x{}, "
+                                     "GL_MAX_TEXTURE_SIZE); scale it down first",
+                                     path.string(), width, height, limit, limit));
     }
-    const Settings settings = resolveSettings(options.settings);
+}
+
+namespace {
+
+/// Where runImage writes each input's result, every path checked before any work.
+/// Natural order of file names, as a person numbers frames: runs of digits compare by value, so f9 comes
+/// before f10 (a plain string sort would run f10 first and the adaptation would see frames out of order).
+bool naturalLess(const fs::path& a, const fs::path& b) {
+    const std::string x = a.string();
+    const std::string y = b.string();
+    std::size_t i = 0, j = 0;
+    while (i < x.size() && j < y.size()) {
+        const bool dx = std::isdigit(static_cast<unsigned char>(x[i])) != 0;
+        const bool dy = std::isdigit(static_cast<unsigned char>(y[j])) != 0;
+        if (dx && dy) {
+            std::size_t ei = i, ej = j;
+            while (ei < x.size() && std::isdigit(static_cast<unsigned char>(x[ei])) != 0) {
+                ++ei;
+            }
+            while (ej < y.size() && std::isdigit(static_cast<unsigned char>(y[ej])) != 0) {
+                ++ej;
+            }
+            // Compare by value without overflow: leading zeros off, then length, then digits.
+            std::size_t si = i, sj = j;
+            while (si + 1 < ei && x[si] == '0') {
+                ++si;
+            }
+            while (sj + 1 < ej && y[sj] == '0') {
+                ++sj;
+            }
+            if (ei - si != ej - sj) {
+                return ei - si < ej - sj;
+            }
+            const int c = x.compare(si, ei - si, y, sj, ej - sj);
+            if (c != 0) {
+                return c < 0;
+            }
+            i = ei;
+            j = ej;
+            continue;
+        }
+        if (x[i] != y[j]) {
+            return x[i] < y[j];
+        }
+        ++i;
+        ++j;
+    }
+    return x.size() - i < y.size() - j || (x.size() - i == y.size() - j && x < y);
+}
+
+/// The same file, whether or not it exists yet (links and relative paths resolved).
+bool sameFile(const fs::path& a, const fs::path& b) {
+    std::error_code ec;
+    if (fs::equivalent(a, b, ec)) {
+        return true;
+    }
+    const fs::path ca = fs::weakly_canonical(a, ec);
+    return !ec && ca == fs::weakly_canonical(b, ec) && !ec;
+}
+
+/// Refuses outputs that would destroy an input or each other: an output that is one of the inputs, and two
+/// inputs whose results would land on the same file.
+void requireDistinctOutputs(const std::vector<fs::path>& inputs, const std::vector<fs::path>& outputs) {
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        for (const fs::path& in : inputs) {
+            if (sameFile(outputs[i], in)) {
+                throw InputError(fmt::format("output {} is also an input; it would be overwritten: choose "
+                                             "another output",
+                                             outputs[i].string()));
+            }
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+            if (sameFile(outputs[i], outputs[j])) {
+                throw InputError(fmt::format("inputs {} and {} would both be written to {}: give them "
+                                             "different names or process them separately",
+                                             inputs[j].string(), inputs[i].string(), outputs[i].string()));
+            }
+        }
+    }
+}
+
+std::vector<fs::path> plannedOutputs(const ImageOptions& options, const std::vector<fs::path>& inputs,
+                                     RunOutputs& outputs) {
+    if (options.output == "-") {
+        throw InputError(
+            "output '-': writing to standard output is not supported; name a file (.png, .exr) or "
+            "a folder");
+    }
+    std::error_code ec;
+    const fs::file_status status = fs::status(options.output, ec);
+    if (!ec && fs::exists(status) && !fs::is_directory(status) && !fs::is_regular_file(status)) {
+        throw InputError(
+            fmt::format("output {} is a device, pipe or socket, not a file or folder: writing to a "
+                        "stream is not supported; name a file (.png, .exr) or a folder",
+                        options.output.string()));
+    }
     const std::string outExt = lowerExtension(options.output);
     const bool toFolder = inputs.size() > 1 || fs::is_directory(options.output) || outExt.empty();
     if (!toFolder && outExt != ".png" && outExt != ".exr") {
@@ -122,35 +235,63 @@ int runImage(const ImageOptions& options) {
                         ".exr for the scene-referred image)",
                         options.output.string(), outExt));
     }
-    if (toFolder) {
-        std::error_code ec;
-        fs::create_directories(options.output, ec);
-        if (ec) {
-            throw std::runtime_error(
-                fmt::format("cannot create output folder {}: {}", options.output.string(), ec.message()));
-        }
+    std::vector<fs::path> paths;
+    if (!toFolder) {
+        paths.push_back(options.output);
+        requireDistinctOutputs(inputs, paths);
+        RunOutputs::requireFile(options.output);
+        return paths;
+    }
+    for (const fs::path& in : inputs) {
+        paths.push_back(options.output / (in.stem().string() + "." + options.format));
+    }
+    requireDistinctOutputs(inputs, paths);
+    outputs.makeFolder(options.output);
+    for (const fs::path& path : paths) {
+        RunOutputs::requireFile(path);
+    }
+    return paths;
+}
+
+} // namespace
+
+int runImage(const ImageOptions& options) {
+    std::vector<fs::path> inputs = options.inputs;
+    std::sort(inputs.begin(), inputs.end(), naturalLess);
+    if (options.info) {
+        return runImageInfo(inputs, options.camera);
+    }
+    if (options.output.empty()) {
+        throw InputError("image: an output is required (-o FILE or FOLDER), or --info");
+    }
+    const Settings settings = resolveSettings(options.settings);
+    // Every output is checked before any work; a run that fails takes back what it wrote.
+    RunOutputs outputs;
+    const std::vector<fs::path> outPaths = plannedOutputs(options, inputs, outputs);
+    if (!options.writeAux.empty()) {
+        outputs.makeFolder(options.writeAux);
+    }
+    const float dt = 1.0f / options.fps;
+    std::optional<TelemetryCsv> telemetry;
+    if (!options.telemetry.empty()) {
+        telemetry.emplace(options.telemetry, dt, std::vector<std::string>{});
     }
     // Read every input first: a bad input fails the run before any output is written.
     InputDecoder decoder(options.camera.empty() ? std::nullopt
-                                                : std::optional<CameraJson>(loadCameraJson(options.camera)));
+                                                : std::optional<CameraJson>(loadCameraJson(options.camera)),
+                         options.jitter == "halton" ? settings.temporal.jitterCycle : 0, options.maxPixels);
     std::vector<DecodedFrame> frames;
     frames.reserve(inputs.size());
     for (const auto& in : inputs) {
         frames.push_back(decoder.decode(in));
     }
-    if (!options.writeAux.empty()) {
-        std::error_code ec;
-        fs::create_directories(options.writeAux, ec);
-        if (ec) {
-            throw std::runtime_error(
-                fmt::format("cannot create aux folder {}: {}", options.writeAux.string(), ec.message()));
-        }
-    }
 
     HeadlessContext context;
-    const PipelineCreateInfo createInfo{.settings = settings,
-                                        .forceLdr = options.forceLdr,
-                                        .keepTelemetryHistory = !options.telemetry.empty()};
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        requireTextureFits(inputs[i], frames[i].color.width, frames[i].color.height);
+    }
+    const PipelineCreateInfo createInfo{
+        .settings = settings, .forceLdr = options.forceLdr, .keepTelemetryHistory = telemetry.has_value()};
     std::unique_ptr<Pipeline> pipelinePtr;
     try {
         pipelinePtr = std::make_unique<Pipeline>(createInfo);
@@ -158,36 +299,38 @@ int runImage(const ImageOptions& options) {
         throw InputError(fmt::format("autoExposure.mask.path: {}", e.what()));
     }
     Pipeline& pipeline = *pipelinePtr;
-    const float dt = 1.0f / options.fps;
     InputTextures textures; // created for the first frame, re-uploaded for the others
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         const auto start = std::chrono::steady_clock::now();
-        const Texture& display = pipeline.execute(textures.upload(frames[i]), {.dt = dt, .frameIndex = i});
-        const std::string ext = toFolder ? "." + options.format : outExt;
-        const fs::path out = toFolder ? options.output / (inputs[i].stem().string() + ext) : options.output;
-        if (ext == ".exr") {
+        const FrameTime time{.dt = dt, .frameIndex = i};
+        if (frames[i].jittered) {
+            pipeline.beginFrame(time); // the renderer jittered this frame, as a two-stage host would
+        }
+        const Texture& display = pipeline.execute(textures.upload(frames[i]), time);
+        const fs::path& out = outPaths[i];
+        if (lowerExtension(out) == ".exr") {
             writeExr(out, readTextureF(pipeline.sceneReferred()));
         } else {
             writePng(out, readTexture8(display));
+        }
+        outputs.wrote(out);
+        if (telemetry) {
+            telemetry->take(pipeline, i, i + 1 == inputs.size());
         }
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         std::printf("%s -> %s (%dx%d, %.1f ms)\n", inputs[i].string().c_str(), out.string().c_str(),
                     frames[i].color.width, frames[i].color.height, ms);
         if (!options.writeAux.empty()) {
-            writeAux(options.writeAux, inputs[i], frames[i]);
+            outputs.wrote(writeAux(options.writeAux, inputs[i], frames[i]));
         }
     }
-    if (!options.telemetry.empty()) {
-        // Offline: drain the ring so every frame has its own row.
-        const std::vector<ExposureTelemetry> rows = pipeline.drainTelemetry();
-        if (rows.size() != inputs.size()) {
-            throw std::runtime_error(fmt::format("telemetry: {} of {} frames came back ({} dropped)",
-                                                 rows.size(), inputs.size(), pipeline.droppedTelemetry()));
-        }
-        writeTextFile(options.telemetry, telemetryCsv(rows, dt, {}, {}));
-        std::printf("telemetry -> %s (%zu frames)\n", options.telemetry.string().c_str(), rows.size());
+    if (telemetry) {
+        telemetry->commit(inputs.size(), pipeline.droppedTelemetry());
+        outputs.wrote(options.telemetry);
+        std::printf("telemetry -> %s (%zu frames)\n", options.telemetry.string().c_str(), inputs.size());
     }
+    outputs.commit();
     return kOk;
 }
 

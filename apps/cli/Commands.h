@@ -3,6 +3,7 @@
 // failure.
 
 #include "core/Settings.h"
+#include "io/ImageIO.h"
 #include "pipeline/Pipeline.h"
 
 #include <filesystem>
@@ -40,6 +41,9 @@ struct ImageOptions {
     bool info = false; ///< list each input's channels and attributes and what they feed; no rendering
     std::filesystem::path camera;   ///< camera JSON for EXR files without camera attributes; empty: none
     std::filesystem::path writeAux; ///< folder for the decoded depth/normals/motion; empty: none
+    std::string jitter =
+        "attribute"; ///< attribute: the EXR `jitter` attribute when present; halton: Photopic's
+    std::int64_t maxPixels = kDefaultMaxPixels; ///< larger inputs are refused before they are decoded
 };
 
 struct SceneOptions {
@@ -56,6 +60,8 @@ struct SceneOptions {
     std::string motion;         ///< --motion FILE.csv: canvas scene only, = --set canvas.motion=FILE
     std::string truth;          ///< --truth KIND|all: testbed scene only, write ray-traced references instead
     int start = 0;              ///< --start N: the first frame index (--truth)
+    int every = 1;              ///< write every Nth frame (frame_0000 is frame 0, frame_0001 frame N, ...)
+    bool reportRss = false;     ///< print resident memory after the first and the last frame (soak test)
 };
 
 /// "1920x1080" -> {1920, 1080} with each side in [minSide, 16384]; throws InputError naming the text.
@@ -68,12 +74,24 @@ std::string telemetryCsv(const std::vector<ExposureTelemetry>& rows, float dt,
                          const std::vector<std::string>& sceneColumns,
                          const std::vector<std::vector<double>>& sceneValues);
 
+/// One row of that CSV, newline included.
+std::string telemetryCsvRow(const ExposureTelemetry& t, float dt, std::size_t sceneColumns,
+                            const std::vector<double>& sceneValues);
+
 int runScene(const SceneOptions& options);
 /// GL and capability report; with settings, also the quality tier and the path frames would take.
 int runInfo(bool forceLdr, const SettingsSources& settings);
 int runImage(const ImageOptions& options);
 int runSettingsDefaults();
 int runSettingsCheck(const std::filesystem::path& file);
-int runDemo(const std::filesystem::path& dataDir, const std::filesystem::path& outDir);
+int runDemo(const std::filesystem::path& dataDir, const std::filesystem::path& outDir,
+            std::int64_t maxPixels = kDefaultMaxPixels);
+
+/// Reads an input image, as bad input (InputError, exit 2) when it cannot be.
+ImageF readInput(const std::filesystem::path& path, std::int64_t maxPixels);
+/// Throws InputError naming `path` and the limit when the image is larger than the GPU's GL_MAX_TEXTURE_SIZE
+/// (needs a current context; creates no GL object). Such an image is refused, not split into tiles: bloom
+/// and metering are whole-image operations.
+void requireTextureFits(const std::filesystem::path& path, int width, int height);
 
 } // namespace photopic::cli

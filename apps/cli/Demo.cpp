@@ -2,6 +2,7 @@
 // `photopic demo --images`, the demo before the tabletop walk became the main one (TabletopDemo.cpp).
 
 #include "Commands.h"
+#include "Outputs.h"
 
 #include "common/Raster.h"
 #include "core/Metering.h"
@@ -20,7 +21,7 @@ namespace photopic::cli {
 
 namespace fs = std::filesystem;
 
-int runDemo(const fs::path& dataDir, const fs::path& outDir) {
+int runDemo(const fs::path& dataDir, const fs::path& outDir, std::int64_t maxPixels) {
     if (!fs::is_directory(dataDir)) {
         throw InputError(fmt::format("data folder {} does not exist (pass --data DIR)", dataDir.string()));
     }
@@ -35,19 +36,20 @@ int runDemo(const fs::path& dataDir, const fs::path& outDir) {
     if (files.empty()) {
         throw InputError(fmt::format("no .exr or .hdr images in {}", dataDir.string()));
     }
+    // The output is checked before any work; a run that fails takes back what it wrote.
+    RunOutputs outputs;
+    outputs.makeFolder(outDir);
+    const fs::path out = outDir / "contact_sheet.png";
+    RunOutputs::requireFile(out);
     std::printf("reading %zu images from %s\n", files.size(), dataDir.string().c_str());
-    std::error_code ec;
-    fs::create_directories(outDir, ec);
-    if (ec) {
-        throw std::runtime_error(fmt::format("cannot create {}: {}", outDir.string(), ec.message()));
-    }
 
     HeadlessContext context;
     Pipeline pipeline;
     const ToneMapper curves[] = {ToneMapper::Aces, ToneMapper::Agx, ToneMapper::Neutral};
     std::vector<std::pair<std::string, Image8>> tiles;
     for (const auto& file : files) {
-        const ImageF image = readImage(file);
+        const ImageF image = readInput(file, maxPixels);
+        requireTextureFits(file, image.width, image.height);
         // Expose each image so its geometric-mean luminance lands on middle grey (key 0.18).
         const float mean = meterAverage(image);
         const float ev = mean > 0 ? std::log2(0.18f / mean) : 0.0f;
@@ -64,8 +66,8 @@ int runDemo(const fs::path& dataDir, const fs::path& outDir) {
                     file.filename().string().c_str(), image.width, image.height, double(mean), double(ev));
     }
     const Image8 sheet = makeContactSheet(tiles, 3, 420);
-    const fs::path out = outDir / "contact_sheet.png";
     writePng(out, sheet);
+    outputs.commit();
     std::printf("wrote %s (%dx%d): %zu images x 3 tone curves\n", out.string().c_str(), sheet.width,
                 sheet.height, files.size());
     return kOk;

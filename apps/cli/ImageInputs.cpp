@@ -187,14 +187,16 @@ bool isExr(const fs::path& path) {
 
 } // namespace
 
-InputDecoder::InputDecoder(std::optional<CameraJson> cameraJson)
-    : mCameraJson(std::move(cameraJson)) {}
+InputDecoder::InputDecoder(std::optional<CameraJson> cameraJson, int haltonCycle, std::int64_t maxPixels)
+    : mCameraJson(std::move(cameraJson))
+    , mHaltonCycle(haltonCycle)
+    , mMaxPixels(maxPixels) {}
 
 DecodedFrame InputDecoder::decode(const fs::path& path) {
     DecodedFrame out;
     if (!isExr(path)) { // HDR, PNG, or a missing file: colour only, through readImage's errors
         try {
-            out.color = readImage(path);
+            out.color = readImage(path, {.maxPixels = mMaxPixels});
         } catch (const IoError& e) {
             throw InputError(e.what());
         }
@@ -208,7 +210,7 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
     }
     ExrFrame frame;
     try {
-        frame = readExrFrame(path);
+        frame = readExrFrame(path, {.maxPixels = mMaxPixels});
     } catch (const IoError& e) {
         throw InputError(e.what());
     }
@@ -241,14 +243,23 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
                                  path.string()));
         }
     }
+    // The file's jitter attribute, else the sample offset of the Halton jitter Photopic would have handed
+    // out: moving the image by j (x right, y up) samples it at the pixel centre - j, which in the file's
+    // y-down convention is (-j.x, j.y).
+    std::optional<glm::vec2> jitter = frame.camera.jitter;
+    if (!jitter && mHaltonCycle > 0) {
+        const glm::vec2 halton = haltonJitter(mIndex, mHaltonCycle);
+        jitter = glm::vec2(-halton.x, halton.y);
+    }
+    out.jittered = jitter.has_value();
     if (!frame.motion.empty()) {
-        const glm::vec2 previousJitter =
-            mPrevious && mPrevious->jitter ? *mPrevious->jitter : glm::vec2(0.0f);
-        out.motion = uvMotion(frame.motion, width, height, frame.camera.jitter.value_or(glm::vec2(0.0f)),
-                              previousJitter);
+        out.motion = uvMotion(frame.motion, width, height, jitter.value_or(glm::vec2(0.0f)),
+                              mPreviousJitter.value_or(glm::vec2(0.0f)));
     }
     out.color = std::move(frame.color);
     mPrevious = frame.camera;
+    mPreviousJitter = jitter;
+    ++mIndex;
     mFirst = false;
     return out;
 }
@@ -420,7 +431,7 @@ int runImageInfo(const std::vector<fs::path>& inputs, const fs::path& cameraJson
     return kOk;
 }
 
-void writeAux(const fs::path& folder, const fs::path& input, const DecodedFrame& frame) {
+fs::path writeAux(const fs::path& folder, const fs::path& input, const DecodedFrame& frame) {
     ExrFrame aux;
     aux.color = frame.color;
     aux.depth = frame.depth;
@@ -428,7 +439,9 @@ void writeAux(const fs::path& folder, const fs::path& input, const DecodedFrame&
     aux.motion = frame.motion;
     if (frame.camera)
         aux.camera = exrFromCamera(*frame.camera, frame.color.width, frame.color.height);
-    writeExrFrame(folder / (input.stem().string() + ".aux.exr"), aux);
+    const fs::path path = folder / (input.stem().string() + ".aux.exr");
+    writeExrFrame(path, aux);
+    return path;
 }
 
 } // namespace photopic::cli

@@ -40,19 +40,30 @@ struct DecodedFrame {
     std::vector<float> normals; ///< width*height*3 view-space unit normals; or empty
     std::vector<float> motion; ///< width*height*2 UV (y up), current minus previous, jitter removed; or empty
     std::optional<Camera> camera;
+    /// The frame's samples were jittered: it carries a `jitter` attribute, or the sequence was rendered with
+    /// Photopic's Halton(2, 3) jitter (--jitter halton).
+    bool jittered = false;
 };
 
 /// Decodes a sequence in order, remembering the previous frame's camera attributes (prevViewProjection and
 /// the previous jitter). Layers that need a camera the frame lacks are dropped with one warning per run.
 class InputDecoder {
 public:
-    explicit InputDecoder(std::optional<CameraJson> cameraJson = std::nullopt);
+    /// `haltonCycle` > 0: frames without a `jitter` attribute were rendered with Halton(2, 3) jitter of that
+    /// cycle, from index 1 for the first frame (the jitter Pipeline::beginFrame hands out).
+    /// `maxPixels`: larger inputs are refused before they are decoded.
+    explicit InputDecoder(std::optional<CameraJson> cameraJson = std::nullopt, int haltonCycle = 0,
+                          std::int64_t maxPixels = kDefaultMaxPixels);
     /// Throws InputError naming the file for unreadable files and bad camera attributes.
     [[nodiscard]] DecodedFrame decode(const std::filesystem::path& path);
 
 private:
     std::optional<CameraJson> mCameraJson;
     std::optional<ExrCameraAttributes> mPrevious;
+    std::optional<glm::vec2> mPreviousJitter; ///< pixels, x right, y down
+    int mHaltonCycle = 0;
+    std::int64_t mMaxPixels = kDefaultMaxPixels;
+    std::uint64_t mIndex = 0;
     bool mFirst = true;
 };
 
@@ -76,8 +87,8 @@ private:
 int runImageInfo(const std::vector<std::filesystem::path>& inputs, const std::filesystem::path& cameraJson);
 
 /// `--write-aux DIR`: DIR/<input stem>.aux.exr with colour, Z (linear view depth), N.X/Y/Z (view space),
-/// motion.X/Y (UV, y up) and the camera's attributes, for the layers the frame has.
-void writeAux(const std::filesystem::path& folder, const std::filesystem::path& input,
-              const DecodedFrame& frame);
+/// motion.X/Y (UV, y up) and the camera's attributes, for the layers the frame has. Returns the file's path.
+std::filesystem::path writeAux(const std::filesystem::path& folder, const std::filesystem::path& input,
+                               const DecodedFrame& frame);
 
 } // namespace photopic::cli

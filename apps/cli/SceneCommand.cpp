@@ -1,6 +1,8 @@
 // `photopic scene NAME`: renders a built-in scene's frames through the pipeline, with per-frame telemetry.
 
 #include "Commands.h"
+#include "Outputs.h"
+#include "TelemetryCsv.h"
 
 #include "core/Color.h"
 #include "core/Hash.h"
@@ -17,14 +19,34 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
 #include <tuple>
 
 namespace photopic::cli {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+/// VmRSS from /proc/self/status, kB; -1 where there is none (not Linux).
+long residentKilobytes() {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line)) {
+        if (line.starts_with("VmRSS:")) {
+            return std::strtol(line.c_str() + 6, nullptr, 10);
+        }
+    }
+    return -1;
+}
+
+} // namespace
 
 Extent parseSize(const std::string& text, int minSide) {
     const std::optional<Extent> size = parseExtent(text, minSide);
@@ -117,7 +139,26 @@ ExrFrame truthExr(testbed::TruthKind kind, const ImageF& image, const Camera& ca
 }
 
 /// `--truth KIND`: the testbed's ray-traced references for frames [start, start + frames).
-int runTruth(const SceneOptions& options, Scene& scene, const fs::path& outDir) {
+/// A 3D scene's frame as `photopic image` reads it: scene-referred colour, depth, normals, motion and camera.
+/// A jittered frame carries its sample offset, so TAA over the files knows the frames were jittered, and the
+/// motion of its jittered samples, as a renderer writes it (the reader takes the jitter out again). Moving the
+/// image by j (x right, y up) samples it at the pixel centre - j: in the file's convention (y down) that
+/// offset is (-j.x, j.y). `previousJitter` is the last file's, and becomes this one's.
+ExrFrame sceneExr(const FrameInputs& inputs, glm::vec2 pipelineJitter, glm::vec2& previousJitter) {
+    ExrFrame exr = exrFrameFromInputs(inputs);
+    if (pipelineJitter != glm::vec2(0.0f)) {
+        const glm::vec2 jitter(-pipelineJitter.x, pipelineJitter.y);
+        for (std::size_t m = 0; m + 1 < exr.motion.size(); m += 2) {
+            exr.motion[m] += jitter.x - previousJitter.x;
+            exr.motion[m + 1] += jitter.y - previousJitter.y;
+        }
+        exr.camera.jitter = jitter;
+        previousJitter = jitter;
+    }
+    return exr;
+}
+
+int runTruth(const SceneOptions& options, Scene& scene, const fs::path& outDir, RunOutputs& outputs) {
     auto* testbedScene = dynamic_cast<TestbedScene*>(&scene);
     if (testbedScene == nullptr) {
         throw InputError(fmt::format("--truth is an option of the testbed scene, not of '{}'", scene.name()));
@@ -146,10 +187,13 @@ int runTruth(const SceneOptions& options, Scene& scene, const fs::path& outDir) 
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
             const std::string stem = fmt::format("truth_{}_{:04d}", testbed::truthKindName(kind), i);
             writeExrFrame(outDir / (stem + ".exr"), truthExr(kind, image, camera));
+            outputs.wrote(outDir / (stem + ".exr"));
             writePng(outDir / (stem + ".png"), truthPreview(kind, image));
+            outputs.wrote(outDir / (stem + ".png"));
             std::printf("%s: %.3f s\n", stem.c_str(), seconds);
         }
     }
+    outputs.commit();
     std::printf("testbed truth: %zu kind(s) x %d frame(s) from frame %d -> %s\n", kinds.size(),
                 options.frames, options.start, outDir.string().c_str());
     return kOk;
@@ -180,6 +224,10 @@ int runScene(const SceneOptions& options) {
                 throw InputError(
                     fmt::format("{} is an option of the canvas scene, not of '{}'", flag, scene->name()));
             }
+            // A JSON string must be UTF-8; a file name need not be. Say so rather than let dump() throw.
+            if (const auto bad = invalidUtf8Offset(value)) {
+                throw InputError(fmt::format("{}: the file name is not valid UTF-8 (byte {})", flag, *bad));
+            }
             overrides.push_back(fmt::format("canvas.{}={}", key, nlohmann::json(value).dump()));
         }
     }
@@ -200,45 +248,52 @@ int runScene(const SceneOptions& options) {
 
     const fs::path outDir =
         options.output.empty() ? fs::path("out") / ("scene-" + options.name) : options.output;
-    std::error_code ec;
-    fs::create_directories(outDir, ec);
-    if (ec) {
-        throw std::runtime_error(
-            fmt::format("cannot create output folder {}: {}", outDir.string(), ec.message()));
-    }
-
+    // Every output is checked before the first frame; a run that fails takes back what it wrote.
+    RunOutputs outputs;
+    outputs.makeFolder(outDir);
     if (!options.truth.empty()) {
-        return runTruth(options, *scene, outDir);
+        return runTruth(options, *scene, outDir, outputs);
     }
+    const auto framePath = [&](std::size_t index) {
+        return outDir / fmt::format("frame_{:04d}.{}", index, options.format);
+    };
+    RunOutputs::requireFile(framePath(0));
+    outputs.sequence(framePath);
+    const float dt = 1.0f / options.fps;
+    const fs::path telemetryPath = outDir / "telemetry.csv";
+    TelemetryCsv telemetry(telemetryPath, dt, scene->telemetryColumns());
 
     Pipeline pipeline({.settings = resolved, .forceLdr = options.forceLdr, .keepTelemetryHistory = true});
-    const std::vector<std::string> sceneColumns = scene->telemetryColumns();
-    std::vector<std::vector<double>> sceneValues(std::size_t(options.frames));
-
-    const float dt = 1.0f / options.fps;
+    const int every = std::max(1, options.every);
+    glm::vec2 previousJitter(0.0f); ///< the last scene EXR's jitter attribute (pixels, y down)
     for (int i = 0; i < options.frames; ++i) {
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
-        const FrameInputs inputs = scene->render(time, pipeline, sceneValues[std::size_t(i)]);
+        std::vector<double> values;
+        const FrameInputs inputs = scene->render(time, pipeline, values);
         const Texture& display = pipeline.execute(inputs, time);
-        if (inputs.camera != nullptr) {
-            // A 3D scene: its scene-referred colour, depth, normals, motion and camera, as `photopic image`
-            // reads them.
-            writeExrFrame(outDir / fmt::format("scene_{:04d}.exr", i), exrFrameFromInputs(inputs));
+        if (i % every == 0) {
+            if (inputs.camera != nullptr) {
+                const fs::path path = outDir / fmt::format("scene_{:04d}.exr", i / every);
+                writeExrFrame(path, sceneExr(inputs, pipeline.jitter(), previousJitter));
+                outputs.wrote(path);
+            }
+            const fs::path frame = framePath(std::size_t(i / every));
+            if (options.format == "exr") {
+                writeExr(frame, readTextureF(pipeline.sceneReferred()));
+            } else {
+                writePng(frame, readTexture8(display));
+            }
+            outputs.wroteSequenceItem();
         }
-        const fs::path frame = outDir / fmt::format("frame_{:04d}.{}", i, options.format);
-        if (options.format == "exr") {
-            writeExr(frame, readTextureF(pipeline.sceneReferred()));
-        } else {
-            writePng(frame, readTexture8(display));
+        telemetry.sceneValues(std::uint64_t(i), std::move(values));
+        telemetry.take(pipeline, std::uint64_t(i), i + 1 == options.frames);
+        if (options.reportRss && (i == 0 || i + 1 == options.frames)) {
+            std::printf("rss after frame %d: %ld kB\n", i + 1, residentKilobytes());
         }
     }
-    const std::vector<ExposureTelemetry> rows = pipeline.drainTelemetry();
-    if (rows.size() != std::size_t(options.frames)) {
-        throw std::runtime_error(fmt::format("telemetry: {} of {} frames came back ({} dropped)", rows.size(),
-                                             options.frames, pipeline.droppedTelemetry()));
-    }
-    const std::string csv = telemetryCsv(rows, dt, sceneColumns, sceneValues);
-    writeTextFile(outDir / "telemetry.csv", csv);
+    telemetry.commit(std::uint64_t(options.frames), pipeline.droppedTelemetry());
+    outputs.wrote(telemetryPath);
+    outputs.commit();
     std::printf("%s: %d frames at %dx%d, %.3g fps -> %s (frames + telemetry.csv)\n", options.name.c_str(),
                 options.frames, size.width, size.height, double(options.fps), outDir.string().c_str());
     return kOk;

@@ -4,6 +4,9 @@
 #include "TabletopDemo.h"
 
 #include "Commands.h"
+#include "Outputs.h"
+#include "TelemetryCsv.h"
+#include "Video.h"
 
 #include "common/Raster.h"
 #include "gl/Context.h"
@@ -17,7 +20,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 
 namespace photopic::cli {
@@ -69,8 +71,28 @@ double meanDisplay(const Image8& image) {
     return image.rgba.empty() ? 0.0 : sum / (3.0 * double(image.rgba.size() / 4));
 }
 
-bool haveFfmpeg() {
-    return std::system("command -v ffmpeg > /dev/null 2>&1") == 0;
+fs::path framePath(const fs::path& folder, std::size_t index) {
+    return folder / fmt::format("frame_{:04d}.png", index);
+}
+
+/// The contact sheet's tiles: each key frame, or with --every N the written frame at or before it (only
+/// those are on disk; frames are never kept in memory), read back from its PNG.
+Image8 contactSheet(const fs::path& folder, const std::vector<std::size_t>& keyFrames, int every,
+                    const std::vector<TelemetrySample>& samples) {
+    std::vector<std::size_t> shown;
+    for (std::size_t f : keyFrames) {
+        const std::size_t written = f - f % std::size_t(every);
+        if (shown.empty() || shown.back() != written) {
+            shown.push_back(written);
+        }
+    }
+    std::vector<std::pair<std::string, Image8>> tiles;
+    for (std::size_t f : shown) {
+        tiles.emplace_back(fmt::format("t={:.2f}s {:+.2f} EV (target {:+.2f})", samples[f].timeS,
+                                       samples[f].appliedLog2, samples[f].targetLog2),
+                           readPng8(framePath(folder, f / std::size_t(every))));
+    }
+    return makeContactSheet(tiles, 3, 320);
 }
 
 } // namespace
@@ -80,11 +102,17 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     if (options.width < 16 || options.height < 16 || options.fps <= 0.0f || options.seconds <= 0.0f) {
         throw InputError("demo: --size must be at least 16x16, --fps and --seconds positive");
     }
-    std::error_code ec;
-    fs::create_directories(options.output, ec);
-    if (ec) {
-        throw std::runtime_error(fmt::format("cannot create {}: {}", options.output.string(), ec.message()));
+    // Every output is checked before the first frame; a run that fails takes back what it wrote.
+    RunOutputs outputs;
+    outputs.makeFolder(options.output);
+    const fs::path plotPath = options.output / "exposure_plot.png";
+    const fs::path sheetPath = options.output / "contact_sheet.png";
+    const fs::path videoPath = options.output / "demo.mp4";
+    for (const fs::path& path : {framePath(options.output, 0), plotPath, sheetPath, videoPath}) {
+        RunOutputs::requireFile(path);
     }
+    outputs.sequence([&](std::size_t i) { return framePath(options.output, i); });
+
     HeadlessContext context;
     TabletopScene scene;
     const Settings settings = scene.defaultSettings(); // subject metering, the eye-lag defaults
@@ -95,56 +123,54 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     const float dt = 1.0f / options.fps;
     const int frames = std::max(1, int(std::lround(options.seconds * options.fps)));
     const int every = std::max(1, options.frameEvery);
-    const std::vector<std::string> sceneColumns = scene.telemetryColumns();
-    std::vector<std::vector<double>> sceneValues(static_cast<std::size_t>(frames));
-    std::vector<Image8> displayFrames;
-    displayFrames.reserve(std::size_t(frames));
-    for (int i = 0; i < frames; ++i) {
-        const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
-        // The scene registers its tokens with the pipeline; exposure follows the player on the GPU.
-        const FrameInputs frame = scene.render(time, pipeline, sceneValues[std::size_t(i)]);
-        Image8 display = readTexture8(pipeline.execute(frame, time));
-        if (i % every == 0) {
-            writePng(options.output / fmt::format("frame_{:04d}.png", i / every), display);
-        }
-        displayFrames.push_back(std::move(display));
-    }
-    const auto rendered = std::chrono::steady_clock::now();
-    const std::vector<ExposureTelemetry> rows = pipeline.drainTelemetry();
-    if (rows.size() != std::size_t(frames)) {
-        throw std::runtime_error(fmt::format("telemetry: {} of {} frames came back ({} dropped)", rows.size(),
-                                             frames, pipeline.droppedTelemetry()));
-    }
-    writeTextFile(options.output / "telemetry.csv", telemetryCsv(rows, dt, sceneColumns, sceneValues));
-
-    // The scene's columns: subject, world_x, world_y, screen_u, screen_v, outdoors.
+    const fs::path telemetryPath = options.output / "telemetry.csv";
+    TelemetryCsv telemetry(telemetryPath, dt, scene.telemetryColumns());
+    // Per frame only what the plot and the transition analysis need (24 bytes); the frames go to disk.
     std::vector<TelemetrySample> samples;
-    for (const ExposureTelemetry& t : rows) {
-        const auto& values = sceneValues[std::size_t(t.frame)];
+    std::vector<double> brightness;
+    samples.reserve(std::size_t(frames));
+    brightness.reserve(std::size_t(frames));
+    // The scene's columns: subject, world_x, world_y, screen_u, screen_v, outdoors.
+    const auto addSample = [&](const ExposureTelemetry& t, const std::vector<double>& values) {
         samples.push_back({float(t.frame) * dt, t.frameLuminance, t.targetLog2, t.appliedLog2,
                            values.size() > 5 ? float(values[5]) : 0.0f});
+    };
+    for (int i = 0; i < frames; ++i) {
+        const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
+        std::vector<double> values;
+        // The scene registers its tokens with the pipeline; exposure follows the player on the GPU.
+        const FrameInputs frame = scene.render(time, pipeline, values);
+        const Image8 display = readTexture8(pipeline.execute(frame, time));
+        if (i % every == 0) {
+            writePng(framePath(options.output, std::size_t(i / every)), display);
+            outputs.wroteSequenceItem();
+        }
+        brightness.push_back(meanDisplay(display));
+        telemetry.sceneValues(std::uint64_t(i), std::move(values));
+        telemetry.take(pipeline, std::uint64_t(i), i + 1 == frames, addSample);
     }
+    const auto rendered = std::chrono::steady_clock::now();
+    telemetry.commit(std::uint64_t(frames), pipeline.droppedTelemetry());
+    outputs.wrote(telemetryPath);
+
     const std::vector<Transition> transitions = analyzeTransitions(samples, ae);
-    writePng(options.output / "exposure_plot.png", plotExposureTelemetry(samples, 960, 420));
-    std::vector<std::pair<std::string, Image8>> tiles;
-    for (std::size_t f : keyFrameIndices(transitions, displayFrames.size())) {
-        tiles.emplace_back(fmt::format("t={:.2f}s {:+.2f} EV (target {:+.2f})", samples[f].timeS,
-                                       samples[f].appliedLog2, samples[f].targetLog2),
-                           displayFrames[f]);
+    writePng(plotPath, plotExposureTelemetry(samples, 960, 420));
+    outputs.wrote(plotPath);
+    const std::vector<std::size_t> keyFrames = keyFrameIndices(transitions, samples.size());
+    if (!keyFrames.empty()) {
+        writePng(sheetPath, contactSheet(options.output, keyFrames, every, samples));
+        outputs.wrote(sheetPath);
     }
-    if (!tiles.empty()) {
-        writePng(options.output / "contact_sheet.png", makeContactSheet(tiles, 3, 320));
+    std::string video = "demo.mp4 skipped (--no-video)";
+    if (options.video) {
+        const VideoResult result =
+            encodeFrameSequence(options.output, double(options.fps) / double(every), videoPath);
+        if (result.written) {
+            outputs.wrote(videoPath);
+        }
+        video = result.note;
     }
-    std::string video = "demo.mp4 skipped (no ffmpeg command)";
-    if (options.video && haveFfmpeg()) {
-        const std::string command = fmt::format(
-            "ffmpeg -y -loglevel error -framerate {:.6g} -i '{}/frame_%04d.png' -pix_fmt yuv420p "
-            "-vf 'scale=trunc(iw/2)*2:trunc(ih/2)*2' '{}/demo.mp4'",
-            double(options.fps) / double(every), options.output.string(), options.output.string());
-        video = std::system(command.c_str()) == 0 ? "demo.mp4" : "demo.mp4 FAILED (ffmpeg returned an error)";
-    } else if (!options.video) {
-        video = "demo.mp4 skipped (--no-video)";
-    }
+    outputs.commit();
     const auto end = std::chrono::steady_clock::now();
 
     std::printf("tabletop walk: %d frames at %dx%d, %.3g fps, subject metering on the GPU -> %s\n", frames,
@@ -155,7 +181,7 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
         std::printf("  %s\n", describeTransition(t).c_str());
         if (t.settled) {
             std::printf("    frame brightness (mean sRGB): %.1f at the start -> %.1f settled\n",
-                        meanDisplay(displayFrames[t.startIndex]), meanDisplay(displayFrames[t.settledIndex]));
+                        brightness[t.startIndex], brightness[t.settledIndex]);
         }
     }
     if (transitions.empty()) {

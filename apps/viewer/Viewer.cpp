@@ -82,6 +82,7 @@ struct UiState {
     std::vector<std::string> problems; ///< why `edited` is not applied yet
     std::string message;               ///< last Save / Reset result
     float dt = 0.0f;
+    bool taaKeyDown = false; ///< T was down last frame (a press toggles once)
 };
 
 void row(const char* name, const std::string& value) {
@@ -223,7 +224,11 @@ void drawPanels(Pipeline& pipeline, const ViewerOptions& options, UiState& ui) {
     if (changed) {
         ui.problems = settingsProblems(ui.edited);
         if (ui.problems.empty()) {
-            pipeline.setSettings(ui.edited);
+            try {
+                pipeline.setSettings(ui.edited); // a set-up boundary: e.g. an unreadable mask file
+            } catch (const std::exception& e) {
+                ui.problems.emplace_back(e.what());
+            }
         }
     }
     for (const std::string& p : ui.problems) {
@@ -263,8 +268,8 @@ Image8 readBackBuffer(int width, int height) {
 
 } // namespace
 
-int run(const ViewerOptions& options) {
-    // Everything that needs no GL is checked before the display is opened: bad input exits 2 everywhere.
+/// Everything that needs no GL is checked before the display is opened: bad input exits 2 everywhere.
+SplitOverrides checkOptions(const ViewerOptions& options) {
     const auto& scenes = builtInScenes();
     if (std::none_of(scenes.begin(), scenes.end(),
                      [&](const SceneInfo& s) { return s.name == options.scene; })) {
@@ -274,15 +279,15 @@ int run(const ViewerOptions& options) {
         }
         throw InputError(fmt::format("unknown scene '{}' (known: {})", options.scene, names));
     }
-    const SplitOverrides overrides = splitSceneOverrides(options.scene, options.overrides);
-    {
-        Settings probe;
-        for (const std::string& o : overrides.post) {
-            applySettingsOverride(probe, o);
-        }
+    SplitOverrides overrides = splitSceneOverrides(options.scene, options.overrides);
+    Settings probe;
+    for (const std::string& o : overrides.post) {
+        applySettingsOverride(probe, o);
     }
+    return overrides;
+}
 
-    GlfwSession glfw;
+WindowPtr openWindow(const ViewerOptions& options) {
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -294,24 +299,92 @@ int run(const ViewerOptions& options) {
     glfwMakeContextCurrent(window.get());
     // --frames runs as fast as it can (tests, screenshots); interactive use follows the display.
     glfwSwapInterval(options.frames > 0 ? 0 : 1);
+    return window;
+}
 
-    // From here on the window's context is current: the pipeline runs in the host's context.
+/// The scene with its --set values, sized for the window, and the post settings it starts with.
+std::unique_ptr<Scene> makeViewerScene(const ViewerOptions& options, const SplitOverrides& overrides,
+                                       Settings& settings) {
     std::unique_ptr<Scene> scene = makeScene(options.scene);
     applySceneOverrides(*scene, overrides.scene);
-    Settings settings = scene->defaultSettings();
+    settings = scene->defaultSettings();
     if (!options.settingsFile.empty()) {
         settings = loadSettingsFile(options.settingsFile, std::move(settings));
     }
     for (const std::string& o : overrides.post) {
         applySettingsOverride(settings, o);
     }
-    const Extent renderSize{options.width, options.height};
     try {
-        scene->resize(renderSize);
+        scene->resize({options.width, options.height});
     } catch (const SceneInputError& e) {
         throw InputError(e.what());
     }
+    return scene;
+}
 
+/// Letterboxes the display image into the window's default framebuffer. The blit source framebuffer is kept
+/// per display texture (the pipeline hands out a few pooled ones).
+class Presenter {
+public:
+    void present(const Texture& display, int fbw, int fbh) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, fbw, fbh);
+        glDisable(GL_FRAMEBUFFER_SRGB); // the display texture already holds sRGB-encoded bytes
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        if (fbw <= 0 || fbh <= 0) {
+            return;
+        }
+        const auto r = fitRect(display.extent(), fbw, fbh);
+        glBlitNamedFramebuffer(source(display).id(), 0, 0, 0, display.extent().width, display.extent().height,
+                               r[0], r[1], r[2], r[3], GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    }
+
+private:
+    const Framebuffer& source(const Texture& display) {
+        for (const auto& [id, fbo] : mSources) {
+            if (id == display.id()) {
+                return fbo;
+            }
+        }
+        mSources.emplace_back(display.id(), Framebuffer(display, 0, "photopic-view display"));
+        return mSources.back().second;
+    }
+    std::vector<std::pair<GLuint, Framebuffer>> mSources;
+};
+
+/// Keys that switch a setting live (when no widget has the keyboard): T toggles TAA.
+void handleKeys(GLFWwindow* window, Pipeline& pipeline, UiState& ui) {
+    const bool down = glfwGetKey(window, GLFW_KEY_T) == GLFW_PRESS;
+    const bool pressed = down && !ui.taaKeyDown;
+    ui.taaKeyDown = down;
+    if (!pressed || ImGui::GetIO().WantCaptureKeyboard) {
+        return;
+    }
+    const bool taa = ui.edited.antiAliasing() == AntiAliasing::Taa;
+    ui.edited.aa.mode = taa ? AntiAliasing::None : AntiAliasing::Taa;
+    ui.edited.taa.enabled = false;
+    pipeline.setSettings(ui.edited);
+    ui.message = taa ? "TAA off (T)" : "TAA on (T)";
+}
+
+void drawUi(GLFWwindow* window, Pipeline& pipeline, const ViewerOptions& options, UiState& ui) {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    handleKeys(window, pipeline, ui);
+    drawPanels(pipeline, options, ui);
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+int run(const ViewerOptions& options) {
+    const SplitOverrides overrides = checkOptions(options);
+    GlfwSession glfw;
+    WindowPtr window = openWindow(options);
+    // From here on the window's context is current: the pipeline runs in the host's context.
+    Settings settings;
+    std::unique_ptr<Scene> scene = makeViewerScene(options, overrides, settings);
     Pipeline pipeline({.settings = settings});
     ImGuiSession imgui(window.get());
     UiState ui;
@@ -320,8 +393,7 @@ int run(const ViewerOptions& options) {
                 options.height, reinterpret_cast<const char*>(glGetString(GL_VERSION)),
                 reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
 
-    Framebuffer displayFbo;
-    GLuint displayFboTexture = 0;
+    Presenter presenter;
     std::vector<double> sceneTelemetry;
     double last = glfwGetTime();
     for (std::uint64_t frame = 0; !glfwWindowShouldClose(window.get()); ++frame) {
@@ -331,34 +403,13 @@ int run(const ViewerOptions& options) {
         ui.dt = options.fixedDt ? *options.fixedDt : std::clamp(float(now - last), kMinDt, kMaxDt);
         last = now;
         const FrameTime time{.dt = ui.dt, .frameIndex = frame};
-
         sceneTelemetry.clear();
         const FrameInputs inputs = scene->render(time, pipeline, sceneTelemetry);
         const Texture& display = pipeline.execute(inputs, time);
-
-        if (display.id() != displayFboTexture) {
-            displayFbo = Framebuffer(display, 0, "photopic-view display");
-            displayFboTexture = display.id();
-        }
         int fbw = 0, fbh = 0;
         glfwGetFramebufferSize(window.get(), &fbw, &fbh);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glViewport(0, 0, fbw, fbh);
-        glDisable(GL_FRAMEBUFFER_SRGB); // the display texture already holds sRGB-encoded bytes
-        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        if (fbw > 0 && fbh > 0) {
-            const auto r = fitRect(display.extent(), fbw, fbh);
-            glBlitNamedFramebuffer(displayFbo.id(), 0, 0, 0, display.extent().width, display.extent().height,
-                                   r[0], r[1], r[2], r[3], GL_COLOR_BUFFER_BIT, GL_LINEAR);
-        }
-
-        ImGui_ImplOpenGL3_NewFrame();
-        ImGui_ImplGlfw_NewFrame();
-        ImGui::NewFrame();
-        drawPanels(pipeline, options, ui);
-        ImGui::Render();
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        presenter.present(display, fbw, fbh);
+        drawUi(window.get(), pipeline, options, ui);
 
         const bool lastFrame = options.frames > 0 && frame + 1 >= std::uint64_t(options.frames);
         if (lastFrame && !options.screenshot.empty()) {

@@ -27,6 +27,7 @@ void parseSize(const std::string& text, ViewerOptions& options) {
 
 int main(int argc, char** argv) {
     CLI::App app{"photopic-view: a built-in scene through the Photopic pipeline, every setting tunable live"};
+    app.set_version_flag("--version", std::string("photopic-view ") + PHOTOPIC_VERSION);
     ViewerOptions options;
     std::string size = "1280x720";
     float fixedDt = 0.0f;

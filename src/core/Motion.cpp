@@ -10,6 +10,7 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 namespace photopic {
 
@@ -58,13 +59,25 @@ MotionError::MotionError(std::string_view file, int line, std::string_view probl
     , mLine(line) {}
 
 MotionTrack::MotionTrack(std::vector<MotionSample> samples)
-    : mSamples(std::move(samples)) {}
+    : mSamples(std::move(samples)) {
+    for (std::size_t i = 0; i < mSamples.size(); ++i) {
+        const MotionSample& s = mSamples[i];
+        if (!std::isfinite(s.time) || !std::isfinite(s.attitude.pitch) || !std::isfinite(s.attitude.roll) ||
+            !std::isfinite(s.attitude.yaw)) {
+            throw std::invalid_argument(fmt::format("motion sample {} is not finite", i));
+        }
+        if (i > 0 && !(s.time > mSamples[i - 1].time)) {
+            throw std::invalid_argument(fmt::format("motion sample {}: time does not increase", i));
+        }
+    }
+}
 
 Attitude MotionTrack::at(double time) const {
     if (mSamples.empty()) {
         return {};
     }
-    if (time <= mSamples.front().time) {
+    // NaN compares false with everything, so it must be caught here or the search below runs off the end.
+    if (std::isnan(time) || time <= mSamples.front().time) {
         return mSamples.front().attitude;
     }
     if (time >= mSamples.back().time) {
@@ -74,11 +87,17 @@ Attitude MotionTrack::at(double time) const {
                                        [](double t, const MotionSample& s) { return t < s.time; });
     const MotionSample& b = *next;
     const MotionSample& a = *(next - 1);
-    const double f = (time - a.time) / (b.time - a.time);
-    const auto lerp = [f](double x, double y) { return x + (y - x) * f; };
-    return {.pitch = lerp(a.attitude.pitch, b.attitude.pitch),
-            .roll = lerp(a.attitude.roll, b.attitude.roll),
-            .yaw = lerp(a.attitude.yaw, b.attitude.yaw)};
+    // The span of two finite times can overflow (1e308 - -1e308); halved, it cannot. Not halved always:
+    // halving subnormal times can make two distinct ones equal.
+    const double span = b.time - a.time;
+    const double f =
+        std::clamp(std::isfinite(span) ? (time - a.time) / span
+                                       : (0.5 * time - 0.5 * a.time) / (0.5 * b.time - 0.5 * a.time),
+                   0.0, 1.0);
+    // std::lerp stays finite for finite ends and f in [0, 1]; x + (y - x) * f overflows to inf * 0 = NaN.
+    return {.pitch = std::lerp(a.attitude.pitch, b.attitude.pitch, f),
+            .roll = std::lerp(a.attitude.roll, b.attitude.roll, f),
+            .yaw = std::lerp(a.attitude.yaw, b.attitude.yaw, f)};
 }
 
 MotionTrack parseMotionCsv(std::string_view text, std::string_view fileName) {

@@ -40,7 +40,9 @@ private:
 class MotionTrack {
 public:
     MotionTrack() = default;
+    /// Throws std::invalid_argument unless every time and angle is finite and the times strictly increase.
     explicit MotionTrack(std::vector<MotionSample> samples);
+    /// Defined for every argument: NaN and -inf give the first sample, +inf the last; the result is finite.
     [[nodiscard]] Attitude at(double time) const;
     [[nodiscard]] const std::vector<MotionSample>& samples() const { return mSamples; }
 

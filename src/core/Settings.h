@@ -2,6 +2,7 @@
 // Every setting of the pipeline, one typed struct per effect (see core/settings/), gathered here.
 // JSON: {"version": 1, "postEffects": {<key>: {...}}} with the keys below.
 
+#include "core/settings/AmbientOcclusionSettings.h"
 #include "core/settings/AntiAliasingSettings.h"
 #include "core/settings/AutoExposureSettings.h"
 #include "core/settings/DebugSettings.h"
@@ -34,6 +35,7 @@ struct Settings {
     AntiAliasingSettings aa;
     TaaSettings taa;
     SmaaSettings smaa;
+    AmbientOcclusionSettings ssao;
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
     /// is none.
@@ -66,6 +68,7 @@ struct Settings {
         v.object("aa", aa);
         v.object("taa", taa);
         v.object("smaa", smaa);
+        v.object("ssao", ssao);
     }
 };
 

@@ -98,6 +98,9 @@ bool GpuTimers::harvest(Slot& slot, bool wait) {
         mLatest = result;
     }
     mHarvested.push_back(std::move(result));
+    if (mHarvested.size() > kKeptFrames) {
+        mHarvested.erase(mHarvested.begin());
+    }
     return true;
 }
 

@@ -43,8 +43,10 @@ public:
     /// Frame number (0-based count of endFrame calls) `latest()` belongs to, or -1.
     [[nodiscard]] std::int64_t latestFrame() const { return mLatestFrame; }
     /// Blocks until every outstanding frame has reported (benchmarks and tests only), returning each frame's
-    /// passes.
+    /// passes: at most the newest kKeptFrames since the last drain, so a frame loop that never drains holds
+    /// a bounded amount, however long it runs.
     std::vector<std::vector<PassTiming>> drain();
+    static constexpr std::size_t kKeptFrames = 256;
 
 private:
     struct Slot {

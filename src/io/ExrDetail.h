@@ -1,32 +1,67 @@
 #pragma once
-// Internal to the io library: the pieces of ImageIO.cpp that ExrFrame.cpp shares (OpenEXR colour reading with
-// extra layers in the same pass, file checks and the atomic writer). Not part of the public API.
+// Internal to the io library: the pieces of ImageIO.cpp that ExrFrame.cpp shares (the checked reading of an
+// OpenEXR file from memory, colour reading with extra layers in the same pass, and the atomic writer). Not
+// part of the public API.
 
 #include "core/Image.h"
+#include "io/ImageIO.h"
 
 #include <ImfFrameBuffer.h>
+#include <ImfIO.h>
 #include <ImfInputFile.h>
 
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <span>
+#include <stdexcept>
+#include <vector>
 
 namespace photopic::detail {
 
-/// Throws IoError unless `path` names an existing regular file.
-void requireRegularFile(const std::filesystem::path& path);
-/// Throws IoError unless the file opens with OpenEXR's magic number.
-void requireExrFile(const std::filesystem::path& path);
+/// The whole file, checked before OpenEXR parses it: the magic number, every header attribute's declared size
+/// against the bytes left, and the data window against `limits` and against the bytes that could hold it
+/// (OpenEXR allocates by what the header declares). Throws IoError naming `path`.
+[[nodiscard]] std::vector<unsigned char> readCheckedExrBytes(const std::filesystem::path& path,
+                                                             const ImageReadLimits& limits = {});
+
+/// OpenEXR's input stream over bytes in memory; reads past the end throw like a short file does.
+class MemoryIStream : public Imf::IStream {
+public:
+    MemoryIStream(const std::filesystem::path& path, std::span<const unsigned char> bytes)
+        : Imf::IStream(path.c_str())
+        , mBytes(bytes) {}
+
+    bool read(char c[], int n) override {
+        if (n < 0 || std::size_t(n) > mBytes.size() - mPos)
+            throw std::runtime_error("unexpected end of file");
+        std::memcpy(c, mBytes.data() + mPos, std::size_t(n));
+        mPos += std::size_t(n);
+        return mPos < mBytes.size();
+    }
+    uint64_t tellg() override { return mPos; }
+    void seekg(uint64_t pos) override {
+        if (pos > mBytes.size())
+            throw std::runtime_error("seek past the end of file");
+        mPos = std::size_t(pos);
+    }
+    void clear() override {}
+
+private:
+    std::span<const unsigned char> mBytes;
+    std::size_t mPos = 0;
+};
 
 /// Called once the data window is known (width x height pixels, checked) to add the caller's slices to the
 /// frame buffer the colour is read through.
 using ExrExtraSlices =
     std::function<void(Imf::FrameBuffer& frameBuffer, const Imath::Box2i& dataWindow, int width, int height)>;
 
-/// The colour of an open OpenEXR file, as readImage returns it, plus whatever `extra` adds, read in the same
-/// pass. Throws IoError naming `path`; OpenEXR's exceptions pass through (callers wrap them).
-[[nodiscard]] ImageF readExrColor(const std::filesystem::path& path, Imf::InputFile& file,
-                                  const ExrExtraSlices& extra = {});
+/// The colour of an OpenEXR file open over `bytes`, as readImage returns it, plus whatever `extra` adds, read
+/// in the same pass. Throws IoError naming `path`; OpenEXR's exceptions pass through (callers wrap them).
+[[nodiscard]] ImageF readExrColor(const std::filesystem::path& path, std::span<const unsigned char> bytes,
+                                  Imf::InputFile& file, const ExrExtraSlices& extra = {},
+                                  const ImageReadLimits& limits = {});
 
 /// Writes `bytes` to a temporary in the destination folder, fsyncs it and renames it over `path`.
 void writeAtomically(const std::filesystem::path& path, std::span<const unsigned char> bytes);

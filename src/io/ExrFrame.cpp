@@ -337,11 +337,11 @@ Lens lensFromExr(const ExrCameraAttributes& a, float verticalFov) {
 
 } // namespace
 
-ExrFrame readExrFrame(const fs::path& path) {
-    detail::requireRegularFile(path);
-    detail::requireExrFile(path);
+ExrFrame readExrFrame(const fs::path& path, const ImageReadLimits& limits) {
+    const std::vector<unsigned char> bytes = detail::readCheckedExrBytes(path, limits);
     try {
-        Imf::InputFile file(path.c_str());
+        detail::MemoryIStream stream(path, bytes);
+        Imf::InputFile file(stream);
         const Imf::Header& header = file.header();
         const Imf::ChannelList& channels = header.channels();
 
@@ -361,7 +361,7 @@ ExrFrame readExrFrame(const fs::path& path) {
         frame.camera = readCameraAttributes(path, header);
 
         frame.color = detail::readExrColor(
-            path, file,
+            path, bytes, file,
             [&](Imf::FrameBuffer& frameBuffer, const Imath::Box2i& dataWindow, int width, int height) {
                 if (depth)
                     addLayerSlices(frameBuffer, *depth, frame.depth, dataWindow, width, height);

@@ -20,6 +20,7 @@
 
 #include "core/Camera.h"
 #include "core/Image.h"
+#include "io/ImageIO.h"
 
 #include <glm/glm.hpp>
 
@@ -68,7 +69,7 @@ struct ExrFrame {
 /// Reads colour as readImage does, plus the layers and attributes above when present, in one pass. Throws
 /// IoError naming the file for anything readImage rejects, a layer with some of its components missing
 /// (N.X and N.Y without N.Z) and a camera attribute of the wrong type.
-[[nodiscard]] ExrFrame readExrFrame(const std::filesystem::path& path);
+[[nodiscard]] ExrFrame readExrFrame(const std::filesystem::path& path, const ImageReadLimits& limits = {});
 /// Writes colour (half RGBA), Z (float), N.X/Y/Z (half), motion.X/Y (float) for the layers that are not
 /// empty, and the camera attributes that are set; data window = display window = the colour image (the
 /// displaySize/dataOrigin fields are not written). Atomic, like writeExr; throws IoError naming the file when

@@ -1,16 +1,17 @@
 #include "io/ImageIO.h"
 
-#include "core/Color.h"
 #include "io/ExrDetail.h"
+
+#include "core/Color.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
+#include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfRgbaFile.h>
 #include <ImfStdIO.h>
 #include <png.h>
-#include <stb_image.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -19,8 +20,10 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <csetjmp>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <span>
 #include <string>
@@ -38,9 +41,6 @@ namespace {
 
 using Bytes = std::vector<unsigned char>;
 
-/// Largest image accepted: 2^28 pixels (4 GiB as ImageF). A bigger header is most likely corrupt.
-constexpr std::int64_t kMaxPixels = std::int64_t(1) << 28;
-
 std::string quoted(const fs::path& path) {
     return "\"" + path.string() + "\"";
 }
@@ -53,16 +53,10 @@ struct FileCloser {
 };
 using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
 
-struct StbiFree {
-    void operator()(void* pixels) const { stbi_image_free(pixels); }
-};
-
 // ---------------------------------------------------------------------------------------------------------------
 // Reading files
 
-} // namespace
-
-void detail::requireRegularFile(const fs::path& path) {
+void requireRegularFile(const fs::path& path) {
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
     if (status.type() == fs::file_type::not_found)
@@ -74,8 +68,6 @@ void detail::requireRegularFile(const fs::path& path) {
     if (status.type() != fs::file_type::regular)
         throw IoError(path, "is not a regular file");
 }
-
-namespace {
 
 /// The first `limit` bytes of the file (all of it by default).
 Bytes readBytes(const fs::path& path, std::size_t limit = SIZE_MAX) {
@@ -137,21 +129,72 @@ std::string unknownFormatMessage(const fs::path& path, std::span<const unsigned 
     return message + ")";
 }
 
-void checkSize(const fs::path& path, std::int64_t width, std::int64_t height) {
+std::string extentText(std::int64_t width, std::int64_t height) {
+    return std::to_string(width) + "x" + std::to_string(height);
+}
+
+/// The declared size, before anything is allocated for it: some pixels, at most limits.maxPixels.
+void checkSize(const fs::path& path, std::int64_t width, std::int64_t height, const ImageReadLimits& limits) {
     if (width <= 0 || height <= 0)
-        throw IoError(path,
-                      "image has no pixels (" + std::to_string(width) + "x" + std::to_string(height) + ")");
-    if (width > kMaxPixels / height)
-        throw IoError(path, "image is implausibly large (" + std::to_string(width) + "x" +
-                                std::to_string(height) + "), file corrupt?");
+        throw IoError(path, "image has no pixels (" + extentText(width, height) + ")");
+    if (width > std::max<std::int64_t>(limits.maxPixels, 1) / height)
+        throw IoError(path, "image is " + extentText(width, height) + ", more than the limit of " +
+                                std::to_string(limits.maxPixels) + " pixels (--max-pixels)");
+}
+
+/// The declared size against the bytes that could hold it: `needed` is a lower bound on the file's size for
+/// that image; a file shorter than that is truncated or lies about its size, and is rejected unallocated.
+void checkBytesHold(const fs::path& path, std::int64_t width, std::int64_t height, std::uint64_t needed,
+                    std::size_t available, const char* format) {
+    if (needed > available)
+        throw IoError(path, std::string(format) + " file is truncated: " + std::to_string(available) +
+                                " bytes cannot hold the " + extentText(width, height) +
+                                " image its header declares (at least " + std::to_string(needed) +
+                                " needed)");
 }
 
 // ---------------------------------------------------------------------------------------------------------------
 // OpenEXR
 
+/// The smallest file that can hold the image: the offset table (8 bytes a chunk) and each chunk's own header
+/// (a scanline block's y and size, 8 bytes; a tile's 4 coordinates and size, 20), whatever the compression.
+std::uint64_t exrMinimumBytes(const Imf::Header& header, std::int64_t width, std::int64_t height) {
+    if (header.hasTileDescription()) {
+        const Imf::TileDescription& tiles = header.tileDescription();
+        const std::uint64_t tx = (std::uint64_t(width) + tiles.xSize - 1) / std::max(tiles.xSize, 1u);
+        const std::uint64_t ty = (std::uint64_t(height) + tiles.ySize - 1) / std::max(tiles.ySize, 1u);
+        return tx * ty * (8 + 20);
+    }
+    // Scanlines per chunk, as OpenEXR's compressors define them; an unknown compression takes the largest,
+    // which gives the smallest (so still safe) bound.
+    std::uint64_t linesPerChunk = 256;
+    switch (header.compression()) {
+    case Imf::NO_COMPRESSION:
+    case Imf::RLE_COMPRESSION:
+    case Imf::ZIPS_COMPRESSION:
+        linesPerChunk = 1;
+        break;
+    case Imf::ZIP_COMPRESSION:
+    case Imf::PXR24_COMPRESSION:
+        linesPerChunk = 16;
+        break;
+    case Imf::PIZ_COMPRESSION:
+    case Imf::B44_COMPRESSION:
+    case Imf::B44A_COMPRESSION:
+    case Imf::DWAA_COMPRESSION:
+        linesPerChunk = 32;
+        break;
+    default:
+        break;
+    }
+    return (std::uint64_t(height) + linesPerChunk - 1) / linesPerChunk * (8 + 8);
+}
+
 /// Luminance/chroma files (Y, RY, BY; chroma subsampled) are always half: RgbaInputFile converts them.
-ImageF readExrLuminanceChroma(const fs::path& path, int width, int height) {
-    Imf::RgbaInputFile file(path.c_str());
+ImageF readExrLuminanceChroma(const fs::path& path, std::span<const unsigned char> bytes, int width,
+                              int height) {
+    detail::MemoryIStream stream(path, bytes);
+    Imf::RgbaInputFile file(stream);
     const Imath::Box2i dataWindow = file.dataWindow();
     std::vector<Imf::Rgba> pixels(std::size_t(width) * std::size_t(height));
     // OpenEXR addresses the frame buffer in data-window coordinates: shift the base by the window's origin.
@@ -168,74 +211,72 @@ ImageF readExrLuminanceChroma(const fs::path& path, int width, int height) {
     return image;
 }
 
-} // namespace
-
-ImageF detail::readExrColor(const fs::path& path, Imf::InputFile& file, const ExrExtraSlices& extra) {
-    const Imf::Header& header = file.header();
-    const Imath::Box2i dataWindow = header.dataWindow();
-    const std::int64_t width64 = std::int64_t(dataWindow.max.x) - dataWindow.min.x + 1;
-    const std::int64_t height64 = std::int64_t(dataWindow.max.y) - dataWindow.min.y + 1;
-    checkSize(path, width64, height64);
-    const int width = int(width64);
-    const int height = int(height64);
-    if (!file.isComplete())
-        throw IoError(path, "OpenEXR file is truncated or incomplete (pixel blocks are missing)");
-
-    const Imf::ChannelList& channels = header.channels();
-    const auto has = [&](const char* name) { return channels.findChannel(name) != nullptr; };
-    const bool hasRgb = has("R") || has("G") || has("B");
-    if (!hasRgb && has("Y") && (has("RY") || has("BY"))) {
-        ImageF image = readExrLuminanceChroma(path, width, height);
-        if (extra) { // RgbaInputFile reads colour only: the extra layers take a second pass
-            Imf::FrameBuffer frameBuffer;
-            extra(frameBuffer, dataWindow, width, height);
-            file.setFrameBuffer(frameBuffer);
-            file.readPixels(dataWindow.min.y, dataWindow.max.y);
-        }
-        return image;
-    }
-    if (!hasRgb && !has("Y")) {
-        std::string names;
-        for (auto it = channels.begin(); it != channels.end(); ++it)
-            names += std::string(names.empty() ? "" : ", ") + it.name();
-        throw IoError(path, "OpenEXR file has no R, G, B or Y channel (channels: " + names + ")");
-    }
-
-    ImageF image(width, height);
-    Imf::FrameBuffer frameBuffer;
-    const std::size_t xStride = 4 * sizeof(float);
-    const std::size_t yStride = xStride * std::size_t(width);
-    // Every channel is read as FLOAT whatever it is stored as; absent channels take the fill value.
-    const auto addSlice = [&](const char* name, std::size_t component, double fill) {
-        frameBuffer.insert(name, Imf::Slice::Make(Imf::FLOAT, image.rgba.data() + component, dataWindow,
-                                                  xStride, yStride, 1, 1, fill));
+/// Walks the header attributes (name, type, 32-bit size, value) without OpenEXR and refuses a size beyond the
+/// file's end: OpenEXR allocates a value's declared size (up to 2 GiB for an unknown type) before it reads
+/// it.
+void checkExrAttributeSizes(const fs::path& path, std::span<const unsigned char> bytes) {
+    const bool multiPart = bytes.size() >= 8 && (bytes[5] & 0x10) != 0; // version flag 0x1000
+    std::size_t pos = 8;
+    const auto cString = [&]() {
+        const auto end =
+            std::find(bytes.begin() + std::ptrdiff_t(std::min(pos, bytes.size())), bytes.end(), 0);
+        if (end == bytes.end())
+            throw IoError(path, "OpenEXR header is truncated");
+        const std::string text(bytes.begin() + std::ptrdiff_t(pos), end);
+        pos = std::size_t(end - bytes.begin()) + 1;
+        return text;
     };
-    if (hasRgb) {
-        addSlice("R", 0, 0.0);
-        addSlice("G", 1, 0.0);
-        addSlice("B", 2, 0.0);
-    } else {
-        addSlice("Y", 0, 0.0);
+    for (bool firstInHeader = true;;) {
+        const std::string name = cString();
+        if (name.empty()) {
+            // The end of a header; in a multi-part file an empty header ends the list.
+            if (!multiPart || firstInHeader)
+                return;
+            firstInHeader = true;
+            continue;
+        }
+        firstInHeader = false;
+        const std::string type = cString();
+        if (bytes.size() - pos < 4)
+            throw IoError(path, "OpenEXR header is truncated");
+        const std::uint32_t size = std::uint32_t(bytes[pos]) | std::uint32_t(bytes[pos + 1]) << 8 |
+                                   std::uint32_t(bytes[pos + 2]) << 16 | std::uint32_t(bytes[pos + 3]) << 24;
+        pos += 4;
+        if (size > bytes.size() - pos)
+            throw IoError(path, "OpenEXR header is corrupt: attribute \"" + name + "\" (" + type +
+                                    ") declares " + std::to_string(size) + " bytes, the file has " +
+                                    std::to_string(bytes.size() - pos) + " left");
+        pos += size;
     }
-    addSlice("A", 3, 1.0);
-    if (extra)
-        extra(frameBuffer, dataWindow, width, height);
-    file.setFrameBuffer(frameBuffer);
-    file.readPixels(dataWindow.min.y, dataWindow.max.y);
-
-    if (!hasRgb) {
-        for (std::size_t i = 0; i < image.pixelCount(); ++i)
-            image.rgba[i * 4 + 1] = image.rgba[i * 4 + 2] = image.rgba[i * 4];
-    }
-    return image;
 }
 
-namespace {
+/// The first part's header alone, checked before Imf::InputFile sees the file: opening it allocates offset
+/// tables and line buffers sized by the data window, so a corrupt window must be refused first.
+void checkExrHeader(const fs::path& path, std::span<const unsigned char> bytes,
+                    const ImageReadLimits& limits) {
+    checkExrAttributeSizes(path, bytes);
+    detail::MemoryIStream stream(path, bytes);
+    std::array<char, 8> magicAndVersion{};
+    stream.read(magicAndVersion.data(), int(magicAndVersion.size()));
+    int version = int(std::uint32_t(std::uint8_t(magicAndVersion[4])) |
+                      std::uint32_t(std::uint8_t(magicAndVersion[5])) << 8 |
+                      std::uint32_t(std::uint8_t(magicAndVersion[6])) << 16 |
+                      std::uint32_t(std::uint8_t(magicAndVersion[7])) << 24);
+    Imf::Header header;
+    header.readFrom(stream, version);
+    const Imath::Box2i dataWindow = header.dataWindow();
+    const std::int64_t width = std::int64_t(dataWindow.max.x) - dataWindow.min.x + 1;
+    const std::int64_t height = std::int64_t(dataWindow.max.y) - dataWindow.min.y + 1;
+    checkSize(path, width, height, limits);
+    checkBytesHold(path, width, height, exrMinimumBytes(header, width, height), bytes.size(), "OpenEXR");
+}
 
-ImageF readExr(const fs::path& path) {
+ImageF readExr(const fs::path& path, std::span<const unsigned char> bytes, const ImageReadLimits& limits) {
     try {
-        Imf::InputFile file(path.c_str());
-        return detail::readExrColor(path, file);
+        checkExrHeader(path, bytes, limits);
+        detail::MemoryIStream stream(path, bytes);
+        Imf::InputFile file(stream);
+        return detail::readExrColor(path, bytes, file, {}, limits);
     } catch (const IoError&) {
         throw;
     } catch (const std::exception& e) {
@@ -280,12 +321,15 @@ std::string encodeExr(const fs::path& path, const ImageF& image) {
 
 class RgbeReader {
 public:
-    RgbeReader(const fs::path& path, std::span<const unsigned char> bytes)
+    RgbeReader(const fs::path& path, std::span<const unsigned char> bytes, const ImageReadLimits& limits)
         : mPath(path)
-        , mBytes(bytes) {}
+        , mBytes(bytes)
+        , mLimits(limits) {}
 
     ImageF read() {
         readHeader();
+        checkBytesHold(mPath, mWidth, mHeight, std::uint64_t(mHeight) * minimumScanlineBytes(), left(),
+                       "Radiance");
         ImageF image(mWidth, mHeight, 1.0f);
         std::vector<unsigned char> scanline(std::size_t(mWidth) * 4);
         for (int y = 0; y < mHeight; ++y) {
@@ -344,7 +388,7 @@ private:
         if (!ok)
             throw IoError(mPath, "unsupported Radiance resolution line \"" + std::string(line) +
                                      "\" (expected \"-Y <height> +X <width>\")");
-        checkSize(mPath, width, height);
+        checkSize(mPath, width, height, mLimits);
         mWidth = width;
         mHeight = height;
     }
@@ -360,6 +404,15 @@ private:
     }
 
     std::size_t left() const { return mBytes.size() - mPos; }
+
+    /// The fewest bytes one scanline can take: flat, 4 a pixel; run-length coded, a 4-byte marker and for
+    /// each of the 4 components one 2-byte run per 127 pixels.
+    std::uint64_t minimumScanlineBytes() const {
+        const std::uint64_t flat = std::uint64_t(mWidth) * 4;
+        if (mWidth < 8 || mWidth >= 32768)
+            return flat;
+        return std::min(flat, 4 + 4 * 2 * ((std::uint64_t(mWidth) + 126) / 127));
+    }
 
     /// One scanline as interleaved RGBE bytes. A new-style RLE scanline opens with 2, 2 and a 15-bit width
     /// and then holds each component's runs in turn; anything else is flat RGBE pixels.
@@ -403,61 +456,148 @@ private:
 
     const fs::path& mPath;
     std::span<const unsigned char> mBytes;
+    ImageReadLimits mLimits;
     std::size_t mPos = 0;
     int mWidth = 0;
     int mHeight = 0;
 };
 
 // ---------------------------------------------------------------------------------------------------------------
-// PNG: decoded by stb_image (raw samples, no gamma handling), encoded by libpng's simplified API.
+// PNG: decoded by libpng's full API (raw samples, no gamma handling), encoded by its simplified API.
+//
+// libpng reports errors by longjmp. The functions that call into it under setjmp hold no object with a
+// destructor, so a longjmp out of them skips nothing; everything they fill is owned by their callers.
 
-/// stb_image decodes a PNG whose end is cut off as long as the pixel data is whole; insist on the IEND chunk.
-void requireCompletePng(const fs::path& path, std::span<const unsigned char> bytes) {
-    constexpr std::array<unsigned char, 12> kIend{0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
-    if (std::search(bytes.begin(), bytes.end(), kIend.begin(), kIend.end()) == bytes.end())
-        throw IoError(path, "PNG file is truncated (no IEND chunk)");
-    if (bytes.size() > std::size_t(INT32_MAX))
-        throw IoError(path, "PNG file is too large (over 2 GiB)");
+struct PngSource {
+    std::span<const unsigned char> bytes;
+    std::size_t pos = 0;
+    std::array<char, 256> error{};
+};
+
+void pngReadBytes(png_structp png, png_bytep out, png_size_t count) {
+    auto* source = static_cast<PngSource*>(png_get_io_ptr(png));
+    if (count > source->bytes.size() - source->pos)
+        png_error(png, "PNG file is truncated");
+    std::memcpy(out, source->bytes.data() + source->pos, count);
+    source->pos += count;
 }
 
-/// Decodes to RGBA with samples of type T (stbi_uc or stbi_us), setting width and height.
-template <typename T>
-std::unique_ptr<T, StbiFree> decodePng(const fs::path& path, std::span<const unsigned char> bytes, int& width,
-                                       int& height) {
-    requireCompletePng(path, bytes);
-    stbi_set_flip_vertically_on_load_thread(0);
-    int channels = 0;
-    T* pixels = nullptr;
-    if constexpr (sizeof(T) == 2)
-        pixels = stbi_load_16_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 4);
-    else
-        pixels = stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 4);
-    if (!pixels)
-        throw IoError(path, std::string("cannot decode PNG: ") + stbi_failure_reason());
-    std::unique_ptr<T, StbiFree> owned(pixels);
-    checkSize(path, width, height);
-    return owned;
+void pngFail(png_structp png, png_const_charp message) {
+    auto* source = static_cast<PngSource*>(png_get_error_ptr(png));
+    std::snprintf(source->error.data(), source->error.size(), "%s", message);
+    png_longjmp(png, 1);
 }
 
-ImageF readPngLinear(const fs::path& path, std::span<const unsigned char> bytes) {
+void pngWarn(png_structp, png_const_charp) {} // ancillary-chunk complaints; the pixels are still good
+
+/// Reads the header and sets the transforms to RGBA at 8 bits (`eightBit`: a 16-bit file keeps its high
+/// byte) or at the file's own depth.
+bool pngReadInfo(png_structp png, png_infop info, bool eightBit) {
+    if (setjmp(png_jmpbuf(png)))
+        return false;
+    png_read_info(png, info);
+    const int colorType = png_get_color_type(png, info);
+    const int bitDepth = png_get_bit_depth(png, info);
+    if (colorType == PNG_COLOR_TYPE_PALETTE)
+        png_set_palette_to_rgb(png);
+    if (colorType == PNG_COLOR_TYPE_GRAY && bitDepth < 8)
+        png_set_expand_gray_1_2_4_to_8(png);
+    if (png_get_valid(png, info, PNG_INFO_tRNS))
+        png_set_tRNS_to_alpha(png);
+    if (colorType == PNG_COLOR_TYPE_GRAY || colorType == PNG_COLOR_TYPE_GRAY_ALPHA)
+        png_set_gray_to_rgb(png);
+    if (eightBit && bitDepth == 16)
+        png_set_strip_16(png);
+    const bool hasAlpha = (colorType & PNG_COLOR_MASK_ALPHA) != 0 || png_get_valid(png, info, PNG_INFO_tRNS);
+    if (!hasAlpha)
+        png_set_add_alpha(png, 0xffff, PNG_FILLER_AFTER);
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    return true;
+}
+
+bool pngReadRows(png_structp png, png_infop info, png_bytepp rows) {
+    if (setjmp(png_jmpbuf(png)))
+        return false;
+    png_read_image(png, rows);
+    png_read_end(png, info); // to IEND: a file cut after the pixel data is still truncated
+    return true;
+}
+
+struct PngReadStruct {
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    PngReadStruct() = default;
+    PngReadStruct(const PngReadStruct&) = delete;
+    PngReadStruct& operator=(const PngReadStruct&) = delete;
+    ~PngReadStruct() { png_destroy_read_struct(&png, &info, nullptr); }
+};
+
+struct PngPixels {
     int width = 0;
     int height = 0;
-    ImageF image;
-    if (stbi_is_16_bit_from_memory(bytes.data(), int(std::min<std::size_t>(bytes.size(), INT32_MAX)))) {
-        const auto pixels = decodePng<stbi_us>(path, bytes, width, height);
-        image = ImageF(width, height);
+    bool sixteenBit = false;
+    Bytes samples; ///< RGBA rows, 8 bit, or 16 bit big-endian
+};
+
+PngPixels decodePng(const fs::path& path, std::span<const unsigned char> bytes, bool eightBit,
+                    const ImageReadLimits& limits) {
+    PngSource source{.bytes = bytes, .pos = 0, .error = {}};
+    PngReadStruct reader;
+    reader.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &source, pngFail, pngWarn);
+    reader.info = reader.png ? png_create_info_struct(reader.png) : nullptr;
+    png_structp png = reader.png;
+    png_infop info = reader.info;
+    if (!png || !info)
+        throw IoError(path, "cannot decode PNG: out of memory");
+    png_set_read_fn(png, &source, pngReadBytes);
+#ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
+    // Fuzzed inputs rarely carry right CRCs; without this the fuzzer never gets past the first chunk.
+    png_set_crc_action(png, PNG_CRC_QUIET_USE, PNG_CRC_QUIET_USE);
+#endif
+    const auto fail = [&](const char* what) {
+        throw IoError(path, std::string(what) + (source.error[0] ? source.error.data() : "corrupt file"));
+    };
+    if (!pngReadInfo(png, info, eightBit))
+        fail("cannot decode PNG: ");
+
+    PngPixels pixels;
+    pixels.width = int(png_get_image_width(png, info));
+    pixels.height = int(png_get_image_height(png, info));
+    pixels.sixteenBit = png_get_bit_depth(png, info) == 16;
+    checkSize(path, png_get_image_width(png, info), png_get_image_height(png, info), limits);
+    // Deflate expands at most 1032:1, so the compressed rows (one filter byte each) cannot come from fewer
+    // than 1/1032 of their size in bytes.
+    const std::size_t rowBytes = png_get_rowbytes(png, info);
+    if (rowBytes != std::size_t(pixels.width) * 4 * (pixels.sixteenBit ? 2 : 1))
+        throw IoError(path, "cannot decode PNG: unexpected row layout");
+    const std::uint64_t filtered = std::uint64_t(pixels.height) * (1 + (std::uint64_t(pixels.width) * 4));
+    checkBytesHold(path, pixels.width, pixels.height, filtered / 1032, bytes.size() - source.pos, "PNG");
+
+    pixels.samples.resize(rowBytes * std::size_t(pixels.height));
+    std::vector<png_bytep> rows(std::size_t(pixels.height));
+    for (std::size_t y = 0; y < rows.size(); ++y)
+        rows[y] = pixels.samples.data() + y * rowBytes;
+    if (!pngReadRows(png, info, rows.data()))
+        fail("cannot decode PNG: ");
+    return pixels;
+}
+
+ImageF readPngLinear(const fs::path& path, std::span<const unsigned char> bytes,
+                     const ImageReadLimits& limits) {
+    const PngPixels pixels = decodePng(path, bytes, false, limits);
+    ImageF image(pixels.width, pixels.height);
+    if (pixels.sixteenBit) {
         for (std::size_t i = 0; i < image.rgba.size(); ++i) {
-            const float v = float(pixels.get()[i]) / 65535.0f;
+            const float v = float(pixels.samples[2 * i] << 8 | pixels.samples[2 * i + 1]) / 65535.0f;
             image.rgba[i] = i % 4 == 3 ? v : srgbDecode(v);
         }
     } else {
-        const auto pixels = decodePng<stbi_uc>(path, bytes, width, height);
         std::array<float, 256> decode{};
         for (std::size_t v = 0; v < decode.size(); ++v)
             decode[v] = srgbDecode(float(v) / 255.0f);
-        image = ImageF(width, height);
         for (std::size_t i = 0; i < image.rgba.size(); ++i) {
-            const unsigned char v = pixels.get()[i];
+            const unsigned char v = pixels.samples[i];
             image.rgba[i] = i % 4 == 3 ? float(v) / 255.0f : decode[v];
         }
     }
@@ -508,41 +648,23 @@ Bytes encodePng(const fs::path& path, const Image8& image) {
 
 std::atomic<unsigned> gTemporaryCounter{0};
 
-} // namespace
-
-void detail::writeAtomically(const fs::path& path, std::span<const unsigned char> bytes) {
-    if (!path.has_filename())
+/// The folder a file goes into; throws unless `path` names a file in an existing folder.
+fs::path outputFolder(const fs::path& path) {
+    if (!path.has_filename() || path.filename() == "." || path.filename() == "..")
         throw IoError(path, "names a folder, not a file");
     const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
     std::error_code ec;
     if (!fs::is_directory(folder, ec))
         throw IoError(path, fs::exists(folder, ec) ? quoted(folder) + " is not a folder"
                                                    : "folder " + quoted(folder) + " does not exist");
-
-    const fs::path temporary =
-        folder / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                  std::to_string(gTemporaryCounter++));
-    FilePtr file(std::fopen(temporary.c_str(), "wbx"));
-    if (!file)
-        throw IoError(path, "cannot create temporary file " + quoted(temporary) + ": " + errnoMessage(errno));
-    const auto fail = [&](const std::string& problem) {
-        file.reset();
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        throw IoError(path, problem);
-    };
-    // fsync before the rename: after a crash the path holds either the old file or the whole new one.
-    if (std::fwrite(bytes.data(), 1, bytes.size(), file.get()) != bytes.size() ||
-        std::fflush(file.get()) != 0 || ::fsync(::fileno(file.get())) != 0)
-        fail("cannot write: " + errnoMessage(errno));
-    if (std::fclose(file.release()) != 0)
-        fail("cannot write: " + errnoMessage(errno));
-    fs::rename(temporary, path, ec);
-    if (ec)
-        fail("cannot move the finished file into place: " + ec.message());
+    return folder;
 }
 
-namespace {
+void writeAtomically(const fs::path& path, std::span<const unsigned char> bytes) {
+    AtomicFileWriter file(path);
+    file.write({reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+    file.commit();
+}
 
 template <typename Image>
 void requirePixels(const fs::path& path, const Image& image) {
@@ -554,67 +676,218 @@ void requirePixels(const fs::path& path, const Image& image) {
         throw IoError(path, "image holds " + std::to_string(image.rgba.size()) + " values, expected " +
                                 std::to_string(expected) + " for " + std::to_string(image.width) + "x" +
                                 std::to_string(image.height) + " RGBA");
-    if (std::int64_t(image.width) * image.height > kMaxPixels)
+    if (std::int64_t(image.width) * image.height > kDefaultMaxPixels)
         throw IoError(path, "image is too large to write");
 }
 
 } // namespace
 
-void writeTextFile(const fs::path& path, std::string_view text) {
-    detail::writeAtomically(path, {reinterpret_cast<const unsigned char*>(text.data()), text.size()});
+// ---------------------------------------------------------------------------------------------------------------
+// Shared with ExrFrame.cpp (io/ExrDetail.h)
+
+std::vector<unsigned char> detail::readCheckedExrBytes(const fs::path& path, const ImageReadLimits& limits) {
+    requireRegularFile(path);
+    Bytes bytes = readBytes(path);
+    if (!startsWith(bytes, kExrMagic))
+        throw IoError(path, "is not an OpenEXR file (no OpenEXR magic number)");
+    checkExrHeader(path, bytes, limits);
+    return bytes;
 }
 
-void detail::requireExrFile(const fs::path& path) {
-    const Bytes head = readBytes(path, 16);
-    if (sniff(head) != FileFormat::Exr)
-        throw IoError(path, head.empty() ? std::string("file is empty") : unknownFormatMessage(path, head));
-}
+ImageF detail::readExrColor(const fs::path& path, std::span<const unsigned char> bytes, Imf::InputFile& file,
+                            const ExrExtraSlices& extra, const ImageReadLimits& limits) {
+    const Imf::Header& header = file.header();
+    const Imath::Box2i dataWindow = header.dataWindow();
+    const std::int64_t width64 = std::int64_t(dataWindow.max.x) - dataWindow.min.x + 1;
+    const std::int64_t height64 = std::int64_t(dataWindow.max.y) - dataWindow.min.y + 1;
+    checkSize(path, width64, height64, limits);
+    const int width = int(width64);
+    const int height = int(height64);
+    if (!file.isComplete())
+        throw IoError(path, "OpenEXR file is truncated or incomplete (pixel blocks are missing)");
 
-ImageF readImage(const fs::path& path) {
-    detail::requireRegularFile(path);
-    const Bytes head = readBytes(path, 16);
-    if (head.empty())
-        throw IoError(path, "file is empty");
-    switch (sniff(head)) {
-    case FileFormat::Exr:
-        return readExr(path);
-    case FileFormat::Rgbe: {
-        const Bytes bytes = readBytes(path);
-        return RgbeReader(path, bytes).read();
+    const Imf::ChannelList& channels = header.channels();
+    const auto has = [&](const char* name) { return channels.findChannel(name) != nullptr; };
+    const bool hasRgb = has("R") || has("G") || has("B");
+    if (!hasRgb && has("Y") && (has("RY") || has("BY"))) {
+        ImageF image = readExrLuminanceChroma(path, bytes, width, height);
+        if (extra) { // RgbaInputFile reads colour only: the extra layers take a second pass
+            Imf::FrameBuffer frameBuffer;
+            extra(frameBuffer, dataWindow, width, height);
+            file.setFrameBuffer(frameBuffer);
+            file.readPixels(dataWindow.min.y, dataWindow.max.y);
+        }
+        return image;
     }
+    if (!hasRgb && !has("Y")) {
+        std::string names;
+        for (auto it = channels.begin(); it != channels.end(); ++it)
+            names += std::string(names.empty() ? "" : ", ") + it.name();
+        throw IoError(path, "OpenEXR file has no R, G, B or Y channel (channels: " + names + ")");
+    }
+
+    ImageF image(width, height);
+    Imf::FrameBuffer frameBuffer;
+    const std::size_t xStride = 4 * sizeof(float);
+    const std::size_t yStride = xStride * std::size_t(width);
+    // Every channel is read as FLOAT whatever it is stored as; absent channels take the fill value.
+    const auto addSlice = [&](const char* name, std::size_t component, double fill) {
+        frameBuffer.insert(name, Imf::Slice::Make(Imf::FLOAT, image.rgba.data() + component, dataWindow,
+                                                  xStride, yStride, 1, 1, fill));
+    };
+    if (hasRgb) {
+        addSlice("R", 0, 0.0);
+        addSlice("G", 1, 0.0);
+        addSlice("B", 2, 0.0);
+    } else {
+        addSlice("Y", 0, 0.0);
+    }
+    addSlice("A", 3, 1.0);
+    if (extra)
+        extra(frameBuffer, dataWindow, width, height);
+    file.setFrameBuffer(frameBuffer);
+    file.readPixels(dataWindow.min.y, dataWindow.max.y);
+
+    if (!hasRgb) {
+        for (std::size_t i = 0; i < image.pixelCount(); ++i)
+            image.rgba[i * 4 + 1] = image.rgba[i * 4 + 2] = image.rgba[i * 4];
+    }
+    return image;
+}
+
+void detail::writeAtomically(const fs::path& path, std::span<const unsigned char> bytes) {
+    photopic::writeAtomically(path, bytes);
+}
+
+AtomicFileWriter::AtomicFileWriter(fs::path path)
+    : mPath(std::move(path)) {
+    const fs::path folder = outputFolder(mPath);
+    std::error_code ec;
+    if (fs::is_directory(mPath, ec))
+        throw IoError(mPath, "is a folder, not a file");
+    mTemporary = folder / ("." + mPath.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                           std::to_string(gTemporaryCounter++));
+    mFile = std::fopen(mTemporary.c_str(), "wbx");
+    if (!mFile)
+        throw IoError(mPath,
+                      "cannot create temporary file " + quoted(mTemporary) + ": " + errnoMessage(errno));
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+    if (mFile) {
+        std::fclose(mFile);
+        std::error_code ignored;
+        fs::remove(mTemporary, ignored);
+    }
+}
+
+void AtomicFileWriter::fail(const std::string& problem) {
+    std::fclose(mFile);
+    mFile = nullptr;
+    std::error_code ignored;
+    fs::remove(mTemporary, ignored);
+    throw IoError(mPath, problem);
+}
+
+void AtomicFileWriter::write(std::string_view text) {
+    if (!mFile)
+        throw IoError(mPath, "written after commit or after a failure");
+    if (std::fwrite(text.data(), 1, text.size(), mFile) != text.size())
+        fail("cannot write: " + errnoMessage(errno));
+}
+
+void AtomicFileWriter::commit() {
+    if (!mFile)
+        throw IoError(mPath, "committed twice or after a failure");
+    // fsync before the rename: after a crash the path holds either the old file or the whole new one.
+    if (std::fflush(mFile) != 0 || ::fsync(::fileno(mFile)) != 0)
+        fail("cannot write: " + errnoMessage(errno));
+    const int closed = std::fclose(mFile);
+    mFile = nullptr;
+    std::error_code ec;
+    if (closed != 0) {
+        fs::remove(mTemporary, ec);
+        throw IoError(mPath, "cannot write: " + errnoMessage(errno));
+    }
+    fs::rename(mTemporary, mPath, ec);
+    if (ec) {
+        std::error_code ignored;
+        fs::remove(mTemporary, ignored);
+        throw IoError(mPath, "cannot move the finished file into place: " + ec.message());
+    }
+}
+
+void requireWritableFile(const fs::path& path) {
+    const fs::path folder = outputFolder(path);
+    std::error_code ec;
+    if (fs::is_directory(path, ec))
+        throw IoError(path, "is a folder, not a file");
+    // The atomic write renames a new file over the path: over a link that replaces the link, not what it
+    // points to, and a device or pipe (/dev/stdout) would be replaced by a regular file.
+    const fs::file_status link = fs::symlink_status(path, ec);
+    if (!ec && fs::is_symlink(link))
+        throw IoError(
+            path, "is a symbolic link; writing would replace the link itself: name the file it points to");
+    if (!ec && fs::exists(link) && !fs::is_regular_file(link))
+        throw IoError(path, "is not a regular file (a device, pipe or socket): write to a file");
+    if (::access(folder.c_str(), W_OK | X_OK) != 0)
+        throw IoError(path, "folder " + quoted(folder) + " is not writable: " + errnoMessage(errno));
+}
+
+void writeTextFile(const fs::path& path, std::string_view text) {
+    writeAtomically(path, {reinterpret_cast<const unsigned char*>(text.data()), text.size()});
+}
+
+ImageF decodeImage(std::span<const unsigned char> bytes, const fs::path& name,
+                   const ImageReadLimits& limits) {
+    if (bytes.empty())
+        throw IoError(name, "file is empty");
+    switch (sniff(bytes)) {
+    case FileFormat::Exr:
+        return readExr(name, bytes, limits);
+    case FileFormat::Rgbe:
+        return RgbeReader(name, bytes, limits).read();
     case FileFormat::Png:
-        return readPngLinear(path, readBytes(path));
+        return readPngLinear(name, bytes, limits);
     case FileFormat::Unknown:
         break;
     }
-    throw IoError(path, unknownFormatMessage(path, head));
+    throw IoError(name, unknownFormatMessage(name, bytes.first(std::min<std::size_t>(bytes.size(), 16))));
 }
 
-Image8 readPng8(const fs::path& path) {
-    detail::requireRegularFile(path);
+ImageF readImage(const fs::path& path, const ImageReadLimits& limits) {
+    requireRegularFile(path);
     const Bytes bytes = readBytes(path);
+    return decodeImage(bytes, path, limits);
+}
+
+Image8 decodePng8(std::span<const unsigned char> bytes, const fs::path& name, const ImageReadLimits& limits) {
     if (bytes.empty())
-        throw IoError(path, "file is empty");
+        throw IoError(name, "file is empty");
     if (sniff(bytes) != FileFormat::Png)
-        throw IoError(path, "not a PNG file");
-    int width = 0;
-    int height = 0;
-    const auto pixels = decodePng<stbi_uc>(path, bytes, width, height);
-    Image8 image(width, height);
-    std::copy_n(pixels.get(), image.rgba.size(), image.rgba.begin());
+        throw IoError(name, "not a PNG file");
+    PngPixels pixels = decodePng(name, bytes, true, limits);
+    Image8 image;
+    image.width = pixels.width;
+    image.height = pixels.height;
+    image.rgba = std::move(pixels.samples);
     return image;
+}
+
+Image8 readPng8(const fs::path& path, const ImageReadLimits& limits) {
+    requireRegularFile(path);
+    return decodePng8(readBytes(path), path, limits);
 }
 
 void writePng(const fs::path& path, const Image8& image) {
     requirePixels(path, image);
-    detail::writeAtomically(path, encodePng(path, image));
+    writeAtomically(path, encodePng(path, image));
 }
 
 void writeExr(const fs::path& path, const ImageF& image) {
     requirePixels(path, image);
     const std::string bytes = encodeExr(path, image);
-    detail::writeAtomically(path,
-                            std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
+    writeAtomically(path, std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
 }
 
 } // namespace photopic

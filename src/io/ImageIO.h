@@ -4,7 +4,10 @@
 
 #include "core/Image.h"
 
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
+#include <span>
 #include <stdexcept>
 #include <string_view>
 
@@ -14,6 +17,14 @@ namespace photopic {
 class IoError : public std::runtime_error {
 public:
     IoError(const std::filesystem::path& path, std::string_view problem);
+};
+
+/// Default bound on a decoded image: 16384 x 16384 = 2^28 pixels, 4 GiB as ImageF.
+inline constexpr std::int64_t kDefaultMaxPixels = std::int64_t(1) << 28;
+
+/// Bounds a reader checks against the file's declared size before it allocates anything.
+struct ImageReadLimits {
+    std::int64_t maxPixels = kDefaultMaxPixels; ///< pixels, >= 1; a bigger declared image is an IoError
 };
 
 /// Reads a linear RGBA float image; the format comes from the file's magic bytes.
@@ -29,12 +40,22 @@ public:
 /// kept
 ///   linear, alpha 1 when absent. gAMA/iCCP chunks are ignored: a PNG is taken to be sRGB.
 /// Throws IoError naming the path for a missing or unreadable file, an unrecognised format, a truncated or
-/// corrupt file, or an image with no pixels.
-[[nodiscard]] ImageF readImage(const std::filesystem::path& path);
+/// corrupt file, an image with no pixels, an image over `limits.maxPixels`, or a declared size that the
+/// file's bytes cannot hold (checked before the pixels are allocated, so a 40-byte file cannot ask for
+/// gigabytes).
+[[nodiscard]] ImageF readImage(const std::filesystem::path& path, const ImageReadLimits& limits = {});
+
+/// readImage on bytes already in memory; `name` only names the source in errors. Any byte string gives an
+/// image or an IoError (the fuzzers hold it to that).
+[[nodiscard]] ImageF decodeImage(std::span<const unsigned char> bytes, const std::filesystem::path& name,
+                                 const ImageReadLimits& limits = {});
 
 /// Reads a PNG's stored 8-bit RGBA values with no colour decoding (alpha 255 when absent; a 16-bit file keeps
 /// the high byte of each sample). For comparing written PNGs byte for byte.
-[[nodiscard]] Image8 readPng8(const std::filesystem::path& path);
+[[nodiscard]] Image8 readPng8(const std::filesystem::path& path, const ImageReadLimits& limits = {});
+/// readPng8 on bytes in memory; `name` only names the source in errors.
+[[nodiscard]] Image8 decodePng8(std::span<const unsigned char> bytes, const std::filesystem::path& name,
+                                const ImageReadLimits& limits = {});
 
 /// Writes an 8-bit sRGB PNG, stored as RGB when every alpha is 255 (smaller) and as RGBA otherwise; readPng8
 /// gives back the same RGBA bytes either way. Both writers are atomic: the file is written as
@@ -45,6 +66,33 @@ void writePng(const std::filesystem::path& path, const Image8& image);
 
 /// Writes a text file (CSV telemetry, JSON) atomically, like writePng.
 void writeTextFile(const std::filesystem::path& path, std::string_view text);
+
+/// Checks, without writing anything, that `path` can be an output file: it names a file (not a folder, not
+/// an existing folder), its folder exists and is writable. Throws IoError saying which of these fails. For
+/// validating every output before a long run starts.
+void requireWritableFile(const std::filesystem::path& path);
+
+/// A file written piece by piece and published atomically: the pieces go to a temporary beside `path` (named
+/// like writePng's), commit() flushes it to disk and renames it over `path`; destroyed without commit(), it
+/// removes the temporary and leaves `path` as it was. The constructor creates the temporary at once, so an
+/// unwritable destination fails before any work. For outputs that grow with the run (telemetry CSV).
+class AtomicFileWriter {
+public:
+    explicit AtomicFileWriter(std::filesystem::path path);
+    ~AtomicFileWriter();
+    AtomicFileWriter(const AtomicFileWriter&) = delete;
+    AtomicFileWriter& operator=(const AtomicFileWriter&) = delete;
+
+    void write(std::string_view text); ///< throws IoError (the temporary is then removed)
+    void commit();                     ///< throws IoError (the temporary is then removed)
+    [[nodiscard]] const std::filesystem::path& path() const { return mPath; }
+
+private:
+    void fail(const std::string& problem);
+    std::filesystem::path mPath;
+    std::filesystem::path mTemporary;
+    std::FILE* mFile = nullptr;
+};
 
 /// Writes a half-float RGBA OpenEXR, ZIP compressed (lossless for half data), data window = display window =
 /// the image. Values are rounded to half; finite values beyond +-65504 are clamped to it rather than becoming

@@ -14,6 +14,8 @@ inline constexpr unsigned kBindingHistogram = 1; ///< SSBO: 256 uint histogram b
 inline constexpr unsigned kBindingMetering = 2;  ///< SSBO: GpuMeteringHeader + per-workgroup partial sums
 inline constexpr unsigned kBindingProbe = 3; ///< SSBO: GpuProbeHeader + GpuProbeEntry[] (this frame's probes)
 inline constexpr unsigned kBindingSubjectState = 4; ///< SSBO: GpuSubjectState (persists across frames)
+/// UBO: the running pass's std140 parameter block (ParameterBlock<T> in gl/Objects.h), one per dispatch.
+inline constexpr unsigned kBindingParameters = 0;
 
 /// std430 mirror of passes/common/exposure.h.glsl. The first six fields are core's ExposureState
 /// (core/ExposureController.h) in the same order; the rest is what the pipeline and its readers add.

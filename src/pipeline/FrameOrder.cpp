@@ -7,9 +7,13 @@ FrameOrder::FrameOrder(const Capabilities& caps, bool keepTelemetryHistory)
     , subjectContexts(probes, exposure)
     , tonemap(caps) {
     // Lighting stage (3D hosts, while they shade): ambient occlusion for indirect light and contact
-    // shadows for the sun read depth and normals and write ambientOcclusion / contactShadows. None is built
-    // yet; the stage runs whatever this list holds.
-    mLighting = {};
+    // shadows for the sun read depth and normals and write ambientOcclusion / contactShadows. The post stage
+    // starts from the host's inputs again (its own linear depth pass runs when a post pass needs it), so the
+    // lighting stage has its own linear depth instance.
+    mLighting = {
+        &lightingLinearDepth, // depth, camera -> linearDepth
+        &gtao,                // linearDepth, normals, camera -> ambientOcclusion (ssao.apply = lighting)
+    };
 
     // Post stage. Reads -> writes of each pass; the sequencer skips what a frame lacks the inputs for and
     // does not run what nothing reads.
@@ -18,6 +22,8 @@ FrameOrder::FrameOrder(const Capabilities& caps, bool keepTelemetryHistory)
         &sanitize,        // color -> sceneColor (NaN/Inf/negatives to 0, below the half maximum)
         &linearDepth,     // depth, camera -> linearDepth
         &cameraMotion,    // linearDepth, camera -> motion (only when the host gives none)
+        &gtaoPost,        // linearDepth, normals, camera -> ambientOcclusion (ssao.apply = multiply)
+        &aoMultiply,      // sceneColor, ambientOcclusion -> sceneColor (ssao.apply = multiply)
         &taa,             // sceneColor, motion, exposure (last frame's), linearDepth?, camera? -> sceneColor
         &metering,        // sceneColor -> histogram, metering, meteringMask
         &probes,          // sceneColor, metering -> metering (subject probes; the subject's reading)

@@ -9,6 +9,7 @@
 #include "passes/display/DisplayEffectsPass.h"
 #include "passes/exposure/ExposurePass.h"
 #include "passes/fxaa/FxaaPass.h"
+#include "passes/gtao/GtaoPass.h"
 #include "passes/inputs/InputPasses.h"
 #include "passes/lensflare/LensFlarePass.h"
 #include "passes/metering/MeteringPass.h"
@@ -38,8 +39,12 @@ public:
     [[nodiscard]] std::span<FramePass* const> all() const { return mAll; }
 
     // The passes, for the pipeline's API (telemetry, subjects, the scene-referred output, status).
+    LinearDepthPass lightingLinearDepth; ///< the lighting stage's own (its linear depth is not kept for post)
+    GtaoPass gtao{GtaoPass::Stage::Lighting};
     SanitizePass sanitize;
     LinearDepthPass linearDepth;
+    GtaoPass gtaoPost{GtaoPass::Stage::Post};
+    AoMultiplyPass aoMultiply;
     CameraMotionPass cameraMotion;
     TaaPass taa;
     MeteringPass metering;

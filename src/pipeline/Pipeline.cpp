@@ -102,6 +102,10 @@ glm::vec2 Pipeline::beginFrame(const FrameTime& time, const Camera* camera) {
         reset();
     }
     mBeganFrame = true;
+    if (subframeCount() > 1) {
+        mJitter = subframeJitter(0);
+        return mJitter;
+    }
     const JitterMode mode = mSettings.temporal.jitter;
     const bool jitter = mode == JitterMode::On || (mode == JitterMode::Auto && TaaPass::selected(mSettings));
     mJitter = jitter ? haltonJitter(time.frameIndex, mSettings.temporal.jitterCycle) : glm::vec2(0.0f);
@@ -183,8 +187,13 @@ const LightingOutputs& Pipeline::renderLighting(const FrameInputs& inputs, const
     const QualityTier tier = effectiveTier(mCaps, mSettings.quality);
     FrameContext ctx = makeContext(inputs, time, tier);
     mResources.pool().beginFrame();
+    if (!mLightingTimed) {
+        mTimers.beginFrame(); // the lighting stage's passes are timed with the frame execute() finishes
+        mLightingTimed = true;
+    }
     mLightingSequencer.run(mOrder->lighting(), {.resources = kLightingOutputs}, ctx, mResources);
     mLighting.ambientOcclusion = mResources.texture(Resource::AmbientOcclusion);
+    mLighting.ambientOcclusionPower = mSettings.ssao.power;
     mLighting.contactShadows = mResources.texture(Resource::ContactShadows);
     return mLighting;
 }
@@ -194,6 +203,10 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
     const LightingOutputs lighting = mLighting;
     mLighting = {};
     if (!bindInputs(inputs)) {
+        if (mLightingTimed) {
+            mTimers.endFrame();
+            mLightingTimed = false;
+        }
         try {
             warnOnce("input.color", "execute(): " + mInputErrors.front());
         } catch (...) { // logging must not take the frame down
@@ -218,12 +231,23 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
             pass->invalidateHistory();
         }
     }
-    mTimers.beginFrame();
+    if (!mLightingTimed) {
+        mTimers.beginFrame();
+    }
+    mLightingTimed = false;
     const QualityTier tier = effectiveTier(mCaps, mSettings.quality);
     FrameContext ctx = makeContext(inputs, time, tier);
     if (lighting.ambientOcclusion == nullptr && lighting.contactShadows == nullptr) {
         mResources.pool().beginFrame(); // else the lighting stage began it and its textures are in use
     }
+    if (mSettings.antiAliasing() == AntiAliasing::Ssaa && !mAccumulating) {
+        try {
+            warnOnce("ssaa.no-subframes", "aa.mode is ssaa but the host rendered no sub-frames "
+                                          "(accumulateSubframe): one sample per pixel, no anti-aliasing");
+        } catch (...) { // logging must not take the frame down
+        }
+    }
+    mAccumulating = false;
     if (!mBeganFrame && TaaPass::selected(mSettings)) {
         try {
             warnOnce("taa.no-jitter", "TAA is on but the host does not call beginFrame(): its frames are not "
@@ -240,6 +264,39 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
     const Texture* out = mResources.texture(mOutput);
     PHOTOPIC_ASSERT(out != nullptr);
     return *out;
+}
+
+int Pipeline::subframeCount() const noexcept {
+    return mSettings.antiAliasing() == AntiAliasing::Ssaa ? 1 << std::clamp(mSettings.aa.level, 1, 4) : 1;
+}
+
+glm::vec2 Pipeline::subframeJitter(int index) const noexcept {
+    // An N-rooks lattice: sample k sits in column k and row (k * m) mod N of an N x N sub-grid, so every row
+    // and every column holds one sample (N coverage levels for horizontal and vertical edges alike), and the
+    // multiplier m spreads the samples over the pixel (m = 2 x 2 - 1 gives the rotated grid of 4x SSAA).
+    const int n = subframeCount();
+    const int multiplier = n == 2 ? 1 : n == 4 ? 3 : n == 8 ? 3 : 5;
+    const int k = std::clamp(index, 0, n - 1);
+    const int row = n == 2 ? 1 - k : (k * multiplier) % n;
+    return {(float(k) + 0.5f) / float(n) - 0.5f, (float(row) + 0.5f) / float(n) - 0.5f};
+}
+
+void Pipeline::accumulateSubframe(const Texture& color, int index) {
+    if (!mSsaa) {
+        mSsaa = std::make_unique<SsaaAccumulator>();
+    }
+    if (!mAccumulating) {
+        mSsaa->begin(color.extent());
+        mAccumulating = true;
+    }
+    mSsaa->add(color, ssaaWeight(mSettings.aa.ssaaFilter, subframeJitter(index)), &mTimers);
+}
+
+const Texture& Pipeline::subframeMean() const {
+    if (!mSsaa) {
+        throw GlError("subframeMean(): no sub-frame has been accumulated");
+    }
+    return mSsaa->mean();
 }
 
 const Texture& Pipeline::sceneReferred() {

@@ -17,6 +17,7 @@
 #include "gl/ReadbackRing.h"
 #include "passes/FrameInputs.h"
 #include "passes/exposure/ExposurePass.h"
+#include "passes/ssaa/SsaaAccumulator.h"
 #include "pipeline/FrameOrder.h"
 #include "pipeline/Sequencer.h"
 
@@ -55,8 +56,11 @@ struct PipelineCreateInfo {
 
 /// What the lighting stage hands the host for shading. Each is null when its pass did not run this frame.
 struct LightingOutputs {
-    /// R8/R16F visibility in [0, 1] for indirect (ambient, IBL) light only.
+    /// R8/R16F visibility in [0, 1] for indirect (ambient, IBL) light only: the raw visibility, before
+    /// ssao.power.
     const Texture* ambientOcclusion = nullptr;
+    /// ssao.power: the host multiplies its indirect light by pow(visibility, ambientOcclusionPower).
+    float ambientOcclusionPower = 1.0f;
     /// R8/R16F visibility in [0, 1] for the sun's direct light only.
     const Texture* contactShadows = nullptr;
 };
@@ -83,6 +87,18 @@ public:
     glm::vec2 beginFrame(const FrameTime& time, const Camera* camera = nullptr);
     /// The jitter beginFrame returned for this frame.
     [[nodiscard]] glm::vec2 jitter() const { return mJitter; }
+
+    /// Supersampling (aa.mode = ssaa): the sub-frames a host renders per frame, 2^aa.level; 1 otherwise.
+    [[nodiscard]] int subframeCount() const noexcept;
+    /// The jitter of sub-frame `index` in [0, subframeCount()), in pixels (x right, y up): an N-rooks lattice
+    /// over the pixel. Sub-frame 0's is what beginFrame returns.
+    [[nodiscard]] glm::vec2 subframeJitter(int index) const noexcept;
+    /// Folds the host's HDR colour of sub-frame `index` (rendered with subframeJitter(index)) into the
+    /// frame's weighted mean in linear light; the first call of a frame starts the mean.
+    void accumulateSubframe(const Texture& color, int index);
+    /// The weighted mean of this frame's sub-frames (RGBA32F), the colour to hand to execute(); valid
+    /// until the next frame's first accumulateSubframe().
+    [[nodiscard]] const Texture& subframeMean() const;
 
     /// Lighting stage (3D hosts, after beginFrame, before the host shades): runs the passes whose outputs the
     /// host consumes while lighting and hands back their textures (null when that pass is off or lacks its
@@ -159,7 +175,10 @@ private:
     bool mResetExposure = true;
     bool mResetHistory = true;
     glm::vec2 mJitter{0.0f};
-    bool mBeganFrame = false; ///< the host called beginFrame() for the frame execute() runs
+    bool mLightingTimed = false; ///< renderLighting() opened this frame's GPU timers; execute() closes them
+    bool mBeganFrame = false;    ///< the host called beginFrame() for the frame execute() runs
+    std::unique_ptr<SsaaAccumulator> mSsaa;
+    bool mAccumulating = false; ///< sub-frames were added since the last execute()
     LightingOutputs mLighting;
     std::vector<std::string> mInputErrors;
     Texture mInvalid; ///< 1x1 black, returned for a frame without usable colour

@@ -163,7 +163,13 @@ TEST(PostEffectSettings, IssuesNamePathsAndRanges) {
     issues = readSettingsJson(R"({"postEffects": {"colorGrading": {"lift": [0, 0]}}})", s);
     ASSERT_EQ(issues.size(), 1u);
     EXPECT_EQ(issues[0].code, SettingsIssueCode::WrongType);
-    issues = readSettingsJson(R"({"postEffects": {"ssao": {"enabled": true}}})", s);
+    issues = readSettingsJson(R"({"postEffects": {"ssao": {"enabled": true, "quality": "ultra"}}})", s);
+    EXPECT_TRUE(issues.empty());
+    issues = readSettingsJson(R"({"postEffects": {"ssao": {"radius": 0}}})", s);
+    ASSERT_EQ(issues.size(), 1u);
+    EXPECT_EQ(issues[0].code, SettingsIssueCode::OutOfRange);
+    EXPECT_EQ(issues[0].path, "postEffects.ssao.radius");
+    issues = readSettingsJson(R"({"postEffects": {"ssgi": {"enabled": true}}})", s);
     ASSERT_EQ(issues.size(), 1u);
     EXPECT_EQ(issues[0].code, SettingsIssueCode::UnknownKey); // no key for an effect that does not exist
     applySettingsOverride(s, "quality=legacy");

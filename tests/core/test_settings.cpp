@@ -178,3 +178,21 @@ TEST(Settings, IssueCodesHaveNames) {
 
 } // namespace
 } // namespace photopic
+
+namespace photopic {
+
+TEST(SettingsJson, NumbersAreWrittenAsTheShortestTextThatReadsBack) {
+    Settings s;
+    s.bloom.intensity = 0.02f;
+    s.autoExposure.tauDarken = 0.3f;
+    const std::string text = settingsToJson(s);
+    EXPECT_NE(text.find("\"intensity\": 0.02,"), std::string::npos) << text;
+    EXPECT_EQ(text.find("0.019999999552965164"), std::string::npos);
+    EXPECT_NE(text.find("\"tauDarken\": 0.3"), std::string::npos);
+    Settings back;
+    EXPECT_TRUE(readSettingsJson(text, back).empty());
+    EXPECT_EQ(back.bloom.intensity, 0.02f); // the same float
+    EXPECT_EQ(back.autoExposure.tauDarken, 0.3f);
+}
+
+} // namespace photopic

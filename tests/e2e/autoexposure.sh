@@ -50,8 +50,9 @@ expect 2 "unreadable metering mask" -- "$PHOTOPIC" image "$DATA/Desk.hdr" -o "$S
 check "error names the mask file" contains "nomask.png"
 check "no output for a bad mask" test ! -e "$S/mask.png"
 
-expect 1 "telemetry into a missing folder" -- "$PHOTOPIC" image "$DATA/Desk.hdr" -o "$S/ok.png" \
-    --telemetry "$S/missing/t.csv"
+expect 2 "telemetry into a missing folder (checked before any work)" -- "$PHOTOPIC" image "$DATA/Desk.hdr" \
+    -o "$S/ok.png" --telemetry "$S/missing/t.csv"
 check "no partial telemetry" test ! -e "$S/missing/t.csv"
+check "no image from the refused run" test ! -e "$S/ok.png"
 
 finish

@@ -41,7 +41,7 @@ expect 2 "unknown key" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/bad.png" --s
 check "unknown key named" contains "postEffects.tonemapping.gamma"
 expect 2 "unsupported output extension" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/out.jpg"
 check "no output for bad settings" test ! -e "$S/bad.png"
-expect 1 "output folder that does not exist" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/missing/dir/out.png"
+expect 2 "output folder that does not exist" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/missing/dir/out.png"
 check "no partial output" test ! -e "$S/missing/dir/out.png"
 
 expect 0 "settings --defaults" -- "$PHOTOPIC" settings --defaults

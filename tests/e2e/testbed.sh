@@ -19,6 +19,18 @@ check "one image per frame" test "$(ls "$S"/img/*.png | wc -l)" -eq 3
 check "the decoded layers written back" test -s "$S/aux/scene_0002.aux.exr"
 check "no input problem reported" bash -c "! grep -qi 'ignored\|skipped' <<< \"\$1\"" _ "$OUTPUT"
 
+expect 0 "testbed with TAA writes jittered scene EXRs" -- "$PHOTOPIC" scene testbed -o "$S/tbtaa" --frames 4 \
+    --size 96x54 --set aa.mode=taa
+expect 0 "image --info finds their jitter" -- "$PHOTOPIC" image --info "$S/tbtaa/scene_0002.exr"
+check "jitter attribute listed" contains "jitter (v2f) -> motion unjitter"
+expect 0 "TAA over the jittered sequence" -- "$PHOTOPIC" image "$S"/tbtaa/scene_*.exr -o "$S/taa/" --set aa.mode=taa
+check "no warning that the frames are unjittered" bash -c "! grep -q 'not jittered' <<< \"\$1\"" _ "$OUTPUT"
+expect 0 "TAA over unjittered frames" -- "$PHOTOPIC" image "$S"/tb/scene_*.exr -o "$S/taa2/" --set aa.mode=taa
+check "says once that TAA can only filter over time" contains "not jittered"
+expect 0 "--jitter halton takes Photopic's own sequence" -- "$PHOTOPIC" image "$S"/tb/scene_*.exr -o "$S/taa3/" \
+    --set aa.mode=taa --jitter halton
+check "then no warning" bash -c "! grep -q 'not jittered' <<< \"\$1\"" _ "$OUTPUT"
+
 expect 0 "ao truth" -- "$PHOTOPIC" scene testbed --truth ao -o "$S/truth" --frames 1 --start 10 --size 64x36 \
     --set testbed.aoSamples=4
 check "ao EXR and preview written" test -s "$S/truth/truth_ao_0010.exr" -a -s "$S/truth/truth_ao_0010.png"

@@ -21,7 +21,18 @@ enum class AntiAliasing {
 };
 
 inline std::span<const std::string_view> antiAliasingNames() {
-    static constexpr std::array<std::string_view, 6> kNames{"none", "fxaa", "smaa", "taa", "ssaa", "taa+smaa"};
+    static constexpr std::array<std::string_view, 6> kNames{"none", "fxaa", "smaa",
+                                                            "taa",  "ssaa", "taa+smaa"};
+    return kNames;
+}
+
+enum class SsaaFilter {
+    Box,            ///< every sub-frame alike
+    BlackmanHarris, ///< sub-frames near the pixel centre count more
+};
+
+inline std::span<const std::string_view> ssaaFilterNames() {
+    static constexpr std::array<std::string_view, 2> kNames{"box", "blackman-harris"};
     return kNames;
 }
 
@@ -29,12 +40,14 @@ struct AntiAliasingSettings {
     /// none, fxaa, smaa, taa, ssaa, taa+smaa; default none. The older switches `fxaa.enabled` and
     /// `taa.enabled` still select FXAA and TAA when this is none.
     AntiAliasing mode = AntiAliasing::None;
-    int level = 2; ///< SSAA: 2^level sub-frames per frame, [1, 4], default 2
+    int level = 2;                           ///< SSAA: 2^level sub-frames per frame, [1, 4], default 2
+    SsaaFilter ssaaFilter = SsaaFilter::Box; ///< SSAA reconstruction: box (default), blackman-harris
 
     template <class V>
     void visit(V& v) {
         v.field("mode", mode, antiAliasingNames());
         v.field("level", level, Range{1, 4});
+        v.field("ssaaFilter", ssaaFilter, ssaaFilterNames());
     }
 };
 
@@ -58,6 +71,16 @@ struct SmaaSettings {
     }
 };
 
+enum class HistoryFilter {
+    CatmullRom, ///< sharp: a bicubic fetch keeps a moving image from softening frame after frame
+    Bilinear,   ///< cheaper, but every reprojection at a fractional position blurs the history a little
+};
+
+inline std::span<const std::string_view> historyFilterNames() {
+    static constexpr std::array<std::string_view, 2> kNames{"catmull-rom", "bilinear"};
+    return kNames;
+}
+
 /// Temporal anti-aliasing (Karis 2014; Salvi 2016 variance clipping; Playdead's adaptive feedback).
 struct TaaSettings {
     bool enabled = false;       ///< default off; selects TAA when aa.mode is none
@@ -66,8 +89,9 @@ struct TaaSettings {
     /// Default off: the history weight rises from feedbackMin to feedbackMax where the history agrees with
     /// the current frame (less blur on moving edges, longer accumulation where it is stable).
     bool adaptiveFeedback = false;
-    float feedbackMin = 0.88f; ///< [0, 0.99], default 0.88
-    float feedbackMax = 0.97f; ///< [0, 0.99], default 0.97
+    float feedbackMin = 0.88f;                               ///< [0, 0.99], default 0.88
+    float feedbackMax = 0.97f;                               ///< [0, 0.99], default 0.97
+    HistoryFilter historyFilter = HistoryFilter::CatmullRom; ///< catmull-rom (default), bilinear
 
     template <class V>
     void visit(V& v) {
@@ -77,6 +101,7 @@ struct TaaSettings {
         v.field("adaptiveFeedback", adaptiveFeedback);
         v.field("feedbackMin", feedbackMin, Range{0, 0.99});
         v.field("feedbackMax", feedbackMax, Range{0, 0.99});
+        v.field("historyFilter", historyFilter, historyFilterNames());
         v.require(feedbackMin <= feedbackMax, "feedbackMin", "must not exceed feedbackMax");
     }
 };

@@ -8,7 +8,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <set>
 #include <string>
 #include <vector>
@@ -30,6 +32,24 @@ inline std::string typeName(const json& j) {
     return j.type_name();
 }
 
+/// A value as JSON text for a message. Never throws: bytes that are not UTF-8 (a `--set` value is raw
+/// command-line text) become U+FFFD instead of making dump() throw type_error.316.
+inline std::string shown(const json& j) {
+    return j.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+/// `value` as the double whose shortest decimal is the float's own shortest (0.02f is written as 0.02, not
+/// 0.019999999552965164): what a person typed reads back as typed, and reading it gives the same float.
+inline double shortestDecimal(float value) {
+    char text[32];
+    const auto [end, error] = std::to_chars(text, text + sizeof(text), value);
+    if (error != std::errc()) {
+        return double(value);
+    }
+    *end = '\0';
+    return std::strtod(text, nullptr);
+}
+
 /// Writes every field of a settings struct to JSON.
 class JsonWriter {
 public:
@@ -37,17 +57,20 @@ public:
         : mOut(out) {}
 
     void field(std::string_view key, bool& value) { mOut[std::string(key)] = value; }
-    void field(std::string_view key, float& value, Range) { mOut[std::string(key)] = value; }
+    void field(std::string_view key, float& value, Range) { mOut[std::string(key)] = shortestDecimal(value); }
     void field(std::string_view key, int& value, Range) { mOut[std::string(key)] = value; }
     void field(std::string_view key, std::string& value) { mOut[std::string(key)] = value; }
-    void field(std::string_view key, glm::vec2& value, Range) { mOut[std::string(key)] = {value.x, value.y}; }
+    void field(std::string_view key, glm::vec2& value, Range) {
+        mOut[std::string(key)] = {shortestDecimal(value.x), shortestDecimal(value.y)};
+    }
     void field(std::string_view key, glm::vec3& value, Range) {
-        mOut[std::string(key)] = {value.x, value.y, value.z};
+        mOut[std::string(key)] = {shortestDecimal(value.x), shortestDecimal(value.y),
+                                  shortestDecimal(value.z)};
     }
     void field(std::string_view key, CurvePoints& points, Range) {
         json arr = json::array();
         for (const auto& p : points) {
-            arr.push_back({p.x, p.y});
+            arr.push_back({shortestDecimal(p.x), shortestDecimal(p.y)});
         }
         mOut[std::string(key)] = arr;
     }
@@ -137,14 +160,14 @@ public:
             const std::string at = fmt::format("{}[{}]", key, i);
             if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number()) {
                 add(SettingsIssueCode::WrongType, at,
-                    fmt::format("expected [x, y] numbers, got {}", p.dump()));
+                    fmt::format("expected [x, y] numbers, got {}", shown(p)));
                 return;
             }
             const double x = p[0].get<double>(), y = p[1].get<double>();
             if (!std::isfinite(x) || !std::isfinite(y) || x < range.min || x > range.max || y < range.min ||
                 y > range.max) {
                 add(SettingsIssueCode::OutOfRange, at,
-                    fmt::format("{} has a value outside [{}, {}]", p.dump(), range.min, range.max));
+                    fmt::format("{} has a value outside [{}, {}]", shown(p), range.min, range.max));
                 return;
             }
             parsed.emplace_back(static_cast<float>(x), static_cast<float>(y));
@@ -230,7 +253,7 @@ private:
     }
     void wrongType(std::string_view key, const json& j, const std::string& expected) {
         add(SettingsIssueCode::WrongType, key,
-            fmt::format("expected {}, got {} {}", expected, typeName(j), j.dump()));
+            fmt::format("expected {}, got {} {}", expected, typeName(j), shown(j)));
     }
     bool number(std::string_view key, const json& j, Range range, double& out) {
         if (!j.is_number()) {
@@ -240,7 +263,7 @@ private:
         out = j.get<double>();
         if (!std::isfinite(out) || out < range.min || out > range.max) {
             add(SettingsIssueCode::OutOfRange, key,
-                fmt::format("{} is outside [{}, {}]", j.dump(), range.min, range.max));
+                fmt::format("{} is outside [{}, {}]", shown(j), range.min, range.max));
             return false;
         }
         return true;

@@ -38,7 +38,8 @@ struct Range {
     X(OutOfRange, "value out of range")                                                                      \
     X(BadEnum, "value not among the allowed names")                                                          \
     X(Constraint, "values break a rule between fields")                                                      \
-    X(BadOverride, "a --set override is not of the form path=value")
+    X(BadOverride, "a --set override is not of the form path=value")                                         \
+    X(InvalidUtf8, "the text is not valid UTF-8")
 
 enum class SettingsIssueCode {
 #define PHOTOPIC_X(name, text) name,

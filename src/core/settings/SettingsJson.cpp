@@ -40,6 +40,16 @@ std::string_view issueText(SettingsIssueCode code) {
     return "";
 }
 
+std::string escapeInvalidUtf8(std::string_view text) {
+    std::string out;
+    while (const auto bad = invalidUtf8Offset(text)) {
+        out += text.substr(0, *bad);
+        out += fmt::format("\\x{:02x}", static_cast<unsigned char>(text[*bad]));
+        text.remove_prefix(*bad + 1);
+    }
+    return out + std::string(text);
+}
+
 std::vector<SettingsIssue> readDocument(const json& doc, Settings& settings) {
     std::vector<SettingsIssue> issues;
     if (!doc.is_object()) {
@@ -51,7 +61,7 @@ std::vector<SettingsIssue> readDocument(const json& doc, Settings& settings) {
         if (!v->is_number_integer() || v->get<long long>() != kSettingsVersion) {
             issues.push_back({SettingsIssueCode::BadVersion, "version",
                               fmt::format("version {} is not supported (this build reads version {})",
-                                          v->dump(), kSettingsVersion)});
+                                          shown(*v), kSettingsVersion)});
             return issues;
         }
     }
@@ -90,20 +100,58 @@ std::string formatSettingsIssues(const std::vector<SettingsIssue>& issues) {
     return out;
 }
 
+std::optional<std::size_t> invalidUtf8Offset(std::string_view text) {
+    const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+    std::size_t i = 0;
+    while (i < text.size()) {
+        const unsigned char lead = byte(i);
+        std::size_t length = 0;
+        unsigned char low = 0x80; // bounds of the second byte (they exclude overlong forms and surrogates)
+        unsigned char high = 0xbf;
+        if (lead < 0x80) {
+            ++i;
+            continue;
+        } else if (lead >= 0xc2 && lead <= 0xdf) {
+            length = 2;
+        } else if (lead >= 0xe0 && lead <= 0xef) {
+            length = 3;
+            low = lead == 0xe0 ? 0xa0 : 0x80;
+            high = lead == 0xed ? 0x9f : 0xbf;
+        } else if (lead >= 0xf0 && lead <= 0xf4) {
+            length = 4;
+            low = lead == 0xf0 ? 0x90 : 0x80;
+            high = lead == 0xf4 ? 0x8f : 0xbf;
+        } else {
+            return i;
+        }
+        if (i + length > text.size() || byte(i + 1) < low || byte(i + 1) > high) {
+            return i;
+        }
+        for (std::size_t k = 2; k < length; ++k) {
+            if (byte(i + k) < 0x80 || byte(i + k) > 0xbf) {
+                return i;
+            }
+        }
+        i += length;
+    }
+    return std::nullopt;
+}
+
 std::vector<SettingsIssue> readSettingsJson(std::string_view text, Settings& settings) {
-    json doc;
+    // nlohmann's exceptions all derive from json::exception: a parse error, but also out_of_range.406 for a
+    // number beyond double range (1e400). One catch of the base keeps every one of them inside the issues.
     try {
-        doc = json::parse(text);
-    } catch (const json::parse_error& e) {
+        const json doc = json::parse(text);
+        // Read into a copy so a document with issues leaves `settings` exactly as it was.
+        Settings candidate = settings;
+        auto issues = readDocument(doc, candidate);
+        if (issues.empty()) {
+            settings = std::move(candidate);
+        }
+        return issues;
+    } catch (const json::exception& e) {
         return {{SettingsIssueCode::ParseError, "", e.what()}};
     }
-    // Read into a copy so a document with issues leaves `settings` exactly as it was.
-    Settings candidate = settings;
-    auto issues = readDocument(doc, candidate);
-    if (issues.empty()) {
-        settings = std::move(candidate);
-    }
-    return issues;
 }
 
 Settings loadSettingsFile(const std::filesystem::path& file, Settings base) {
@@ -125,7 +173,8 @@ json settingsToJsonValue(const Settings& settings) {
 }
 
 std::string settingsToJson(const Settings& settings) {
-    return settingsToJsonValue(settings).dump(2) + "\n";
+    // A string field set through the API may hold bytes that are not UTF-8: write U+FFFD rather than throw.
+    return settingsToJsonValue(settings).dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 namespace settings_json {
@@ -156,19 +205,30 @@ bool parseAssignment(std::string_view assignment, json& patch) {
 } // namespace settings_json
 
 void applySettingsOverride(Settings& settings, std::string_view assignment) {
-    const std::string source = fmt::format("--set {}", assignment);
-    // Build {"postEffects": {"a": {"b": value}}} and read it like a file, so errors carry the same paths.
-    json patch;
-    if (!parseAssignment(assignment, patch)) {
-        throw SettingsError(source, {{SettingsIssueCode::BadOverride, std::string(assignment),
-                                      "expected path=value, e.g. tonemapping.mode=agx"}});
+    // Command-line text is raw bytes: say so when it is not UTF-8 (JSON strings must be), and print it with
+    // \xNN in place of the bad bytes so the message itself stays valid text.
+    const std::string source = fmt::format("--set {}", escapeInvalidUtf8(assignment));
+    if (const auto bad = invalidUtf8Offset(assignment)) {
+        throw SettingsError(source, {{SettingsIssueCode::InvalidUtf8, "",
+                                      fmt::format("at byte {} (0x{:02x}); settings text must be UTF-8", *bad,
+                                                  static_cast<unsigned char>(assignment[*bad]))}});
     }
-    Settings candidate = settings;
-    auto issues = readDocument(json{{"postEffects", patch}}, candidate);
-    if (!issues.empty()) {
-        throw SettingsError(source, std::move(issues));
+    try {
+        // Build {"postEffects": {"a": {"b": value}}} and read it like a file, so errors carry the same paths.
+        json patch;
+        if (!parseAssignment(assignment, patch)) {
+            throw SettingsError(source, {{SettingsIssueCode::BadOverride, std::string(assignment),
+                                          "expected path=value, e.g. tonemapping.mode=agx"}});
+        }
+        Settings candidate = settings;
+        auto issues = readDocument(json{{"postEffects", patch}}, candidate);
+        if (!issues.empty()) {
+            throw SettingsError(source, std::move(issues));
+        }
+        settings = std::move(candidate);
+    } catch (const json::exception& e) {
+        throw SettingsError(source, {{SettingsIssueCode::ParseError, "", e.what()}});
     }
-    settings = std::move(candidate);
 }
 
 std::vector<SettingsIssue> validateSettings(const Settings& settings) {

@@ -6,7 +6,9 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
@@ -26,7 +28,8 @@ private:
 };
 
 /// Reads JSON text over `settings` (keys that are absent keep their current values). Returns the issues
-/// found; fields with issues are left unchanged.
+/// found; fields with issues are left unchanged. Never throws for any text: JSON the parser rejects (bad
+/// syntax, bad UTF-8, a number beyond double range) is a ParseError issue.
 std::vector<SettingsIssue> readSettingsJson(std::string_view text, Settings& settings);
 
 /// Loads a file over `base` (the defaults unless given); throws SettingsError naming the file and every
@@ -44,6 +47,9 @@ void applySettingsOverride(Settings& settings, std::string_view assignment);
 /// Every issue `settings` has (a value out of its range, a NaN), by JSON path: what loading the same values
 /// from JSON would report. Empty when the settings can be used.
 std::vector<SettingsIssue> validateSettings(const Settings& settings);
+/// The offset of the first byte that does not belong to well-formed UTF-8 (RFC 3629: no overlong forms, no
+/// surrogates, nothing above U+10FFFF), or nullopt when all of `text` is UTF-8.
+[[nodiscard]] std::optional<std::size_t> invalidUtf8Offset(std::string_view text);
 
 /// "postEffects.a.b: message (allowed ...)" lines, one per issue.
 std::string formatSettingsIssues(const std::vector<SettingsIssue>& issues);

@@ -22,6 +22,8 @@ BloomPass::BloomPass()
     : mPrefilter(makeGraphicsProgram(kVertex, kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}})))
     , mDownsample(makeGraphicsProgram(kVertex, kDown, bindingDefines()))
     , mUpsample(makeGraphicsProgram(kVertex, kUp, bindingDefines()))
+    , mDownsampleParameters("bloom downsample parameters")
+    , mUpsampleParameters("bloom upsample parameters")
     , mVao(VertexArray::create("bloom fullscreen")) {}
 
 std::span<const ResourceUse> BloomPass::uses() const {
@@ -93,13 +95,14 @@ const Texture& BloomPass::execute(const Inputs& in) {
         const float step = i == 0 ? float(in.firstDivisor) * 0.5f : 1.0f;
         ScopedGpuTimer timer(in.timers, i == 0 ? "bloom prefilter" : fmt::format("bloom down {}", i),
                              texelBytes(se, source.format()) + texelBytes(te, kFormat));
-        setUniform(program, "uTargetTexel", 1.0f / float(te.width), 1.0f / float(te.height));
-        setUniform(program, "uSourceStep", step / float(se.width), step / float(se.height));
+        BloomDownsampleParameters parameters{.targetTexel = {1.0f / float(te.width), 1.0f / float(te.height)},
+                                             .sourceStep = {step / float(se.width), step / float(se.height)}};
         if (i == 0) {
-            const glm::vec4 knee = bloomKneeConstants(in.settings->threshold, in.settings->knee);
-            setUniform(program, "uThreshold", in.settings->mode == BloomMode::Threshold ? 1 : 0);
-            setUniform(program, "uKnee", knee.x, knee.y, knee.z, knee.w);
+            parameters.threshold = in.settings->mode == BloomMode::Threshold ? 1 : 0;
+            parameters.knee = bloomKneeConstants(in.settings->threshold, in.settings->knee);
         }
+        mDownsampleParameters.update(parameters);
+        mDownsampleParameters.bind(kBindingParameters);
         program.use();
         glBindTextureUnit(0, source.id());
         mDownFbo[std::size_t(i)].bind();
@@ -113,9 +116,10 @@ const Texture& BloomPass::execute(const Inputs& in) {
         const Extent ce = coarse.extent(), te = fine.extent();
         ScopedGpuTimer timer(in.timers, fmt::format("bloom up {}", i),
                              texelBytes(ce, kFormat) + 2 * texelBytes(te, kFormat));
-        setUniform(mUpsample, "uTargetTexel", 1.0f / float(te.width), 1.0f / float(te.height));
-        setUniform(mUpsample, "uCoarseTexel", 1.0f / float(ce.width), 1.0f / float(ce.height));
-        setUniform(mUpsample, "uRadius", in.settings->radius);
+        mUpsampleParameters.update({.targetTexel = {1.0f / float(te.width), 1.0f / float(te.height)},
+                                    .coarseTexel = {1.0f / float(ce.width), 1.0f / float(ce.height)},
+                                    .radius = in.settings->radius});
+        mUpsampleParameters.bind(kBindingParameters);
         mUpsample.use();
         glBindTextureUnit(0, coarse.id());
         glBindTextureUnit(1, fine.id());

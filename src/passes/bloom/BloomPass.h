@@ -7,9 +7,38 @@
 #include "core/settings/BloomSettings.h"
 #include "passes/FramePass.h"
 
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec4.hpp>
 #include <vector>
 
 namespace photopic {
+
+/// std140 mirror of bloom_downsample.frag.glsl's parameter block (the prefilter and the plain downsample
+/// share it; only the prefilter reads threshold and knee). Rewritten before each level's draw.
+struct BloomDownsampleParameters {
+    float targetTexel[2] = {0.0f, 0.0f}; ///< 1 / target size
+    float sourceStep[2] = {0.0f,
+                           0.0f}; ///< one source texel in UV (two when level 0 is a quarter of the scene)
+    std::int32_t threshold = 0;   ///< 1: threshold mode
+    std::int32_t padding[3] = {};
+    glm::vec4 knee{0.0f}; ///< T, T - knee, 2 knee, 1 / (4 knee)
+};
+static_assert(sizeof(BloomDownsampleParameters) == 48);
+static_assert(offsetof(BloomDownsampleParameters, sourceStep) == 8 &&
+              offsetof(BloomDownsampleParameters, threshold) == 16 &&
+              offsetof(BloomDownsampleParameters, knee) == 32);
+
+/// std140 mirror of bloom_upsample.frag.glsl's parameter block, rewritten before each level's draw.
+struct BloomUpsampleParameters {
+    float targetTexel[2] = {0.0f, 0.0f}; ///< 1 / size of level i
+    float coarseTexel[2] = {0.0f, 0.0f}; ///< 1 / size of level i + 1
+    float radius = 0.0f;
+    float padding[3] = {};
+};
+static_assert(sizeof(BloomUpsampleParameters) == 32);
+static_assert(offsetof(BloomUpsampleParameters, coarseTexel) == 8 &&
+              offsetof(BloomUpsampleParameters, radius) == 16);
 
 class BloomPass final : public FramePass {
 public:
@@ -40,6 +69,8 @@ private:
     Program mPrefilter; ///< level 0: exposure, Karis average, threshold
     Program mDownsample;
     Program mUpsample;
+    ParameterBlock<BloomDownsampleParameters> mDownsampleParameters;
+    ParameterBlock<BloomUpsampleParameters> mUpsampleParameters;
     VertexArray mVao;
     Extent mExtent;
     int mDivisor = 0;

@@ -13,12 +13,14 @@
 #endif
 
 layout(binding = 0) uniform sampler2D uSource;
-uniform vec2 uTargetTexel; // 1 / target size
-uniform vec2 uSourceStep;  // one source texel in UV (two when level 0 is a quarter of the scene)
-#ifdef PREFILTER
-uniform int uThreshold; // 1: threshold mode
-uniform vec4 uKnee;     // T, T - knee, 2 knee, 1 / (4 knee)
-#endif
+// Mirrors photopic::BloomDownsampleParameters (passes/bloom/BloomPass.h), std140. The prefilter and the plain
+// downsample share the layout; only the prefilter reads uThreshold and uKnee.
+layout(std140, binding = BINDING_PARAMETERS) uniform BloomDownsampleParameters {
+    vec2 uTargetTexel; // 1 / target size
+    vec2 uSourceStep;  // one source texel in UV (two when level 0 is a quarter of the scene)
+    int uThreshold;    // 1: threshold mode
+    vec4 uKnee;        // T, T - knee, 2 knee, 1 / (4 knee)
+};
 
 layout(location = 0) out vec4 oColor;
 

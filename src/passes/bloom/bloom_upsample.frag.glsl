@@ -6,9 +6,12 @@
 // around without adding any: what `energy-conserving` needs and what keeps `threshold` mode predictable.
 layout(binding = 0) uniform sampler2D uCoarse; // result of level i + 1 (or the smallest downsampled level)
 layout(binding = 1) uniform sampler2D uFine;   // downsampled level i
-uniform vec2 uTargetTexel;                     // 1 / size of level i
-uniform vec2 uCoarseTexel;                     // 1 / size of level i + 1
-uniform float uRadius;
+// Mirrors photopic::BloomUpsampleParameters (passes/bloom/BloomPass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform BloomUpsampleParameters {
+    vec2 uTargetTexel; // 1 / size of level i
+    vec2 uCoarseTexel; // 1 / size of level i + 1
+    float uRadius;
+};
 
 layout(location = 0) out vec4 oColor;
 

@@ -39,6 +39,8 @@ bool isInputView(DebugView view) {
 DebugViewPass::DebugViewPass()
     : mSceneProgram(makeGraphicsProgram(kVertex, "passes/debug/debug_view.frag.glsl", bindingDefines()))
     , mInputProgram(makeGraphicsProgram(kVertex, "passes/debug/debug_inputs.frag.glsl", bindingDefines()))
+    , mSceneParameters("debug scene view parameters")
+    , mInputParameters("debug input view parameters")
     , mVao(VertexArray::create("debug view")) {}
 
 std::span<const ResourceUse> DebugViewPass::uses() const {
@@ -86,14 +88,15 @@ void DebugViewPass::drawSceneView(const FrameContext& ctx, const FrameResources&
         }
     }
     const Program& p = mSceneProgram;
-    setUniform(p, "uView", int(mView));
-    setUniform(p, "uHasBloom", bloom ? 1 : 0);
-    setUniform(p, "uHasMask", mask ? 1 : 0);
-    setUniform(p, "uMeteringMode", int(ae.metering));
-    setUniform(p, "uLog2Min", ae.histogramLog2Min);
-    setUniform(p, "uLog2Max", ae.histogramLog2Max);
-    setUniform(p, "uSpotUv", ae.spot.u, ae.spot.v);
-    setUniform(p, "uSpotRadius", ae.spot.radius);
+    mSceneParameters.update({.view = int(mView),
+                             .hasBloom = bloom ? 1 : 0,
+                             .hasMask = mask ? 1 : 0,
+                             .meteringMode = int(ae.metering),
+                             .log2Min = ae.histogramLog2Min,
+                             .log2Max = ae.histogramLog2Max,
+                             .spotUv = {ae.spot.u, ae.spot.v},
+                             .spotRadius = ae.spot.radius});
+    mSceneParameters.bind(kBindingParameters);
     p.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
                      resources.buffer(Resource::ExposureState)->id());
@@ -111,16 +114,18 @@ void DebugViewPass::drawInputView(const FrameContext& ctx, const FrameResources&
                                                           : Resource::TaaDebug;
     const Program& p = mInputProgram;
     const Camera* camera = ctx.inputs.camera;
-    setUniform(p, "uView", int(mView));
-    setUniform(p, "uOctahedral", ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 1 : 0);
-    setUniform(p, "uNear", camera ? camera->nearPlane : 0.1f);
-    setUniform(p, "uFar", camera ? camera->farPlane : 1000.0f);
+    mInputParameters.update({.view = int(mView),
+                             .octahedral = ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 1 : 0,
+                             .nearPlane = camera ? camera->nearPlane : 0.1f,
+                             .farPlane = camera ? camera->farPlane : 1000.0f});
+    mInputParameters.bind(kBindingParameters);
     p.use();
     glBindTextureUnit(0, resources.texture(source)->id());
 }
 
 HistogramOverlayPass::HistogramOverlayPass()
     : mProgram(makeGraphicsProgram(kVertex, "passes/debug/debug_histogram.frag.glsl", bindingDefines()))
+    , mParameters("histogram overlay parameters")
     , mVao(VertexArray::create("histogram overlay")) {}
 
 std::span<const ResourceUse> HistogramOverlayPass::uses() const {
@@ -145,10 +150,11 @@ void HistogramOverlayPass::execute(FrameContext& ctx, FrameResources& resources)
     const Program& p = mProgram;
     const int width = std::min(kPanelMaxWidth, std::max(e.width - 2 * kPanelMargin, 1));
     const int height = std::min(kPanelMaxHeight, std::max(e.height / 3, 1));
-    setUniform(p, "uPanel", float(kPanelMargin), float(kPanelMargin), float(width), float(height));
-    setUniform(p, "uLog2Min", ae.histogramLog2Min);
-    setUniform(p, "uLog2Max", ae.histogramLog2Max);
-    setUniform(p, "uKeyValue", ae.keyValue);
+    mParameters.update({.panel = {float(kPanelMargin), float(kPanelMargin), float(width), float(height)},
+                        .log2Min = ae.histogramLog2Min,
+                        .log2Max = ae.histogramLog2Max,
+                        .keyValue = ae.keyValue});
+    mParameters.bind(kBindingParameters);
     p.use();
     glBindTextureUnit(0, resources.texture(Resource::DisplayColor)->id());
     glBindVertexArray(mVao.id());

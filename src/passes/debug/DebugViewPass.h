@@ -7,7 +7,51 @@
 #include "core/Settings.h"
 #include "passes/FramePass.h"
 
+#include <cstddef>
+#include <cstdint>
+
 namespace photopic {
+
+/// std140 mirror of debug_view.frag.glsl's parameter block (the scene views).
+struct DebugSceneViewParameters {
+    std::int32_t view = 0; ///< DebugView
+    std::int32_t hasBloom = 0;
+    std::int32_t hasMask = 0;
+    std::int32_t meteringMode = 0;
+    float log2Min = 0.0f;
+    float log2Max = 0.0f;
+    float spotUv[2] = {0.5f, 0.5f};
+    float spotRadius = 0.0f;
+    float padding[3] = {};
+};
+static_assert(sizeof(DebugSceneViewParameters) == 48);
+static_assert(offsetof(DebugSceneViewParameters, log2Min) == 16 &&
+              offsetof(DebugSceneViewParameters, spotUv) == 24 &&
+              offsetof(DebugSceneViewParameters, spotRadius) == 32);
+
+/// std140 mirror of debug_inputs.frag.glsl's parameter block (the input views).
+struct DebugInputViewParameters {
+    std::int32_t view = 0; ///< DebugView
+    std::int32_t octahedral = 0;
+    float nearPlane = 0.1f;
+    float farPlane = 1000.0f;
+};
+static_assert(sizeof(DebugInputViewParameters) == 16);
+static_assert(offsetof(DebugInputViewParameters, octahedral) == 4 &&
+              offsetof(DebugInputViewParameters, nearPlane) == 8 &&
+              offsetof(DebugInputViewParameters, farPlane) == 12);
+
+/// std140 mirror of debug_histogram.frag.glsl's parameter block.
+struct HistogramOverlayParameters {
+    float panel[4] = {}; ///< x0, y0, width, height in pixels (GL window coordinates, origin bottom-left)
+    float log2Min = 0.0f;
+    float log2Max = 0.0f;
+    float keyValue = 0.0f;
+    float padding = 0.0f;
+};
+static_assert(sizeof(HistogramOverlayParameters) == 32);
+static_assert(offsetof(HistogramOverlayParameters, log2Min) == 16 &&
+              offsetof(HistogramOverlayParameters, keyValue) == 24);
 
 class DebugViewPass final : public FramePass {
 public:
@@ -32,6 +76,8 @@ private:
 
     Program mSceneProgram;
     Program mInputProgram;
+    ParameterBlock<DebugSceneViewParameters> mSceneParameters;
+    ParameterBlock<DebugInputViewParameters> mInputParameters;
     VertexArray mVao;
     DebugView mView = DebugView::None;
 };
@@ -48,6 +94,7 @@ public:
 
 private:
     Program mProgram;
+    ParameterBlock<HistogramOverlayParameters> mParameters;
     VertexArray mVao;
 };
 

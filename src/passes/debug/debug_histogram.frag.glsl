@@ -10,10 +10,13 @@
 
 layout(binding = 0) uniform sampler2D uDisplay;
 
-uniform vec4 uPanel; // x0, y0, width, height in pixels (GL window coordinates, origin bottom-left)
-uniform float uLog2Min;
-uniform float uLog2Max;
-uniform float uKeyValue;
+// Mirrors photopic::HistogramOverlayParameters (passes/debug/DebugViewPass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform HistogramOverlayParameters {
+    vec4 uPanel; // x0, y0, width, height in pixels (GL window coordinates, origin bottom-left)
+    float uLog2Min;
+    float uLog2Max;
+    float uKeyValue;
+};
 
 layout(location = 0) out vec4 oColor;
 

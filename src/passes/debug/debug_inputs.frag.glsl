@@ -4,16 +4,51 @@
 
 layout(binding = 0) uniform sampler2D uInput;
 
-uniform int uView; // DebugView: 7 depth, 8 normals, 9 motion, 10 TAA history weight, 11 disocclusion
-uniform int uOctahedral;
-uniform float uNear;
-uniform float uFar;
+// Mirrors photopic::DebugInputViewParameters (passes/debug/DebugViewPass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform DebugInputViewParameters {
+    int uView; // DebugView: 7 depth, 8 normals, 9 motion, 10 TAA history weight, 11 disocclusion
+    int uOctahedral;
+    float uNear;
+    float uFar;
+};
 
 layout(location = 0) out vec4 oColor;
+
+float segmentDistance(vec2 q, vec2 a, vec2 b) {
+    vec2 ab = b - a;
+    float t = clamp(dot(q - a, ab) / max(dot(ab, ab), 1e-6), 0.0, 1.0);
+    return length(q - (a + t * ab));
+}
 
 vec3 hsvToRgb(float h, float s, float v) {
     vec3 k = clamp(abs(mod(h * 6.0 + vec3(0.0, 4.0, 2.0), 6.0) - 3.0) - 1.0, 0.0, 1.0);
     return v * mix(vec3(1.0), k, s);
+}
+
+const int kArrowCell = 16;
+
+// 1 on the arrow of the motion of `p`'s cell (shaft and a two-stroke head), 0 elsewhere.
+float arrowCoverage(ivec2 p, ivec2 size) {
+    ivec2 cell = p / kArrowCell;
+    vec2 centre = vec2(cell * kArrowCell) + 0.5 * float(kArrowCell);
+    ivec2 at = clamp(ivec2(centre), ivec2(0), size - 1);
+    vec2 motion = motionUvToPixels(texelFetch(uInput, at, 0).rg, size);
+    float len = length(motion);
+    if (!(len > 0.05)) {
+        return 0.0;
+    }
+    vec2 arrow = motion * min(0.8 * float(kArrowCell) / max(len, 8.0), 4.0);
+    vec2 tip = centre + arrow;
+    vec2 q = vec2(p) + 0.5;
+    // Distance to the shaft and to the head's two strokes (30 degrees back from the tip).
+    vec2 back = -normalize(arrow) * min(4.0, 0.4 * length(arrow) + 1.5);
+    float c30 = 0.8660254, s30 = 0.5;
+    vec2 h1 = vec2(c30 * back.x - s30 * back.y, s30 * back.x + c30 * back.y);
+    vec2 h2 = vec2(c30 * back.x + s30 * back.y, -s30 * back.x + c30 * back.y);
+    float d = segmentDistance(q, centre, tip);
+    d = min(d, segmentDistance(q, tip, tip + h1));
+    d = min(d, segmentDistance(q, tip, tip + h2));
+    return d < 0.6 ? 1.0 : 0.0;
 }
 
 void main() {
@@ -35,6 +70,11 @@ void main() {
         float len = length(pixels);
         float hue = len > 0.0 ? fract(atan(pixels.y, pixels.x) / 6.28318531 + 1.0) : 0.0;
         c = hsvToRgb(hue, 1.0, clamp(len / 8.0, 0.0, 1.0));
+        // An arrow per 16 x 16 cell from the cell's centre along its motion (scaled so that 8 px of motion
+        // spans most of the cell; an arrow shows where the point goes, so it points to current - previous).
+        if (arrowCoverage(p, size) > 0.0) {
+            c = mix(c, vec3(1.0), 0.85);
+        }
     } else if (uView == 10) {
         c = vec3(t.r);
     } else if (uView == 11) {

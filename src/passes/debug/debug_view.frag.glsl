@@ -12,14 +12,17 @@ layout(binding = 0) uniform sampler2D uScene;
 layout(binding = 1) uniform sampler2D uMask;
 layout(binding = 2) uniform sampler2D uBloom;
 
-uniform int uView; // DebugView: 1 exposure, 2 luma, 3 ev, 4 metering, 6 bloom
-uniform int uHasBloom;
-uniform int uHasMask;
-uniform int uMeteringMode;
-uniform float uLog2Min;
-uniform float uLog2Max;
-uniform vec2 uSpotUv;
-uniform float uSpotRadius;
+// Mirrors photopic::DebugSceneViewParameters (passes/debug/DebugViewPass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform DebugSceneViewParameters {
+    int uView; // DebugView: 1 exposure, 2 luma, 3 ev, 4 metering, 6 bloom
+    int uHasBloom;
+    int uHasMask;
+    int uMeteringMode;
+    float uLog2Min;
+    float uLog2Max;
+    vec2 uSpotUv;
+    float uSpotRadius;
+};
 
 layout(location = 0) out vec4 oColor;
 

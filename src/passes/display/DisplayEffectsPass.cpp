@@ -7,6 +7,7 @@ namespace photopic {
 DisplayEffectsPass::DisplayEffectsPass()
     : mProgram(makeGraphicsProgram("passes/common/fullscreen.vert.glsl",
                                    "passes/display/display_effects.frag.glsl", bindingDefines()))
+    , mParameters("display effects parameters")
     , mVao(VertexArray::create("display effects fullscreen"))
     , mBlack({.extent = {1, 1}, .format = GL_RGBA16F, .debugName = "black texel"}) {
     const float black[4] = {0, 0, 0, 1};
@@ -45,20 +46,20 @@ void DisplayEffectsPass::execute(FrameContext& ctx, FrameResources& resources) {
     ScopedGpuTimer timer(ctx.timers, "flare + dazzle + vignette + grain", bytes);
     const VignetteSettings& v = s.vignette;
     const bool grain = ctx.tier.grain && s.grain.enabled;
-    setUniform(mProgram, "uTexel", 1.0f / float(e.width), 1.0f / float(e.height));
-    setUniform(mProgram, "uChromaticAberration",
-               v.enabled && ctx.tier.chromaticAberration ? v.chromaticAberration : 0.0f);
-    setUniform(mProgram, "uVignette", v.enabled ? 1 : 0);
-    setUniform(mProgram, "uVignetteIntensity", v.intensity);
-    setUniform(mProgram, "uVignetteFalloff", v.falloff);
-    setUniform(mProgram, "uFlare", flare ? 1 : 0);
-    setUniform(mProgram, "uDazzle", s.dazzle.enabled ? 1 : 0);
-    setUniform(mProgram, "uDazzleStrength", s.dazzle.strength);
-    setUniform(mProgram, "uDazzleRangeEV", s.dazzle.rangeEV);
-    setUniform(mProgram, "uGrain", grain ? 1 : 0);
-    setUniform(mProgram, "uGrainIntensity", s.grain.intensity);
-    glProgramUniform1ui(mProgram.id(), glGetUniformLocation(mProgram.id(), "uFrame"),
-                        GLuint(ctx.time.frameIndex));
+    mParameters.update(
+        {.texel = {1.0f / float(e.width), 1.0f / float(e.height)},
+         .chromaticAberration = v.enabled && ctx.tier.chromaticAberration ? v.chromaticAberration : 0.0f,
+         .flare = flare ? 1 : 0,
+         .dazzle = s.dazzle.enabled ? 1 : 0,
+         .dazzleStrength = s.dazzle.strength,
+         .dazzleRangeEV = s.dazzle.rangeEV,
+         .vignette = v.enabled ? 1 : 0,
+         .vignetteIntensity = v.intensity,
+         .vignetteFalloff = v.falloff,
+         .grain = grain ? 1 : 0,
+         .grainIntensity = s.grain.intensity,
+         .frame = std::uint32_t(ctx.time.frameIndex)});
+    mParameters.bind(kBindingParameters);
     mProgram.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
                      resources.buffer(Resource::ExposureState)->id());

@@ -5,7 +5,33 @@
 
 #include "passes/FramePass.h"
 
+#include <cstddef>
+#include <cstdint>
+
 namespace photopic {
+
+/// std140 mirror of display_effects.frag.glsl's parameter block.
+struct DisplayEffectsParameters {
+    float texel[2] = {0.0f, 0.0f}; ///< 1 / size
+    float chromaticAberration = 0.0f;
+    std::int32_t flare = 0;
+    std::int32_t dazzle = 0;
+    float dazzleStrength = 0.0f;
+    float dazzleRangeEV = 0.0f;
+    std::int32_t vignette = 0;
+    float vignetteIntensity = 0.0f;
+    float vignetteFalloff = 0.0f;
+    std::int32_t grain = 0;
+    float grainIntensity = 0.0f;
+    std::uint32_t frame = 0;
+    std::uint32_t padding[3] = {};
+};
+static_assert(sizeof(DisplayEffectsParameters) == 64);
+static_assert(offsetof(DisplayEffectsParameters, chromaticAberration) == 8 &&
+              offsetof(DisplayEffectsParameters, dazzle) == 16 &&
+              offsetof(DisplayEffectsParameters, vignette) == 28 &&
+              offsetof(DisplayEffectsParameters, grainIntensity) == 44 &&
+              offsetof(DisplayEffectsParameters, frame) == 48);
 
 class DisplayEffectsPass final : public FramePass {
 public:
@@ -18,6 +44,7 @@ public:
 
 private:
     Program mProgram;
+    ParameterBlock<DisplayEffectsParameters> mParameters;
     VertexArray mVao;
     Texture mBlack; ///< bound where an optional input is absent, so every sampler has a complete texture
 };

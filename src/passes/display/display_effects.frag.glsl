@@ -18,18 +18,21 @@
 layout(binding = 0) uniform sampler2D uDisplay; // RGBA8, sRGB-encoded
 layout(binding = 1) uniform sampler2D uFlareTex;  // exposed HDR flare, or a black texel
 layout(binding = 2) uniform sampler2D uGlareTex; // exposed HDR bloom, or a black texel
-uniform vec2 uTexel;
-uniform float uChromaticAberration;
-uniform int uFlare;
-uniform int uDazzle;
-uniform float uDazzleStrength;
-uniform float uDazzleRangeEV;
-uniform int uVignette;
-uniform float uVignetteIntensity;
-uniform float uVignetteFalloff;
-uniform int uGrain;
-uniform float uGrainIntensity;
-uniform uint uFrame;
+// Mirrors photopic::DisplayEffectsParameters (passes/display/DisplayEffectsPass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform DisplayEffectsParameters {
+    vec2 uTexel;
+    float uChromaticAberration;
+    int uFlare;
+    int uDazzle;
+    float uDazzleStrength;
+    float uDazzleRangeEV;
+    int uVignette;
+    float uVignetteIntensity;
+    float uVignetteFalloff;
+    int uGrain;
+    float uGrainIntensity;
+    uint uFrame;
+};
 
 layout(location = 0) out vec4 oColor;
 

@@ -9,12 +9,56 @@
 #include "passes/FramePass.h"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <deque>
 #include <functional>
 #include <vector>
 
 namespace photopic {
+
+/// std140 mirror of exposure_adapt.comp.glsl's parameter block.
+struct ExposureParameters {
+    /// One uCurve element: std140 pads each vec2 of an array to 16 bytes.
+    struct CurvePoint {
+        float x = 0.0f;
+        float y = 0.0f;
+        float padding[2] = {};
+    };
+    std::int32_t autoEnabled = 0;
+    std::int32_t metered = 0;        ///< 1: metering ran for exposure this frame (a reading may exist)
+    std::int32_t histogramBuilt = 0; ///< 1: the bins hold this frame's histogram
+    std::int32_t meteringMode = 0;   ///< core MeteringMode
+    std::int32_t reset = 0;          ///< 1: resetExposure() or resize: the next valid reading snaps
+    float dt = 0.0f;
+    float manualEV = 0.0f;
+    float keyValue = 0.0f;
+    float compensationEV = 0.0f;
+    float minEV = 0.0f;
+    float maxEV = 0.0f;
+    float padding0 = 0.0f;
+    CurvePoint curve[kMaxCompensationCurvePoints] = {};
+    std::int32_t curveCount = 0;
+    std::int32_t adaptation = 0;
+    float tauBrighten = 0.0f;
+    float tauDarken = 0.0f;
+    float speedUp = 0.0f;
+    float speedDown = 0.0f;
+    float transitionEV = 0.0f;
+    float deadbandEV = 0.0f;
+    float maxDt = 0.0f;
+    float log2Min = 0.0f;
+    float log2Max = 0.0f;
+    float lowPercent = 0.0f;
+    float highPercent = 0.0f;
+    float padding1[3] = {};
+};
+static_assert(kMaxCompensationCurvePoints == 16, "exposure_adapt.comp.glsl declares uCurve[16]");
+static_assert(sizeof(ExposureParameters::CurvePoint) == 16);
+static_assert(sizeof(ExposureParameters) == 368);
+static_assert(offsetof(ExposureParameters, reset) == 16 && offsetof(ExposureParameters, maxEV) == 40 &&
+              offsetof(ExposureParameters, curve) == 48 && offsetof(ExposureParameters, curveCount) == 304 &&
+              offsetof(ExposureParameters, maxDt) == 336 && offsetof(ExposureParameters, highPercent) == 352);
 
 /// One frame's exposure as the GPU computed it, read back through the ring (never blocking the frame).
 struct ExposureTelemetry {
@@ -80,6 +124,7 @@ private:
     void keep(const ExposureTelemetry& record);
 
     Program mProgram;
+    ParameterBlock<ExposureParameters> mParameters;
     Buffer mState;
     Buffer mRecord; ///< GpuExposureState + bins, copied on the GPU, then into the ring
     ReadbackRing mRing;

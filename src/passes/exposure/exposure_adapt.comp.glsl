@@ -20,32 +20,35 @@ const int kAdaptExponential = 0;
 const int kAdaptSpeed = 1;
 const int kAdaptHybrid = 2;
 
-uniform int uAutoEnabled;
-uniform int uMetered;        // 1: metering ran for exposure this frame (a reading may exist)
-uniform int uHistogramBuilt; // 1: gBins holds this frame's histogram
-uniform int uMeteringMode;   // core MeteringMode
-uniform int uReset;          // 1: resetExposure() or resize: the next valid reading snaps
-uniform float uDt;
-uniform float uManualEV;
+// Mirrors photopic::ExposureParameters (passes/exposure/ExposurePass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform ExposureParameters {
+    int uAutoEnabled;
+    int uMetered;        // 1: metering ran for exposure this frame (a reading may exist)
+    int uHistogramBuilt; // 1: gBins holds this frame's histogram
+    int uMeteringMode;   // core MeteringMode
+    int uReset;          // 1: resetExposure() or resize: the next valid reading snaps
+    float uDt;
+    float uManualEV;
 
-uniform float uKeyValue;
-uniform float uCompensationEV;
-uniform float uMinEV;
-uniform float uMaxEV;
-uniform vec2 uCurve[16];
-uniform int uCurveCount;
-uniform int uAdaptation;
-uniform float uTauBrighten;
-uniform float uTauDarken;
-uniform float uSpeedUp;
-uniform float uSpeedDown;
-uniform float uTransitionEV;
-uniform float uDeadbandEV;
-uniform float uMaxDt;
-uniform float uLog2Min;
-uniform float uLog2Max;
-uniform float uLowPercent;
-uniform float uHighPercent;
+    float uKeyValue;
+    float uCompensationEV;
+    float uMinEV;
+    float uMaxEV;
+    vec2 uCurve[16]; // std140: each element padded to 16 bytes
+    int uCurveCount;
+    int uAdaptation;
+    float uTauBrighten;
+    float uTauDarken;
+    float uSpeedUp;
+    float uSpeedDown;
+    float uTransitionEV;
+    float uDeadbandEV;
+    float uMaxDt;
+    float uLog2Min;
+    float uLog2Max;
+    float uLowPercent;
+    float uHighPercent;
+};
 
 // core: compensationCurveEV.
 float compensationCurveEV(float x) {

@@ -12,6 +12,7 @@ constexpr ResourceUse kUses[] = {{Resource::DisplayColor, Access::Read},
 FxaaPass::FxaaPass()
     : mProgram(makeGraphicsProgram("passes/common/fullscreen.vert.glsl", "passes/fxaa/fxaa.frag.glsl",
                                    bindingDefines()))
+    , mParameters("fxaa parameters")
     , mVao(VertexArray::create("fxaa fullscreen")) {}
 
 std::span<const ResourceUse> FxaaPass::uses() const {
@@ -26,10 +27,11 @@ void FxaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     const FxaaSettings& s = ctx.settings.fxaa;
     // One RGBA8 read (the 3x3 and the searches hit the cache) and one RGBA8 write.
     ScopedGpuTimer timer(ctx.timers, "fxaa", double(e.width) * e.height * 8.0);
-    setUniform(mProgram, "uTexel", 1.0f / float(e.width), 1.0f / float(e.height));
-    setUniform(mProgram, "uSubpix", s.subpix);
-    setUniform(mProgram, "uEdgeThreshold", s.edgeThreshold);
-    setUniform(mProgram, "uEdgeThresholdMin", s.edgeThresholdMin);
+    mParameters.update({.texel = {1.0f / float(e.width), 1.0f / float(e.height)},
+                        .subpix = s.subpix,
+                        .edgeThreshold = s.edgeThreshold,
+                        .edgeThresholdMin = s.edgeThresholdMin});
+    mParameters.bind(kBindingParameters);
     mProgram.use();
     glBindTextureUnit(0, display.id());
     out.framebuffer().bind();

@@ -4,7 +4,21 @@
 
 #include "passes/FramePass.h"
 
+#include <cstddef>
+
 namespace photopic {
+
+/// std140 mirror of fxaa.frag.glsl's parameter block.
+struct FxaaParameters {
+    float texel[2] = {0.0f, 0.0f}; ///< 1 / size
+    float subpix = 0.75f;
+    float edgeThreshold = 0.166f;
+    float edgeThresholdMin = 0.0833f;
+    float padding[3] = {};
+};
+static_assert(sizeof(FxaaParameters) == 32);
+static_assert(offsetof(FxaaParameters, subpix) == 8 && offsetof(FxaaParameters, edgeThreshold) == 12 &&
+              offsetof(FxaaParameters, edgeThresholdMin) == 16);
 
 class FxaaPass final : public FramePass {
 public:
@@ -18,6 +32,7 @@ public:
 
 private:
     Program mProgram;
+    ParameterBlock<FxaaParameters> mParameters;
     VertexArray mVao;
 };
 

@@ -13,10 +13,13 @@
 #include "passes/common/color.h.glsl"
 
 layout(binding = 0) uniform sampler2D uInput;
-uniform vec2 uTexel; // 1 / size
-uniform float uSubpix;
-uniform float uEdgeThreshold;
-uniform float uEdgeThresholdMin;
+// Mirrors photopic::FxaaParameters (passes/fxaa/FxaaPass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform FxaaParameters {
+    vec2 uTexel; // 1 / size
+    float uSubpix;
+    float uEdgeThreshold;
+    float uEdgeThresholdMin;
+};
 
 layout(location = 0) out vec4 oColor;
 

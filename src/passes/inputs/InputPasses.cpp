@@ -3,21 +3,17 @@
 #include "core/Log.h"
 #include "passes/Bindings.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 namespace photopic {
 
 namespace {
-void setMatrix(const Program& p, const char* name, const glm::mat4& m) {
-    glProgramUniformMatrix4fv(p.id(), glGetUniformLocation(p.id(), name), 1, GL_FALSE, glm::value_ptr(m));
-}
 GLuint groups(int size) {
     return GLuint((size + 7) / 8);
 }
 } // namespace
 
 LinearDepthPass::LinearDepthPass()
-    : mProgram(makeComputeProgram("passes/inputs/linear_depth.comp.glsl", bindingDefines())) {}
+    : mProgram(makeComputeProgram("passes/inputs/linear_depth.comp.glsl", bindingDefines()))
+    , mParameters("linear depth parameters") {}
 
 std::span<const ResourceUse> LinearDepthPass::uses() const {
     static constexpr ResourceUse kUses[] = {{Resource::Depth, Access::Read},
@@ -42,9 +38,10 @@ void LinearDepthPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Texture& depth = *resources.texture(Resource::Depth);
     ScopedGpuTimer timer(ctx.timers, "linear depth",
                          double(ctx.extent.width) * ctx.extent.height * (bytesPerTexel(depth.format()) + 4));
-    setUniform(mProgram, "uKind", int(ctx.inputs.depthKind));
-    setUniform(mProgram, "uNear", camera.nearPlane);
-    setUniform(mProgram, "uFar", camera.farPlane);
+    mParameters.update({.kind = std::int32_t(ctx.inputs.depthKind),
+                        .nearPlane = camera.nearPlane,
+                        .farPlane = camera.farPlane});
+    mParameters.bind(kBindingParameters);
     mProgram.use();
     glBindTextureUnit(0, depth.id());
     glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
@@ -53,7 +50,8 @@ void LinearDepthPass::execute(FrameContext& ctx, FrameResources& resources) {
 }
 
 CameraMotionPass::CameraMotionPass()
-    : mProgram(makeComputeProgram("passes/inputs/camera_motion.comp.glsl", bindingDefines())) {}
+    : mProgram(makeComputeProgram("passes/inputs/camera_motion.comp.glsl", bindingDefines()))
+    , mParameters("camera motion parameters") {}
 
 std::span<const ResourceUse> CameraMotionPass::uses() const {
     static constexpr ResourceUse kUses[] = {{Resource::LinearDepth, Access::Read},
@@ -83,10 +81,11 @@ void CameraMotionPass::execute(FrameContext& ctx, FrameResources& resources) {
                                        .debugName = "camera motion"})
                              .texture();
     ScopedGpuTimer timer(ctx.timers, "camera motion", double(ctx.extent.width) * ctx.extent.height * 8);
-    setMatrix(mProgram, "uInvProjection", glm::inverse(camera.projection));
-    setMatrix(mProgram, "uInvView", glm::inverse(camera.view));
-    setMatrix(mProgram, "uPrevViewProjection", camera.prevViewProjection);
-    setUniform(mProgram, "uCut", camera.cut ? 1 : 0);
+    mParameters.update({.invProjection = glm::inverse(camera.projection),
+                        .invView = glm::inverse(camera.view),
+                        .prevViewProjection = camera.prevViewProjection,
+                        .cut = camera.cut ? 1 : 0});
+    mParameters.bind(kBindingParameters);
     mProgram.use();
     glBindTextureUnit(0, resources.texture(Resource::LinearDepth)->id());
     glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);

@@ -4,7 +4,31 @@
 
 #include "passes/FramePass.h"
 
+#include <cstddef>
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+
 namespace photopic {
+
+/// std140 mirror of linear_depth.comp.glsl's parameter block.
+struct LinearDepthParameters {
+    std::int32_t kind = 0; ///< DepthKind
+    float nearPlane = 0.1f;
+    float farPlane = 1000.0f;
+    float padding = 0.0f;
+};
+static_assert(sizeof(LinearDepthParameters) == 16);
+
+/// std140 mirror of camera_motion.comp.glsl's parameter block.
+struct CameraMotionParameters {
+    glm::mat4 invProjection{1.0f};
+    glm::mat4 invView{1.0f};
+    glm::mat4 prevViewProjection{1.0f};
+    std::int32_t cut = 0;
+    std::int32_t padding[3] = {};
+};
+static_assert(sizeof(CameraMotionParameters) == 208);
+static_assert(offsetof(CameraMotionParameters, cut) == 192);
 
 /// Depth (standard, reversed or linear; FrameInputs::depthKind) -> R32F linear view depth.
 class LinearDepthPass final : public FramePass {
@@ -18,6 +42,7 @@ public:
 
 private:
     Program mProgram;
+    ParameterBlock<LinearDepthParameters> mParameters;
 };
 
 /// Camera-only motion vectors reconstructed from linear depth and the camera, when the host gives none.
@@ -32,6 +57,7 @@ public:
 
 private:
     Program mProgram;
+    ParameterBlock<CameraMotionParameters> mParameters;
 };
 
 } // namespace photopic

@@ -8,10 +8,13 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D uLinearDepth;
 layout(binding = 0, rg16f) uniform writeonly image2D uMotion;
 
-uniform mat4 uInvProjection; // this frame, unjittered
-uniform mat4 uInvView;
-uniform mat4 uPrevViewProjection;
-uniform int uCut;
+// Mirrors photopic::CameraMotionParameters (passes/inputs/InputPasses.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform CameraMotionParameters {
+    mat4 uInvProjection; // this frame, unjittered
+    mat4 uInvView;
+    mat4 uPrevViewProjection;
+    int uCut;
+};
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);

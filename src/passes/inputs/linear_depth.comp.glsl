@@ -7,9 +7,12 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D uDepth;
 layout(binding = 0, r32f) uniform writeonly image2D uLinear;
 
-uniform int uKind;
-uniform float uNear;
-uniform float uFar;
+// Mirrors photopic::LinearDepthParameters (passes/inputs/InputPasses.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform LinearDepthParameters {
+    int uKind; // DepthKind
+    float uNear;
+    float uFar;
+};
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);

@@ -16,6 +16,8 @@ LensFlarePass::LensFlarePass()
           makeGraphicsProgram(kVertex, "passes/lensflare/lensflare_prefilter.frag.glsl", bindingDefines()))
     , mFeatures(
           makeGraphicsProgram(kVertex, "passes/lensflare/lensflare_features.frag.glsl", bindingDefines()))
+    , mPrefilterParameters("lens flare prefilter parameters")
+    , mFeaturesParameters("lens flare features parameters")
     , mVao(VertexArray::create("lens flare fullscreen")) {}
 
 std::span<const ResourceUse> LensFlarePass::uses() const {
@@ -66,9 +68,10 @@ const Texture& LensFlarePass::execute(const Inputs& in) {
         // Four bilinear taps a quarter of a target texel from its centre cover the target texel's footprint
         // when it is 2x2 source texels; for larger divisors they subsample it, so a source smaller than the
         // gaps can be missed (flares come from suns and lamps, which are larger at these sizes).
-        setUniform(mPrefilter, "uTargetTexel", 1.0f / float(e.width), 1.0f / float(e.height));
-        setUniform(mPrefilter, "uSourceStep", 0.25f / float(e.width), 0.25f / float(e.height));
-        setUniform(mPrefilter, "uThreshold", in.settings->threshold);
+        mPrefilterParameters.update({.targetTexel = {1.0f / float(e.width), 1.0f / float(e.height)},
+                                     .sourceStep = {0.25f / float(e.width), 0.25f / float(e.height)},
+                                     .threshold = in.settings->threshold});
+        mPrefilterParameters.bind(kBindingParameters);
         mPrefilter.use();
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState, in.exposureState->id());
         glBindTextureUnit(0, in.scene->id());
@@ -77,12 +80,13 @@ const Texture& LensFlarePass::execute(const Inputs& in) {
     }
     {
         ScopedGpuTimer timer(in.timers, "lens flare features", small * (in.settings->ghosts + 2));
-        setUniform(mFeatures, "uTargetTexel", 1.0f / float(e.width), 1.0f / float(e.height));
-        setUniform(mFeatures, "uGhosts", in.settings->ghosts);
-        setUniform(mFeatures, "uGhostSpacing", in.settings->ghostSpacing);
-        setUniform(mFeatures, "uHaloRadius", in.settings->haloRadius);
-        setUniform(mFeatures, "uIntensity", in.settings->intensity);
-        setUniform(mFeatures, "uAspect", float(mExtent.width) / float(mExtent.height));
+        mFeaturesParameters.update({.targetTexel = {1.0f / float(e.width), 1.0f / float(e.height)},
+                                    .ghosts = in.settings->ghosts,
+                                    .ghostSpacing = in.settings->ghostSpacing,
+                                    .haloRadius = in.settings->haloRadius,
+                                    .intensity = in.settings->intensity,
+                                    .aspect = float(mExtent.width) / float(mExtent.height)});
+        mFeaturesParameters.bind(kBindingParameters);
         mFeatures.use();
         glBindTextureUnit(0, mSource.id());
         mFlareFbo.bind();

@@ -6,7 +6,39 @@
 #include "core/settings/DisplaySettings.h"
 #include "passes/FramePass.h"
 
+#include <cstddef>
+#include <cstdint>
+
 namespace photopic {
+
+// Two blocks, one per program: each program's block holds only what it reads, and each draw has its own
+// buffer, so neither is rewritten between the two draws.
+
+/// std140 mirror of lensflare_prefilter.frag.glsl's parameter block.
+struct LensFlarePrefilterParameters {
+    float targetTexel[2] = {0.0f, 0.0f}; ///< 1 / flare buffer size
+    float sourceStep[2] = {0.0f, 0.0f};  ///< UV offset of the 4 taps: a quarter of a target texel
+    float threshold = 0.0f;
+    float padding[3] = {};
+};
+static_assert(sizeof(LensFlarePrefilterParameters) == 32);
+static_assert(offsetof(LensFlarePrefilterParameters, sourceStep) == 8 &&
+              offsetof(LensFlarePrefilterParameters, threshold) == 16);
+
+/// std140 mirror of lensflare_features.frag.glsl's parameter block.
+struct LensFlareFeaturesParameters {
+    float targetTexel[2] = {0.0f, 0.0f}; ///< 1 / flare buffer size
+    std::int32_t ghosts = 0;
+    float ghostSpacing = 0.0f;
+    float haloRadius = 0.0f;
+    float intensity = 0.0f;
+    float aspect = 1.0f; ///< width / height
+    float padding = 0.0f;
+};
+static_assert(sizeof(LensFlareFeaturesParameters) == 32);
+static_assert(offsetof(LensFlareFeaturesParameters, ghosts) == 8 &&
+              offsetof(LensFlareFeaturesParameters, haloRadius) == 16 &&
+              offsetof(LensFlareFeaturesParameters, aspect) == 24);
 
 class LensFlarePass final : public FramePass {
 public:
@@ -32,6 +64,8 @@ private:
 
     Program mPrefilter;
     Program mFeatures;
+    ParameterBlock<LensFlarePrefilterParameters> mPrefilterParameters;
+    ParameterBlock<LensFlareFeaturesParameters> mFeaturesParameters;
     VertexArray mVao;
     Extent mExtent;
     int mDivisor = 0;

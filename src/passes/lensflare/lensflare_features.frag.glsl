@@ -5,12 +5,15 @@
 // same direction, weighted by closeness to the ring. The buffer is small and bilinear, which blurs the
 // ghosts enough that no separate blur pass is needed at this resolution.
 layout(binding = 0) uniform sampler2D uSource;
-uniform vec2 uTargetTexel;
-uniform int uGhosts;
-uniform float uGhostSpacing;
-uniform float uHaloRadius;
-uniform float uIntensity;
-uniform float uAspect; // width / height, keeps the halo round
+// Mirrors photopic::LensFlareFeaturesParameters (passes/lensflare/LensFlarePass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform LensFlareFeaturesParameters {
+    vec2 uTargetTexel;
+    int uGhosts;
+    float uGhostSpacing;
+    float uHaloRadius;
+    float uIntensity;
+    float uAspect; // width / height, keeps the halo round
+};
 
 layout(location = 0) out vec4 oColor;
 

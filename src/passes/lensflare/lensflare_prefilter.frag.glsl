@@ -4,9 +4,12 @@
 #include "passes/common/exposure.h.glsl"
 
 layout(binding = 0) uniform sampler2D uScene;
-uniform vec2 uTargetTexel; // 1 / flare buffer size
-uniform vec2 uSourceStep;  // UV offset of the 4 taps: a quarter of a target texel
-uniform float uThreshold;
+// Mirrors photopic::LensFlarePrefilterParameters (passes/lensflare/LensFlarePass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform LensFlarePrefilterParameters {
+    vec2 uTargetTexel; // 1 / flare buffer size
+    vec2 uSourceStep;  // UV offset of the 4 taps: a quarter of a target texel
+    float uThreshold;
+};
 
 layout(location = 0) out vec4 oColor;
 

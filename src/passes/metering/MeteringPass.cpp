@@ -31,6 +31,8 @@ int meteringModeIndex(MeteringPass::Weights w) {
 MeteringPass::MeteringPass()
     : mMeter(makeComputeProgram("passes/metering/metering.comp.glsl", bindingDefines()))
     , mReduce(makeComputeProgram("passes/metering/metering_reduce.comp.glsl", bindingDefines()))
+    , mMeterParameters("metering parameters")
+    , mReduceParameters("metering reduce parameters")
     , mHistogram({.size = kGpuHistogramBytes, .flags = 0, .data = nullptr, .debugName = "histogram bins"}) {}
 
 std::span<const ResourceUse> MeteringPass::uses() const {
@@ -141,20 +143,22 @@ MeteringPass::Outputs MeteringPass::execute(const Inputs& in) noexcept {
     const Weights weights = in.weights == Weights::Mask && !in.mask ? Weights::Average : in.weights;
 
     const AutoExposureSettings& s = *in.settings;
-    setUniform(mMeter, "uBuildHistogram", in.histogram ? 1 : 0);
-    setUniform(mMeter, "uWeights", weighted ? meteringModeIndex(weights) : -1);
-    setUniform(mMeter, "uLog2Min", s.histogramLog2Min);
-    setUniform(mMeter, "uLog2Max", s.histogramLog2Max);
+    mMeterParameters.update({.buildHistogram = in.histogram ? 1 : 0,
+                             .weights = weighted ? meteringModeIndex(weights) : -1,
+                             .log2Min = s.histogramLog2Min,
+                             .log2Max = s.histogramLog2Max});
+    mMeterParameters.bind(kBindingParameters);
     mMeter.use();
     glDispatchCompute(GLuint(mGroupsX), GLuint(mGroupsY), 1);
 
     if (in.weights != Weights::None) {
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        setUniform(mReduce, "uSpot", in.weights == Weights::Spot ? 1 : 0);
-        setUniform(mReduce, "uGroups", mGroupsX * mGroupsY);
-        setUniform(mReduce, "uSpotUv", s.spot.u, s.spot.v);
-        setUniform(mReduce, "uSpotRadius", s.spot.radius);
-        setUniform(mReduce, "uSpotTaps", s.spot.taps);
+        mReduceParameters.update({.spot = in.weights == Weights::Spot ? 1 : 0,
+                                  .groups = mGroupsX * mGroupsY,
+                                  .spotUv = {s.spot.u, s.spot.v},
+                                  .spotRadius = s.spot.radius,
+                                  .spotTaps = s.spot.taps});
+        mReduceParameters.bind(kBindingParameters);
         mReduce.use();
         glDispatchCompute(1, 1, 1);
     }

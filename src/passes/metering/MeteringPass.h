@@ -6,9 +6,37 @@
 #include "core/settings/AutoExposureSettings.h"
 #include "passes/FramePass.h"
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace photopic {
+
+/// std140 mirror of metering.comp.glsl's parameter block.
+struct MeteringParameters {
+    std::int32_t buildHistogram = 0; ///< 1: bin every pixel
+    std::int32_t weights = -1;       ///< -1: no weighted mean; else kMeterAverage, kMeterCenter or kMeterMask
+    float log2Min = 0.0f;
+    float log2Max = 0.0f;
+};
+static_assert(sizeof(MeteringParameters) == 16);
+static_assert(offsetof(MeteringParameters, weights) == 4 && offsetof(MeteringParameters, log2Min) == 8 &&
+              offsetof(MeteringParameters, log2Max) == 12);
+
+/// std140 mirror of metering_reduce.comp.glsl's parameter block.
+struct MeteringReduceParameters {
+    std::int32_t spot = 0;          ///< 1: meter the spot taps instead of the partials
+    std::int32_t groups = 0;        ///< partials written by the metering dispatch
+    float spotUv[2] = {0.5f, 0.5f}; ///< image UV, v down
+    float spotRadius = 0.0f;
+    std::int32_t spotTaps = 0;
+    std::int32_t padding[2] = {};
+};
+static_assert(sizeof(MeteringReduceParameters) == 32);
+static_assert(offsetof(MeteringReduceParameters, groups) == 4 &&
+              offsetof(MeteringReduceParameters, spotUv) == 8 &&
+              offsetof(MeteringReduceParameters, spotRadius) == 16 &&
+              offsetof(MeteringReduceParameters, spotTaps) == 20);
 
 class MeteringPass final : public FramePass {
 public:
@@ -54,6 +82,8 @@ public:
 private:
     Program mMeter;
     Program mReduce;
+    ParameterBlock<MeteringParameters> mMeterParameters;
+    ParameterBlock<MeteringReduceParameters> mReduceParameters;
     Buffer mHistogram;
     Buffer mMetering;
     Texture mMask;

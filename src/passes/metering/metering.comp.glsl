@@ -11,10 +11,13 @@ layout(local_size_x = 16, local_size_y = 16) in;
 layout(binding = 0) uniform sampler2D uScene;
 layout(binding = 1) uniform sampler2D uMask;
 
-uniform int uBuildHistogram; // 1: bin every pixel
-uniform int uWeights;        // -1: no weighted mean; else kMeterAverage, kMeterCenter or kMeterMask
-uniform float uLog2Min;
-uniform float uLog2Max;
+// Mirrors photopic::MeteringParameters (passes/metering/MeteringPass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform MeteringParameters {
+    int uBuildHistogram; // 1: bin every pixel
+    int uWeights;        // -1: no weighted mean; else kMeterAverage, kMeterCenter or kMeterMask
+    float uLog2Min;
+    float uLog2Max;
+};
 
 shared uint sBins[256];
 shared float sSum[256];

@@ -7,11 +7,14 @@
 layout(local_size_x = 256) in;
 layout(binding = 0) uniform sampler2D uScene;
 
-uniform int uSpot;      // 1: meter the spot taps instead of the partials
-uniform int uGroups;    // partials written by the metering dispatch
-uniform vec2 uSpotUv;   // image UV, v down
-uniform float uSpotRadius;
-uniform int uSpotTaps;
+// Mirrors photopic::MeteringReduceParameters (passes/metering/MeteringPass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform MeteringReduceParameters {
+    int uSpot;    // 1: meter the spot taps instead of the partials
+    int uGroups;  // partials written by the metering dispatch
+    vec2 uSpotUv; // image UV, v down
+    float uSpotRadius;
+    int uSpotTaps;
+};
 
 shared float sSum[256];
 shared float sWeight[256];

@@ -8,7 +8,8 @@
 namespace photopic {
 
 ProbePass::ProbePass()
-    : mProgram(makeComputeProgram("passes/probe/probe.comp.glsl", bindingDefines())) {
+    : mProgram(makeComputeProgram("passes/probe/probe.comp.glsl", bindingDefines()))
+    , mParameters("probe parameters") {
     const GpuSubjectState initial;
     mState = Buffer({.size = sizeof(GpuSubjectState),
                      .flags = GL_DYNAMIC_STORAGE_BIT,
@@ -145,7 +146,8 @@ void ProbePass::execute(const Inputs& in) noexcept {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingMetering, in.metering->id());
     }
     glBindTextureUnit(0, in.scene->id());
-    setUniform(mProgram, "uWriteReading", in.metering ? 1 : 0);
+    mParameters.update({.writeReading = in.metering ? 1 : 0});
+    mParameters.bind(kBindingParameters);
     mProgram.use();
     // At least one invocation: it writes the reading on frames without a probe of the subject.
     const GLuint groups = GLuint(std::max<std::size_t>((count + kGroupSize - 1) / kGroupSize, 1));

@@ -18,6 +18,13 @@
 
 namespace photopic {
 
+/// std140 mirror of probe.comp.glsl's parameter block.
+struct ProbeParameters {
+    std::int32_t writeReading = 0; ///< 1: subject metering, write the reading
+    std::int32_t padding[3] = {};
+};
+static_assert(sizeof(ProbeParameters) == 16 && offsetof(ProbeParameters, writeReading) == 0);
+
 class ProbePass final : public FramePass {
 public:
     struct Inputs {
@@ -66,6 +73,7 @@ public:
 
 private:
     Program mProgram;
+    ParameterBlock<ProbeParameters> mParameters;
     Buffer mProbes;
     Buffer mState; ///< GpuSubjectState, across frames
     std::vector<std::byte> mStaging;

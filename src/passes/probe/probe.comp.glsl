@@ -12,7 +12,10 @@
 layout(local_size_x = 64) in;
 layout(binding = 0) uniform sampler2D uScene;
 
-uniform int uWriteReading; // 1: subject metering, write gReading
+// Mirrors photopic::ProbeParameters (passes/probe/ProbePass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform ProbeParameters {
+    int uWriteReading; // 1: subject metering, write gReading
+};
 
 struct ProbeEntry {
     vec2 uv; // image UV, v down

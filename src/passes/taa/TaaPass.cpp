@@ -3,22 +3,18 @@
 #include "core/Log.h"
 #include "passes/Bindings.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 namespace photopic {
 
 namespace {
-/// Motion, in pixels per frame, from which the history is clipped fully to the neighbourhood box; slower
-/// pixels are clipped in proportion (see taa_resolve.comp.glsl).
-constexpr float kFullClipPixels = 1.0f;
+/// Motion, in pixels per frame, from which the history is clipped fully to the neighbourhood box; where the
+/// neighbourhood moves slower it is clipped in proportion (see taa_resolve.comp.glsl).
+constexpr float kStillPixels = 0.25f;
 
-void setMatrix(const Program& p, const char* name, const glm::mat4& m) {
-    glProgramUniformMatrix4fv(p.id(), glGetUniformLocation(p.id(), name), 1, GL_FALSE, glm::value_ptr(m));
-}
 } // namespace
 
 TaaPass::TaaPass()
     : mProgram(makeComputeProgram("passes/taa/taa_resolve.comp.glsl", bindingDefines()))
+    , mParameters("taa parameters")
     , mNoDebug({.extent = {1, 1}, .format = GL_RG8, .debugName = "taa debug (unused)"}) {}
 
 std::span<const ResourceUse> TaaPass::uses() const {
@@ -39,15 +35,15 @@ bool TaaPass::enabled(const FrameContext& ctx) const {
     return ctx.hdr && selected(ctx.settings);
 }
 
-void TaaPass::resize(Extent extent) {
-    mHistory.ensure(extent, GL_RGBA16F, "taa history");
-}
-
 void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
+    // Made on the first frame TAA runs at a size (a pipeline with TAA off holds no history); a new size
+    // remakes them and the history starts over.
+    mHistory.ensure(ctx.extent, GL_RGBA16F, "taa history");
+    mHistoryAux.ensure(ctx.extent, GL_RG16F, "taa history depth and stability");
     const Extent e = ctx.extent;
     const TaaSettings& s = ctx.settings.taa;
     const Texture* depth = resources.texture(Resource::LinearDepth);
-    const bool camera = resources.has(Resource::Camera);
+    const bool hasCamera = resources.has(Resource::Camera);
     const DebugView view = ctx.settings.debug.view;
     const bool debug = view == DebugView::TaaHistoryWeight || view == DebugView::Disocclusion;
     const Texture* debugTarget = nullptr;
@@ -62,24 +58,25 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     }
     const double bytes =
         double(e.width) * e.height *
-        (8.0 /*current*/ + 8.0 /*history*/ + 4.0 /*motion*/ + (depth ? 4.0 : 0.0) + 8.0 /*output*/);
+        (8.0 /*current*/ + 12.0 /*history*/ + 4.0 /*motion*/ + (depth ? 4.0 : 0.0) + 12.0 /*output*/);
     ScopedGpuTimer timer(ctx.timers, "taa", bytes);
-    setUniform(mProgram, "uHasHistory", mHistory.valid() && !ctx.resetHistory ? 1 : 0);
-    setUniform(mProgram, "uHasDepth", depth ? 1 : 0);
-    setUniform(mProgram, "uHasCamera", camera ? 1 : 0);
-    setUniform(mProgram, "uWriteDebug", debug ? 1 : 0);
-    setUniform(mProgram, "uBlend", s.blendFactor);
-    setUniform(mProgram, "uGamma", s.varianceGamma);
-    setUniform(mProgram, "uStaticPixels", kFullClipPixels);
-    setUniform(mProgram, "uAdaptive", s.adaptiveFeedback ? 1 : 0);
-    setUniform(mProgram, "uFeedbackMin", s.feedbackMin);
-    setUniform(mProgram, "uFeedbackMax", s.feedbackMax);
-    if (camera) {
-        const Camera& c = *ctx.inputs.camera;
-        setMatrix(mProgram, "uInvProjection", glm::inverse(c.projection));
-        setMatrix(mProgram, "uInvView", glm::inverse(c.view));
-        setMatrix(mProgram, "uPrevViewProjection", c.prevViewProjection);
-    }
+    const Camera* camera = hasCamera ? ctx.inputs.camera : nullptr; // null when validation dropped it
+    mParameters.update({.invProjection = camera ? glm::inverse(camera->projection) : glm::mat4(1.0f),
+                        .invView = camera ? glm::inverse(camera->view) : glm::mat4(1.0f),
+                        .prevViewProjection = camera ? camera->prevViewProjection : glm::mat4(1.0f),
+                        .blend = s.blendFactor,
+                        .gamma = s.varianceGamma,
+                        .feedbackMin = s.feedbackMin,
+                        .feedbackMax = s.feedbackMax,
+                        .stillPixels = kStillPixels,
+                        .hasHistory = mHistory.valid() && !ctx.resetHistory ? 1 : 0,
+                        .hasDepth = depth ? 1 : 0,
+                        .hasCamera = camera ? 1 : 0,
+                        .writeDebug = debug ? 1 : 0,
+                        .adaptive = s.adaptiveFeedback ? 1 : 0,
+                        .bilinearHistory = s.historyFilter == HistoryFilter::Bilinear ? 1 : 0,
+                        .padding = 0});
+    mParameters.bind(kBindingParameters);
     mProgram.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
                      resources.buffer(Resource::ExposureState)->id());
@@ -88,6 +85,8 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     glBindTextureUnit(1, mHistory.previous() ? mHistory.previous()->id() : mHistory.current().id());
     glBindTextureUnit(2, resources.texture(Resource::Motion)->id());
     glBindTextureUnit(3, depth ? depth->id() : resources.texture(Resource::Motion)->id());
+    glBindTextureUnit(4, mHistoryAux.previous() ? mHistoryAux.previous()->id() : mHistoryAux.current().id());
+    glBindImageTexture(2, mHistoryAux.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
     glBindImageTexture(0, mHistory.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glBindImageTexture(1, debugTarget ? debugTarget->id() : mNoDebug.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        GL_RG8);
@@ -97,6 +96,7 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
         resources.bind(Resource::TaaDebug, *debugTarget);
     }
     mHistory.advance();
+    mHistoryAux.advance();
 }
 
 } // namespace photopic

@@ -6,7 +6,33 @@
 #include "passes/FramePass.h"
 #include "passes/HistoryTexture.h"
 
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+
 namespace photopic {
+
+/// std140 mirror of taa_resolve.comp.glsl's parameter block.
+struct TaaParameters {
+    glm::mat4 invProjection{1.0f};
+    glm::mat4 invView{1.0f};
+    glm::mat4 prevViewProjection{1.0f};
+    float blend = 0.9f;
+    float gamma = 1.0f;
+    float feedbackMin = 0.88f;
+    float feedbackMax = 0.97f;
+    float stillPixels = 0.25f;
+    std::int32_t hasHistory = 0;
+    std::int32_t hasDepth = 0;
+    std::int32_t hasCamera = 0;
+    std::int32_t writeDebug = 0;
+    std::int32_t adaptive = 0;
+    std::int32_t bilinearHistory = 0;
+    std::int32_t padding = 0;
+};
+static_assert(sizeof(TaaParameters) == 240);
+static_assert(offsetof(TaaParameters, blend) == 192);
+static_assert(offsetof(TaaParameters, hasHistory) == 212);
+static_assert(offsetof(TaaParameters, bilinearHistory) == 232);
 
 class TaaPass final : public FramePass {
 public:
@@ -14,8 +40,10 @@ public:
     [[nodiscard]] std::string_view name() const override { return "taa"; }
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
     [[nodiscard]] bool enabled(const FrameContext& ctx) const override;
-    void resize(Extent extent) override;
-    void invalidateHistory() override { mHistory.invalidate(); }
+    void invalidateHistory() override {
+        mHistory.invalidate();
+        mHistoryAux.invalidate();
+    }
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
     /// TAA runs on the HDR path when aa.mode (or taa.enabled) selects it.
@@ -23,8 +51,10 @@ public:
 
 private:
     Program mProgram;
-    HistoryTexture mHistory;
-    Texture mNoDebug; ///< bound to the debug image unit when no debug view asks for it
+    ParameterBlock<TaaParameters> mParameters;
+    HistoryTexture mHistory;    ///< the resolved colour
+    HistoryTexture mHistoryAux; ///< per pixel: linear depth and stability (how long it has held still)
+    Texture mNoDebug;           ///< bound to the debug image unit when no debug view asks for it
 };
 
 } // namespace photopic

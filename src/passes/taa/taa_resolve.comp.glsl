@@ -15,25 +15,34 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uCurrent; // sceneColor: sanitised HDR, this frame's jittered samples
-layout(binding = 1) uniform sampler2D uHistory; // last frame's resolve: rgb, a = its linear depth
+layout(binding = 1) uniform sampler2D uHistory; // last frame's resolve
+layout(binding = 4) uniform sampler2D uHistoryAux; // last frame's per pixel: r = linear depth, g = stability
 layout(binding = 2) uniform sampler2D uMotion;  // UV, current - previous
 layout(binding = 3) uniform sampler2D uDepth;   // linear view depth (when uHasDepth)
 layout(binding = 0, rgba16f) writeonly uniform image2D uOutput;
+layout(binding = 2, rg16f) writeonly uniform image2D uOutputAux;
 layout(binding = 1, rg8) writeonly uniform image2D uDebug; // r: history weight, g: disoccluded
 
-uniform int uHasHistory;
-uniform int uHasDepth;
-uniform int uHasCamera;
-uniform int uWriteDebug;
-uniform float uBlend;
-uniform float uGamma;
-uniform float uStaticPixels; // motion (pixels) from which the history is clipped fully
-uniform int uAdaptive;
-uniform float uFeedbackMin;
-uniform float uFeedbackMax;
-uniform mat4 uInvProjection;
-uniform mat4 uInvView;
-uniform mat4 uPrevViewProjection;
+// Mirrors photopic::TaaParameters (passes/taa/TaaPass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform TaaParameters {
+    mat4 uInvProjection; // this frame's, unjittered (when uHasCamera)
+    mat4 uInvView;
+    mat4 uPrevViewProjection;
+    float uBlend;
+    float uGamma;
+    float uFeedbackMin;
+    float uFeedbackMax;
+    float uStaticPixels; // motion (pixels per frame) below which a neighbourhood counts as still
+    int uHasHistory;
+    int uHasDepth;
+    int uHasCamera;
+    int uWriteDebug;
+    int uAdaptive;
+    int uBilinearHistory;
+};
+
+// Frames a neighbourhood must hold still before its history is trusted without clipping.
+const float kStableFrames = 8.0;
 
 vec3 toWorking(vec3 c, float exposure) {
     c *= exposure;
@@ -103,6 +112,7 @@ void main() {
     vec3 lo = vec3(1e9), hi = vec3(-1e9);
     ivec2 closest = p;
     float closestDepth = depth;
+    float fastest = 0.0; // the longest motion of the 3x3, in pixels
     for (int y = -1; y <= 1; ++y) {
         for (int x = -1; x <= 1; ++x) {
             ivec2 q = clamp(p + ivec2(x, y), ivec2(0), size - 1);
@@ -111,6 +121,7 @@ void main() {
             m2 += c * c;
             lo = min(lo, c);
             hi = max(hi, c);
+            fastest = max(fastest, length(finiteMotion(texelFetch(uMotion, q, 0).rg) * vec2(size)));
             if (uHasDepth != 0) {
                 float d = texelFetch(uDepth, q, 0).r;
                 if (d < closestDepth) {
@@ -147,27 +158,36 @@ void main() {
         disoccluded = true;
         for (int i = 0; i < 9 && disoccluded; ++i) {
             ivec2 q = clamp(hp + ivec2(i % 3 - 1, i / 3 - 1), ivec2(0), size - 1);
-            disoccluded = texelFetch(uHistory, q, 0).a < 0.9 * predicted;
+            disoccluded = texelFetch(uHistoryAux, q, 0).r < 0.9 * predicted;
         }
     }
 
     vec4 result;
     float weight = 0.0;
+    // Stability: how long this pixel's neighbourhood has held still with a usable history, in [0, 1] over
+    // kStableFrames. Anything moving nearby, a disocclusion or no history resets it.
+    float stability = 0.0;
     if (!history || disoccluded) {
-        result = vec4(current, depth); // exactly the current sample: a cut frame equals the no-history frame
+        result = vec4(current, 1.0); // exactly the current sample: a cut frame equals the no-history frame
     } else {
-        vec3 h = rgbToYCoCg(toWorking(sanitize(sampleHistoryCatmullRom(prevUv, vec2(size))), exposure));
+        vec3 fetched = uBilinearHistory != 0 ? textureLod(uHistory, prevUv, 0.0).rgb
+                                             : sampleHistoryCatmullRom(prevUv, vec2(size));
+        vec3 h = rgbToYCoCg(toWorking(sanitize(fetched), exposure));
         vec3 c = rgbToYCoCg(toWorking(current, exposure));
         // The variance box can exclude the centre sample itself (a thin dark pole among bright neighbours):
         // keep it inside, or a history equal to this frame would be pulled away from it.
         boxMin = min(boxMin, c);
         boxMax = max(boxMax, c);
-        // Clip as strongly as the pixel moves. A static pixel's history is this surface's own (disocclusion is
-        // caught by depth), and clipping it against one jittered frame would erase thin features that this
-        // frame's samples happen to miss (poles, wires: they break into dashes). Without depth there is no
-        // other guard against ghosts, so the clip stays full.
-        float motionPixels = length(motion * vec2(size));
-        float clipStrength = (uHasDepth != 0 && uHasCamera != 0) ? clamp(motionPixels / uStaticPixels, 0.0, 1.0) : 1.0;
+        // Clip unless the neighbourhood has held still for a while. There the history is this surface's own,
+        // and clipping it against one jittered frame would erase thin features that this frame's samples
+        // happen to miss (poles and wires break into dashes). Where something moved lately (the trail a
+        // moving object uncovers, its edges) the clip is full until the pixel has been still for
+        // kStableFrames, so a ghost left in the history is clipped away first. Without depth there is no
+        // disocclusion test to fall back on, so the clip stays full everywhere.
+        ivec2 hp = clamp(ivec2(prevUv * vec2(size)), ivec2(0), size - 1);
+        float previousStability = texelFetch(uHistoryAux, hp, 0).g;
+        stability = fastest < uStaticPixels ? min(previousStability + 1.0 / kStableFrames, 1.0) : 0.0;
+        float clipStrength = (uHasDepth != 0 && uHasCamera != 0) ? 1.0 - previousStability : 1.0;
         h = mix(h, clipToBox(boxMin, boxMax, h), clipStrength);
         weight = uBlend;
         if (uAdaptive != 0) {
@@ -177,9 +197,10 @@ void main() {
             weight = mix(uFeedbackMin, uFeedbackMax, agreement * agreement);
         }
         vec3 resolved = fromWorking(yCoCgToRgb(mix(c, h, weight)), exposure);
-        result = vec4(sanitize(resolved), depth);
+        result = vec4(sanitize(resolved), 1.0);
     }
     imageStore(uOutput, p, result);
+    imageStore(uOutputAux, p, vec4(depth, stability, 0.0, 0.0));
     if (uWriteDebug != 0) {
         imageStore(uDebug, p, vec4(weight, disoccluded ? 1.0 : 0.0, 0.0, 0.0));
     }

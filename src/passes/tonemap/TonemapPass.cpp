@@ -15,7 +15,8 @@ constexpr const char* kFragment = "passes/tonemap/tonemap.frag.glsl";
 } // namespace
 
 TonemapPass::TonemapPass(const Capabilities& caps)
-    : mCaps(caps)
+    : mParameters("tonemap parameters")
+    , mCaps(caps)
     , mVao(VertexArray::create("fullscreen")) {}
 
 std::span<const ResourceUse> TonemapPass::uses() const {
@@ -63,33 +64,44 @@ void TonemapPass::configure(const Settings& settings) {
 }
 
 void TonemapPass::draw(const Program& program, const Inputs& in, Extent extent) {
-    setUniform(program, "uWhitePoint", in.tonemapping->whitePoint);
-    setUniform(program, "uAgxLook", int(in.tonemapping->agxLook));
-    setUniform(program, "uDither", in.output->dither ? 1 : 0);
-    glProgramUniform1ui(program.id(), glGetUniformLocation(program.id(), "uFrame"), GLuint(in.frameIndex));
+    TonemapParameters parameters{.whitePoint = in.tonemapping->whitePoint,
+                                 .agxLook = int(in.tonemapping->agxLook),
+                                 .dither = in.output->dither ? 1 : 0,
+                                 .frame = std::uint32_t(in.frameIndex)};
     if (in.bloom) {
-        setUniform(program, "uBloomAdditive", in.bloomSettings->mode == BloomMode::Threshold ? 1 : 0);
-        setUniform(program, "uBloomIntensity", in.bloomSettings->intensity);
+        parameters.bloomAdditive = in.bloomSettings->mode == BloomMode::Threshold ? 1 : 0;
+        parameters.bloomIntensity = in.bloomSettings->intensity;
         glBindTextureUnit(1, in.bloom->id());
     }
     if (in.glow) {
         const BloomSettings& b = *in.bloomSettings;
-        setUniform(program, "uGlowThreshold", b.mode == BloomMode::Threshold ? b.threshold : 1.0f);
-        setUniform(program, "uGlowIntensity", b.intensity);
+        parameters.glowThreshold = b.mode == BloomMode::Threshold ? b.threshold : 1.0f;
+        parameters.glowIntensity = b.intensity;
         // ~2% of the frame height, as wide as a mid level of the full chain; at least a few pixels.
-        setUniform(program, "uGlowRadius", std::max(4.0f, 0.02f * float(extent.height)));
+        parameters.glowRadius = std::max(4.0f, 0.02f * float(extent.height));
     }
     if (in.grading && in.grading->enabled) {
         const ColorGradingSettings& g = *in.grading;
         const glm::mat3 wb = whiteBalanceMatrix(g.temperature, g.tint);
-        glProgramUniformMatrix3fv(program.id(), glGetUniformLocation(program.id(), "uWhiteBalance"), 1,
-                                  GL_FALSE, glm::value_ptr(wb));
-        setUniform(program, "uContrast", g.contrast);
-        setUniform(program, "uSaturation", g.saturation);
-        setUniform(program, "uLift", g.lift.x, g.lift.y, g.lift.z);
-        setUniform(program, "uInvGamma", 1.0f / g.gamma.x, 1.0f / g.gamma.y, 1.0f / g.gamma.z);
-        setUniform(program, "uGain", g.gain.x, g.gain.y, g.gain.z);
+        for (int c = 0; c < 3; ++c) {
+            for (int r = 0; r < 3; ++r) {
+                parameters.whiteBalance[c][r] = wb[c][r];
+            }
+        }
+        parameters.contrast = g.contrast;
+        parameters.saturation = g.saturation;
+        parameters.lift[0] = g.lift.x;
+        parameters.lift[1] = g.lift.y;
+        parameters.lift[2] = g.lift.z;
+        parameters.invGamma[0] = 1.0f / g.gamma.x;
+        parameters.invGamma[1] = 1.0f / g.gamma.y;
+        parameters.invGamma[2] = 1.0f / g.gamma.z;
+        parameters.gain[0] = g.gain.x;
+        parameters.gain[1] = g.gain.y;
+        parameters.gain[2] = g.gain.z;
     }
+    mParameters.update(parameters);
+    mParameters.bind(kBindingParameters);
     program.use();
     glBindTextureUnit(0, in.scene->id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState, in.exposureState->id());

@@ -3,10 +3,42 @@
 #include "core/Settings.h"
 #include "passes/FramePass.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <map>
 
 namespace photopic {
+
+/// std140 mirror of tonemap.frag.glsl's parameter block, one layout for every variant: the bloom, glow and
+/// grading members are read only by the variants that #define BLOOM, GLOW and GRADE.
+struct TonemapParameters {
+    float whitePoint = 1.0f;
+    std::int32_t agxLook = 0;
+    std::int32_t dither = 0;
+    std::uint32_t frame = 0;
+    std::int32_t bloomAdditive = 0; ///< 0: mix(scene, bloom, intensity); 1: scene + intensity * bloom
+    float bloomIntensity = 0.0f;
+    float padding0[2] = {};
+    float whiteBalance[3][4] = {}; ///< mat3: three columns, each padded to a vec4
+    float contrast = 1.0f;
+    float saturation = 1.0f;
+    float glowThreshold = 1.0f; ///< exposed scene-linear: only what lies above glows
+    float glowIntensity = 0.0f; ///< additive gain
+    float glowRadius = 0.0f;    ///< px
+    float padding1[3] = {};
+    float lift[3] = {0.0f, 0.0f, 0.0f};
+    float padding2 = 0.0f;
+    float invGamma[3] = {1.0f, 1.0f, 1.0f}; ///< 1 / gamma, per channel
+    float padding3 = 0.0f;
+    float gain[3] = {1.0f, 1.0f, 1.0f};
+    float padding4 = 0.0f;
+};
+static_assert(sizeof(TonemapParameters) == 160);
+static_assert(offsetof(TonemapParameters, frame) == 12 && offsetof(TonemapParameters, bloomAdditive) == 16 &&
+              offsetof(TonemapParameters, whiteBalance) == 32 &&
+              offsetof(TonemapParameters, contrast) == 80 && offsetof(TonemapParameters, glowRadius) == 96 &&
+              offsetof(TonemapParameters, lift) == 112 && offsetof(TonemapParameters, invGamma) == 128 &&
+              offsetof(TonemapParameters, gain) == 144);
 
 /// The uber pass: exposure, bloom composite, HDR grading, tone curve, sRGB, dither -> RGBA8 display image;
 /// or, as `renderScene`, the composited and graded scene-referred image just before the curve (RGBA32F) for
@@ -46,6 +78,7 @@ private:
     const Program& variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene);
 
     std::map<int, Program> mPrograms; ///< by variant key (see variant())
+    ParameterBlock<TonemapParameters> mParameters;
     const Capabilities& mCaps;
     VertexArray mVao;
     Texture mScene;

@@ -14,26 +14,28 @@
 #include "passes/tonemap/tonecurves.h.glsl"
 
 layout(binding = 0) uniform sampler2D uScene;
-uniform float uWhitePoint;
-uniform int uAgxLook;
-uniform int uDither;
-uniform uint uFrame;
 #ifdef BLOOM
 layout(binding = 1) uniform sampler2D uBloom;
-uniform int uBloomAdditive;   // 0: mix(scene, bloom, intensity); 1: scene + intensity * bloom
-uniform float uBloomIntensity;
 #endif
-uniform mat3 uWhiteBalance;   // core/ColorGrading.cpp whiteBalanceMatrix
-uniform float uContrast;
-uniform float uSaturation;
-#ifdef GLOW
-uniform float uGlowThreshold; // exposed scene-linear: only what lies above glows
-uniform float uGlowIntensity; // additive gain
-uniform float uGlowRadius;    // px
-#endif
-uniform vec3 uLift;
-uniform vec3 uInvGamma;       // 1 / gamma, per channel
-uniform vec3 uGain;
+// Mirrors photopic::TonemapParameters (passes/tonemap/TonemapPass.h), std140. One layout for every variant:
+// the bloom, glow and grading members are read only where BLOOM, GLOW and GRADE are defined.
+layout(std140, binding = BINDING_PARAMETERS) uniform TonemapParameters {
+    float uWhitePoint;
+    int uAgxLook;
+    int uDither;
+    uint uFrame;
+    int uBloomAdditive; // 0: mix(scene, bloom, intensity); 1: scene + intensity * bloom
+    float uBloomIntensity;
+    mat3 uWhiteBalance; // core/ColorGrading.cpp whiteBalanceMatrix
+    float uContrast;
+    float uSaturation;
+    float uGlowThreshold; // exposed scene-linear: only what lies above glows
+    float uGlowIntensity; // additive gain
+    float uGlowRadius;    // px
+    vec3 uLift;
+    vec3 uInvGamma; // 1 / gamma, per channel
+    vec3 uGain;
+};
 
 const float kMiddleGrey = 0.18; // core/ColorGrading.h kGradingMiddleGrey
 

@@ -40,8 +40,9 @@ struct GpuFrame {
     glm::vec4 ambientSky;
     glm::vec4 ambientGround;
     glm::ivec4 flags;
+    glm::vec4 ambientOcclusionPower; ///< x: the exponent on the ambient visibility (ssao.power)
 };
-static_assert(sizeof(GpuFrame) == 6 * 64 + 9 * 16);
+static_assert(sizeof(GpuFrame) == 6 * 64 + 10 * 16);
 static_assert(offsetof(GpuFrame, viewport) == 384 && offsetof(GpuFrame, flags) == 512);
 
 GpuPrimitive toGpu(const Primitive& p) {
@@ -120,6 +121,7 @@ void TestbedRenderer::draw(const DrawInfo& info) {
     f.ambientSky = glm::vec4(env.ambientSky, 0.0f);
     f.ambientGround = glm::vec4(env.ambientGround, 0.0f);
     f.flags = {info.ambientOcclusion != nullptr ? 1 : 0, info.sunVisibility != nullptr ? 1 : 0, 0, 0};
+    f.ambientOcclusionPower = glm::vec4(info.ambientOcclusionPower, 0.0f, 0.0f, 0.0f);
     mFrame.update(&f, sizeof(f));
 
     DebugGroup group("testbed scene");

@@ -26,6 +26,7 @@ public:
         glm::vec2 jitter{0.0f};         ///< pixels, x right, y up (Pipeline::beginFrame)
         const std::vector<Primitive>* primitives = nullptr;
         const Texture* ambientOcclusion = nullptr; ///< R visibility; multiplies the ambient term
+        float ambientOcclusionPower = 1.0f;        ///< the ambient term takes pow(visibility, this)
         const Texture* sunVisibility = nullptr;    ///< R visibility; multiplies the sun term
     };
     void draw(const DrawInfo& info);

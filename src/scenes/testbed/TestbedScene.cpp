@@ -69,18 +69,32 @@ FrameInputs TestbedScene::render(const FrameTime& time, Pipeline& pipeline, std:
     const glm::vec2 jitter = pipeline.beginFrame(time, &mCamera);
     testbed::TestbedRenderer::DrawInfo draw{.camera = &mCamera, .jitter = jitter, .primitives = &prims};
     mRenderer.draw(draw);
-    const FrameInputs inputs{.color = &mRenderer.color(),
-                             .depth = &mRenderer.depth(),
-                             .depthKind = DepthKind::Standard,
-                             .normals = &mRenderer.normals(),
-                             .normalEncoding = NormalEncoding::ViewXyz,
-                             .motion = &mRenderer.motion(),
-                             .camera = &mCamera};
+    FrameInputs inputs{.color = &mRenderer.color(),
+                       .depth = &mRenderer.depth(),
+                       .depthKind = DepthKind::Standard,
+                       .normals = &mRenderer.normals(),
+                       .normalEncoding = NormalEncoding::ViewXyz,
+                       .motion = &mRenderer.motion(),
+                       .camera = &mCamera};
     const LightingOutputs& lighting = pipeline.renderLighting(inputs, time);
+    draw.ambientOcclusion = lighting.ambientOcclusion;
+    draw.ambientOcclusionPower = lighting.ambientOcclusionPower;
+    draw.sunVisibility = lighting.contactShadows;
     if (lighting.ambientOcclusion != nullptr || lighting.contactShadows != nullptr) {
-        draw.ambientOcclusion = lighting.ambientOcclusion;
-        draw.sunVisibility = lighting.contactShadows;
         mRenderer.draw(draw);
+    }
+    // Supersampling: each further sub-frame is rendered with its own jitter (and the lighting stage's
+    // textures) and folded into the pipeline's mean in linear light; depth, normals and motion are the last
+    // sub-frame's.
+    const int subframes = pipeline.subframeCount();
+    if (subframes > 1) {
+        pipeline.accumulateSubframe(mRenderer.color(), 0);
+        for (int i = 1; i < subframes; ++i) {
+            draw.jitter = pipeline.subframeJitter(i);
+            mRenderer.draw(draw);
+            pipeline.accumulateSubframe(mRenderer.color(), i);
+        }
+        inputs.color = &pipeline.subframeMean();
     }
     telemetry = {double(testbed::cameraPoseAt(t.camera).shot), mCamera.cut ? 1.0 : 0.0};
     return inputs;

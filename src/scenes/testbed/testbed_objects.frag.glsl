@@ -26,7 +26,8 @@ void main() {
     gl_FragDepth = 0.5 * (clip.z / clip.w) + 0.5;
 
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    float ambientVisibility = uFlags.x != 0 ? texelFetch(uAmbientOcclusion, pixel, 0).r : 1.0;
+    float ambientVisibility = uFlags.x != 0 ? pow(texelFetch(uAmbientOcclusion, pixel, 0).r, uAmbientOcclusionPower.x)
+                                         : 1.0;
     float sunVisibility = uFlags.y != 0 ? texelFetch(uSunVisibility, pixel, 0).r : 1.0;
     oColor = vec4(testbedShade(p, objectPoint, objectNormal, n, sunVisibility, ambientVisibility), 1.0);
     oNormal = vec4(normalize(mat3(uView) * n), 0.0);

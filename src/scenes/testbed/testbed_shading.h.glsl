@@ -39,6 +39,7 @@ layout(std140, binding = 0) uniform TestbedFrame {
     vec4 uAmbientSky;
     vec4 uAmbientGround;
     ivec4 uFlags; // x: multiply the ambient term by uAmbientOcclusion, y: the sun term by uSunVisibility
+    vec4 uAmbientOcclusionPower; // x: the exponent on the ambient visibility
 };
 
 // World-space ray through a window position (pixel units, GL origin bottom-left) with the jittered

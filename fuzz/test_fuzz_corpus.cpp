@@ -1,0 +1,111 @@
+// Replays every committed fuzz input -- fuzz/corpus/<target>/ and the reproducers in tests/data/fuzz-repro/
+// -- through the same entry points the libFuzzer harnesses call, with the normal compiler. A reader that
+// crashes, throws something other than its documented error or breaks a checked promise fails the test (an
+// abort ends the binary, which CTest reports as a failure naming the test).
+
+#include "FuzzTargets.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Target {
+    const char* name;
+    void (*run)(const std::uint8_t*, std::size_t);
+};
+
+constexpr Target kTargets[] = {
+    {"settings", photopic::fuzz::settingsJson}, {"override", photopic::fuzz::settingsOverride},
+    {"motion", photopic::fuzz::motionCsv},
+#ifdef PHOTOPIC_FUZZ_WITH_IO
+    {"exr", photopic::fuzz::exrImage},          {"hdr", photopic::fuzz::hdrImage},
+    {"png", photopic::fuzz::pngImage},
+#endif
+};
+
+/// The reproducers, each with the target whose reader misbehaved on it.
+struct Reproducer {
+    const char* file;
+    const char* target;
+};
+constexpr Reproducer kReproducers[] = {
+    {"settings_1e400.json", "settings"},  {"override_invalid_utf8.txt", "override"},
+    {"motion_nan_time.csv", "motion"},    {"motion_lerp_overflow.csv", "motion"},
+#ifdef PHOTOPIC_FUZZ_WITH_IO
+    {"png_zero_len_idat.min.png", "png"},
+#endif
+};
+
+void PrintTo(const Target& target, std::ostream* os) {
+    *os << target.name;
+}
+void PrintTo(const Reproducer& reproducer, std::ostream* os) {
+    *os << reproducer.file;
+}
+
+std::vector<std::uint8_t> readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void replay(const Target& target, const fs::path& file) {
+    SCOPED_TRACE(file.string());
+    const std::vector<std::uint8_t> bytes = readFile(file);
+    target.run(bytes.data(), bytes.size());
+}
+
+const Target& targetNamed(std::string_view name) {
+    return *std::find_if(std::begin(kTargets), std::end(kTargets),
+                         [&](const Target& t) { return name == t.name; });
+}
+
+class FuzzCorpus : public testing::TestWithParam<Target> {};
+
+TEST_P(FuzzCorpus, EveryFileIsHandled) {
+    const fs::path folder = fs::path(PHOTOPIC_SOURCE_DIR) / "fuzz" / "corpus" / GetParam().name;
+    ASSERT_TRUE(fs::is_directory(folder)) << folder;
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(folder)) {
+        if (entry.is_regular_file()) {
+            files.push_back(entry.path());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    EXPECT_FALSE(files.empty()) << "no corpus in " << folder;
+    for (const fs::path& file : files) {
+        replay(GetParam(), file);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Targets, FuzzCorpus, testing::ValuesIn(kTargets),
+                         [](const testing::TestParamInfo<Target>& info) {
+                             return std::string(info.param.name);
+                         });
+
+class FuzzReproducer : public testing::TestWithParam<Reproducer> {};
+
+TEST_P(FuzzReproducer, IsHandled) {
+    const fs::path file = fs::path(PHOTOPIC_SOURCE_DIR) / "tests" / "data" / "fuzz-repro" / GetParam().file;
+    ASSERT_TRUE(fs::is_regular_file(file)) << file;
+    replay(targetNamed(GetParam().target), file);
+}
+
+INSTANTIATE_TEST_SUITE_P(Files, FuzzReproducer, testing::ValuesIn(kReproducers),
+                         [](const testing::TestParamInfo<Reproducer>& info) {
+                             std::string name = info.param.file;
+                             std::replace_if(
+                                 name.begin(), name.end(), [](char c) { return !std::isalnum(c); }, '_');
+                             return name;
+                         });
+
+} // namespace

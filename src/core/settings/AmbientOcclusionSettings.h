@@ -1,0 +1,77 @@
+#pragma once
+// Screen-space ambient occlusion: ground-truth ambient occlusion (GTAO, Jimenez et al. 2016, "Practical
+// Real-Time Strategies for Accurate Indirect Occlusion") from linear depth, view normals and the camera.
+
+#include "core/settings/Reflect.h"
+
+#include <array>
+#include <span>
+#include <string_view>
+
+namespace photopic {
+
+/// Slices x steps per side of each slice.
+enum class AoQuality {
+    Low,    ///< 1 slice x 2 steps per side
+    Medium, ///< 2 x 2
+    High,   ///< 3 x 3
+    Ultra,  ///< 9 x 3
+};
+
+inline std::span<const std::string_view> aoQualityNames() {
+    static constexpr std::array<std::string_view, 4> kNames{"low", "medium", "high", "ultra"};
+    return kNames;
+}
+
+enum class AoResolution {
+    Full, ///< one horizon search per pixel
+    Half, ///< one per 2 x 2 pixels, upsampled by the depth-aware denoiser
+};
+
+inline std::span<const std::string_view> aoResolutionNames() {
+    static constexpr std::array<std::string_view, 2> kNames{"full", "half"};
+    return kNames;
+}
+
+enum class AoApply {
+    /// The lighting stage hands the visibility to the host, which multiplies its indirect (ambient, IBL)
+    /// light only.
+    Lighting,
+    /// For hosts without a lighting stage (and the CLI): a post pass multiplies the scene colour by the
+    /// visibility before TAA and metering. Known error: it darkens direct light (the sun, emission) too, so
+    /// occluded creases in sunlight come out darker than they are.
+    Multiply,
+};
+
+inline std::span<const std::string_view> aoApplyNames() {
+    static constexpr std::array<std::string_view, 2> kNames{"lighting", "multiply"};
+    return kNames;
+}
+
+struct AmbientOcclusionSettings {
+    bool enabled = false; ///< default off
+    float radius = 1.0f;  ///< world units, [0.001, 100], default 1: occluders farther than this do not count
+    /// World units, [0, 1], default 0: the surface point is lifted this far along its normal before the
+    /// horizons are searched, so surfaces less than `bias` above the tangent plane do not occlude (depth
+    /// buffer acne on coarse geometry). 0 matches the ray tracer's reference.
+    float bias = 0.0f;
+    /// [0.1, 8], default 1: visibility^power, an artistic shaping applied after the raw visibility (the
+    /// lighting stage's texture stays raw and hands the exponent to the host; the multiply pass applies it).
+    float power = 1.0f;
+    AoQuality quality = AoQuality::High;          ///< low, medium, high (default), ultra
+    AoResolution resolution = AoResolution::Full; ///< full (default), half
+    AoApply apply = AoApply::Lighting;            ///< lighting (default), multiply
+
+    template <class V>
+    void visit(V& v) {
+        v.field("enabled", enabled);
+        v.field("radius", radius, Range{0.001, 100});
+        v.field("bias", bias, Range{0, 1});
+        v.field("power", power, Range{0.1, 8});
+        v.field("quality", quality, aoQualityNames());
+        v.field("resolution", resolution, aoResolutionNames());
+        v.field("apply", apply, aoApplyNames());
+    }
+};
+
+} // namespace photopic

@@ -1,0 +1,136 @@
+#include "passes/gtao/GtaoPass.h"
+
+#include "passes/Bindings.h"
+
+namespace photopic {
+
+namespace {
+GLuint groups(int size) {
+    return GLuint((size + 7) / 8);
+}
+} // namespace
+
+GtaoPass::GtaoPass(Stage stage)
+    : mStage(stage)
+    , mMain(makeComputeProgram("passes/gtao/gtao_main.comp.glsl", bindingDefines()))
+    , mDenoise(makeComputeProgram("passes/gtao/gtao_denoise.comp.glsl", bindingDefines()))
+    , mParameters("gtao parameters") {}
+
+std::span<const ResourceUse> GtaoPass::uses() const {
+    static constexpr ResourceUse kUses[] = {{Resource::LinearDepth, Access::Read},
+                                            {Resource::Normals, Access::Read},
+                                            {Resource::Camera, Access::Read},
+                                            {Resource::AmbientOcclusion, Access::Write}};
+    return kUses;
+}
+
+bool GtaoPass::enabled(const FrameContext& ctx) const {
+    const AmbientOcclusionSettings& s = ctx.settings.ssao;
+    if (!s.enabled) {
+        return false;
+    }
+    // The post-stage instance feeds the multiply pass, which works on the HDR path's scene colour.
+    return mStage == Stage::Lighting ? s.apply == AoApply::Lighting : s.apply == AoApply::Multiply && ctx.hdr;
+}
+
+glm::ivec2 GtaoPass::slicesAndSteps(AoQuality quality) noexcept {
+    switch (quality) {
+    case AoQuality::Low:
+        return {1, 2};
+    case AoQuality::Medium:
+        return {2, 2};
+    case AoQuality::High:
+        return {3, 3};
+    case AoQuality::Ultra:
+        return {9, 3};
+    }
+    return {3, 3};
+}
+
+void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const AmbientOcclusionSettings& s = ctx.settings.ssao;
+    const Camera& camera = *ctx.inputs.camera;
+    const Extent e = ctx.extent;
+    const int scale = s.resolution == AoResolution::Half ? 2 : 1;
+    const Extent rawExtent{(e.width + scale - 1) / scale, (e.height + scale - 1) / scale};
+    const Texture& raw = resources.pool()
+                             .acquire({.extent = rawExtent,
+                                       .format = GL_R16F,
+                                       .minFilter = GL_NEAREST,
+                                       .magFilter = GL_NEAREST,
+                                       .debugName = "gtao raw"})
+                             .texture();
+    const Texture& out = resources.pool()
+                             .acquire({.extent = e,
+                                       .format = GL_R16F,
+                                       .minFilter = GL_NEAREST,
+                                       .magFilter = GL_NEAREST,
+                                       .debugName = "ambient occlusion"})
+                             .texture();
+    const glm::ivec2 tier = slicesAndSteps(s.quality);
+    const double rawTexels = double(rawExtent.width) * rawExtent.height;
+    const double fullTexels = double(e.width) * e.height;
+    // Horizon search: depth per step (2 sides) plus the centre's depth and normal; denoise: 25 depths and raw
+    // values per pixel (mostly cache hits).
+    const double bytes =
+        rawTexels * (4.0 * 2.0 * tier.x * tier.y + 4.0 + 8.0 + 2.0) + fullTexels * (4 + 8 + 4 + 2);
+    ScopedGpuTimer timer(ctx.timers, "gtao", bytes);
+    mParameters.update({.invProjection = glm::inverse(camera.projection),
+                        .projection = camera.projection,
+                        .fullSize = glm::vec2(float(e.width), float(e.height)),
+                        .radius = s.radius,
+                        .bias = s.bias,
+                        .slices = tier.x,
+                        .steps = tier.y,
+                        .scale = scale,
+                        .frame = std::uint32_t(ctx.time.frameIndex % 1024u),
+                        .octahedral = ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 1 : 0});
+    mParameters.bind(kBindingParameters);
+    glBindTextureUnit(0, resources.texture(Resource::LinearDepth)->id());
+    glBindTextureUnit(1, resources.texture(Resource::Normals)->id());
+
+    mMain.use();
+    glBindImageTexture(0, raw.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
+    glDispatchCompute(groups(rawExtent.width), groups(rawExtent.height), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+
+    mDenoise.use();
+    glBindTextureUnit(2, raw.id());
+    glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
+    glDispatchCompute(groups(e.width), groups(e.height), 1);
+    resources.bind(Resource::AmbientOcclusion, out);
+}
+
+AoMultiplyPass::AoMultiplyPass()
+    : mProgram(makeComputeProgram("passes/gtao/ao_multiply.comp.glsl", bindingDefines()))
+    , mParameters("ao multiply parameters") {}
+
+std::span<const ResourceUse> AoMultiplyPass::uses() const {
+    static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
+                                            {Resource::AmbientOcclusion, Access::Read},
+                                            {Resource::SceneColor, Access::Write}};
+    return kUses;
+}
+
+bool AoMultiplyPass::enabled(const FrameContext& ctx) const {
+    return ctx.hdr && ctx.settings.ssao.enabled && ctx.settings.ssao.apply == AoApply::Multiply;
+}
+
+void AoMultiplyPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const Extent e = ctx.extent;
+    const Texture& out =
+        resources.pool()
+            .acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with ao"})
+            .texture();
+    ScopedGpuTimer timer(ctx.timers, "ao multiply", double(e.width) * e.height * (8 + 2 + 8));
+    mParameters.update({.power = ctx.settings.ssao.power});
+    mParameters.bind(kBindingParameters);
+    mProgram.use();
+    glBindTextureUnit(0, resources.texture(Resource::SceneColor)->id());
+    glBindTextureUnit(1, resources.texture(Resource::AmbientOcclusion)->id());
+    glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glDispatchCompute(groups(e.width), groups(e.height), 1);
+    resources.bind(Resource::SceneColor, out);
+}
+
+} // namespace photopic

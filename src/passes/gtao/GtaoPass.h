@@ -1,0 +1,79 @@
+#pragma once
+// Ground-truth ambient occlusion (Jimenez et al. 2016, "Practical Real-Time Strategies for Accurate Indirect
+// Occlusion"): per pixel, a few screen-space slices around the view vector; in each, the two horizons within
+// the world-space radius, clamped to the normal's hemisphere, and the cosine-weighted visibility between them
+// integrated analytically. A depth-aware spatial filter then removes the per-pixel noise. The output is the
+// raw visibility in [0, 1] (1 for the sky), the quantity a ray tracer measures; `ssao.power` is not in it.
+//
+// Two instances: one in the lighting stage (ssao.apply = lighting: the host multiplies its indirect light by
+// it) and one in the post stage (ssao.apply = multiply), followed by AoMultiplyPass.
+
+#include "passes/FramePass.h"
+
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+
+namespace photopic {
+
+/// std140 mirror of gtao_common.h.glsl's parameter block (the horizon search and the denoiser).
+struct GtaoParameters {
+    glm::mat4 invProjection{1.0f};
+    glm::mat4 projection{1.0f};
+    glm::vec2 fullSize{1.0f}; ///< full-resolution extent, pixels
+    float radius = 1.0f;      ///< world units
+    float bias = 0.0f;        ///< world units along the normal
+    std::int32_t slices = 3;
+    std::int32_t steps = 3;      ///< per side
+    std::int32_t scale = 1;      ///< full-resolution pixels per AO texel (1 or 2)
+    std::uint32_t frame = 0;     ///< rotates the noise
+    std::int32_t octahedral = 0; ///< normals are octahedral-encoded (else view xyz)
+    std::int32_t padding[3] = {};
+};
+static_assert(sizeof(GtaoParameters) == 176);
+static_assert(offsetof(GtaoParameters, fullSize) == 128);
+static_assert(offsetof(GtaoParameters, frame) == 156);
+
+/// std140 mirror of ao_multiply.comp.glsl's parameter block.
+struct AoMultiplyParameters {
+    float power = 1.0f;
+    float padding[3] = {};
+};
+static_assert(sizeof(AoMultiplyParameters) == 16);
+
+class GtaoPass final : public FramePass {
+public:
+    enum class Stage { Lighting, Post };
+    explicit GtaoPass(Stage stage);
+    [[nodiscard]] std::string_view name() const override { return "gtao"; }
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    /// ssao.enabled, and ssao.apply picks this instance's stage.
+    [[nodiscard]] bool enabled(const FrameContext& ctx) const override;
+    void execute(FrameContext& ctx, FrameResources& resources) override;
+
+    /// Slices and steps per side for a quality tier.
+    [[nodiscard]] static glm::ivec2 slicesAndSteps(AoQuality quality) noexcept;
+
+private:
+    Stage mStage;
+    Program mMain;
+    Program mDenoise;
+    ParameterBlock<GtaoParameters> mParameters;
+};
+
+/// ssao.apply = multiply: sceneColor *= visibility^power (before TAA and metering). It darkens direct light
+/// too; a host with a lighting stage should use ssao.apply = lighting instead.
+class AoMultiplyPass final : public FramePass {
+public:
+    AoMultiplyPass();
+    [[nodiscard]] std::string_view name() const override { return "ao multiply"; }
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    [[nodiscard]] bool enabled(const FrameContext& ctx) const override;
+    void execute(FrameContext& ctx, FrameResources& resources) override;
+
+private:
+    Program mProgram;
+    ParameterBlock<AoMultiplyParameters> mParameters;
+};
+
+} // namespace photopic

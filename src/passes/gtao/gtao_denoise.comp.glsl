@@ -1,0 +1,54 @@
+// GTAO's spatial denoiser: a 5 x 5 (AO texels) Gaussian weighted by how far each neighbour's surface lies from
+// the centre's tangent plane, so occlusion does not bleed across depth discontinuities (no halos) and the
+// half-resolution result is upsampled along surfaces. Sky pixels are 1.
+#include "passes/gtao/gtao_common.h.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 0) uniform sampler2D uLinearDepth;
+layout(binding = 1) uniform sampler2D uNormals;
+layout(binding = 2) uniform sampler2D uRaw;
+layout(binding = 0, r16f) uniform writeonly image2D uVisibility;
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 full = imageSize(uVisibility);
+    if (any(greaterThanEqual(p, full))) {
+        return;
+    }
+    float z = texelFetch(uLinearDepth, p, 0).r;
+    if (isinf(z) || !(z > 0.0)) {
+        imageStore(uVisibility, p, vec4(1.0));
+        return;
+    }
+    vec4 t = texelFetch(uNormals, p, 0);
+    vec3 normal = normalize(uOctahedral != 0 ? octahedralDecode(t.rg) : t.xyz);
+    vec3 position = viewPositionAt(vec2(p) + 0.5, z);
+    ivec2 rawSize = textureSize(uRaw, 0);
+    ivec2 centre = p / uScale;
+    // Tolerance for the distance from the tangent plane: a few per cent of the depth.
+    float tolerance = 0.02 * z;
+    float sum = 0.0;
+    float weights = 0.0;
+    for (int dy = -2; dy <= 2; ++dy) {
+        for (int dx = -2; dx <= 2; ++dx) {
+            ivec2 q = centre + ivec2(dx, dy);
+            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, rawSize))) {
+                continue;
+            }
+            ivec2 source = min(q * uScale, full - 1);
+            float sz = texelFetch(uLinearDepth, source, 0).r;
+            if (isinf(sz) || !(sz > 0.0)) {
+                continue;
+            }
+            vec3 offset = viewPositionAt(vec2(source) + 0.5, sz) - position;
+            float plane = abs(dot(offset, normal)) / tolerance;
+            vec2 d = vec2(source - p) / float(uScale);
+            float w = exp(-0.5 * dot(d, d) / 2.25) * exp(-plane * plane);
+            sum += w * texelFetch(uRaw, q, 0).r;
+            weights += w;
+        }
+    }
+    float visibility = weights > 1e-6 ? sum / weights : texelFetch(uRaw, clamp(centre, ivec2(0), rawSize - 1), 0).r;
+    imageStore(uVisibility, p, vec4(clamp(visibility, 0.0, 1.0)));
+}

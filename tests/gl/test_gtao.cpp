@@ -1,0 +1,172 @@
+// GTAO against the testbed's ray-traced ambient occlusion (same radius, cosine-weighted): the visibility the
+// lighting stage hands the host, on a still frame at 160x90.
+
+#include "GlTest.h"
+
+#include "gl/TextureIo.h"
+#include "scenes/testbed/TestbedRaytracer.h"
+#include "scenes/testbed/TestbedScene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+namespace photopic::test {
+
+namespace {
+
+constexpr int kW = 160;
+constexpr int kH = 90;
+constexpr float kDt = 1.0f / 30.0f;
+
+std::unique_ptr<TestbedScene> stillScene(float cameraTime) {
+    auto scene = std::make_unique<TestbedScene>();
+    for (const std::string& a : {std::string("cameraSpeed=0"), std::string("objectSpeed=0"),
+                                 "cameraStart=" + std::to_string(cameraTime)}) {
+        EXPECT_TRUE(scene->applyOverride(a).empty()) << a;
+    }
+    scene->resize({kW, kH});
+    return scene;
+}
+
+Settings aoSettings(AoResolution resolution) {
+    Settings s;
+    s.autoExposure.enabled = false;
+    s.ssao.enabled = true;
+    s.ssao.radius = 1.0f; // the testbed's aoRadius default: the reference's
+    s.ssao.resolution = resolution;
+    return s;
+}
+
+/// The lighting stage's visibility for frame `frame` of `scene` (rows top to bottom, R).
+ImageF gtaoVisibility(TestbedScene& scene, Pipeline& pipeline, std::uint64_t frame) {
+    std::vector<double> telemetry;
+    const FrameTime time{.dt = kDt, .frameIndex = frame};
+    const FrameInputs in = scene.render(time, pipeline, telemetry);
+    const LightingOutputs& lit = pipeline.renderLighting(in, time);
+    EXPECT_NE(lit.ambientOcclusion, nullptr);
+    ImageF out = lit.ambientOcclusion ? readTextureF(*lit.ambientOcclusion) : ImageF(kW, kH, 1.0f);
+    pipeline.execute(in, time);
+    return out;
+}
+
+struct AoFigures {
+    double mae = 0.0;       ///< over pixels with reference visibility < 0.95
+    double bias = 0.0;      ///< mean signed error (GTAO - reference) over the same pixels
+    long occluded = 0;      ///< how many
+    double halo = 1.0;      ///< mean GTAO visibility on the background side of silhouettes
+    double haloTruth = 1.0; ///< the reference's mean over the same band
+    long band = 0;
+};
+
+/// The background side of a silhouette: a surface pixel with, within 3 px, a surface nearer by more than the
+/// radius (an occluder the reference does not count).
+AoFigures measure(const ImageF& gtao, const ImageF& truth, const ImageF& depth, float radius) {
+    AoFigures f;
+    double abs = 0.0, signedSum = 0.0, halo = 0.0, haloTruth = 0.0;
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) {
+            const double g = gtao.at(x, y)[0];
+            const double t = truth.at(x, y)[0];
+            const float z = depth.at(x, y)[0];
+            if (t < 0.95) {
+                abs += std::abs(g - t);
+                signedSum += g - t;
+                ++f.occluded;
+            }
+            if (!std::isfinite(z)) {
+                continue;
+            }
+            bool background = false;
+            for (int dy = -3; dy <= 3 && !background; ++dy) {
+                for (int dx = -3; dx <= 3 && !background; ++dx) {
+                    const int qx = x + dx, qy = y + dy;
+                    if (qx < 0 || qy < 0 || qx >= kW || qy >= kH) {
+                        continue;
+                    }
+                    const float zq = depth.at(qx, qy)[0];
+                    background = std::isfinite(zq) && zq < z - radius;
+                }
+            }
+            if (background) {
+                halo += g;
+                haloTruth += t;
+                ++f.band;
+            }
+        }
+    }
+    f.mae = f.occluded ? abs / double(f.occluded) : 0.0;
+    f.bias = f.occluded ? signedSum / double(f.occluded) : 0.0;
+    f.halo = f.band ? halo / double(f.band) : 1.0;
+    f.haloTruth = f.band ? haloTruth / double(f.band) : 1.0;
+    return f;
+}
+
+} // namespace
+
+// Still camera (path time 0.3 s): the lighting stage's visibility against the ray tracer's `ao` (16 x 16
+// cosine-weighted rays, the same radius). Over the occluded pixels (reference < 0.95): mean absolute error
+// <= 0.08 and bias within +-0.03. The halo figure (mean on the background side of silhouettes, 3 px band, wanted
+// >= 0.97) is printed, not asserted: it measures 0.889 where the reference itself has 0.932 over the same band
+// (the band takes in occluded ground at the feet of objects), and thin poles and fence wires over-occlude
+// (depth has no thickness); both are open work, with the half-resolution bias.
+TEST_F(GlTest, GtaoMatchesTheRayTracedAmbientOcclusion) {
+    auto scene = stillScene(0.3f);
+    const testbed::TruthOptions options = scene->truthOptions({.dt = kDt, .frameIndex = 0});
+    ASSERT_EQ(options.aoRadius, 1.0f);
+    const ImageF truth = testbed::renderTruth(testbed::TruthKind::Ao, options);
+    const ImageF depth = testbed::renderTruth(testbed::TruthKind::Depth, options);
+
+    Pipeline full({.settings = aoSettings(AoResolution::Full)});
+    const ImageF gtao = gtaoVisibility(*scene, full, 0);
+    const AoFigures f = measure(gtao, truth, depth, options.aoRadius);
+    std::printf("gtao full (high, radius 1): MAE %.4f, bias %+.4f over %ld occluded px; halo band mean %.4f "
+                "(reference %.4f) over %ld px\n",
+                f.mae, f.bias, f.occluded, f.halo, f.haloTruth, f.band);
+
+    Pipeline half({.settings = aoSettings(AoResolution::Half)});
+    const AoFigures h = measure(gtaoVisibility(*scene, half, 0), truth, depth, options.aoRadius);
+    std::printf("gtao half (high, radius 1): MAE %.4f, bias %+.4f; halo band mean %.4f\n", h.mae, h.bias,
+                h.halo);
+
+    EXPECT_GT(f.occluded, 100);
+    EXPECT_GT(f.band, 20);
+    EXPECT_LE(f.mae, 0.08);
+    EXPECT_LE(std::abs(f.bias), 0.03);
+}
+
+// ssao off: the lighting stage hands no texture. apply = multiply: the lighting stage hands none either (the
+// post stage multiplies the scene colour instead), and the post image is darker where the surface is
+// occluded.
+TEST_F(GlTest, GtaoRunsInTheStageItsApplyModeNames) {
+    auto scene = stillScene(0.3f);
+    const FrameTime time{.dt = kDt, .frameIndex = 0};
+    std::vector<double> telemetry;
+
+    Settings off = aoSettings(AoResolution::Full);
+    off.ssao.enabled = false;
+    Pipeline plain({.settings = off});
+    FrameInputs in = scene->render(time, plain, telemetry);
+    EXPECT_EQ(plain.renderLighting(in, time).ambientOcclusion, nullptr);
+    const ImageF without = readTextureF(plain.execute(in, time));
+
+    Settings multiply = aoSettings(AoResolution::Full);
+    multiply.ssao.apply = AoApply::Multiply;
+    Pipeline post({.settings = multiply});
+    in = scene->render(time, post, telemetry);
+    EXPECT_EQ(post.renderLighting(in, time).ambientOcclusion, nullptr);
+    const ImageF with = readTextureF(post.execute(in, time));
+    const PipelineStatus status = post.status();
+    EXPECT_NE(std::find(status.ran.begin(), status.ran.end(), "ao multiply"), status.ran.end());
+    double sumWithout = 0.0, sumWith = 0.0;
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) {
+            sumWithout += without.at(x, y)[1];
+            sumWith += with.at(x, y)[1];
+        }
+    }
+    EXPECT_LT(sumWith, sumWithout);
+}
+
+} // namespace photopic::test
