@@ -15,15 +15,15 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uEdges;      // linear filtering: the searches fetch two pixels at once
-layout(binding = 1) uniform sampler2D uAreaOrtho;  // RG8, texel fetches
-layout(binding = 2) uniform sampler2D uAreaDiag;   // RG8, texel fetches
-layout(binding = 3) uniform usampler2D uSearch;    // R8UI, texel fetches
+layout(binding = 0) uniform sampler2D uEdges;     // linear filtering: the searches fetch two pixels at once
+layout(binding = 1) uniform sampler2D uAreaOrtho; // RG8, texel fetches
+layout(binding = 2) uniform sampler2D uAreaDiag;  // RG8, texel fetches
+layout(binding = 3) uniform usampler2D uSearch;   // R8UI, texel fetches
 layout(binding = 0, rgba8) uniform writeonly image2D uWeights;
 
 uniform int uSearchSteps;
-uniform int uDiagSteps;            // 0: no diagonal patterns
-uniform float uCornerRounding;     // fraction kept at a detected corner; 1: no corner detection
+uniform int uDiagSteps;        // 0: no diagonal patterns
+uniform float uCornerRounding; // fraction kept at a detected corner; 1: no corner detection
 
 const int kOrthoMax = 64;
 const int kDiagMax = 20;
@@ -97,7 +97,8 @@ int searchForward(bool vertical, int along, int across, int limit) {
 }
 
 int crossingBits(bool vertical, int along, int across) {
-    return int(crossingAt(vertical, along, across) > 0.5) | (int(crossingAt(vertical, along, across - 1) > 0.5) << 1);
+    return int(crossingAt(vertical, along, across) > 0.5) |
+           (int(crossingAt(vertical, along, across - 1) > 0.5) << 1);
 }
 
 vec2 orthogonalWeights(ivec2 p, bool vertical) {
@@ -110,7 +111,8 @@ vec2 orthogonalWeights(ivec2 p, bool vertical) {
     int right = last - along;
     int e1 = crossingBits(vertical, first, across);
     int e2 = crossingBits(vertical, last + 1, across);
-    ivec2 texel = ivec2(kOrthoMax * e2 + min(right, kOrthoMax - 1), kOrthoMax * e1 + min(left, kOrthoMax - 1));
+    ivec2 texel =
+        ivec2(kOrthoMax * e2 + min(right, kOrthoMax - 1), kOrthoMax * e1 + min(left, kOrthoMax - 1));
     vec2 area = texelFetch(uAreaOrtho, texel, 0).rg;
     if (uCornerRounding < 1.0 && area.x + area.y > 0.0) {
         vec2 nearer = vec2(left <= right ? 1.0 : 0.0, right <= left ? 1.0 : 0.0);
@@ -125,18 +127,33 @@ vec2 orthogonalWeights(ivec2 p, bool vertical) {
     return area;
 }
 
-// The staircase whose steps have edges on their -x and +y sides: this pixel is the +y neighbour of step
-// q - (0, 1), and the steps go on along (1, 1).
-vec2 diagonalDown(ivec2 q) {
-    if (!edgeR(q - ivec2(0, 1))) {
+// Edges around the pixel q, at offset d from it, in q's own image (mirror false) or in that image mirrored
+// across the column of q (mirror true): there a -x edge is the original's +x edge, the -x edge of the
+// next pixel to the right.
+bool diagEdgeR(ivec2 q, ivec2 d, bool mirror) {
+    return edgeR(q + (mirror ? ivec2(1 - d.x, d.y) : d));
+}
+bool diagEdgeG(ivec2 q, ivec2 d, bool mirror) {
+    return edgeG(q + (mirror ? ivec2(-d.x, d.y) : d));
+}
+
+// The staircase whose steps have edges on their -x and -y sides, going on along (1, -1), with this pixel q
+// one of the steps. With `mirror`, the same pattern in the image mirrored across q's column, i.e. steps
+// with edges on their +x and -y sides going on along (1, 1). Both weights belong to the edge on q's -y side
+// (its -y neighbour's share first in the table, so they swap), which the mirror leaves where it was: one
+// area table serves both directions.
+vec2 diagonalWeights(ivec2 q, bool mirror) {
+    if (!diagEdgeR(q, ivec2(0), mirror)) {
         return vec2(0.0);
     }
     int fwd = 0;
-    while (fwd < uDiagSteps && edgeG(q + ivec2(fwd + 1)) && edgeR(q + ivec2(fwd + 1) - ivec2(0, 1))) {
+    while (fwd < uDiagSteps && diagEdgeG(q, ivec2(fwd + 1, -fwd - 1), mirror) &&
+           diagEdgeR(q, ivec2(fwd + 1, -fwd - 1), mirror)) {
         ++fwd;
     }
     int back = 0;
-    while (back < uDiagSteps && edgeG(q - ivec2(back + 1)) && edgeR(q - ivec2(back + 1) - ivec2(0, 1))) {
+    while (back < uDiagSteps && diagEdgeG(q, ivec2(-back - 1, back + 1), mirror) &&
+           diagEdgeR(q, ivec2(-back - 1, back + 1), mirror)) {
         ++back;
     }
     if (fwd + back < 2) {
@@ -144,35 +161,16 @@ vec2 diagonalDown(ivec2 q) {
     }
     // The ends' continuations (bit 0 along x, bit 1 along y); none where the search ran out, as the
     // reference drops the crossing edges of an end it did not find.
-    ivec2 first = q - ivec2(back) - ivec2(0, 1);
-    ivec2 last = q + ivec2(fwd) - ivec2(0, 1);
-    int e1 = back == uDiagSteps ? 0 : int(edgeG(first + ivec2(-1, 0))) | (int(edgeR(first + ivec2(0, -1))) << 1);
-    int e2 = fwd == uDiagSteps ? 0 : int(edgeG(last + ivec2(1, 1))) | (int(edgeR(last + ivec2(1, 1))) << 1);
-    return texelFetch(uAreaDiag, ivec2(kDiagMax * e2 + min(fwd, kDiagMax - 1), kDiagMax * e1 + min(back, kDiagMax - 1)), 0).rg;
-}
-
-// The mirror image across x: steps with edges on their -x and -y sides, going on along (1, -1); this
-// pixel is a step, so the two shares swap.
-vec2 diagonalUp(ivec2 q) {
-    if (!edgeR(q)) {
-        return vec2(0.0);
-    }
-    int fwd = 0;
-    while (fwd < uDiagSteps && edgeG(q + ivec2(fwd + 1, -fwd - 1)) && edgeR(q + ivec2(fwd + 1, -fwd - 1))) {
-        ++fwd;
-    }
-    int back = 0;
-    while (back < uDiagSteps && edgeG(q + ivec2(-back - 1, back + 1)) && edgeR(q + ivec2(-back - 1, back + 1))) {
-        ++back;
-    }
-    if (fwd + back < 2) {
-        return vec2(0.0);
-    }
-    ivec2 first = q + ivec2(-back, back);
-    ivec2 last = q + ivec2(fwd, -fwd);
-    int e1 = back == uDiagSteps ? 0 : int(edgeG(first + ivec2(-1, 1))) | (int(edgeR(first + ivec2(0, 1))) << 1);
-    int e2 = fwd == uDiagSteps ? 0 : int(edgeG(last + ivec2(1, 0))) | (int(edgeR(last + ivec2(1, -1))) << 1);
-    return texelFetch(uAreaDiag, ivec2(kDiagMax * e2 + min(fwd, kDiagMax - 1), kDiagMax * e1 + min(back, kDiagMax - 1)), 0).gr;
+    ivec2 first = ivec2(-back, back);
+    ivec2 last = ivec2(fwd, -fwd);
+    int e1 = back == uDiagSteps ? 0
+                                : int(diagEdgeG(q, first + ivec2(-1, 1), mirror)) |
+                                      (int(diagEdgeR(q, first + ivec2(0, 1), mirror)) << 1);
+    int e2 = fwd == uDiagSteps ? 0
+                               : int(diagEdgeG(q, last + ivec2(1, 0), mirror)) |
+                                     (int(diagEdgeR(q, last + ivec2(1, -1), mirror)) << 1);
+    ivec2 texel = ivec2(kDiagMax * e2 + min(fwd, kDiagMax - 1), kDiagMax * e1 + min(back, kDiagMax - 1));
+    return texelFetch(uAreaDiag, texel, 0).gr;
 }
 
 void main() {
@@ -184,9 +182,8 @@ void main() {
     vec4 w = vec4(0.0);
     if (e.g > 0.5) {
         if (uDiagSteps > 0) {
-            vec2 down = diagonalDown(p);
-            vec2 up = diagonalUp(p);
-            w.rg = down.x + down.y >= up.x + up.y ? down : up;
+            // Both directions, summed as the reference does (a pixel rarely sits on both).
+            w.rg = diagonalWeights(p, false) + diagonalWeights(p, true);
         }
         if (w.r + w.g == 0.0) {
             w.rg = orthogonalWeights(p, false);
