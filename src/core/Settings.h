@@ -34,6 +34,7 @@ struct Settings {
     TemporalSettings temporal;
     AntiAliasingSettings aa;
     TaaSettings taa;
+    SmaaSettings smaa;
     AmbientOcclusionSettings ssao;
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
@@ -66,6 +67,7 @@ struct Settings {
         v.object("temporal", temporal);
         v.object("aa", aa);
         v.object("taa", taa);
+        v.object("smaa", smaa);
         v.object("ssao", ssao);
     }
 };

@@ -34,6 +34,7 @@ FrameOrder::FrameOrder(const Capabilities& caps, bool keepTelemetryHistory)
         // Display domain.
         &tonemap,          // sceneColor, exposure, bloom? -> displayColor (composite, grade, curve, sRGB)
         &fxaa,             // displayColor -> displayColor
+        &smaa,             // displayColor -> displayColor (edges, weights: pooled)
         &lensFlare,        // sceneColor, exposure -> lensFlare
         &displayEffects,   // displayColor, exposure, lensFlare?, bloom? -> displayColor
         &histogramOverlay, // displayColor, histogram, exposure -> displayColor

@@ -16,6 +16,7 @@
 #include "passes/probe/ProbePass.h"
 #include "passes/probe/SubjectContextsPass.h"
 #include "passes/sanitize/SanitizePass.h"
+#include "passes/smaa/SmaaPass.h"
 #include "passes/taa/TaaPass.h"
 #include "passes/tonemap/TonemapPass.h"
 
@@ -54,6 +55,7 @@ public:
     DebugViewPass debugView;
     TonemapPass tonemap;
     FxaaPass fxaa;
+    SmaaPass smaa;
     LensFlarePass lensFlare;
     DisplayEffectsPass displayEffects;
     HistogramOverlayPass histogramOverlay;

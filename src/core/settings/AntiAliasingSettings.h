@@ -51,6 +51,26 @@ struct AntiAliasingSettings {
     }
 };
 
+enum class SmaaQuality { Low, Medium, High, Ultra };
+
+inline std::span<const std::string_view> smaaQualityNames() {
+    static constexpr std::array<std::string_view, 4> kNames{"low", "medium", "high", "ultra"};
+    return kNames;
+}
+
+/// SMAA 1x (Jimenez et al. 2012) on the display-referred image.
+struct SmaaSettings {
+    /// low, medium, high, ultra; default high. The reference presets: luma threshold 0.15 / 0.1 / 0.1 /
+    /// 0.05, orthogonal search steps 4 / 8 / 16 / 32, diagonal steps - / - / 8 / 16, corner rounding
+    /// - / - / 25% / 25%.
+    SmaaQuality quality = SmaaQuality::High;
+
+    template <class V>
+    void visit(V& v) {
+        v.field("quality", quality, smaaQualityNames());
+    }
+};
+
 enum class HistoryFilter {
     CatmullRom, ///< sharp: a bicubic fetch keeps a moving image from softening frame after frame
     Bilinear,   ///< cheaper, but every reprojection at a fractional position blurs the history a little

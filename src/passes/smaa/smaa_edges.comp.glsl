@@ -1,0 +1,44 @@
+// SMAA 1x, step 1: luma edge detection with local contrast adaptation (Jimenez et al. 2012, "SMAA:
+// Enhanced Subpixel Morphological Antialiasing", section 3.1). An edge on a pixel's -x or -y side is kept
+// when the luma step across it exceeds the threshold and is not dwarfed (by `uContrastFactor`) by the
+// largest step around it, so the weaker edge beside a strong one does not start a second, wrong pattern.
+// Luma is Rec.709 weights on the display-encoded values: edges are judged by perceived contrast.
+// Output RG8: r, an edge between this pixel and its -x neighbour; g, with its -y neighbour.
+#include "passes/common/color.h.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 0) uniform sampler2D uColor;
+layout(binding = 0, rg8) uniform writeonly image2D uEdges;
+
+uniform float uThreshold;
+uniform float uContrastFactor;
+
+float lumaAt(ivec2 p) {
+    p = clamp(p, ivec2(0), textureSize(uColor, 0) - 1);
+    return luma709(texelFetch(uColor, p, 0).rgb);
+}
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, imageSize(uEdges)))) {
+        return;
+    }
+    float l = lumaAt(p);
+    float lx = lumaAt(p - ivec2(1, 0));
+    float ly = lumaAt(p - ivec2(0, 1));
+    vec2 delta = abs(vec2(l) - vec2(lx, ly));
+    vec2 edges = step(vec2(uThreshold), delta);
+    if (edges.x + edges.y == 0.0) {
+        imageStore(uEdges, p, vec4(0.0));
+        return;
+    }
+    // The largest contrast around the candidate edges: the pixel's other two sides, and the far sides of
+    // its -x and -y neighbours.
+    float around = max(abs(l - lumaAt(p + ivec2(1, 0))), abs(l - lumaAt(p + ivec2(0, 1))));
+    around = max(around, abs(lx - lumaAt(p - ivec2(2, 0))));
+    around = max(around, abs(ly - lumaAt(p - ivec2(0, 2))));
+    around = max(around, max(delta.x, delta.y));
+    edges *= step(vec2(around), uContrastFactor * delta);
+    imageStore(uEdges, p, vec4(edges, 0.0, 0.0));
+}

@@ -1,0 +1,196 @@
+// SMAA 1x, step 2: blending weights (Jimenez et al. 2012, "SMAA: Enhanced Subpixel Morphological
+// Antialiasing", sections 3.1-3.3; the morphological reconstruction of Jimenez et al. 2011, "Practical
+// Morphological Antialiasing", GPU Pro 2).
+// For the edge on a pixel's -y side (edges.g) and on its -x side (edges.r):
+//  1. diagonal patterns first (edges.g only): 45-degree staircases through the pixel, searched one pixel
+//     per step; when one is found its weights replace the orthogonal ones;
+//  2. orthogonal searches both ways along the edge, two pixels per bilinear fetch of the edges texture,
+//     decoded by the search table (the fetch at 3/4 near pixel, 7/8 the run's row, so each channel's
+//     four bits land on distinct 32nds);
+//  3. the crossing edges at the run's ends (L, Z or U shape) and the two distances index the area table:
+//     the share of this pixel, and of its neighbour across the edge, that the revectorised silhouette cuts;
+//  4. corner rounding: at the nearer end, a crossing edge that goes on past the next row is a real corner,
+//     so its weights are scaled down (by 1 - rounding) to keep it sharp.
+// Output RGBA8: r, g for the -y edge (this pixel's share, the -y neighbour's share); b, a for the -x edge.
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 0) uniform sampler2D uEdges;     // linear filtering: the searches fetch two pixels at once
+layout(binding = 1) uniform sampler2D uAreaOrtho; // RG8, texel fetches
+layout(binding = 2) uniform sampler2D uAreaDiag;  // RG8, texel fetches
+layout(binding = 3) uniform usampler2D uSearch;   // R8UI, texel fetches
+layout(binding = 0, rgba8) uniform writeonly image2D uWeights;
+
+uniform int uSearchSteps;
+uniform int uDiagSteps;        // 0: no diagonal patterns
+uniform float uCornerRounding; // fraction kept at a detected corner; 1: no corner detection
+
+const int kOrthoMax = 64;
+const int kDiagMax = 20;
+const int kLevels = 33;
+
+// The weights image is the size of the edges texture. (A global set in main() is read uninitialised as far
+// as the compiler can tell from the helper functions, and Mesa warns about it.)
+ivec2 gridSize() {
+    return imageSize(uWeights);
+}
+
+vec2 edgeAt(ivec2 p) {
+    return texelFetch(uEdges, clamp(p, ivec2(0), gridSize() - 1), 0).rg;
+}
+bool edgeR(ivec2 p) {
+    return edgeAt(p).r > 0.5;
+}
+bool edgeG(ivec2 p) {
+    return edgeAt(p).g > 0.5;
+}
+
+// A pixel or a position from (along the edge, across it).
+ivec2 pixel(bool vertical, int along, int across) {
+    return vertical ? ivec2(across, along) : ivec2(along, across);
+}
+// Edge bits along the run and crossing it, at a pixel.
+float crossingAt(bool vertical, int along, int across) {
+    vec2 e = edgeAt(pixel(vertical, along, across));
+    return vertical ? e.g : e.r;
+}
+// One bilinear fetch: x, the edges along the run; y, the crossing edges; as 32nds.
+ivec2 fetchPair(bool vertical, float along, float across) {
+    vec2 pos = vertical ? vec2(across, along) : vec2(along, across);
+    vec2 e = textureLod(uEdges, pos / vec2(gridSize()), 0.0).rg;
+    e = vertical ? e.rg : e.gr;
+    return ivec2(round(e * 32.0));
+}
+
+// The first pixel of the run (along the edge), searching towards -along.
+int searchBackward(bool vertical, int along, int across) {
+    int a = along;
+    int last = a;
+    int value = 2;
+    for (int i = 0; i < uSearchSteps; ++i) {
+        ivec2 e = fetchPair(vertical, float(a) + 0.25, float(across) + 0.375);
+        last = a;
+        if (e.x < 28 || e.y != 0) {
+            value = int(texelFetch(uSearch, ivec2(e.x, e.y), 0).r);
+            break;
+        }
+        a -= 2;
+    }
+    return max(last + 1 - value, 0);
+}
+
+// The last pixel of the run, searching towards +along.
+int searchForward(bool vertical, int along, int across, int limit) {
+    int b = along + 1;
+    int last = b;
+    int value = 2;
+    for (int i = 0; i < uSearchSteps; ++i) {
+        ivec2 e = fetchPair(vertical, float(b) + 0.75, float(across) + 0.375);
+        last = b;
+        if (e.x < 28 || e.y != 0) {
+            value = int(texelFetch(uSearch, ivec2(kLevels + e.x, e.y), 0).r);
+            break;
+        }
+        b += 2;
+    }
+    return min(last - 1 + value, limit);
+}
+
+int crossingBits(bool vertical, int along, int across) {
+    return int(crossingAt(vertical, along, across) > 0.5) |
+           (int(crossingAt(vertical, along, across - 1) > 0.5) << 1);
+}
+
+vec2 orthogonalWeights(ivec2 p, bool vertical) {
+    int along = vertical ? p.y : p.x;
+    int across = vertical ? p.x : p.y;
+    int limit = (vertical ? gridSize().y : gridSize().x) - 1;
+    int first = searchBackward(vertical, along, across);
+    int last = searchForward(vertical, along, across, limit);
+    int left = along - first;
+    int right = last - along;
+    int e1 = crossingBits(vertical, first, across);
+    int e2 = crossingBits(vertical, last + 1, across);
+    ivec2 texel =
+        ivec2(kOrthoMax * e2 + min(right, kOrthoMax - 1), kOrthoMax * e1 + min(left, kOrthoMax - 1));
+    vec2 area = texelFetch(uAreaOrtho, texel, 0).rg;
+    if (uCornerRounding < 1.0 && area.x + area.y > 0.0) {
+        vec2 nearer = vec2(left <= right ? 1.0 : 0.0, right <= left ? 1.0 : 0.0);
+        vec2 rounding = (1.0 - uCornerRounding) * nearer / (nearer.x + nearer.y);
+        vec2 factor = vec2(1.0);
+        factor.x -= rounding.x * crossingAt(vertical, first, across + 1) +
+                    rounding.y * crossingAt(vertical, last + 1, across + 1);
+        factor.y -= rounding.x * crossingAt(vertical, first, across - 2) +
+                    rounding.y * crossingAt(vertical, last + 1, across - 2);
+        area *= clamp(factor, 0.0, 1.0);
+    }
+    return area;
+}
+
+// Edges around the pixel q, at offset d from it, in q's own image (mirror false) or in that image mirrored
+// across the column of q (mirror true): there a -x edge is the original's +x edge, the -x edge of the
+// next pixel to the right.
+bool diagEdgeR(ivec2 q, ivec2 d, bool mirror) {
+    return edgeR(q + (mirror ? ivec2(1 - d.x, d.y) : d));
+}
+bool diagEdgeG(ivec2 q, ivec2 d, bool mirror) {
+    return edgeG(q + (mirror ? ivec2(-d.x, d.y) : d));
+}
+
+// The staircase whose steps have edges on their -x and -y sides, going on along (1, -1), with this pixel q
+// one of the steps. With `mirror`, the same pattern in the image mirrored across q's column, i.e. steps
+// with edges on their +x and -y sides going on along (1, 1). Both weights belong to the edge on q's -y side
+// (its -y neighbour's share first in the table, so they swap), which the mirror leaves where it was: one
+// area table serves both directions.
+vec2 diagonalWeights(ivec2 q, bool mirror) {
+    if (!diagEdgeR(q, ivec2(0), mirror)) {
+        return vec2(0.0);
+    }
+    int fwd = 0;
+    while (fwd < uDiagSteps && diagEdgeG(q, ivec2(fwd + 1, -fwd - 1), mirror) &&
+           diagEdgeR(q, ivec2(fwd + 1, -fwd - 1), mirror)) {
+        ++fwd;
+    }
+    int back = 0;
+    while (back < uDiagSteps && diagEdgeG(q, ivec2(-back - 1, back + 1), mirror) &&
+           diagEdgeR(q, ivec2(-back - 1, back + 1), mirror)) {
+        ++back;
+    }
+    if (fwd + back < 2) {
+        return vec2(0.0); // one or two steps: a corner, which the orthogonal patterns handle
+    }
+    // The ends' continuations (bit 0 along x, bit 1 along y); none where the search ran out, as the
+    // reference drops the crossing edges of an end it did not find.
+    ivec2 first = ivec2(-back, back);
+    ivec2 last = ivec2(fwd, -fwd);
+    int e1 = back == uDiagSteps ? 0
+                                : int(diagEdgeG(q, first + ivec2(-1, 1), mirror)) |
+                                      (int(diagEdgeR(q, first + ivec2(0, 1), mirror)) << 1);
+    int e2 = fwd == uDiagSteps ? 0
+                               : int(diagEdgeG(q, last + ivec2(1, 0), mirror)) |
+                                     (int(diagEdgeR(q, last + ivec2(1, -1), mirror)) << 1);
+    ivec2 texel = ivec2(kDiagMax * e2 + min(fwd, kDiagMax - 1), kDiagMax * e1 + min(back, kDiagMax - 1));
+    return texelFetch(uAreaDiag, texel, 0).gr;
+}
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, gridSize()))) {
+        return;
+    }
+    vec2 e = edgeAt(p);
+    vec4 w = vec4(0.0);
+    if (e.g > 0.5) {
+        if (uDiagSteps > 0) {
+            // Both directions, summed as the reference does (a pixel rarely sits on both).
+            w.rg = diagonalWeights(p, false) + diagonalWeights(p, true);
+        }
+        if (w.r + w.g == 0.0) {
+            w.rg = orthogonalWeights(p, false);
+        }
+    }
+    if (e.r > 0.5) {
+        w.ba = orthogonalWeights(p, true);
+    }
+    imageStore(uWeights, p, w);
+}
