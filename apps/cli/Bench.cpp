@@ -158,7 +158,7 @@ double canvasPathsDifference(CanvasRenderer& renderer, const CanvasSceneSettings
 /// Warm-up, then GPU timer queries over back-to-back frames, then glFinish-bracketed wall times.
 CanvasPathResult timeCanvasPath(CanvasRenderer& renderer, const CanvasSceneSettings& cs,
                                 CanvasShading shading, const BenchOptions& options) {
-    CanvasPathResult r{.shading = shading};
+    CanvasPathResult r{.shading = shading, .gpuMs = {}, .wallMs = {}};
     int frame = 0;
     for (int i = 0; i < options.warmup; ++i) { // shader JIT, first touch of the targets
         renderer.execute(benchCanvasLighting(cs, frame++), shading);
