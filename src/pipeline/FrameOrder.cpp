@@ -24,6 +24,7 @@ FrameOrder::FrameOrder(const Capabilities& caps, bool keepTelemetryHistory)
         &cameraMotion,    // linearDepth, camera -> motion (only when the host gives none)
         &gtaoPost,        // linearDepth, normals, camera -> ambientOcclusion (ssao.apply = multiply)
         &aoMultiply,      // sceneColor, ambientOcclusion -> sceneColor (ssao.apply = multiply)
+        &smaaHdr,         // sceneColor, exposure (last frame's) -> sceneColor (aa.mode taa+smaa)
         &taa,             // sceneColor, motion, exposure (last frame's), linearDepth?, camera? -> sceneColor
         &metering,        // sceneColor -> histogram, metering, meteringMask
         &probes,          // sceneColor, metering -> metering (subject probes; the subject's reading)

@@ -55,7 +55,8 @@ public:
     DebugViewPass debugView;
     TonemapPass tonemap;
     FxaaPass fxaa;
-    SmaaPass smaa;
+    SmaaPass smaaHdr{SmaaPass::Domain::Hdr};
+    SmaaPass smaa{SmaaPass::Domain::Display};
     LensFlarePass lensFlare;
     DisplayEffectsPass displayEffects;
     HistogramOverlayPass histogramOverlay;

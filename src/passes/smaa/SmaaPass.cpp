@@ -7,8 +7,15 @@ namespace photopic {
 
 namespace {
 
-constexpr ResourceUse kUses[] = {{Resource::DisplayColor, Access::Read},
-                                 {Resource::DisplayColor, Access::Write}};
+constexpr ResourceUse kDisplayUses[] = {{Resource::DisplayColor, Access::Read},
+                                        {Resource::DisplayColor, Access::Write}};
+constexpr ResourceUse kHdrUses[] = {{Resource::SceneColor, Access::Read},
+                                    {Resource::ExposureState, Access::Read},
+                                    {Resource::SceneColor, Access::Write}};
+
+ShaderDefines domainDefines(SmaaPass::Domain domain) {
+    return domain == SmaaPass::Domain::Hdr ? bindingDefines({{"SMAA_HDR", "1"}}) : bindingDefines();
+}
 
 GLuint groups(int size) {
     return GLuint((size + 7) / 8);
@@ -30,10 +37,12 @@ Texture makeTable(int width, int height, GLenum internalFormat, GLenum format, G
 
 } // namespace
 
-SmaaPass::SmaaPass()
-    : mEdges(makeComputeProgram("passes/smaa/smaa_edges.comp.glsl", bindingDefines()))
-    , mWeights(makeComputeProgram("passes/smaa/smaa_weights.comp.glsl", bindingDefines()))
-    , mBlend(makeComputeProgram("passes/smaa/smaa_blend.comp.glsl", bindingDefines())) {
+SmaaPass::SmaaPass(Domain domain)
+    : mDomain(domain)
+    , mEdges(makeComputeProgram("passes/smaa/smaa_edges.comp.glsl", domainDefines(domain)))
+    , mWeights(makeComputeProgram("passes/smaa/smaa_weights.comp.glsl", domainDefines(domain)))
+    , mBlend(makeComputeProgram("passes/smaa/smaa_blend.comp.glsl", domainDefines(domain)))
+    , mParameters("smaa parameters") {
     const smaa::AreaTables& areas = smaa::areaTables();
     mAreaOrtho = makeTable(smaa::kOrthoSize, smaa::kOrthoSize, GL_RG8, GL_RG, GL_UNSIGNED_BYTE,
                            areas.ortho.data(), "smaa orthogonal area");
@@ -44,14 +53,19 @@ SmaaPass::SmaaPass()
 }
 
 std::span<const ResourceUse> SmaaPass::uses() const {
-    return kUses;
+    return mDomain == Domain::Display ? std::span<const ResourceUse>(kDisplayUses)
+                                      : std::span<const ResourceUse>(kHdrUses);
 }
 
 void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Extent e = ctx.extent;
     const double pixels = double(e.width) * e.height;
+    const bool hdr = mDomain == Domain::Hdr;
     const smaa::Preset preset = smaa::preset(int(ctx.settings.smaa.quality));
-    const Texture& display = *resources.texture(Resource::DisplayColor);
+    const Resource colorResource = hdr ? Resource::SceneColor : Resource::DisplayColor;
+    const GLenum colorFormat = hdr ? GL_RGBA16F : GL_RGBA8;
+    const double colorBytes = hdr ? 8.0 : 4.0;
+    const Texture& color = *resources.texture(colorResource);
     // The weights step fetches two edge pixels at once through bilinear filtering.
     const Texture& edges =
         resources.pool().acquire({.extent = e, .format = GL_RG8, .debugName = "smaa edges"}).texture();
@@ -63,25 +77,31 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
                                            .debugName = "smaa weights"})
                                  .texture();
     const Texture& out =
-        resources.pool().acquire({.extent = e, .format = GL_RGBA8, .debugName = "smaa output"}).texture();
+        resources.pool().acquire({.extent = e, .format = colorFormat, .debugName = "smaa output"}).texture();
+    mParameters.update(
+        {.threshold = preset.threshold,
+         .contrastFactor = preset.contrastFactor,
+         .cornerRounding = preset.cornerRounding > 0.0f ? preset.cornerRounding / 100.0f : 1.0f,
+         .searchSteps = preset.searchSteps,
+         .diagonalSteps = preset.diagonalSteps});
+    mParameters.bind(kBindingParameters);
+    if (hdr) {
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
+                         resources.buffer(Resource::ExposureState)->id());
+    }
+    const std::string prefix = hdr ? "smaa (hdr) " : "smaa ";
     {
-        // Five RGBA8 reads (cached) and one RG8 write per pixel.
-        ScopedGpuTimer timer(ctx.timers, "smaa edges", pixels * 6.0);
-        setUniform(mEdges, "uThreshold", preset.threshold);
-        setUniform(mEdges, "uContrastFactor", preset.contrastFactor);
+        // Five colour reads (cached) and one RG8 write per pixel.
+        ScopedGpuTimer timer(ctx.timers, prefix + "edges", pixels * (colorBytes + 2.0));
         mEdges.use();
-        glBindTextureUnit(0, display.id());
+        glBindTextureUnit(0, color.id());
         glBindImageTexture(0, edges.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG8);
         glDispatchCompute(groups(e.width), groups(e.height), 1);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
         // Edge pixels search; the rest read their RG8 texel and write RGBA8.
-        ScopedGpuTimer timer(ctx.timers, "smaa weights", pixels * 6.0);
-        setUniform(mWeights, "uSearchSteps", preset.searchSteps);
-        setUniform(mWeights, "uDiagSteps", preset.diagonalSteps);
-        setUniform(mWeights, "uCornerRounding",
-                   preset.cornerRounding > 0.0f ? preset.cornerRounding / 100.0f : 1.0f);
+        ScopedGpuTimer timer(ctx.timers, prefix + "weights", pixels * 6.0);
         mWeights.use();
         glBindTextureUnit(0, edges.id());
         glBindTextureUnit(1, mAreaOrtho.id());
@@ -92,18 +112,18 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
-        // RGBA8 colour and weights in (the neighbours hit the cache), RGBA8 out.
-        ScopedGpuTimer timer(ctx.timers, "smaa blend", pixels * 12.0);
+        // Colour and weights in (the neighbours hit the cache), colour out.
+        ScopedGpuTimer timer(ctx.timers, prefix + "blend", pixels * (2.0 * colorBytes + 4.0));
         mBlend.use();
-        glBindTextureUnit(0, display.id());
+        glBindTextureUnit(0, color.id());
         glBindTextureUnit(1, weights.id());
-        glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+        glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, colorFormat);
         glDispatchCompute(groups(e.width), groups(e.height), 1);
     }
     for (GLuint unit = 0; unit < 4; ++unit) {
         glBindTextureUnit(unit, 0);
     }
-    resources.bind(Resource::DisplayColor, out);
+    resources.bind(colorResource, out);
 }
 
 } // namespace photopic

@@ -1,21 +1,52 @@
 #pragma once
-// SMAA 1x (Jimenez et al. 2012) on the display-referred RGBA8 image, after tone mapping, in FXAA's place:
-// luma edges with local contrast adaptation, blending weights from orthogonal and diagonal pattern searches
-// with corner rounding, and neighbourhood blending. Three compute dispatches; the edges and weights are
-// pooled transients, the area and search tables (core/SmaaTextures.h) are uploaded once.
+// SMAA 1x (Jimenez et al. 2012): luma edges with local contrast adaptation, blending weights from orthogonal
+// and diagonal pattern searches with corner rounding, and neighbourhood blending. Three compute dispatches;
+// the edges and weights are pooled transients, the area and search tables (core/SmaaTextures.h) are uploaded
+// once. Two placements:
+//  - Display (aa.mode smaa): on the display-referred RGBA8 image after tone mapping, in FXAA's place; edges
+//  on
+//    the encoded values, the blend in linear light.
+//  - Hdr (aa.mode taa+smaa): on the scene-referred colour of the current frame, before TAA gathers it, so the
+//    temporal resolve starts from anti-aliased edges (SMAA first, then the temporal gather, as engines ship
+//    the pair). Edges are judged on a display-like luma of the exposed colour (last frame's exposure, as TAA
+//    uses), sqrt(l E / (1 + l E)), so the thresholds mean what they mean after tone mapping; the blend mixes
+//    scene light, as a supersampled render would.
 
 #include "passes/FramePass.h"
 
+#include <cstdint>
+
 namespace photopic {
+
+/// Mirrors SmaaParameters in the three shaders, std140.
+struct SmaaParameters {
+    float threshold = 0.1f; ///< luma step that makes an edge
+    float contrastFactor =
+        2.0f; ///< local contrast adaptation: dropped when a step this many times larger is beside
+    float cornerRounding = 1.0f;    ///< fraction kept at a detected corner; 1: no corner detection
+    std::int32_t searchSteps = 0;   ///< orthogonal search steps (two pixels each)
+    std::int32_t diagonalSteps = 0; ///< 0: no diagonal patterns
+    std::int32_t pad[3] = {};
+};
+static_assert(sizeof(SmaaParameters) == 32);
 
 class SmaaPass final : public FramePass {
 public:
-    SmaaPass();
-    [[nodiscard]] std::string_view name() const override { return "smaa"; }
+    enum class Domain { Display, Hdr };
+
+    explicit SmaaPass(Domain domain = Domain::Display);
+    [[nodiscard]] std::string_view name() const override {
+        return mDomain == Domain::Display ? "smaa" : "smaa (hdr)";
+    }
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
     [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
         const AntiAliasing aa = ctx.settings.antiAliasing();
-        return aa == AntiAliasing::Smaa || aa == AntiAliasing::TaaSmaa;
+        // taa+smaa runs SMAA in the HDR domain before TAA; without the HDR path (no TAA either) it falls back
+        // to the display placement.
+        if (mDomain == Domain::Hdr) {
+            return aa == AntiAliasing::TaaSmaa && ctx.hdr;
+        }
+        return aa == AntiAliasing::Smaa || (aa == AntiAliasing::TaaSmaa && !ctx.hdr);
     }
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
@@ -25,12 +56,14 @@ public:
     [[nodiscard]] const Texture& searchTexture() const { return mSearch; }
 
 private:
+    Domain mDomain;
     Program mEdges;
     Program mWeights;
     Program mBlend;
     Texture mAreaOrtho;
     Texture mAreaDiag;
     Texture mSearch;
+    ParameterBlock<SmaaParameters> mParameters;
 };
 
 } // namespace photopic

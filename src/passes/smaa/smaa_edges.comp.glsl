@@ -2,21 +2,38 @@
 // Enhanced Subpixel Morphological Antialiasing", section 3.1). An edge on a pixel's -x or -y side is kept
 // when the luma step across it exceeds the threshold and is not dwarfed (by `uContrastFactor`) by the
 // largest step around it, so the weaker edge beside a strong one does not start a second, wrong pattern.
-// Luma is Rec.709 weights on the display-encoded values: edges are judged by perceived contrast.
+// Luma is Rec.709 weights on the display-encoded values: edges are judged by perceived contrast. In the HDR
+// placement (SMAA_HDR) the colour is scene-referred: luma is taken from the exposed value through a
+// Reinhard-like curve and a square root, sqrt(l E / (1 + l E)), close enough to a tone-mapped, encoded value
+// for the thresholds to keep their meaning.
 // Output RG8: r, an edge between this pixel and its -x neighbour; g, with its -y neighbour.
 #include "passes/common/color.h.glsl"
+#ifdef SMAA_HDR
+#include "passes/common/exposure.h.glsl"
+#endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uColor;
 layout(binding = 0, rg8) uniform writeonly image2D uEdges;
 
-uniform float uThreshold;
-uniform float uContrastFactor;
+// Mirrors photopic::SmaaParameters (passes/smaa/SmaaPass.h), std140.
+layout(std140, binding = BINDING_PARAMETERS) uniform SmaaParameters {
+    float uThreshold;
+    float uContrastFactor;
+    float uCornerRounding; // fraction kept at a detected corner; 1: no corner detection
+    int uSearchSteps;
+    int uDiagSteps; // 0: no diagonal patterns
+};
 
 float lumaAt(ivec2 p) {
     p = clamp(p, ivec2(0), textureSize(uColor, 0) - 1);
+#ifdef SMAA_HDR
+    float l = max(luma709(texelFetch(uColor, p, 0).rgb), 0.0) * max(gExposure.exposure, 1e-8);
+    return sqrt(l / (1.0 + l));
+#else
     return luma709(texelFetch(uColor, p, 0).rgb);
+#endif
 }
 
 void main() {
