@@ -5,9 +5,10 @@
 #include "core/settings/AmbientOcclusionSettings.h"
 #include "core/settings/AntiAliasingSettings.h"
 #include "core/settings/AutoExposureSettings.h"
-#include "core/settings/DebugSettings.h"
 #include "core/settings/BloomSettings.h"
 #include "core/settings/ColorGradingSettings.h"
+#include "core/settings/ContactShadowSettings.h"
+#include "core/settings/DebugSettings.h"
 #include "core/settings/DisplaySettings.h"
 #include "core/settings/OutputSettings.h"
 #include "core/settings/QualitySettings.h"
@@ -35,6 +36,7 @@ struct Settings {
     AntiAliasingSettings aa;
     TaaSettings taa;
     AmbientOcclusionSettings ssao;
+    ContactShadowSettings contactShadows;
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
     /// is none.
@@ -67,6 +69,7 @@ struct Settings {
         v.object("aa", aa);
         v.object("taa", taa);
         v.object("ssao", ssao);
+        v.object("contactShadows", contactShadows);
     }
 };
 
