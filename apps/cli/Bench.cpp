@@ -295,7 +295,7 @@ ImageF benchInput(const BenchOptions& options) {
     return readInput(options.input, options.maxPixels);
 }
 
-/// Depth (R32F linear), motion (RG16F, zero) and a camera for the benchmark frame.
+/// Depth (R32F linear), motion (RG16F, zero), a camera and a sun for the benchmark frame.
 class BenchInputs3d {
 public:
     BenchInputs3d(int width, int height)
@@ -314,7 +314,10 @@ public:
                 .depth = &mDepth,
                 .depthKind = DepthKind::LinearView,
                 .motion = &mMotion,
-                .camera = &mCamera};
+                .camera = &mCamera,
+                // Behind the camera, up and to the right: the wall faces it, so contact shadows march every
+                // step of every pixel (their worst case).
+                .sunDirection = glm::normalize(glm::vec3(0.3f, 0.5f, 0.8f))};
     }
 
 private:
@@ -420,19 +423,22 @@ int runBench(const BenchOptions& options) {
     }
     pipeline.timers().setSynchronous(options.sync);
     const Texture input = makeTexture(image, "bench input");
-    // 3D inputs for the passes that need them (TAA): a wall 10 units away, still, seen by a still camera. The
-    // sequencer runs nothing on them unless such a pass is on, so the 2D chain's figures are unchanged.
+    // 3D inputs for the passes that need them (TAA; contact shadows in the lighting stage): a wall 10 units
+    // away, still, seen by a still camera. The sequencer runs nothing on them unless such a pass is on, so
+    // the 2D chain's figures are unchanged.
     const BenchInputs3d inputs3d(image.width, image.height);
     const FrameInputs inputs = inputs3d.frame(input);
     std::uint64_t frame = 0;
     for (int i = 0; i < options.warmup; ++i) {
         pipeline.beginFrame({.frameIndex = frame});
+        pipeline.renderLighting(inputs, {.frameIndex = frame});
         pipeline.execute(inputs, {.frameIndex = frame++});
         pipeline.timers().drain();
     }
     PassSamples samples;
     for (int i = 0; i < options.frames; ++i) {
         pipeline.beginFrame({.frameIndex = frame});
+        pipeline.renderLighting(inputs, {.frameIndex = frame});
         pipeline.execute(inputs, {.frameIndex = frame++});
         samples.add(pipeline.timers().drain());
     }

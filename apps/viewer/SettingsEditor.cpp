@@ -72,6 +72,14 @@ public:
         // Curves are edited in the JSON file; a point editor is not worth its weight here.
         ImGui::TextDisabled("%s: %zu points (edit in the JSON file)", label(key), points.size());
     }
+    void field(std::string_view key, IdList& ids, Range) {
+        // Id lists are short and edited rarely: in the JSON file or with --set key=[1,2].
+        std::string text;
+        for (std::size_t i = 0; i < ids.size(); ++i) {
+            text += fmt::format("{}{}", i ? ", " : "", ids[i]);
+        }
+        ImGui::TextDisabled("%s: [%s] (edit in the JSON file)", label(key), text.c_str());
+    }
     template <class E>
     requires std::is_enum_v<E>
     void field(std::string_view key, E& value, std::span<const std::string_view> names) {

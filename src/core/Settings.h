@@ -5,9 +5,10 @@
 #include "core/settings/AmbientOcclusionSettings.h"
 #include "core/settings/AntiAliasingSettings.h"
 #include "core/settings/AutoExposureSettings.h"
-#include "core/settings/DebugSettings.h"
 #include "core/settings/BloomSettings.h"
 #include "core/settings/ColorGradingSettings.h"
+#include "core/settings/ContactShadowSettings.h"
+#include "core/settings/DebugSettings.h"
 #include "core/settings/DisplaySettings.h"
 #include "core/settings/OutputSettings.h"
 #include "core/settings/QualitySettings.h"
@@ -36,6 +37,7 @@ struct Settings {
     TaaSettings taa;
     SmaaSettings smaa;
     AmbientOcclusionSettings ssao;
+    ContactShadowSettings contactShadows;
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
     /// is none.
@@ -69,6 +71,7 @@ struct Settings {
         v.object("taa", taa);
         v.object("smaa", smaa);
         v.object("ssao", ssao);
+        v.object("contactShadows", contactShadows);
     }
 };
 

@@ -70,6 +70,9 @@ struct VertexArrayDeleter {
 struct QueryDeleter {
     void operator()(GLuint id) const { glDeleteQueries(1, &id); }
 };
+struct SamplerDeleter {
+    void operator()(GLuint id) const { glDeleteSamplers(1, &id); }
+};
 } // namespace detail
 
 struct TextureCreateInfo {
@@ -199,6 +202,18 @@ public:
 
 private:
     GlObject<detail::VertexArrayDeleter> mObject;
+};
+
+/// A sampler object: filtering that overrides, on the unit it is bound to, whatever the texture there set.
+class Sampler {
+public:
+    Sampler() = default;
+    /// NEAREST filtering, clamped: what an integer texture read with texelFetch needs to be complete.
+    static Sampler nearest(std::string_view debugName);
+    [[nodiscard]] GLuint id() const { return mObject.id(); }
+
+private:
+    GlObject<detail::SamplerDeleter> mObject;
 };
 
 class Query {

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <span>
 
 namespace photopic {
@@ -39,6 +40,12 @@ struct FrameInputs {
     /// both frames' jitter removed (uv_prev = uv - motion). Static scene, static camera: 0.
     const Texture* motion = nullptr;
     const Camera* camera = nullptr; ///< view, unjittered projection, previous view-projection, lens
+    /// World space, pointing towards the sun (normalised by the pipeline): the direction contact shadows
+    /// march in. The view matrix of `camera` turns it into view space. Absent: no sun, no contact shadows.
+    std::optional<glm::vec3> sunDirection{};
+    /// R32UI/R16UI/R8UI: each pixel's object id (0: none, the sky), for contactShadows.mask. Unused
+    /// otherwise.
+    const Texture* objectId = nullptr;
     /// This frame's subjects (tokens, characters) in the host's order; read during execute(), not kept.
     /// Empty: no subject (subject metering holds exposure, or probes the screen centre with
     /// subjects.fallback = center).

@@ -14,6 +14,10 @@ std::string_view resourceName(Resource resource) noexcept {
         return "motion";
     case Resource::Camera:
         return "camera";
+    case Resource::SunDirection:
+        return "sunDirection";
+    case Resource::ObjectId:
+        return "objectId";
     case Resource::MeteringMask:
         return "meteringMask";
     case Resource::SceneColor:
@@ -36,6 +40,8 @@ std::string_view resourceName(Resource resource) noexcept {
         return "ambientOcclusion";
     case Resource::ContactShadows:
         return "contactShadows";
+    case Resource::ContactShadowSteps:
+        return "contactShadowSteps";
     case Resource::DebugColor:
         return "debugColor";
     case Resource::DisplayColor:

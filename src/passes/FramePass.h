@@ -31,6 +31,8 @@ enum class Resource : std::uint8_t {
     Normals,          ///< host: view-space normals
     Motion,           ///< host, or reconstructed from depth and the camera: UV motion, current - previous
     Camera,           ///< host: a valid camera (no GL object)
+    SunDirection,     ///< host: a finite, non-zero sun direction (no GL object)
+    ObjectId,         ///< host: per-pixel object ids (unsigned integer texture)
     MeteringMask,     ///< grey weights for mask metering (autoExposure.mask.path)
     SceneColor,       ///< the HDR image as it stands: sanitised colour, later passes replace it
     LinearDepth,      ///< R32F positive view depth in scene units (+inf: sky)
@@ -44,6 +46,8 @@ enum class Resource : std::uint8_t {
     ContactShadows,   ///< lighting stage: visibility for the sun
     DebugColor,       ///< a scene-value debug view (replaces the display image)
     DisplayColor,     ///< RGBA8 display-referred image
+    /// lighting stage: the contact-shadow march's steps, when the contact-shadows-steps debug view shows them
+    ContactShadowSteps,
     Count
 };
 inline constexpr std::size_t kResourceCount = std::size_t(Resource::Count);

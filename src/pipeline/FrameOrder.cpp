@@ -13,6 +13,7 @@ FrameOrder::FrameOrder(const Capabilities& caps, bool keepTelemetryHistory)
     mLighting = {
         &lightingLinearDepth, // depth, camera -> linearDepth
         &gtao,                // linearDepth, normals, camera -> ambientOcclusion (ssao.apply = lighting)
+        &contactShadows, // linearDepth, camera, sunDirection, normals?, motion?, objectId? -> contactShadows
     };
 
     // Post stage. Reads -> writes of each pass; the sequencer skips what a frame lacks the inputs for and

@@ -5,6 +5,7 @@
 #include "gl/Capabilities.h"
 #include "passes/FramePass.h"
 #include "passes/bloom/BloomPass.h"
+#include "passes/contactshadows/ContactShadowsPass.h"
 #include "passes/debug/DebugViewPass.h"
 #include "passes/display/DisplayEffectsPass.h"
 #include "passes/exposure/ExposurePass.h"
@@ -41,6 +42,7 @@ public:
     // The passes, for the pipeline's API (telemetry, subjects, the scene-referred output, status).
     LinearDepthPass lightingLinearDepth; ///< the lighting stage's own (its linear depth is not kept for post)
     GtaoPass gtao{GtaoPass::Stage::Lighting};
+    ContactShadowsPass contactShadows;
     SanitizePass sanitize;
     LinearDepthPass linearDepth;
     GtaoPass gtaoPost{GtaoPass::Stage::Post};

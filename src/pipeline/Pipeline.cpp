@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 namespace photopic {
 
@@ -160,6 +162,16 @@ bool Pipeline::bindInputs(const FrameInputs& in) {
             mResources.markPresent(Resource::Camera);
         }
     }
+    optional(Resource::ObjectId, "objectId", in.objectId, {GL_R32UI, GL_R16UI, GL_R8UI});
+    if (in.sunDirection) {
+        const glm::vec3 d = *in.sunDirection;
+        const float length2 = glm::dot(d, d);
+        if (std::isfinite(length2) && length2 > 1e-12f) {
+            mResources.markPresent(Resource::SunDirection);
+        } else {
+            mInputErrors.emplace_back("sunDirection: not a finite, non-zero vector");
+        }
+    }
     return true;
 }
 
@@ -195,6 +207,7 @@ const LightingOutputs& Pipeline::renderLighting(const FrameInputs& inputs, const
     mLighting.ambientOcclusion = mResources.texture(Resource::AmbientOcclusion);
     mLighting.ambientOcclusionPower = mSettings.ssao.power;
     mLighting.contactShadows = mResources.texture(Resource::ContactShadows);
+    mContactShadowSteps = mResources.texture(Resource::ContactShadowSteps);
     return mLighting;
 }
 
@@ -202,6 +215,7 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
     // The lighting stage's outputs stay bound for the post stage when the host ran it this frame.
     const LightingOutputs lighting = mLighting;
     mLighting = {};
+    const Texture* contactShadowSteps = std::exchange(mContactShadowSteps, nullptr);
     if (!bindInputs(inputs)) {
         if (mLightingTimed) {
             mTimers.endFrame();
@@ -224,6 +238,9 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
     }
     if (lighting.contactShadows) {
         mResources.bind(Resource::ContactShadows, *lighting.contactShadows);
+    }
+    if (contactShadowSteps) {
+        mResources.bind(Resource::ContactShadowSteps, *contactShadowSteps);
     }
     resize(inputs.color->extent());
     if (mResetHistory) {
@@ -306,6 +323,11 @@ const Texture& Pipeline::sceneReferred() {
     const Texture* scene = mResources.texture(Resource::SceneColor);
     if (scene == nullptr) {
         throw GlError("no frame has been executed: there is no scene-referred image yet");
+    }
+    // A debug view of data (visibility, steps) writes its values as they are, not an image of them.
+    if (const Texture* raw = mOrder->debugView.rawValues();
+        raw != nullptr && mOutput == Resource::DebugColor && mPostSequencer.ran(mOrder->debugView)) {
+        return *raw;
     }
     const QualityTier tier = effectiveTier(mCaps, mSettings.quality);
     const Texture* bloom = mResources.texture(Resource::Bloom);

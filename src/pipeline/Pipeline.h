@@ -109,7 +109,8 @@ public:
     /// until the next call. Bad inputs never crash it: a null or empty colour returns a black 1x1 image and
     /// other bad inputs are ignored for the frame; both are reported in status().inputErrors and logged once.
     const Texture& execute(const FrameInputs& inputs, const FrameTime& time);
-    /// The last frame's exposed scene-referred image just before tone mapping (RGBA32F), rendered on demand.
+    /// The last frame's exposed scene-referred image just before tone mapping (RGBA32F), rendered on demand;
+    /// when the frame showed a debug view of data (contact-shadows, contact-shadows-steps), its raw values.
     const Texture& sceneReferred();
 
     /// Per-pass GPU timings, collected without stalling.
@@ -180,6 +181,7 @@ private:
     std::unique_ptr<SsaaAccumulator> mSsaa;
     bool mAccumulating = false; ///< sub-frames were added since the last execute()
     LightingOutputs mLighting;
+    const Texture* mContactShadowSteps = nullptr; ///< the lighting stage's, for the post stage's debug view
     std::vector<std::string> mInputErrors;
     Texture mInvalid; ///< 1x1 black, returned for a frame without usable colour
     Resource mOutput = Resource::DisplayColor;

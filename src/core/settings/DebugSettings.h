@@ -23,12 +23,28 @@ enum class DebugView {
     Motion,  ///< motion vectors: hue is the direction, brightness the length (8 px saturates); needs motion
     TaaHistoryWeight, ///< TAA's history weight per pixel as grey (black: no history used); needs TAA on
     Disocclusion, ///< white where TAA found the history disoccluded (or off screen: see weight); needs TAA
+    /// The lighting stage's sun visibility (contact shadows) as grey: raw values in an EXR; needs
+    /// contactShadows.enabled and a host that runs the lighting stage
+    ContactShadows,
+    /// The contact-shadow ray march's steps taken per pixel over contactShadows.steps (0: none marched)
+    ContactShadowSteps,
 };
 
 inline std::span<const std::string_view> debugViewNames() {
-    static constexpr std::array<std::string_view, 12> kNames{
-        "none",  "exposure", "luma",    "ev",     "metering",           "histogram",
-        "bloom", "depth",    "normals", "motion", "taa-history-weight", "disocclusion"};
+    static constexpr std::array<std::string_view, 14> kNames{"none",
+                                                             "exposure",
+                                                             "luma",
+                                                             "ev",
+                                                             "metering",
+                                                             "histogram",
+                                                             "bloom",
+                                                             "depth",
+                                                             "normals",
+                                                             "motion",
+                                                             "taa-history-weight",
+                                                             "disocclusion",
+                                                             "contact-shadows",
+                                                             "contact-shadows-steps"};
     return kNames;
 }
 

@@ -74,6 +74,7 @@ public:
         }
         mOut[std::string(key)] = arr;
     }
+    void field(std::string_view key, IdList& ids, Range) { mOut[std::string(key)] = ids; }
     template <class E>
     requires std::is_enum_v<E>
     void field(std::string_view key, E& value, std::span<const std::string_view> names) {
@@ -173,6 +174,36 @@ public:
             parsed.emplace_back(static_cast<float>(x), static_cast<float>(y));
         }
         points = std::move(parsed);
+    }
+    void field(std::string_view key, IdList& ids, Range range) {
+        const json* j = find(key);
+        if (!j) {
+            return;
+        }
+        if (!j->is_array()) {
+            wrongType(key, *j, fmt::format("an array of integers in [{}, {}]", range.min, range.max));
+            return;
+        }
+        IdList parsed;
+        for (std::size_t i = 0; i < j->size(); ++i) {
+            const json& e = (*j)[i];
+            const std::string at = fmt::format("{}[{}]", key, i);
+            if (!e.is_number_integer()) {
+                add(SettingsIssueCode::WrongType, at,
+                    fmt::format("expected an integer in [{}, {}], got {}", range.min, range.max, shown(e)));
+                return;
+            }
+            // Signed and unsigned JSON integers alike: compare as double (ids fit a double exactly).
+            const double v =
+                e.is_number_unsigned() ? double(e.get<std::uint64_t>()) : double(e.get<long long>());
+            if (v < range.min || v > range.max) {
+                add(SettingsIssueCode::OutOfRange, at,
+                    fmt::format("{} is outside [{}, {}]", shown(e), range.min, range.max));
+                return;
+            }
+            parsed.push_back(static_cast<std::uint32_t>(v));
+        }
+        ids = std::move(parsed);
     }
     template <class E>
     requires std::is_enum_v<E>

@@ -16,6 +16,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -58,5 +59,7 @@ struct SettingsIssue {
 };
 
 using CurvePoints = std::vector<glm::vec2>;
+/// A list of object ids (each within the field's Range), e.g. the objects an effect is limited to.
+using IdList = std::vector<std::uint32_t>;
 
 } // namespace photopic

@@ -29,10 +29,19 @@ constexpr ResourceUse kMotionViewUses[] = {{Resource::Motion, Access::Read},
                                            {Resource::DebugColor, Access::Write}};
 constexpr ResourceUse kTaaViewUses[] = {{Resource::TaaDebug, Access::Read},
                                         {Resource::DebugColor, Access::Write}};
+constexpr ResourceUse kContactShadowViewUses[] = {{Resource::ContactShadows, Access::Read},
+                                                  {Resource::DebugColor, Access::Write}};
+constexpr ResourceUse kContactShadowStepsViewUses[] = {{Resource::ContactShadowSteps, Access::Read},
+                                                       {Resource::DebugColor, Access::Write}};
+
+/// Views of data rather than of the image: written to EXR, they keep their values.
+bool isDataView(DebugView view) {
+    return view == DebugView::ContactShadows || view == DebugView::ContactShadowSteps;
+}
 
 bool isInputView(DebugView view) {
     return view == DebugView::Depth || view == DebugView::Normals || view == DebugView::Motion ||
-           view == DebugView::TaaHistoryWeight || view == DebugView::Disocclusion;
+           view == DebugView::TaaHistoryWeight || view == DebugView::Disocclusion || isDataView(view);
 }
 } // namespace
 
@@ -54,6 +63,10 @@ std::span<const ResourceUse> DebugViewPass::uses() const {
     case DebugView::TaaHistoryWeight:
     case DebugView::Disocclusion:
         return kTaaViewUses;
+    case DebugView::ContactShadows:
+        return kContactShadowViewUses;
+    case DebugView::ContactShadowSteps:
+        return kContactShadowStepsViewUses;
     default:
         return kSceneViewUses;
     }
@@ -73,6 +86,15 @@ void DebugViewPass::execute(FrameContext& ctx, FrameResources& resources) {
     glBindVertexArray(mVao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     resources.bind(Resource::DebugColor, out.texture());
+    mRaw = nullptr;
+    if (isDataView(mView)) {
+        // The same draw into a float target: what an EXR of the view holds (sceneReferred()).
+        PooledTexture& raw = resources.pool().acquire(
+            {.extent = ctx.extent, .format = GL_RGBA32F, .debugName = "debug view (raw values)"});
+        raw.framebuffer().bind();
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        mRaw = &raw.texture();
+    }
 }
 
 void DebugViewPass::drawSceneView(const FrameContext& ctx, const FrameResources& resources) {
@@ -108,10 +130,12 @@ void DebugViewPass::drawSceneView(const FrameContext& ctx, const FrameResources&
 }
 
 void DebugViewPass::drawInputView(const FrameContext& ctx, const FrameResources& resources) {
-    const Resource source = mView == DebugView::Depth     ? Resource::LinearDepth
-                            : mView == DebugView::Normals ? Resource::Normals
-                            : mView == DebugView::Motion  ? Resource::Motion
-                                                          : Resource::TaaDebug;
+    const Resource source = mView == DebugView::Depth                ? Resource::LinearDepth
+                            : mView == DebugView::Normals            ? Resource::Normals
+                            : mView == DebugView::Motion             ? Resource::Motion
+                            : mView == DebugView::ContactShadows     ? Resource::ContactShadows
+                            : mView == DebugView::ContactShadowSteps ? Resource::ContactShadowSteps
+                                                                     : Resource::TaaDebug;
     const Program& p = mInputProgram;
     const Camera* camera = ctx.inputs.camera;
     mInputParameters.update({.view = int(mView),

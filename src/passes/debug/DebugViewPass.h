@@ -1,8 +1,8 @@
 #pragma once
 // Debug views (settings `debug.view`). Scene-value views (exposure false colour, luma, EV, metering weights,
-// bloom) and the 3D input views (depth, normals, motion) replace the image before tone mapping and are shown
-// as they are. The histogram is an overlay over the tone-mapped image, drawn from the GPU histogram buffer,
-// by HistogramOverlayPass.
+// bloom), the 3D input views (depth, normals, motion) and the lighting stage's contact shadows replace the
+// image before tone mapping and are shown as they are. The histogram is an overlay over the tone-mapped
+// image, drawn from the GPU histogram buffer, by HistogramOverlayPass.
 
 #include "core/Settings.h"
 #include "passes/FramePass.h"
@@ -65,6 +65,10 @@ public:
     void configure(const Settings& settings) override { mView = settings.debug.view; }
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
+    /// The last run's values as they are (RGBA32F) for a view of data (contact shadows), else nullptr:
+    /// valid until the next frame.
+    [[nodiscard]] const Texture* rawValues() const { return mRaw; }
+
     /// True for the views that replace the scene before tone mapping.
     [[nodiscard]] static bool isSceneView(DebugView view) {
         return view != DebugView::None && view != DebugView::Histogram;
@@ -80,6 +84,7 @@ private:
     ParameterBlock<DebugInputViewParameters> mInputParameters;
     VertexArray mVao;
     DebugView mView = DebugView::None;
+    const Texture* mRaw = nullptr;
 };
 
 class HistogramOverlayPass final : public FramePass {

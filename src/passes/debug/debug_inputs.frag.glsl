@@ -1,12 +1,13 @@
 // Debug views of the 3D inputs, shown as they are (never tone mapped): linear depth, view-space normals and
-// motion vectors, as the pipeline sees them after decoding.
+// motion vectors, as the pipeline sees them after decoding, and the lighting stage's contact shadows.
 #include "passes/common/inputs.h.glsl"
 
 layout(binding = 0) uniform sampler2D uInput;
 
 // Mirrors photopic::DebugInputViewParameters (passes/debug/DebugViewPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform DebugInputViewParameters {
-    int uView; // DebugView: 7 depth, 8 normals, 9 motion, 10 TAA history weight, 11 disocclusion
+    int uView; // DebugView: 7 depth, 8 normals, 9 motion, 10 TAA history weight, 11 disocclusion,
+               // 12 contact shadows, 13 contact-shadow steps
     int uOctahedral;
     float uNear;
     float uFar;
@@ -79,6 +80,8 @@ void main() {
         c = vec3(t.r);
     } else if (uView == 11) {
         c = vec3(t.g);
+    } else if (uView == 12 || uView == 13) {
+        c = vec3(t.r); // contact shadows' visibility, or the steps its march took (normalised)
     }
     oColor = vec4(c, 1.0);
 }

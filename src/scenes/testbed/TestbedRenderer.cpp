@@ -85,8 +85,14 @@ void TestbedRenderer::resize(Extent extent) {
                        .minFilter = GL_NEAREST,
                        .magFilter = GL_NEAREST,
                        .debugName = "testbed motion"});
-    mTargets = Framebuffer(
-        {.color = {&mColor, &mNormals, &mMotion}, .depth = &mDepth, .debugName = "testbed targets"});
+    mObjectId = Texture({.extent = extent,
+                         .format = GL_R32UI,
+                         .minFilter = GL_NEAREST,
+                         .magFilter = GL_NEAREST,
+                         .debugName = "testbed object ids"});
+    mTargets = Framebuffer({.color = {&mColor, &mNormals, &mMotion, &mObjectId},
+                            .depth = &mDepth,
+                            .debugName = "testbed targets"});
 }
 
 void TestbedRenderer::draw(const DrawInfo& info) {
@@ -113,8 +119,9 @@ void TestbedRenderer::draw(const DrawInfo& info) {
     f.prevViewProj = camera.prevViewProjection;
     f.viewport = {float(e.width), float(e.height), 1.0f / float(e.width), 1.0f / float(e.height)};
     f.sunDirection = glm::vec4(env.sunDirection, std::cos(env.sunAngularRadius));
-    f.sunIlluminance = glm::vec4(
-        env.sunIlluminance, 1.0f / (std::numbers::pi_v<float> * env.sunAngularRadius * env.sunAngularRadius));
+    f.sunIlluminance =
+        glm::vec4(info.sunScale * env.sunIlluminance,
+                  1.0f / (std::numbers::pi_v<float> * env.sunAngularRadius * env.sunAngularRadius));
     f.skyZenith = glm::vec4(env.skyZenith, 0.0f);
     f.skyHorizon = glm::vec4(env.skyHorizon, 0.0f);
     f.groundRadiance = glm::vec4(env.groundRadiance, 0.0f);
@@ -130,6 +137,8 @@ void TestbedRenderer::draw(const DrawInfo& info) {
     for (int i = 0; i < 3; ++i) {
         glClearNamedFramebufferfv(mTargets.id(), GL_COLOR, i, zero);
     }
+    const GLuint noObject[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferuiv(mTargets.id(), GL_COLOR, 3, noObject);
     const float far = 1.0f;
     glClearNamedFramebufferfv(mTargets.id(), GL_DEPTH, 0, &far);
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, mFrame.id());

@@ -1,8 +1,9 @@
 #pragma once
 // The testbed's GL rasteriser: each primitive's bounding box is drawn as a proxy and its fragment shader
 // ray-casts the exact shape (testbed_shading.h.glsl), writing colour (RGBA16F, the local shading), depth
-// (DEPTH_COMPONENT32F through gl_FragDepth, standard GL depth), view-space normals (RGBA16F) and motion
-// (RG16F, UV current minus previous, jitter removed) as one MRT pass after a full-screen sky.
+// (DEPTH_COMPONENT32F through gl_FragDepth, standard GL depth), view-space normals (RGBA16F), motion
+// (RG16F, UV current minus previous, jitter removed) and object ids (R32UI, 0 for the sky) as one MRT pass
+// after a full-screen sky.
 
 #include "core/Camera.h"
 #include "gl/Objects.h"
@@ -28,6 +29,7 @@ public:
         const Texture* ambientOcclusion = nullptr; ///< R visibility; multiplies the ambient term
         float ambientOcclusionPower = 1.0f;        ///< the ambient term takes pow(visibility, this)
         const Texture* sunVisibility = nullptr;    ///< R visibility; multiplies the sun term
+        float sunScale = 1.0f;                     ///< multiplies the sun's illuminance (0: no sun)
     };
     void draw(const DrawInfo& info);
 
@@ -35,6 +37,7 @@ public:
     [[nodiscard]] const Texture& depth() const { return mDepth; }
     [[nodiscard]] const Texture& normals() const { return mNormals; }
     [[nodiscard]] const Texture& motion() const { return mMotion; }
+    [[nodiscard]] const Texture& objectId() const { return mObjectId; }
 
 private:
     Program mObjects;
@@ -46,6 +49,7 @@ private:
     Texture mDepth;
     Texture mNormals;
     Texture mMotion;
+    Texture mObjectId;
     Framebuffer mTargets;
 };
 

@@ -75,7 +75,9 @@ FrameInputs TestbedScene::render(const FrameTime& time, Pipeline& pipeline, std:
                        .normals = &mRenderer.normals(),
                        .normalEncoding = NormalEncoding::ViewXyz,
                        .motion = &mRenderer.motion(),
-                       .camera = &mCamera};
+                       .camera = &mCamera,
+                       .sunDirection = testbed::environment().sunDirection,
+                       .objectId = &mRenderer.objectId()};
     const LightingOutputs& lighting = pipeline.renderLighting(inputs, time);
     draw.ambientOcclusion = lighting.ambientOcclusion;
     draw.ambientOcclusionPower = lighting.ambientOcclusionPower;

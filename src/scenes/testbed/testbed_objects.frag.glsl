@@ -11,6 +11,7 @@ layout(binding = 1) uniform sampler2D uSunVisibility;    // R: visibility of the
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oNormal;
 layout(location = 2) out vec2 oMotion;
+layout(location = 3) out uint oObjectId; // 0: the sky
 
 void main() {
     TestbedPrimitive p = uPrimitives[vPrimitive];
@@ -33,4 +34,5 @@ void main() {
     oNormal = vec4(normalize(mat3(uView) * n), 0.0);
     vec4 before = p.prevToWorld * vec4(objectPoint, 1.0);
     oMotion = testbedMotion(vec4(world, 1.0), before);
+    oObjectId = uint(p.emissive.w);
 }

@@ -6,6 +6,7 @@ layout(location = 0) in vec2 vUv;
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oNormal;
 layout(location = 2) out vec2 oMotion;
+layout(location = 3) out uint oObjectId; // 0: the sky
 
 void main() {
     vec3 origin, direction;
@@ -13,4 +14,5 @@ void main() {
     oColor = vec4(testbedSky(direction), 1.0);
     oNormal = vec4(0.0);
     oMotion = testbedMotion(vec4(direction, 0.0), vec4(direction, 0.0));
+    oObjectId = 0u;
 }
