@@ -18,7 +18,7 @@
 
 namespace photopic {
 
-/// Mirrors SmaaParameters in the three shaders, std140.
+/// Mirrors passes/smaa/smaa_parameters.h.glsl, std140.
 struct SmaaParameters {
     float threshold = 0.1f; ///< luma step that makes an edge
     float contrastFactor =

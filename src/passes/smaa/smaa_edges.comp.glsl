@@ -17,14 +17,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D uColor;
 layout(binding = 0, rg8) uniform writeonly image2D uEdges;
 
-// Mirrors photopic::SmaaParameters (passes/smaa/SmaaPass.h), std140.
-layout(std140, binding = BINDING_PARAMETERS) uniform SmaaParameters {
-    float uThreshold;
-    float uContrastFactor;
-    float uCornerRounding; // fraction kept at a detected corner; 1: no corner detection
-    int uSearchSteps;
-    int uDiagSteps; // 0: no diagonal patterns
-};
+#include "passes/smaa/smaa_parameters.h.glsl"
 
 float lumaAt(ivec2 p) {
     p = clamp(p, ivec2(0), textureSize(uColor, 0) - 1);

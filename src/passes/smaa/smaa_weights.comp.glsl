@@ -21,14 +21,7 @@ layout(binding = 2) uniform sampler2D uAreaDiag;  // RG8, texel fetches
 layout(binding = 3) uniform usampler2D uSearch;   // R8UI, texel fetches
 layout(binding = 0, rgba8) uniform writeonly image2D uWeights;
 
-// Mirrors photopic::SmaaParameters (passes/smaa/SmaaPass.h), std140.
-layout(std140, binding = BINDING_PARAMETERS) uniform SmaaParameters {
-    float uThreshold;
-    float uContrastFactor;
-    float uCornerRounding; // fraction kept at a detected corner; 1: no corner detection
-    int uSearchSteps;
-    int uDiagSteps; // 0: no diagonal patterns
-};
+#include "passes/smaa/smaa_parameters.h.glsl"
 
 const int kOrthoMax = 64;
 const int kDiagMax = 20;

@@ -1,0 +1,8 @@
+// Mirrors photopic::SmaaParameters (passes/smaa/SmaaPass.h), std140: one block for the edge and weight steps.
+layout(std140, binding = BINDING_PARAMETERS) uniform SmaaParameters {
+    float uThreshold;
+    float uContrastFactor;
+    float uCornerRounding; // fraction kept at a detected corner; 1: no corner detection
+    int uSearchSteps;
+    int uDiagSteps; // 0: no diagonal patterns
+};
