@@ -2,6 +2,7 @@
 
 #include "core/Log.h"
 #include "core/settings/SettingsJson.h"
+#include "gl/StateScope.h"
 #include "gl/TextureIo.h"
 
 #include <fmt/format.h>
@@ -57,7 +58,8 @@ std::string textureProblem(const char* name, const Texture& t, Extent extent,
 } // namespace
 
 Pipeline::Pipeline(const PipelineCreateInfo& info)
-    : mSettings(info.settings)
+    : mConstructionScope(std::make_unique<GlStateScope>())
+    , mSettings(info.settings)
     , mCaps(detectCapabilities(info.forceLdr))
     , mOrder(std::make_unique<FrameOrder>(mCaps, info.keepTelemetryHistory))
     , mInvalid({.extent = {1, 1}, .format = GL_RGBA8, .debugName = "no colour input"}) {
@@ -68,11 +70,16 @@ Pipeline::Pipeline(const PipelineCreateInfo& info)
         pass->configure(mSettings);
     }
     warnAboutTier(mCaps, mSettings.quality);
+    mConstructionScope.reset();
 }
 
-Pipeline::~Pipeline() = default;
+Pipeline::~Pipeline() {
+    const GlStateScope hostState;
+    mOrder.reset();
+}
 
 void Pipeline::setSettings(const Settings& settings) {
+    const GlStateScope hostState;
     checkSettings(settings);
     for (FramePass* pass : mOrder->all()) {
         pass->configure(settings);
@@ -191,6 +198,7 @@ FrameContext Pipeline::makeContext(const FrameInputs& inputs, const FrameTime& t
 }
 
 const LightingOutputs& Pipeline::renderLighting(const FrameInputs& inputs, const FrameTime& time) {
+    const GlStateScope hostState;
     mLighting = {};
     if (!bindInputs(inputs)) {
         return mLighting;
@@ -212,6 +220,7 @@ const LightingOutputs& Pipeline::renderLighting(const FrameInputs& inputs, const
 }
 
 const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& time) {
+    const GlStateScope hostState;
     // The lighting stage's outputs stay bound for the post stage when the host ran it this frame.
     const LightingOutputs lighting = mLighting;
     mLighting = {};
@@ -299,6 +308,7 @@ glm::vec2 Pipeline::subframeJitter(int index) const noexcept {
 }
 
 void Pipeline::accumulateSubframe(const Texture& color, int index) {
+    const GlStateScope hostState;
     if (!mSsaa) {
         mSsaa = std::make_unique<SsaaAccumulator>();
     }
@@ -317,6 +327,7 @@ const Texture& Pipeline::subframeMean() const {
 }
 
 const Texture& Pipeline::sceneReferred() {
+    const GlStateScope hostState;
     if (!mCaps.rgba32fRenderable) {
         throw GlError("the scene-referred (EXR) output needs RGBA32F render targets, which this GPU lacks");
     }
@@ -369,10 +380,12 @@ PipelineStatus Pipeline::status() const {
 }
 
 const ExposureTelemetry& Pipeline::telemetry() {
+    const GlStateScope hostState;
     return mOrder->exposure.telemetry();
 }
 
 std::vector<ExposureTelemetry> Pipeline::drainTelemetry() {
+    const GlStateScope hostState;
     return mOrder->exposure.drainTelemetry();
 }
 
@@ -417,6 +430,7 @@ std::uint64_t Pipeline::droppedProbes() const {
 }
 
 Image8 processImage(Pipeline& pipeline, const ImageF& image, const FrameTime& time) {
+    const GlStateScope hostState;
     const Texture input = makeTexture(image, "input");
     return readTexture8(pipeline.execute({.color = &input}, time));
 }

@@ -32,6 +32,8 @@
 
 namespace photopic {
 
+class GlStateScope;
+
 /// What the pipeline is doing, for hosts, logs and the CLI: degradations are never silent.
 struct PipelineStatus {
     ColorPath path = ColorPath::Hdr; ///< the path frames take now (quality=legacy forces LDR)
@@ -165,6 +167,8 @@ private:
     bool bindInputs(const FrameInputs& inputs);
     FrameContext makeContext(const FrameInputs& inputs, const FrameTime& time, const QualityTier& tier);
 
+    /// The host's GL state while the constructor runs (declared first: restored after everything else).
+    std::unique_ptr<GlStateScope> mConstructionScope;
     Settings mSettings;
     Capabilities mCaps;
     std::unique_ptr<FrameOrder> mOrder;
