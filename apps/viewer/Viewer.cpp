@@ -1,5 +1,6 @@
 #include "Viewer.h"
 
+#include "FileScene.h"
 #include "SettingsEditor.h"
 
 #include "core/settings/SettingsJson.h"
@@ -21,6 +22,8 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace photopic::viewer {
 namespace {
@@ -32,6 +35,8 @@ constexpr float kMaxDt = 0.1f;
 constexpr float kMinDt = 1.0f / 1000.0f;
 
 std::string gGlfwError;
+/// Paths dropped on the window since the last frame (GLFW calls back from glfwPollEvents, on this thread).
+std::vector<std::string> gDropped;
 
 void onGlfwError(int code, const char* text) {
     gGlfwError = fmt::format("GLFW error 0x{:x}: {}", code, text ? text : "");
@@ -271,6 +276,14 @@ Image8 readBackBuffer(int width, int height) {
 /// Everything that needs no GL is checked before the display is opened: bad input exits 2 everywhere.
 SplitOverrides checkOptions(const ViewerOptions& options) {
     const auto& scenes = builtInScenes();
+    if (!options.files.empty()) {
+        SplitOverrides overrides = splitSceneOverrides("file", options.overrides);
+        Settings probe;
+        for (const std::string& o : overrides.post) {
+            applySettingsOverride(probe, o);
+        }
+        return overrides;
+    }
     if (std::none_of(scenes.begin(), scenes.end(),
                      [&](const SceneInfo& s) { return s.name == options.scene; })) {
         std::string names;
@@ -304,8 +317,10 @@ WindowPtr openWindow(const ViewerOptions& options) {
 
 /// The scene with its --set values, sized for the window, and the post settings it starts with.
 std::unique_ptr<Scene> makeViewerScene(const ViewerOptions& options, const SplitOverrides& overrides,
-                                       Settings& settings) {
-    std::unique_ptr<Scene> scene = makeScene(options.scene);
+                                       Settings& settings, std::unique_ptr<Scene> scene) {
+    if (!scene) {
+        scene = makeScene(options.scene);
+    }
     applySceneOverrides(*scene, overrides.scene);
     settings = scene->defaultSettings();
     if (!options.settingsFile.empty()) {
@@ -378,13 +393,32 @@ void drawUi(GLFWwindow* window, Pipeline& pipeline, const ViewerOptions& options
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
-int run(const ViewerOptions& options) {
-    const SplitOverrides overrides = checkOptions(options);
+int run(const ViewerOptions& givenOptions) {
+    const SplitOverrides overrides = checkOptions(givenOptions);
+    ViewerOptions options = givenOptions;
+    std::unique_ptr<Scene> files;
+    if (!options.files.empty()) {
+        try {
+            files = makeFileScene(options.files);
+        } catch (const SceneInputError& e) {
+            throw InputError(e.what());
+        }
+        if (!options.sizeGiven) { // the image's size, scaled down to fit a 1600x900 window
+            const Extent image = fileSceneExtent(*files);
+            const double scale = std::min({1.0, 1600.0 / image.width, 900.0 / image.height});
+            options.width = std::max(1, int(std::lround(image.width * scale)));
+            options.height = std::max(1, int(std::lround(image.height * scale)));
+        }
+        options.scene = options.files.front().filename().string();
+    }
     GlfwSession glfw;
     WindowPtr window = openWindow(options);
+    glfwSetDropCallback(window.get(), [](GLFWwindow*, int count, const char** paths) {
+        gDropped.assign(paths, paths + std::max(count, 0));
+    });
     // From here on the window's context is current: the pipeline runs in the host's context.
     Settings settings;
-    std::unique_ptr<Scene> scene = makeViewerScene(options, overrides, settings);
+    std::unique_ptr<Scene> scene = makeViewerScene(options, overrides, settings, std::move(files));
     Pipeline pipeline({.settings = settings});
     ImGuiSession imgui(window.get());
     UiState ui;
@@ -398,6 +432,18 @@ int run(const ViewerOptions& options) {
     double last = glfwGetTime();
     for (std::uint64_t frame = 0; !glfwWindowShouldClose(window.get()); ++frame) {
         glfwPollEvents();
+        if (!gDropped.empty()) { // files dropped on the window replace what is shown
+            std::vector<std::filesystem::path> dropped(gDropped.begin(), gDropped.end());
+            gDropped.clear();
+            const std::string first = dropped.front().string();
+            try {
+                scene = makeFileScene(std::move(dropped));
+                pipeline.reset();
+                std::printf("photopic-view: viewing %s\n", first.c_str());
+            } catch (const std::exception& e) {
+                std::fprintf(stderr, "photopic-view: %s (kept the current view)\n", e.what());
+            }
+        }
         // The measured delta feeds FrameTime (the pipeline never reads a clock); --fixed-dt replaces it.
         const double now = glfwGetTime();
         ui.dt = options.fixedDt ? *options.fixedDt : std::clamp(float(now - last), kMinDt, kMaxDt);

@@ -28,6 +28,10 @@ public:
 
 struct ViewerOptions {
     std::string scene = "tabletop";
+    /// Image files (EXR, Radiance HDR, PNG) to view instead of a scene: one is a still, several play as a
+    /// sequence in the order given.
+    std::vector<std::filesystem::path> files;
+    bool sizeGiven = false; ///< --size was named; otherwise a file sets the window's size
     std::filesystem::path settingsFile;
     std::vector<std::string> overrides; ///< "key=value"; "SCENE.key=value" goes to the scene
     int width = 1280;

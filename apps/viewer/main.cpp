@@ -26,13 +26,22 @@ void parseSize(const std::string& text, ViewerOptions& options) {
 } // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"photopic-view: a built-in scene through the Photopic pipeline, every setting tunable live"};
+    CLI::App app{
+        "photopic-view: image files or a built-in scene through the Photopic pipeline, every setting "
+        "tunable live"};
+    app.footer("Examples:\n"
+               "  photopic-view data/Desk.exr                  one image; drop other files on the window\n"
+               "  photopic-view shot_*.exr                     a sequence, played with adaptation\n"
+               "  photopic-view --scene testbed --set aa.mode=taa");
     app.set_version_flag("--version", std::string("photopic-view ") + PHOTOPIC_VERSION);
     ViewerOptions options;
     std::string size = "1280x720";
     float fixedDt = 0.0f;
-    app.add_option("--scene", options.scene, "built-in scene: tabletop, canvas or gradient")
-        ->capture_default_str();
+    app.add_option("files", options.files,
+                   "image files (EXR, HDR, PNG) to view instead of a scene; several play as a sequence");
+    auto* sceneOption =
+        app.add_option("--scene", options.scene, "built-in scene: tabletop, canvas, gradient or testbed")
+            ->capture_default_str();
     app.add_option("--settings", options.settingsFile, "settings JSON applied over the scene's defaults")
         ->check(CLI::ExistingFile);
     app.add_option("--set", options.overrides, "override key=value (SCENE.key=value for the scene's own)");
@@ -47,6 +56,9 @@ int main(int argc, char** argv) {
         app.add_option("--screenshot", options.screenshot, "with --frames: the last window frame as PNG");
     try {
         app.parse(argc, argv);
+        if (sceneOption->count() > 0 && !options.files.empty()) {
+            throw CLI::ValidationError("--scene", "shows a scene; image files were named too (choose one)");
+        }
         if (shotOption->count() > 0 && options.frames == 0) {
             throw CLI::ValidationError("--screenshot", "needs --frames N");
         }
@@ -58,6 +70,7 @@ int main(int argc, char** argv) {
         options.fixedDt = fixedDt;
     }
     options.saveGiven = saveOption->count() > 0;
+    options.sizeGiven = app.get_option("--size")->count() > 0;
 
     try {
         parseSize(size, options);

@@ -76,4 +76,47 @@ expect 2 "unknown scene exits 2" -- "$VIEW" --scene nosuch --frames 1
 expect 1 "no display exits 1" -- env -u DISPLAY -u WAYLAND_DISPLAY "$VIEW" --frames 1
 check "says it needs a display" contains "needs a display"
 
+# An image file through the live pipeline: the window takes the image's size, and where no panel covers it
+# the screenshot is the image `photopic image` writes with the same (default) settings.
+DESK="$(dirname "$0")/../../data/Desk.exr"
+expect 0 "views an EXR file" -- "$VIEW" "$DESK" --frames 3 --fixed-dt 0.0333 --screenshot "$S/desk_view.png"
+check "names the file and takes its size" contains "Desk.exr at 644x874"
+expect 0 "the same file through photopic image" -- "$PHOTOPIC" image "$DESK" -o "$S/desk_cli.png"
+check "right of the panels the window shows the pipeline's image (mean |diff| <= 2/255)" python3 - \
+    "$S/desk_view.png" "$S/desk_cli.png" <<'PY'
+import struct, sys, zlib
+def read(path):
+    data, pos, idat = open(path, "rb").read(), 8, b""
+    while pos < len(data):
+        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + n]
+        if kind == b"IHDR":
+            w, h, depth, ctype = struct.unpack(">IIBB", body[:10])
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + n
+    bpp = {2: 3, 6: 4}[ctype]
+    raw, stride, prev, rows = zlib.decompress(idat), w * bpp, bytearray(w * bpp), []
+    for y in range(h):
+        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+            p = a + b - c
+            pred = [0, a, b, (a + b) // 2, a if abs(p - a) <= abs(p - b) and abs(p - a) <= abs(p - c) else (b if abs(p - b) <= abs(p - c) else c)][f]
+            line[i] = (line[i] + pred) & 255
+        rows.append(bytes(line))
+        prev = line
+    return w, h, bpp, rows
+(w, h, bv, view), (w2, h2, bc, cli) = read(sys.argv[1]), read(sys.argv[2])
+assert (w, h) == (w2, h2) == (644, 874), (w, h, w2, h2)
+diffs = [abs(view[y][x * bv + c] - cli[y][x * bc + c]) for y in range(0, h, 2) for x in range(340, w, 2) for c in range(3)]
+mean = sum(diffs) / len(diffs)
+print("mean |diff|", mean)
+sys.exit(0 if mean <= 2.0 else 1)
+PY
+expect 2 "a missing file exits 2 before any window" -- "$VIEW" "$S/nosuch.exr" --frames 1
+check "names the missing file" contains "nosuch.exr"
+expect 2 "a file and --scene together exit 2" -- "$VIEW" "$DESK" --scene testbed --frames 1
+
 finish
