@@ -252,6 +252,15 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
         jitter = glm::vec2(-halton.x, halton.y);
     }
     out.jittered = jitter.has_value();
+    if (const std::optional<glm::vec3> sun = frame.camera.sunDirection) {
+        if (!std::isfinite(sun->x) || !std::isfinite(sun->y) || !std::isfinite(sun->z) ||
+            glm::dot(*sun, *sun) <= 0.0f)
+            throw InputError(
+                fmt::format("\"{}\": attribute sunDirection ({}, {}, {}) is not a finite, non-zero "
+                            "direction",
+                            path.string(), sun->x, sun->y, sun->z));
+        out.sunDirection = sun;
+    }
     if (!frame.motion.empty()) {
         out.motion = uvMotion(frame.motion, width, height, jitter.value_or(glm::vec2(0.0f)),
                               mPreviousJitter.value_or(glm::vec2(0.0f)));
@@ -321,6 +330,7 @@ FrameInputs InputTextures::upload(const DecodedFrame& frame) {
         mCamera = *frame.camera;
         inputs.camera = &mCamera;
     }
+    inputs.sunDirection = frame.sunDirection;
     return inputs;
 }
 
@@ -356,6 +366,7 @@ std::string attributeUse(const std::string& name) {
         {"sensorOverallDimensions", "lens sensor height"},
         {"shutterAngle", "lens shutter angle"},
         {"jitter", "motion unjitter"},
+        {"sunDirection", "sun direction (contact shadows, volumetric light)"},
         {"dataWindow", "pixels read"},
         {"displayWindow", "NDC frame of the camera"},
         {"channels", "the channels above"},

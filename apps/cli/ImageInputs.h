@@ -40,6 +40,8 @@ struct DecodedFrame {
     std::vector<float> normals; ///< width*height*3 view-space unit normals; or empty
     std::vector<float> motion; ///< width*height*2 UV (y up), current minus previous, jitter removed; or empty
     std::optional<Camera> camera;
+    /// World space, towards the sun: the EXR's `sunDirection` attribute (finite, non-zero), else none.
+    std::optional<glm::vec3> sunDirection;
     /// The frame's samples were jittered: it carries a `jitter` attribute, or the sequence was rendered with
     /// Photopic's Halton(2, 3) jitter (--jitter halton).
     bool jittered = false;

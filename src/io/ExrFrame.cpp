@@ -111,6 +111,18 @@ std::optional<glm::vec2> vec2Attribute(const fs::path& path, const Imf::Header& 
     throw IoError(path, wrongType(name, *attribute, "v2f"));
 }
 
+std::optional<glm::vec3> vec3Attribute(const fs::path& path, const Imf::Header& header,
+                                       const std::string& name) {
+    const Imf::Attribute* attribute = findAttribute(header, name);
+    if (attribute == nullptr)
+        return std::nullopt;
+    if (const auto* f = dynamic_cast<const Imf::V3fAttribute*>(attribute))
+        return glm::vec3(f->value().x, f->value().y, f->value().z);
+    if (const auto* d = dynamic_cast<const Imf::V3dAttribute*>(attribute))
+        return glm::vec3(float(d->value().x), float(d->value().y), float(d->value().z));
+    throw IoError(path, wrongType(name, *attribute, "v3f"));
+}
+
 std::optional<glm::mat4> matrixAttribute(const fs::path& path, const Imf::Header& header,
                                          const std::string& name) {
     const Imf::Attribute* attribute = findAttribute(header, name);
@@ -146,6 +158,7 @@ ExrCameraAttributes readCameraAttributes(const fs::path& path, const Imf::Header
     a.jitter = vec2Attribute(path, header, "jitter");
     a.nearClip = floatAttribute(path, header, "nearClipPlane");
     a.farClip = floatAttribute(path, header, "farClipPlane");
+    a.sunDirection = vec3Attribute(path, header, "sunDirection");
     return a;
 }
 
@@ -179,6 +192,9 @@ void writeCameraAttributes(Imf::Header& header, const ExrCameraAttributes& a) {
     vec2("jitter", a.jitter);
     scalar("nearClipPlane", a.nearClip);
     scalar("farClipPlane", a.farClip);
+    if (a.sunDirection)
+        header.insert("sunDirection",
+                      Imf::V3fAttribute(Imath::V3f(a.sunDirection->x, a.sunDirection->y, a.sunDirection->z)));
 }
 
 // ---------------------------------------------------------------------------------------------------------------

@@ -10,12 +10,14 @@
 //   bottom-right of the display window), `focus` (m), `aperture` (f-number), `expTime` (s), `isoSpeed`, and,
 //   when present, the lens attributes `pinholeFocalLength` (mm), `sensorOverallDimensions` (mm),
 //   `shutterAngle` (degrees), `nearClipPlane`/`farClipPlane` (scene units) and `jitter` (v2f, pixels: the
-//   offset of the frame's samples from the pixel centres, x right, y down).
+//   offset of the frame's samples from the pixel centres, x right, y down);
+// - sun: `sunDirection` (v3f, world space, pointing towards the sun; Photopic's own attribute): the light
+//   contact shadows march towards and volumetric light scatters from.
 // `worldToNDC` is the unjittered projection; `jitter` says how the samples (and so the motion vectors) were
 // moved. Its z row, when it is a projective depth, follows RenderMan: z_ndc = 0 at the near plane and 1 at
 // the far plane (z_ndc = f (z - n) / (z (f - n)) for camera depth z).
 //
-// Attribute types: matrices m44f (m44d accepted), scalars float (double accepted), vectors v2f (v2d
+// Attribute types: matrices m44f (m44d accepted), scalars float (double accepted), vectors v2f/v3f (v2d/v3d
 // accepted); an attribute of any other type is an error, not silently ignored.
 
 #include "core/Camera.h"
@@ -45,8 +47,9 @@ struct ExrCameraAttributes {
     std::optional<glm::vec2> sensorOverallDimensions; ///< mm
     std::optional<float> shutterAngle;                ///< degrees
     std::optional<glm::vec2> jitter;                  ///< pixels, x right, y down
-    std::optional<float> nearClip; ///< scene units (`nearClipPlane`, when a renderer writes it)
-    std::optional<float> farClip;  ///< scene units (`farClipPlane`)
+    std::optional<float> nearClip;         ///< scene units (`nearClipPlane`, when a renderer writes it)
+    std::optional<float> farClip;          ///< scene units (`farClipPlane`)
+    std::optional<glm::vec3> sunDirection; ///< world space, towards the sun (`sunDirection`)
 };
 
 /// One EXR frame with its optional 3D layers, each row-major, rows top to bottom like ImageF.

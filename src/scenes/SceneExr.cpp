@@ -51,6 +51,7 @@ ExrFrame exrFrameFromInputs(const FrameInputs& inputs) {
     if (camera != nullptr) {
         frame.camera = exrFromCamera(*camera, w, h);
     }
+    frame.camera.sunDirection = inputs.sunDirection;
     return frame;
 }
 

@@ -48,4 +48,9 @@ expect 2 "a camera JSON with an unknown key" -- "$PHOTOPIC" image "$S/plain/plai
 check "the error names the key" contains '"fov": unknown key'
 check "no output for bad inputs" test ! -e "$S/bad.png"
 
+expect 0 "the testbed writes its inputs as EXR" -- "$PHOTOPIC" scene testbed --frames 1 --size 32x18 \
+    --format exr -o "$S/testbed"
+expect 0 "--info on the testbed's EXR" -- "$PHOTOPIC" image --info "$S/testbed/scene_0000.exr"
+check "--info: the testbed's sun direction is written and read" contains "sunDirection (v3f) -> sun direction"
+
 finish

@@ -87,6 +87,7 @@ ExrFrame testFrame() {
     frame.depth[pixels - 1] = std::numeric_limits<float>::infinity(); // the background
     frame.camera = exrFromCamera(testCamera(), kWidth, kHeight);
     frame.camera.jitter = glm::vec2(0.25f, -0.125f);
+    frame.camera.sunDirection = glm::vec3(0.25f, 0.75f, -0.5f);
     return frame;
 }
 
@@ -131,6 +132,7 @@ TEST(ExrFrame, RoundTripsEveryLayerAndAttribute) {
     EXPECT_EQ(a.jitter, w.jitter);
     EXPECT_EQ(a.nearClip, w.nearClip);
     EXPECT_EQ(a.farClip, w.farClip);
+    EXPECT_EQ(a.sunDirection, w.sunDirection);
 }
 
 TEST(ExrFrame, ColorOnlyFileHasNoLayersOrCamera) {
