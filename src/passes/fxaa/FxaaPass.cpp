@@ -10,10 +10,8 @@ constexpr ResourceUse kUses[] = {{Resource::DisplayColor, Access::Read},
 } // namespace
 
 FxaaPass::FxaaPass()
-    : mProgram(makeGraphicsProgram("passes/common/fullscreen.vert.glsl", "passes/fxaa/fxaa.frag.glsl",
-                                   bindingDefines()))
-    , mParameters("fxaa parameters")
-    , mVao(VertexArray::create("fxaa fullscreen")) {}
+    : mProgram(makeComputeProgram("passes/fxaa/fxaa.comp.glsl", bindingDefines()))
+    , mParameters("fxaa parameters") {}
 
 std::span<const ResourceUse> FxaaPass::uses() const {
     return kUses;
@@ -34,9 +32,10 @@ void FxaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     mParameters.bind(kBindingParameters);
     mProgram.use();
     glBindTextureUnit(0, display.id());
-    out.framebuffer().bind();
-    glBindVertexArray(mVao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glDispatchCompute(GLuint((e.width + 7) / 8), GLuint((e.height + 7) / 8), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                    GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
     resources.bind(Resource::DisplayColor, out.texture());
 }
 

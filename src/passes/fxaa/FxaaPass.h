@@ -33,7 +33,6 @@ public:
 private:
     Program mProgram;
     ParameterBlock<FxaaParameters> mParameters;
-    VertexArray mVao;
 };
 
 } // namespace photopic

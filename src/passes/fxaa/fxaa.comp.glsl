@@ -9,10 +9,15 @@
 //     luma leaves the average of the pair by a quarter of the gradient;
 //  5. the pixel is re-sampled across the edge by its position along the span (nearer end wins), or by the
 //     sub-pixel amount (the 3x3 low-pass contrast, squared, times `subpix`) when that is larger.
-// Luma is Rec.709 weights on the sRGB-encoded (perceptual) values, as FXAA expects.
+// Luma is Rec.709 weights on the sRGB-encoded (perceptual) values, as FXAA expects. A compute pass (8x8
+// groups, one pixel each, image store): on GPUs whose raster units are a small part of the chip it runs
+// at the memory's pace where a full-screen triangle does not.
 #include "passes/common/color.h.glsl"
 
+layout(local_size_x = 8, local_size_y = 8) in;
+
 layout(binding = 0) uniform sampler2D uInput;
+layout(binding = 0, rgba8) uniform writeonly image2D uOutput;
 // Mirrors photopic::FxaaParameters (passes/fxaa/FxaaPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform FxaaParameters {
     vec2 uTexel; // 1 / size
@@ -21,7 +26,6 @@ layout(std140, binding = BINDING_PARAMETERS) uniform FxaaParameters {
     float uEdgeThresholdMin;
 };
 
-layout(location = 0) out vec4 oColor;
 
 const int kSteps = 5;
 const float kStepSizes[kSteps] = float[](1.0, 1.5, 2.0, 4.0, 12.0);
@@ -35,8 +39,12 @@ float lumaOffset(vec2 uv, vec2 offset) {
 }
 
 void main() {
-    vec2 uv = gl_FragCoord.xy * uTexel;
-    vec4 centre = texelFetch(uInput, ivec2(gl_FragCoord.xy), 0);
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, imageSize(uOutput)))) {
+        return;
+    }
+    vec2 uv = (vec2(p) + 0.5) * uTexel;
+    vec4 centre = texelFetch(uInput, p, 0);
     float lumaM = luma709(centre.rgb);
     // "North" is -y (one row towards v = 0), "west" is -x.
     float lumaN = lumaOffset(uv, vec2(0.0, -1.0));
@@ -48,7 +56,7 @@ void main() {
     float rangeMin = min(lumaM, min(min(lumaN, lumaS), min(lumaW, lumaE)));
     float range = rangeMax - rangeMin;
     if (range < max(uEdgeThresholdMin, rangeMax * uEdgeThreshold)) {
-        oColor = centre;
+        imageStore(uOutput, p, centre);
         return;
     }
 
@@ -115,5 +123,5 @@ void main() {
     float offset = max(pixelOffset, subpixH);
 
     vec2 finalUv = uv + (horzSpan ? vec2(0.0, offset * lengthSign) : vec2(offset * lengthSign, 0.0));
-    oColor = vec4(textureLod(uInput, finalUv, 0.0).rgb, 1.0);
+    imageStore(uOutput, p, vec4(textureLod(uInput, finalUv, 0.0).rgb, 1.0));
 }
