@@ -9,6 +9,7 @@
 #include "core/settings/ColorGradingSettings.h"
 #include "core/settings/ContactShadowSettings.h"
 #include "core/settings/DebugSettings.h"
+#include "core/settings/DepthOfFieldSettings.h"
 #include "core/settings/DisplaySettings.h"
 #include "core/settings/OutputSettings.h"
 #include "core/settings/QualitySettings.h"
@@ -38,6 +39,7 @@ struct Settings {
     SmaaSettings smaa;
     AmbientOcclusionSettings ssao;
     ContactShadowSettings contactShadows;
+    DepthOfFieldSettings dof;
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
     /// is none.
@@ -72,6 +74,7 @@ struct Settings {
         v.object("smaa", smaa);
         v.object("ssao", ssao);
         v.object("contactShadows", contactShadows);
+        v.object("dof", dof);
     }
 };
 
