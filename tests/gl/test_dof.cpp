@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <numbers>
@@ -257,6 +258,137 @@ TEST_F(GlTest, DofMatchesTheThinLensTruth) {
     EXPECT_LT(blur, 0.7 * blurBase);
     EXPECT_LT(relativeRmse(withDof, truth, nearMask), 0.8 * relativeRmse(without, truth, nearMask));
     EXPECT_LT(relativeRmse(withDof, truth, farMask), 0.8 * relativeRmse(without, truth, farMask));
+}
+
+} // namespace photopic::test
+
+namespace photopic::test {
+
+namespace {
+
+constexpr int kLayerW = 96;
+constexpr int kLayerH = 64;
+constexpr float kFar = 100.0f;  ///< artistic CoC +bokehRadius
+constexpr float kFocus = 10.0f; ///< in focus
+constexpr float kNear = 5.0f;   ///< artistic CoC -bokehRadius
+
+/// A sharp red square in focus (x, y in [40, 56)), blue background far behind it.
+Layers sharpOverBlurred() {
+    Layers layers(kLayerW, kLayerH);
+    for (int y = 0; y < kLayerH; ++y) {
+        for (int x = 0; x < kLayerW; ++x) {
+            const bool object = x >= 40 && x < 56 && y >= 24 && y < 40;
+            layers.set(x, y, object ? 4.0f : 0.0f, 0.0f, object ? 0.0f : 2.0f, object ? kFocus : kFar);
+        }
+    }
+    return layers;
+}
+
+} // namespace
+
+// The coc view's raw values (EXR) are the CPU model's signed radius over maxCocRadius: red near, blue far.
+TEST_F(GlTest, DofCocViewHoldsTheSignedRadius) {
+    Layers layers(kLayerW, kLayerH);
+    for (int x = 0; x < kLayerW; ++x) {
+        for (int y = 0; y < kLayerH; ++y) {
+            layers.set(x, y, 1.0f, 1.0f, 1.0f, 2.0f + 0.25f * float(x)); // 2 .. 25.75 scene units
+        }
+    }
+    Settings s = artistic(6.0f);
+    s.debug.view = DebugView::Coc;
+    const ImageF view = runLayers(layers, s);
+    CocModel model;
+    model.artistic = true;
+    model.focalDistance = 10.0f;
+    model.focalRange = 5.0f;
+    model.bokehRadius = 6.0f;
+    model.maxRadius = s.dof.maxCocRadius;
+    double worst = 0.0;
+    for (int x = 0; x < kLayerW; ++x) {
+        const float expected = model.radius(2.0f + 0.25f * float(x));
+        const float* p = view.at(x, kLayerH / 2);
+        const float got = (p[2] - p[0]) * s.dof.maxCocRadius;
+        worst = std::max(worst, double(std::abs(got - expected)));
+        ASSERT_TRUE(p[0] == 0.0f || p[2] == 0.0f) << x; // one field per pixel
+        ASSERT_EQ(p[1], 0.0f);
+    }
+    EXPECT_LE(worst, 0.01); // R16F: 11 bits over 6 px
+}
+
+// Pixels in focus that no blurred foreground reaches keep their value exactly; a sharp object does not
+// bleed into the blurred background around it, nor the blurred background into it.
+TEST_F(GlTest, DofKeepsFocusSharpAndDoesNotBleed) {
+    const Layers layers = sharpOverBlurred();
+    for (DofKernel kernel : {DofKernel::Disc, DofKernel::Hexagon}) {
+        Settings s = artistic(6.0f);
+        s.dof.kernel = kernel;
+        const ImageF out = runLayers(layers, s);
+        Settings off = s;
+        off.dof.enabled = false;
+        const ImageF sharp = runLayers(layers, off);
+        long changed = 0, object = 0;
+        double redOutside = 0.0, redInside = 0.0, blueInside = 0.0, blueOutside = 0.0;
+        long outside = 0;
+        for (int y = 0; y < kLayerH; ++y) {
+            for (int x = 0; x < kLayerW; ++x) {
+                const bool inObject = x >= 40 && x < 56 && y >= 24 && y < 40;
+                const float* p = out.at(x, y);
+                if (inObject) {
+                    ++object;
+                    changed += std::memcmp(p, sharp.at(x, y), 3 * sizeof(float)) != 0 ? 1 : 0;
+                    redInside += p[0];
+                    blueInside += p[2];
+                } else {
+                    ++outside;
+                    redOutside += p[0];
+                    blueOutside += p[2];
+                }
+            }
+        }
+        // Red the object lost to the background, and blue the background lost to the object, as fractions.
+        const double redBleed = redOutside / (redInside + redOutside);
+        const double blueBleed = blueInside / (blueInside + blueOutside) * double(outside) / double(object);
+        std::printf(
+            "%s: in-focus pixels changed %ld of %ld; object into background %.5f, background into object "
+            "%.5f\n",
+            kernel == DofKernel::Disc ? "disc" : "hexagon", changed, object, redBleed, blueBleed);
+        EXPECT_EQ(changed, 0);
+        EXPECT_LE(redBleed, 0.001);
+        EXPECT_LE(blueBleed, 0.001);
+    }
+}
+
+// A blurred foreground (a half plane at CoC -6 px) over sharp background: at distance d outside its edge the
+// foreground's share is the part of a 6 px disc beyond d (the thin-lens answer for a defocused edge), and
+// the background far from the edge is untouched.
+TEST_F(GlTest, DofNearFieldCoversTheSharpBackground) {
+    Layers layers(kLayerW, kLayerH);
+    const int edge = 48;
+    for (int y = 0; y < kLayerH; ++y) {
+        for (int x = 0; x < kLayerW; ++x) {
+            const bool fg = x < edge;
+            layers.set(x, y, fg ? 0.0f : 1.0f, fg ? 3.0f : 0.0f, 0.0f, fg ? kNear : kFocus);
+        }
+    }
+    const float radius = 6.0f;
+    const ImageF out = runLayers(layers, artistic(radius));
+    double worst = 0.0;
+    for (int x = edge; x < edge + 8; ++x) {
+        const double d = double(x - edge) + 0.5; // pixel centre's distance from the edge
+        const double t = std::min(d / radius, 1.0);
+        const double expected = (std::acos(t) - t * std::sqrt(1.0 - t * t)) / std::numbers::pi;
+        double got = 0.0;
+        for (int y = 8; y < kLayerH - 8; ++y) {
+            got += out.at(x, y)[1] / 3.0;
+        }
+        got /= double(kLayerH - 16);
+        std::printf("d %.1f px: foreground share %.3f (disc %.3f)\n", d, got, expected);
+        worst = std::max(worst, std::abs(got - expected));
+    }
+    EXPECT_LE(worst, 0.05);
+    for (int y = 0; y < kLayerH; ++y) {
+        EXPECT_EQ(out.at(kLayerW - 1, y)[1], 0.0f);
+    }
 }
 
 } // namespace photopic::test

@@ -56,11 +56,13 @@ void main() {
             float fraction = 0.0;
             vec2 offset = ring == 0 ? vec2(0.0) : apertureSample(ring, j, fraction);
             float d = fraction * reach;
-            vec4 s = textureLod(uField, (centre + offset * reach) / uHalfSize, 0.0);
+            // Nearest texels: a bilinear fetch would mix a sharp texel's colour into a blurred one's CoC.
+            ivec2 q = clamp(ivec2(floor(centre + offset * reach)), ivec2(0), ivec2(uHalfSize) - 1);
+            vec4 s = texelFetch(uField, q, 0);
             float r = s.a;
 #ifdef NEAR
             float cover = r >= kMinCoc ? clamp(r - d + 0.5, 0.0, 1.0) : 0.0;
-            float w = cover / (r * r);
+            float w = cover / max(r * r, kMinCoc * kMinCoc);
             covered += w;
 #else
             // Behind the focus a larger CoC is a farther surface: it spreads no further than the centre's own
