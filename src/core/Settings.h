@@ -11,6 +11,7 @@
 #include "core/settings/DebugSettings.h"
 #include "core/settings/DepthOfFieldSettings.h"
 #include "core/settings/DisplaySettings.h"
+#include "core/settings/ExposureModeSettings.h"
 #include "core/settings/OutputSettings.h"
 #include "core/settings/QualitySettings.h"
 #include "core/settings/SubjectSettings.h"
@@ -40,6 +41,7 @@ struct Settings {
     AmbientOcclusionSettings ssao;
     ContactShadowSettings contactShadows;
     DepthOfFieldSettings dof;
+    ExposureModeSettings exposure;
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
     /// is none.
@@ -75,6 +77,7 @@ struct Settings {
         v.object("ssao", ssao);
         v.object("contactShadows", contactShadows);
         v.object("dof", dof);
+        v.object("exposure", exposure);
     }
 };
 

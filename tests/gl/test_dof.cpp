@@ -392,3 +392,32 @@ TEST_F(GlTest, DofNearFieldCoversTheSharpBackground) {
 }
 
 } // namespace photopic::test
+
+namespace photopic::test {
+
+// exposure.mode = physical: the frame is exposed by the camera's EV100 (f/16, 1/100 s, ISO 100: 14.64), so
+// 1000 cd/m^2 comes out at 1000 / (1.2 * 2^14.64); halving the exposure time halves it; without a camera
+// the frame stays manual.
+TEST_F(GlTest, PhysicalExposureUsesTheCamerasEv100) {
+    const Texture color = makeTexture(ImageF(16, 16, 1000.0f), "color");
+    const auto exposed = [&](float exposureTime, bool withCamera) {
+        Camera camera;
+        camera.projection = perspectiveProjection(camera.verticalFov, 1.0f, 0.1f, 1000.0f);
+        camera.prevViewProjection = camera.projection;
+        camera.lens.fNumber = 16.0f;
+        camera.lens.exposureTimeS = exposureTime;
+        camera.lens.iso = 100.0f;
+        Settings s = measuring(false);
+        s.aa.mode = AntiAliasing::None;
+        s.exposure.mode = ExposureMode::Physical;
+        Pipeline pipeline({.settings = s});
+        pipeline.execute({.color = &color, .camera = withCamera ? &camera : nullptr}, {.dt = kDt});
+        return double(readTextureF(pipeline.sceneReferred()).at(8, 8)[1]);
+    };
+    const double expected = 1000.0 / (1.2 * std::exp2(std::log2(256.0 / 0.01)));
+    EXPECT_NEAR(exposed(0.01f, true), expected, 1e-3 * expected);
+    EXPECT_NEAR(exposed(0.005f, true) / exposed(0.01f, true), 0.5, 1e-3);
+    EXPECT_NEAR(exposed(0.01f, false), 1000.0, 1.0); // manual: exposure 1
+}
+
+} // namespace photopic::test
