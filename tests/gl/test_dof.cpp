@@ -421,3 +421,36 @@ TEST_F(GlTest, PhysicalExposureUsesTheCamerasEv100) {
 }
 
 } // namespace photopic::test
+
+namespace photopic::test {
+
+// NaN, infinite, zero and negative depths and non-finite colour give finite output (such depths are in
+// focus, the sky's +inf takes the far limit).
+TEST_F(GlTest, DofOutputStaysFiniteWithBrokenInputs) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    Layers layers(48, 32);
+    for (int y = 0; y < 32; ++y) {
+        for (int x = 0; x < 48; ++x) {
+            const int k = (x + 7 * y) % 6;
+            const float z = k == 0   ? nan
+                            : k == 1 ? inf
+                            : k == 2 ? 0.0f
+                            : k == 3 ? -3.0f
+                            : k == 4 ? 5.0f
+                                     : 100.0f;
+            const float c = (x * y) % 5 == 0 ? nan : (x * y) % 7 == 0 ? inf : 2.0f;
+            layers.set(x, y, c, 1.0f, 0.5f, z);
+        }
+    }
+    for (DofMode mode : {DofMode::Physical, DofMode::Artistic}) {
+        Settings s = artistic(8.0f);
+        s.dof.mode = mode;
+        const ImageF out = runLayers(layers, s);
+        for (float v : out.rgba) {
+            ASSERT_TRUE(std::isfinite(v));
+        }
+    }
+}
+
+} // namespace photopic::test
