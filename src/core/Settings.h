@@ -9,7 +9,9 @@
 #include "core/settings/ColorGradingSettings.h"
 #include "core/settings/ContactShadowSettings.h"
 #include "core/settings/DebugSettings.h"
+#include "core/settings/DepthOfFieldSettings.h"
 #include "core/settings/DisplaySettings.h"
+#include "core/settings/ExposureModeSettings.h"
 #include "core/settings/OutputSettings.h"
 #include "core/settings/QualitySettings.h"
 #include "core/settings/SubjectSettings.h"
@@ -38,6 +40,8 @@ struct Settings {
     SmaaSettings smaa;
     AmbientOcclusionSettings ssao;
     ContactShadowSettings contactShadows;
+    DepthOfFieldSettings dof;
+    ExposureModeSettings exposure;
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
     /// is none.
@@ -72,6 +76,8 @@ struct Settings {
         v.object("smaa", smaa);
         v.object("ssao", ssao);
         v.object("contactShadows", contactShadows);
+        v.object("dof", dof);
+        v.object("exposure", exposure);
     }
 };
 

@@ -42,6 +42,8 @@ std::string_view resourceName(Resource resource) noexcept {
         return "contactShadows";
     case Resource::ContactShadowSteps:
         return "contactShadowSteps";
+    case Resource::DofCoc:
+        return "dofCoc";
     case Resource::DebugColor:
         return "debugColor";
     case Resource::DisplayColor:

@@ -48,6 +48,7 @@ enum class Resource : std::uint8_t {
     DisplayColor,     ///< RGBA8 display-referred image
     /// lighting stage: the contact-shadow march's steps, when the contact-shadows-steps debug view shows them
     ContactShadowSteps,
+    DofCoc, ///< R16F: depth of field's signed circle of confusion in pixels (< 0 near, > 0 far)
     Count
 };
 inline constexpr std::size_t kResourceCount = std::size_t(Resource::Count);

@@ -31,6 +31,7 @@ FrameOrder::FrameOrder(const Capabilities& caps, bool keepTelemetryHistory)
         &probes,          // sceneColor, metering -> metering (subject probes; the subject's reading)
         &exposure,        // histogram, metering -> exposure (adaptation; telemetry readback)
         &subjectContexts, // exposure -> (subject contexts for the host)
+        &dof,             // sceneColor, linearDepth, camera -> sceneColor, dofCoc (depth of field)
         &bloom,           // sceneColor, exposure -> bloom
         &debugView,       // scene values or 3D inputs -> debugColor (replaces the image, no tone mapping)
         // Display domain.

@@ -8,6 +8,7 @@
 #include "passes/contactshadows/ContactShadowsPass.h"
 #include "passes/debug/DebugViewPass.h"
 #include "passes/display/DisplayEffectsPass.h"
+#include "passes/dof/DofPass.h"
 #include "passes/exposure/ExposurePass.h"
 #include "passes/fxaa/FxaaPass.h"
 #include "passes/gtao/GtaoPass.h"
@@ -62,6 +63,7 @@ public:
     LensFlarePass lensFlare;
     DisplayEffectsPass displayEffects;
     HistogramOverlayPass histogramOverlay;
+    DofPass dof;
 
 private:
     std::vector<FramePass*> mLighting;

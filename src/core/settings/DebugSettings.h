@@ -28,10 +28,13 @@ enum class DebugView {
     ContactShadows,
     /// The contact-shadow ray march's steps taken per pixel over contactShadows.steps (0: none marched)
     ContactShadowSteps,
+    /// Depth of field's signed circle of confusion over dof.maxCocRadius: red the near field's radius, blue
+    /// the far field's, black in focus (raw values in an EXR); needs dof.enabled, depth and a camera
+    Coc,
 };
 
 inline std::span<const std::string_view> debugViewNames() {
-    static constexpr std::array<std::string_view, 14> kNames{"none",
+    static constexpr std::array<std::string_view, 15> kNames{"none",
                                                              "exposure",
                                                              "luma",
                                                              "ev",
@@ -44,7 +47,8 @@ inline std::span<const std::string_view> debugViewNames() {
                                                              "taa-history-weight",
                                                              "disocclusion",
                                                              "contact-shadows",
-                                                             "contact-shadows-steps"};
+                                                             "contact-shadows-steps",
+                                                             "coc"};
     return kNames;
 }
 

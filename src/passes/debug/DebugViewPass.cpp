@@ -33,10 +33,13 @@ constexpr ResourceUse kContactShadowViewUses[] = {{Resource::ContactShadows, Acc
                                                   {Resource::DebugColor, Access::Write}};
 constexpr ResourceUse kContactShadowStepsViewUses[] = {{Resource::ContactShadowSteps, Access::Read},
                                                        {Resource::DebugColor, Access::Write}};
+constexpr ResourceUse kCocViewUses[] = {{Resource::DofCoc, Access::Read},
+                                        {Resource::DebugColor, Access::Write}};
 
 /// Views of data rather than of the image: written to EXR, they keep their values.
 bool isDataView(DebugView view) {
-    return view == DebugView::ContactShadows || view == DebugView::ContactShadowSteps;
+    return view == DebugView::ContactShadows || view == DebugView::ContactShadowSteps ||
+           view == DebugView::Coc;
 }
 
 bool isInputView(DebugView view) {
@@ -67,6 +70,8 @@ std::span<const ResourceUse> DebugViewPass::uses() const {
         return kContactShadowViewUses;
     case DebugView::ContactShadowSteps:
         return kContactShadowStepsViewUses;
+    case DebugView::Coc:
+        return kCocViewUses;
     default:
         return kSceneViewUses;
     }
@@ -135,13 +140,15 @@ void DebugViewPass::drawInputView(const FrameContext& ctx, const FrameResources&
                             : mView == DebugView::Motion             ? Resource::Motion
                             : mView == DebugView::ContactShadows     ? Resource::ContactShadows
                             : mView == DebugView::ContactShadowSteps ? Resource::ContactShadowSteps
+                            : mView == DebugView::Coc                ? Resource::DofCoc
                                                                      : Resource::TaaDebug;
     const Program& p = mInputProgram;
     const Camera* camera = ctx.inputs.camera;
     mInputParameters.update({.view = int(mView),
                              .octahedral = ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 1 : 0,
                              .nearPlane = camera ? camera->nearPlane : 0.1f,
-                             .farPlane = camera ? camera->farPlane : 1000.0f});
+                             .farPlane = camera ? camera->farPlane : 1000.0f,
+                             .maxCoc = ctx.settings.dof.maxCocRadius});
     mInputParameters.bind(kBindingParameters);
     p.use();
     glBindTextureUnit(0, resources.texture(source)->id());

@@ -35,8 +35,10 @@ struct DebugInputViewParameters {
     std::int32_t octahedral = 0;
     float nearPlane = 0.1f;
     float farPlane = 1000.0f;
+    float maxCoc = 16.0f; ///< pixels: the coc view shows radius / maxCoc
+    float padding[3] = {};
 };
-static_assert(sizeof(DebugInputViewParameters) == 16);
+static_assert(sizeof(DebugInputViewParameters) == 32);
 static_assert(offsetof(DebugInputViewParameters, octahedral) == 4 &&
               offsetof(DebugInputViewParameters, nearPlane) == 8 &&
               offsetof(DebugInputViewParameters, farPlane) == 12);

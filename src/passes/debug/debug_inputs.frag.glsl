@@ -7,10 +7,11 @@ layout(binding = 0) uniform sampler2D uInput;
 // Mirrors photopic::DebugInputViewParameters (passes/debug/DebugViewPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform DebugInputViewParameters {
     int uView; // DebugView: 7 depth, 8 normals, 9 motion, 10 TAA history weight, 11 disocclusion,
-               // 12 contact shadows, 13 contact-shadow steps
+               // 12 contact shadows, 13 contact-shadow steps, 14 depth of field's CoC
     int uOctahedral;
     float uNear;
     float uFar;
+    float uMaxCoc; // pixels
 };
 
 layout(location = 0) out vec4 oColor;
@@ -82,6 +83,10 @@ void main() {
         c = vec3(t.g);
     } else if (uView == 12 || uView == 13) {
         c = vec3(t.r); // contact shadows' visibility, or the steps its march took (normalised)
+    } else if (uView == 14) {
+        // Signed CoC over the largest radius: near field red, far field blue, in focus black.
+        float r = clamp(t.r / uMaxCoc, -1.0, 1.0);
+        c = vec3(max(-r, 0.0), 0.0, max(r, 0.0));
     }
     oColor = vec4(c, 1.0);
 }

@@ -1,5 +1,7 @@
 #include "passes/exposure/ExposurePass.h"
 
+#include "core/Log.h"
+#include "core/PhysicalExposure.h"
 #include "passes/Bindings.h"
 #include "passes/metering/MeteringPass.h"
 
@@ -66,15 +68,30 @@ std::span<const ResourceUse> ExposurePass::uses() const {
 
 void ExposurePass::execute(FrameContext& ctx, FrameResources& resources) {
     const Buffer& histogram = *resources.buffer(Resource::Histogram);
+    // exposure.mode = physical: the camera's EV100 joins the manual EV and auto exposure becomes a correction
+    // around it (core/PhysicalExposure.h); without a camera the frame stays manual.
+    PhysicalExposureInputs exposure{*ctx.autoExposure, ctx.settings.tonemapping.exposure};
+    if (ctx.settings.exposure.mode == ExposureMode::Physical) {
+        if (ctx.inputs.camera != nullptr && resources.has(Resource::Camera)) {
+            exposure = physicalExposure(*ctx.autoExposure, ctx.settings.tonemapping.exposure,
+                                        ctx.inputs.camera->lens, ctx.time.dt);
+        } else {
+            try {
+                warnOnce("exposure.physical.camera",
+                         "exposure.mode is physical but the frame has no camera: manual exposure");
+            } catch (...) { // logging must not take the frame down
+            }
+        }
+    }
     execute({.histogram = &histogram,
              .metering = resources.buffer(Resource::Metering),
              .exposureState = &mState,
-             .settings = ctx.autoExposure,
+             .settings = &exposure.autoExposure,
              .metered = ctx.settings.autoExposure.enabled,
              .histogramBuilt = MeteringPass::histogramWanted(ctx.settings),
              .reset = ctx.resetExposure,
              .dt = ctx.time.dt,
-             .manualEV = ctx.settings.tonemapping.exposure,
+             .manualEV = exposure.manualEV,
              .timers = ctx.timers});
     resources.bind(Resource::ExposureState, mState);
 

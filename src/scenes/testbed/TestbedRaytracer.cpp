@@ -2,6 +2,8 @@
 
 #include "core/Hash.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -101,6 +103,12 @@ Frame frameAt(const TruthOptions& o, double cameraTime, double objectTime) {
     const double prevCamera = o.times.prevCamera + (cameraTime - o.times.camera);
     const double prevObjects = o.times.prevObjects + (objectTime - o.times.objects);
     f.camera = testbedCamera(cameraTime, prevCamera, o.width, o.height, o.lens);
+    if (o.fixedView) {
+        f.camera.view = glm::lookAt(o.fixedView->eye, o.fixedView->target, glm::vec3(0.0f, 1.0f, 0.0f));
+        f.camera.prevViewProjection = f.camera.projection * f.camera.view;
+        f.camera.cut = false;
+        f.camera.lens.focusDistance = glm::length(o.fixedView->target - o.fixedView->eye);
+    }
     if (o.focusDistance > 0.0f) {
         f.camera.lens.focusDistance = o.focusDistance;
     }

@@ -41,13 +41,20 @@ enum class TruthKind { Color, Depth, Normals, Motion, ObjectId, Ao, Sun, Shutter
 [[nodiscard]] std::optional<TruthKind> parseTruthKind(std::string_view name);
 [[nodiscard]] const std::vector<TruthKind>& allTruthKinds();
 
+/// A still camera at `eye` looking at `target` (y up), in place of the camera path.
+struct FixedView {
+    glm::vec3 eye{0.0f};
+    glm::vec3 target{0.0f, 0.0f, -1.0f};
+};
+
 struct TruthOptions {
     int width = 160;
     int height = 90;
     FrameTimes times;       ///< the frame (frameTimes())
     double dt = 1.0 / 30.0; ///< s, the frame interval (the shutter's length follows it)
     Lens lens;              ///< f-number, shutter angle or exposure time (focal length, focus: the path's)
-    float focusDistance = 0.0f; ///< scene units; 0: the camera path's
+    float focusDistance = 0.0f; ///< scene units; 0: the camera path's (the target's, with a fixed view)
+    std::optional<FixedView> fixedView; ///< a still camera instead of the path's
     /// Colour, shutter, thin lens: samples x samples per pixel; 1: one sample at the pixel centre (moved by
     /// the jitter), the rasteriser's colour.
     int samples = 16;

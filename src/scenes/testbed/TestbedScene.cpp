@@ -36,6 +36,7 @@ Lens TestbedScene::lens() const {
     Lens l;
     l.fNumber = mSettings.fNumber;
     l.shutterAngleDeg = mSettings.shutterAngle;
+    l.sensorHeightMm = mSettings.sensorHeight;
     return l;
 }
 
@@ -58,6 +59,9 @@ testbed::TruthOptions TestbedScene::truthOptions(const FrameTime& time) const {
     o.aoSamples = mSettings.aoSamples;
     o.sunMaxDistance = mSettings.sunMaxDistance;
     o.sunSamples = mSettings.sunSamples;
+    if (mSettings.fixedCamera) {
+        o.fixedView = testbed::FixedView{mSettings.eye, mSettings.target};
+    }
     return o;
 }
 

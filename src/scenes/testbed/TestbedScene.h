@@ -25,6 +25,14 @@ struct TestbedSceneSettings {
     int aoSamples = 16;          ///< [1, 64], default 16: aoSamples x aoSamples rays per pixel
     float sunMaxDistance = 0.0f; ///< m, [0, 1000], default 0 (unlimited): the sun truth's occluder distance
     int sunSamples = 1;          ///< [1, 32], default 1: one ray to the sun's centre; n: n x n over its disc
+    /// Default false: the camera path's framing; true: a still camera at `eye` looking at `target` (a test
+    /// holds a chosen framing; focus at the target's distance unless focusDistance is set).
+    bool fixedCamera = false;
+    glm::vec3 eye{0.0f, 1.2f, 6.0f};     ///< m, each in [-1000, 1000]: the fixed camera's position
+    glm::vec3 target{0.0f, 0.8f, -1.0f}; ///< m, each in [-1000, 1000]: the point the fixed camera looks at
+    /// mm, [1, 1000], default 24 (full frame): the lens's sensor height; with the fixed 45-degree field of
+    /// view the focal length follows it, so a larger sensor gives a longer lens and shallower depth of field
+    float sensorHeight = 24.0f;
 
     template <class V>
     void visit(V& v) {
@@ -40,6 +48,11 @@ struct TestbedSceneSettings {
         v.field("aoSamples", aoSamples, Range{1, 64});
         v.field("sunMaxDistance", sunMaxDistance, Range{0, 1000});
         v.field("sunSamples", sunSamples, Range{1, 32});
+        v.field("fixedCamera", fixedCamera);
+        v.field("eye", eye, Range{-1000, 1000});
+        v.field("target", target, Range{-1000, 1000});
+        v.field("sensorHeight", sensorHeight, Range{1, 1000});
+        v.require(!fixedCamera || eye != target, "target", "must differ from eye");
     }
 };
 
