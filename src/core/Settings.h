@@ -12,6 +12,7 @@
 #include "core/settings/DisplaySettings.h"
 #include "core/settings/OutputSettings.h"
 #include "core/settings/QualitySettings.h"
+#include "core/settings/ReflectionSettings.h"
 #include "core/settings/SubjectSettings.h"
 #include "core/settings/TemporalSettings.h"
 #include "core/settings/ToneMappingSettings.h"
@@ -38,6 +39,7 @@ struct Settings {
     SmaaSettings smaa;
     AmbientOcclusionSettings ssao;
     ContactShadowSettings contactShadows;
+    ReflectionSettings ssr;
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
     /// is none.
@@ -72,6 +74,7 @@ struct Settings {
         v.object("smaa", smaa);
         v.object("ssao", ssao);
         v.object("contactShadows", contactShadows);
+        v.object("ssr", ssr);
     }
 };
 

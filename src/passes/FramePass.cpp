@@ -42,6 +42,12 @@ std::string_view resourceName(Resource resource) noexcept {
         return "contactShadows";
     case Resource::ContactShadowSteps:
         return "contactShadowSteps";
+    case Resource::Material:
+        return "material";
+    case Resource::DepthPyramid:
+        return "depthPyramid";
+    case Resource::Reflections:
+        return "reflections";
     case Resource::DebugColor:
         return "debugColor";
     case Resource::DisplayColor:

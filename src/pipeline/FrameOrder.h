@@ -18,6 +18,7 @@
 #include "passes/probe/SubjectContextsPass.h"
 #include "passes/sanitize/SanitizePass.h"
 #include "passes/smaa/SmaaPass.h"
+#include "passes/ssr/SsrPass.h"
 #include "passes/taa/TaaPass.h"
 #include "passes/tonemap/TonemapPass.h"
 
@@ -62,6 +63,9 @@ public:
     LensFlarePass lensFlare;
     DisplayEffectsPass displayEffects;
     HistogramOverlayPass histogramOverlay;
+    SsrHistoryPass ssrHistory; ///< before ssr, which reads the history it keeps
+    DepthPyramidPass ssrPyramid;
+    SsrPass ssr{ssrHistory};
 
 private:
     std::vector<FramePass*> mLighting;

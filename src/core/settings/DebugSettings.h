@@ -28,10 +28,13 @@ enum class DebugView {
     ContactShadows,
     /// The contact-shadow ray march's steps taken per pixel over contactShadows.steps (0: none marched)
     ContactShadowSteps,
+    /// Screen-space reflections: the reflected radiance (RGB) and its confidence (alpha), raw values in an
+    /// EXR; needs ssr.enabled, depth, a camera
+    Ssr,
 };
 
 inline std::span<const std::string_view> debugViewNames() {
-    static constexpr std::array<std::string_view, 14> kNames{"none",
+    static constexpr std::array<std::string_view, 15> kNames{"none",
                                                              "exposure",
                                                              "luma",
                                                              "ev",
@@ -44,7 +47,8 @@ inline std::span<const std::string_view> debugViewNames() {
                                                              "taa-history-weight",
                                                              "disocclusion",
                                                              "contact-shadows",
-                                                             "contact-shadows-steps"};
+                                                             "contact-shadows-steps",
+                                                             "ssr"};
     return kNames;
 }
 
