@@ -37,8 +37,10 @@ vec2 previousUv(vec2 window, ivec2 hitPixel) {
 }
 
 vec3 reflectedRadiance(vec4 hit) {
-    vec2 window = hit.xy;
-    ivec2 hitPixel = clamp(ivec2(window), ivec2(0), ivec2(uFullSize) - 1);
+    // The hit pixel's centre: the colour the depth buffer's sample there belongs to (a bilinear fetch at the
+    // ray's exact crossing would blend in the neighbours, across a silhouette or a texture edge).
+    ivec2 hitPixel = clamp(ivec2(hit.xy), ivec2(0), ivec2(uFullSize) - 1);
+    vec2 window = vec2(hitPixel) + 0.5;
     if (uHasHistory != 0) {
         vec2 uv = previousUv(window, hitPixel);
         if (all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)))) {
