@@ -250,6 +250,11 @@ TEST_F(GlTest, SsrMatchesTheRayTracedMirrorReflectionOnTheStrip) {
         // pole) meets that object's depth within `thickness` and is taken as a hit where the ray tracer sees
         // the sky: measured 1 of 200 and 4 of 338 unresolvable pixels. Bounded here, not yet 0.
         EXPECT_LE(full.unresolvableNonZero, int(0.02 * full.unresolvable));
+        // The first frame has no history: the radiance is this frame's colour at the hit.
+        const Figures first = measure(renderSsr(o, ssrSettings(), 1), truth, classes);
+        print("first frame", first);
+        EXPECT_GE(first.within10, 0.95);
+        EXPECT_LE(first.p95Relative, 0.10);
         // Half resolution: each 2 x 2 block shares the ray of its first pixel, so a pixel gets its
         // neighbour's reflection (up to a pixel off on screen, more in the reflected image): measured 82.4%
         // and 87.6% within 10%, 8 and 11 unresolvable pixels with a confidence.

@@ -82,7 +82,7 @@ vec3 surfaceNormal(sampler2D depth, sampler2D normals, ivec2 p, vec3 centre, flo
         return vec3(0.0);
     }
     n *= inversesqrt(len2);
-    // Facing the camera: a reconstructed normal's sign is arbitrary, a host's may be flipped by interpolation.
+    // Facing the camera: a reconstructed normal's sign is arbitrary; a host's may be flipped.
     return dot(n, centre) > 0.0 ? -n : n;
 }
 
