@@ -14,6 +14,7 @@
 #include "core/settings/ExposureModeSettings.h"
 #include "core/settings/OutputSettings.h"
 #include "core/settings/QualitySettings.h"
+#include "core/settings/ReflectionSettings.h"
 #include "core/settings/SubjectSettings.h"
 #include "core/settings/TemporalSettings.h"
 #include "core/settings/ToneMappingSettings.h"
@@ -42,6 +43,7 @@ struct Settings {
     ContactShadowSettings contactShadows;
     DepthOfFieldSettings dof;
     ExposureModeSettings exposure;
+    ReflectionSettings ssr;
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
     /// is none.
@@ -78,6 +80,7 @@ struct Settings {
         v.object("contactShadows", contactShadows);
         v.object("dof", dof);
         v.object("exposure", exposure);
+        v.object("ssr", ssr);
     }
 };
 

@@ -46,6 +46,10 @@ struct FrameInputs {
     /// R32UI/R16UI/R8UI: each pixel's object id (0: none, the sky), for contactShadows.mask. Unused
     /// otherwise.
     const Texture* objectId = nullptr;
+    /// RGBA16F/RGBA32F/RGBA8: each pixel's specular weight (RGB, the Fresnel F0: mix(0.04, albedo,
+    /// metallic) for a metal-roughness material) and perceptual roughness (A), for screen-space reflections.
+    /// Absent: every surface a dielectric mirror (F0 0.04, roughness 0).
+    const Texture* material = nullptr;
     /// This frame's subjects (tokens, characters) in the host's order; read during execute(), not kept.
     /// Empty: no subject (subject metering holds exposure, or probes the screen centre with
     /// subjects.fallback = center).

@@ -44,6 +44,12 @@ std::string_view resourceName(Resource resource) noexcept {
         return "contactShadowSteps";
     case Resource::DofCoc:
         return "dofCoc";
+    case Resource::Material:
+        return "material";
+    case Resource::DepthPyramid:
+        return "depthPyramid";
+    case Resource::Reflections:
+        return "reflections";
     case Resource::DebugColor:
         return "debugColor";
     case Resource::DisplayColor:

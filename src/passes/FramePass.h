@@ -48,7 +48,10 @@ enum class Resource : std::uint8_t {
     DisplayColor,     ///< RGBA8 display-referred image
     /// lighting stage: the contact-shadow march's steps, when the contact-shadows-steps debug view shows them
     ContactShadowSteps,
-    DofCoc, ///< R16F: depth of field's signed circle of confusion in pixels (< 0 near, > 0 far)
+    DofCoc,       ///< R16F: depth of field's signed circle of confusion in pixels (< 0 near, > 0 far)
+    Material,     ///< host: RGB specular weight (Fresnel F0), A roughness, for screen-space reflections
+    DepthPyramid, ///< R32F min-depth mip chain of linearDepth (nearest surface per cell), level 0 padded
+    Reflections,  ///< RGBA16F: reflected radiance (RGB) and its confidence (A)
     Count
 };
 inline constexpr std::size_t kResourceCount = std::size_t(Resource::Count);

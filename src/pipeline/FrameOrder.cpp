@@ -25,8 +25,11 @@ FrameOrder::FrameOrder(const Capabilities& caps, bool keepTelemetryHistory)
         &cameraMotion,    // linearDepth, camera -> motion (only when the host gives none)
         &gtaoPost,        // linearDepth, normals, camera -> ambientOcclusion (ssao.apply = multiply)
         &aoMultiply,      // sceneColor, ambientOcclusion -> sceneColor (ssao.apply = multiply)
+        &ssrPyramid,      // linearDepth -> depthPyramid (ssr.enabled)
+        &ssr,             // sceneColor, depthPyramid, linearDepth, camera, ... -> sceneColor, reflections
         &smaaHdr,         // sceneColor, exposure (last frame's) -> sceneColor (aa.mode taa+smaa)
         &taa,             // sceneColor, motion, exposure (last frame's), linearDepth?, camera? -> sceneColor
+        &ssrHistory,      // sceneColor -> (next frame's reflection source; ssr.enabled)
         &metering,        // sceneColor -> histogram, metering, meteringMask
         &probes,          // sceneColor, metering -> metering (subject probes; the subject's reading)
         &exposure,        // histogram, metering -> exposure (adaptation; telemetry readback)

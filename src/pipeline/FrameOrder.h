@@ -19,6 +19,7 @@
 #include "passes/probe/SubjectContextsPass.h"
 #include "passes/sanitize/SanitizePass.h"
 #include "passes/smaa/SmaaPass.h"
+#include "passes/ssr/SsrPass.h"
 #include "passes/taa/TaaPass.h"
 #include "passes/tonemap/TonemapPass.h"
 
@@ -64,6 +65,9 @@ public:
     DisplayEffectsPass displayEffects;
     HistogramOverlayPass histogramOverlay;
     DofPass dof;
+    SsrHistoryPass ssrHistory; ///< before ssr, which reads the history it keeps
+    DepthPyramidPass ssrPyramid;
+    SsrPass ssr{ssrHistory};
 
 private:
     std::vector<FramePass*> mLighting;

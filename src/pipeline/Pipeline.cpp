@@ -170,6 +170,7 @@ bool Pipeline::bindInputs(const FrameInputs& in) {
         }
     }
     optional(Resource::ObjectId, "objectId", in.objectId, {GL_R32UI, GL_R16UI, GL_R8UI});
+    optional(Resource::Material, "material", in.material, {GL_RGBA16F, GL_RGBA32F, GL_RGBA8});
     if (in.sunDirection) {
         const glm::vec3 d = *in.sunDirection;
         const float length2 = glm::dot(d, d);

@@ -31,10 +31,13 @@ enum class DebugView {
     /// Depth of field's signed circle of confusion over dof.maxCocRadius: red the near field's radius, blue
     /// the far field's, black in focus (raw values in an EXR); needs dof.enabled, depth and a camera
     Coc,
+    /// Screen-space reflections: the reflected radiance (RGB) and its confidence (alpha), raw values in an
+    /// EXR; needs ssr.enabled, depth, a camera
+    Ssr,
 };
 
 inline std::span<const std::string_view> debugViewNames() {
-    static constexpr std::array<std::string_view, 15> kNames{"none",
+    static constexpr std::array<std::string_view, 16> kNames{"none",
                                                              "exposure",
                                                              "luma",
                                                              "ev",
@@ -48,7 +51,8 @@ inline std::span<const std::string_view> debugViewNames() {
                                                              "disocclusion",
                                                              "contact-shadows",
                                                              "contact-shadows-steps",
-                                                             "coc"};
+                                                             "coc",
+                                                             "ssr"};
     return kNames;
 }
 

@@ -35,11 +35,13 @@ constexpr ResourceUse kContactShadowStepsViewUses[] = {{Resource::ContactShadowS
                                                        {Resource::DebugColor, Access::Write}};
 constexpr ResourceUse kCocViewUses[] = {{Resource::DofCoc, Access::Read},
                                         {Resource::DebugColor, Access::Write}};
+constexpr ResourceUse kSsrViewUses[] = {{Resource::Reflections, Access::Read},
+                                        {Resource::DebugColor, Access::Write}};
 
 /// Views of data rather than of the image: written to EXR, they keep their values.
 bool isDataView(DebugView view) {
     return view == DebugView::ContactShadows || view == DebugView::ContactShadowSteps ||
-           view == DebugView::Coc;
+           view == DebugView::Coc || view == DebugView::Ssr;
 }
 
 bool isInputView(DebugView view) {
@@ -72,6 +74,8 @@ std::span<const ResourceUse> DebugViewPass::uses() const {
         return kContactShadowStepsViewUses;
     case DebugView::Coc:
         return kCocViewUses;
+    case DebugView::Ssr:
+        return kSsrViewUses;
     default:
         return kSceneViewUses;
     }
@@ -141,6 +145,7 @@ void DebugViewPass::drawInputView(const FrameContext& ctx, const FrameResources&
                             : mView == DebugView::ContactShadows     ? Resource::ContactShadows
                             : mView == DebugView::ContactShadowSteps ? Resource::ContactShadowSteps
                             : mView == DebugView::Coc                ? Resource::DofCoc
+                            : mView == DebugView::Ssr                ? Resource::Reflections
                                                                      : Resource::TaaDebug;
     const Program& p = mInputProgram;
     const Camera* camera = ctx.inputs.camera;

@@ -7,7 +7,7 @@ layout(binding = 0) uniform sampler2D uInput;
 // Mirrors photopic::DebugInputViewParameters (passes/debug/DebugViewPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform DebugInputViewParameters {
     int uView; // DebugView: 7 depth, 8 normals, 9 motion, 10 TAA history weight, 11 disocclusion,
-               // 12 contact shadows, 13 contact-shadow steps, 14 depth of field's CoC
+               // 12 contact shadows, 13 contact-shadow steps, 14 depth of field's CoC, 15 ssr
     int uOctahedral;
     float uNear;
     float uFar;
@@ -87,6 +87,11 @@ void main() {
         // Signed CoC over the largest radius: near field red, far field blue, in focus black.
         float r = clamp(t.r / uMaxCoc, -1.0, 1.0);
         c = vec3(max(-r, 0.0), 0.0, max(r, 0.0));
+    } else if (uView == 15) {
+        // Screen-space reflections: the reflected radiance as it is (scene-referred) and the confidence in
+        // alpha, so that an EXR of the view holds both.
+        oColor = t;
+        return;
     }
     oColor = vec4(c, 1.0);
 }

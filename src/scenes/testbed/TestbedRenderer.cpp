@@ -20,8 +20,9 @@ struct GpuPrimitive {
     glm::vec4 albedo;
     glm::vec4 albedo2;
     glm::vec4 emissive;
+    glm::vec4 surface; ///< x: roughness
 };
-static_assert(sizeof(GpuPrimitive) == 3 * 64 + 4 * 16);
+static_assert(sizeof(GpuPrimitive) == 3 * 64 + 5 * 16);
 
 /// std140 mirror of the TestbedFrame block.
 struct GpuFrame {
@@ -52,7 +53,8 @@ GpuPrimitive toGpu(const Primitive& p) {
             glm::vec4(float(p.shape), p.size),
             glm::vec4(p.material.albedo, p.material.checker),
             glm::vec4(p.material.albedo2, p.material.metallic),
-            glm::vec4(p.material.emissive, float(p.id))};
+            glm::vec4(p.material.emissive, float(p.id)),
+            glm::vec4(p.material.roughness, 0.0f, 0.0f, 0.0f)};
 }
 
 } // namespace
@@ -90,7 +92,12 @@ void TestbedRenderer::resize(Extent extent) {
                          .minFilter = GL_NEAREST,
                          .magFilter = GL_NEAREST,
                          .debugName = "testbed object ids"});
-    mTargets = Framebuffer({.color = {&mColor, &mNormals, &mMotion, &mObjectId},
+    mMaterial = Texture({.extent = extent,
+                         .format = GL_RGBA16F,
+                         .minFilter = GL_NEAREST,
+                         .magFilter = GL_NEAREST,
+                         .debugName = "testbed material"});
+    mTargets = Framebuffer({.color = {&mColor, &mNormals, &mMotion, &mObjectId, &mMaterial},
                             .depth = &mDepth,
                             .debugName = "testbed targets"});
 }
@@ -139,6 +146,7 @@ void TestbedRenderer::draw(const DrawInfo& info) {
     }
     const GLuint noObject[4] = {0, 0, 0, 0};
     glClearNamedFramebufferuiv(mTargets.id(), GL_COLOR, 3, noObject);
+    glClearNamedFramebufferfv(mTargets.id(), GL_COLOR, 4, zero);
     const float far = 1.0f;
     glClearNamedFramebufferfv(mTargets.id(), GL_DEPTH, 0, &far);
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, mFrame.id());

@@ -2,8 +2,9 @@
 // The testbed's GL rasteriser: each primitive's bounding box is drawn as a proxy and its fragment shader
 // ray-casts the exact shape (testbed_shading.h.glsl), writing colour (RGBA16F, the local shading), depth
 // (DEPTH_COMPONENT32F through gl_FragDepth, standard GL depth), view-space normals (RGBA16F), motion
-// (RG16F, UV current minus previous, jitter removed) and object ids (R32UI, 0 for the sky) as one MRT pass
-// after a full-screen sky.
+// (RG16F, UV current minus previous, jitter removed), object ids (R32UI, 0 for the sky) and the material
+// (RGBA16F: specular weight F0 = mix(0.04, albedo, metallic), roughness; 0 for the sky) as one MRT pass after
+// a full-screen sky.
 
 #include "core/Camera.h"
 #include "gl/Objects.h"
@@ -38,6 +39,7 @@ public:
     [[nodiscard]] const Texture& normals() const { return mNormals; }
     [[nodiscard]] const Texture& motion() const { return mMotion; }
     [[nodiscard]] const Texture& objectId() const { return mObjectId; }
+    [[nodiscard]] const Texture& material() const { return mMaterial; }
 
 private:
     Program mObjects;
@@ -50,6 +52,7 @@ private:
     Texture mNormals;
     Texture mMotion;
     Texture mObjectId;
+    Texture mMaterial;
     Framebuffer mTargets;
 };
 

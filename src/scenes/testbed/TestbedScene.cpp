@@ -81,7 +81,8 @@ FrameInputs TestbedScene::render(const FrameTime& time, Pipeline& pipeline, std:
                        .motion = &mRenderer.motion(),
                        .camera = &mCamera,
                        .sunDirection = testbed::environment().sunDirection,
-                       .objectId = &mRenderer.objectId()};
+                       .objectId = &mRenderer.objectId(),
+                       .material = &mRenderer.material()};
     const LightingOutputs& lighting = pipeline.renderLighting(inputs, time);
     draw.ambientOcclusion = lighting.ambientOcclusion;
     draw.ambientOcclusionPower = lighting.ambientOcclusionPower;

@@ -12,6 +12,7 @@ layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oNormal;
 layout(location = 2) out vec2 oMotion;
 layout(location = 3) out uint oObjectId; // 0: the sky
+layout(location = 4) out vec4 oMaterial; // rgb: specular weight F0, a: roughness
 
 void main() {
     TestbedPrimitive p = uPrimitives[vPrimitive];
@@ -35,4 +36,5 @@ void main() {
     vec4 before = p.prevToWorld * vec4(objectPoint, 1.0);
     oMotion = testbedMotion(vec4(world, 1.0), before);
     oObjectId = uint(p.emissive.w);
+    oMaterial = vec4(mix(vec3(0.04), testbedAlbedo(p, objectPoint, objectNormal), p.albedo2.w), p.surface.x);
 }

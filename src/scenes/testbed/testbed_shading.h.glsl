@@ -16,6 +16,7 @@ struct TestbedPrimitive {
     vec4 albedo;   // rgb, w: checker square size (0: plain)
     vec4 albedo2;  // rgb: the checker's second colour, w: metallic
     vec4 emissive; // rgb, w: object id
+    vec4 surface;  // x: roughness
 };
 
 layout(std430, binding = 0) readonly buffer TestbedPrimitives {

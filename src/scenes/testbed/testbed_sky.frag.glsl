@@ -7,6 +7,7 @@ layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oNormal;
 layout(location = 2) out vec2 oMotion;
 layout(location = 3) out uint oObjectId; // 0: the sky
+layout(location = 4) out vec4 oMaterial; // none: the sky
 
 void main() {
     vec3 origin, direction;
@@ -15,4 +16,5 @@ void main() {
     oNormal = vec4(0.0);
     oMotion = testbedMotion(vec4(direction, 0.0), vec4(direction, 0.0));
     oObjectId = 0u;
+    oMaterial = vec4(0.0);
 }

@@ -1,0 +1,225 @@
+#include "passes/ssr/SsrPass.h"
+
+#include "passes/Bindings.h"
+
+#include <algorithm>
+#include <bit>
+
+namespace photopic {
+
+namespace {
+
+GLuint groups(int size) {
+    return GLuint((size + 7) / 8);
+}
+
+constexpr int kMaxPyramidLevels = 7;
+/// Mip levels of the history the glossy cones read.
+constexpr int kHistoryLevels = 6;
+
+/// The view-space points at NDC z = -1 and z = 0 on the ray through NDC (x, y), as an origin plus x and y
+/// slopes (the projection's w row does not depend on x or y, so both are affine in them).
+void viewRays(const glm::mat4& projection, glm::vec4 (&nearRay)[3], glm::vec4 (&farRay)[3]) {
+    const glm::mat4 inv = glm::inverse(projection);
+    const auto point = [&](float x, float y, float z) {
+        const glm::vec4 p = inv * glm::vec4(x, y, z, 1.0f);
+        return glm::vec4(glm::vec3(p) / p.w, 0.0f);
+    };
+    for (int k = 0; k < 2; ++k) {
+        const float z = k == 0 ? -1.0f : 0.0f;
+        glm::vec4(&ray)[3] = k == 0 ? nearRay : farRay;
+        ray[0] = point(0.0f, 0.0f, z);
+        ray[1] = point(1.0f, 0.0f, z) - ray[0];
+        ray[2] = point(0.0f, 1.0f, z) - ray[0];
+    }
+}
+
+int mipLevels(Extent e, int most) {
+    const auto smaller = unsigned(std::max(1, std::min(e.width, e.height)));
+    return std::min(most, int(std::bit_width(smaller)));
+}
+
+} // namespace
+
+int depthPyramidLevels(Extent e) noexcept {
+    return mipLevels(e, kMaxPyramidLevels);
+}
+
+Extent depthPyramidExtent(Extent e) noexcept {
+    const int cell = 1 << (depthPyramidLevels(e) - 1);
+    return {(e.width + cell - 1) / cell * cell, (e.height + cell - 1) / cell * cell};
+}
+
+DepthPyramidPass::DepthPyramidPass()
+    : mProgram(makeComputeProgram("passes/ssr/ssr_pyramid.comp.glsl", bindingDefines())) {}
+
+std::span<const ResourceUse> DepthPyramidPass::uses() const {
+    static constexpr ResourceUse kUses[] = {{Resource::LinearDepth, Access::Read},
+                                            {Resource::DepthPyramid, Access::Write}};
+    return kUses;
+}
+
+void DepthPyramidPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const int levels = depthPyramidLevels(ctx.extent);
+    const Extent padded = depthPyramidExtent(ctx.extent);
+    const Texture& pyramid = resources.pool()
+                                 .acquire({.extent = padded,
+                                           .format = GL_R32F,
+                                           .levels = levels,
+                                           .minFilter = GL_NEAREST_MIPMAP_NEAREST,
+                                           .magFilter = GL_NEAREST,
+                                           .debugName = "ssr depth pyramid"})
+                                 .texture();
+    // Level 0 reads a depth and writes one; the rest of the chain is a third of that again.
+    ScopedGpuTimer timer(ctx.timers, "ssr depth pyramid",
+                         double(padded.width) * padded.height * (8.0 + 8.0 / 3.0));
+    mProgram.use();
+    glBindTextureUnit(0, resources.texture(Resource::LinearDepth)->id());
+    for (int level = 0; level < levels; ++level) {
+        const int w = std::max(1, padded.width >> level);
+        const int h = std::max(1, padded.height >> level);
+        glProgramUniform1i(mProgram.id(), 0, level);
+        glBindImageTexture(0, pyramid.id(), std::max(level - 1, 0), GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+        glBindImageTexture(1, pyramid.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        glDispatchCompute(groups(w), groups(h), 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+    resources.bind(Resource::DepthPyramid, pyramid);
+}
+
+SsrHistoryPass::SsrHistoryPass()
+    : mProgram(makeComputeProgram("passes/ssr/ssr_history.comp.glsl", bindingDefines())) {}
+
+std::span<const ResourceUse> SsrHistoryPass::uses() const {
+    static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read}};
+    return kUses;
+}
+
+void SsrHistoryPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const Extent e = ctx.extent;
+    const int levels = mipLevels(e, kHistoryLevels);
+    if (!mHistory.valid() || mHistory.extent() != e) {
+        mHistory = Texture({.extent = e,
+                            .format = GL_RGBA16F,
+                            .levels = levels,
+                            .minFilter = GL_LINEAR_MIPMAP_LINEAR,
+                            .magFilter = GL_LINEAR,
+                            .debugName = "ssr history"});
+        mValid = false;
+    }
+    {
+        // One colour read and written, and the mips (a third more).
+        ScopedGpuTimer timer(ctx.timers, "ssr history",
+                             double(e.width) * e.height * (8.0 + 8.0 + 16.0 / 3.0));
+        mProgram.use();
+        glBindTextureUnit(0, resources.texture(Resource::SceneColor)->id());
+        glBindImageTexture(0, mHistory.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+        glGenerateTextureMipmap(mHistory.id());
+    }
+    mValid = true;
+}
+
+SsrPass::SsrPass(const SsrHistoryPass& history)
+    : mHistory(history)
+    , mTrace(makeComputeProgram("passes/ssr/ssr_trace.comp.glsl", bindingDefines()))
+    , mResolve(makeComputeProgram("passes/ssr/ssr_resolve.comp.glsl", bindingDefines()))
+    , mParameters("ssr parameters") {}
+
+std::span<const ResourceUse> SsrPass::uses() const {
+    static constexpr ResourceUse kUses[] = {
+        {Resource::SceneColor, Access::Read},      {Resource::DepthPyramid, Access::Read},
+        {Resource::LinearDepth, Access::Read},     {Resource::Camera, Access::Read},
+        {Resource::Normals, Access::ReadOptional}, {Resource::Material, Access::ReadOptional},
+        {Resource::Motion, Access::ReadOptional},  {Resource::SceneColor, Access::Write},
+        {Resource::Reflections, Access::Write}};
+    return kUses;
+}
+
+void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const ReflectionSettings& s = ctx.settings.ssr;
+    const Camera& camera = *ctx.inputs.camera;
+    const Extent e = ctx.extent;
+    const bool half = s.resolution == ReflectionResolution::Half;
+    const Extent traceExtent = half ? Extent{(e.width + 1) / 2, (e.height + 1) / 2} : e;
+    const Texture& hits = resources.pool()
+                              .acquire({.extent = traceExtent,
+                                        .format = GL_RGBA32F,
+                                        .minFilter = GL_NEAREST,
+                                        .magFilter = GL_NEAREST,
+                                        .debugName = "ssr hits"})
+                              .texture();
+    const Texture& sceneOut =
+        resources.pool()
+            .acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with reflections"})
+            .texture();
+    const Texture& reflections =
+        resources.pool()
+            .acquire({.extent = e, .format = GL_RGBA16F, .debugName = "ssr reflections"})
+            .texture();
+    const Texture* normals = resources.texture(Resource::Normals);
+    const Texture* material = resources.texture(Resource::Material);
+    const Texture* motion = resources.texture(Resource::Motion);
+    const Texture* history = ctx.resetHistory ? nullptr : mHistory.previous();
+    if (history != nullptr && history->extent() != e) {
+        history = nullptr;
+    }
+    const Texture& depth = *resources.texture(Resource::LinearDepth);
+    const Texture& pyramid = *resources.texture(Resource::DepthPyramid);
+    const Texture& scene = *resources.texture(Resource::SceneColor);
+
+    SsrParameters p{};
+    p.projection = camera.projection;
+    p.reprojection = camera.prevViewProjection * glm::inverse(camera.view);
+    viewRays(camera.projection, p.rayNear, p.rayFar);
+    p.fullSize = glm::vec2(float(e.width), float(e.height));
+    p.traceSize = glm::vec2(float(traceExtent.width), float(traceExtent.height));
+    p.thickness = s.thickness;
+    p.maxDistance = s.maxDistance;
+    p.roughnessCutoff = s.roughnessCutoff;
+    p.edgeFade = s.edgeFade * float(std::min(e.width, e.height));
+    p.intensity = s.intensity;
+    p.maxSteps = s.maxSteps;
+    p.levels = depthPyramidLevels(e);
+    p.normals = normals == nullptr ? 0 : ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 2 : 1;
+    p.hasMaterial = material ? 1 : 0;
+    p.hasHistory = history ? 1 : 0;
+    p.hasMotion = motion ? 1 : 0;
+    p.half = half ? 1 : 0;
+    mParameters.update(p);
+    mParameters.bind(kBindingParameters);
+
+    const double tracePixels = double(traceExtent.width) * traceExtent.height;
+    const double pixels = double(e.width) * e.height;
+    glBindTextureUnit(0, depth.id());
+    glBindTextureUnit(1, normals ? normals->id() : depth.id());
+    glBindTextureUnit(2, material ? material->id() : depth.id());
+    {
+        // Depth, normal and material at the origin; about one pyramid texel per step, a few dozen steps on
+        // average (an estimate: the real count depends on the scene); the hit out.
+        ScopedGpuTimer timer(ctx.timers, "ssr trace", tracePixels * (4.0 + 8.0 + 8.0 + 32.0 * 4.0 + 16.0));
+        mTrace.use();
+        glBindTextureUnit(3, pyramid.id());
+        glBindImageTexture(0, hits.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glDispatchCompute(groups(traceExtent.width), groups(traceExtent.height), 1);
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    {
+        // The hit, the scene colour at the pixel and at the hit, the history, motion, material; two outputs.
+        ScopedGpuTimer timer(ctx.timers, "ssr resolve", pixels * (16.0 + 8.0 + 8.0 + 8.0 + 4.0 + 8.0 + 16.0));
+        mResolve.use();
+        glBindTextureUnit(1, scene.id());
+        glBindTextureUnit(2, history ? history->id() : scene.id());
+        glBindTextureUnit(3, hits.id());
+        glBindTextureUnit(4, motion ? motion->id() : depth.id());
+        glBindTextureUnit(5, material ? material->id() : depth.id());
+        glBindImageTexture(0, sceneOut.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        glBindImageTexture(1, reflections.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        glDispatchCompute(groups(e.width), groups(e.height), 1);
+    }
+    resources.bind(Resource::SceneColor, sceneOut);
+    resources.bind(Resource::Reflections, reflections);
+}
+
+} // namespace photopic

@@ -1,0 +1,111 @@
+#pragma once
+// Screen-space reflections (docs/architecture.md, "Screen-space reflections"), in the post stage's HDR
+// domain after AO and before TAA. Three passes:
+//   - DepthPyramidPass: linearDepth -> depthPyramid, the min-depth mip chain the march climbs;
+//   - SsrPass: the hierarchical-Z trace (full or half resolution), then the resolve, which reads the
+//     reflected radiance from last frame's image and adds it, weighted by the material's specular weight and
+//     the confidence, to sceneColor; it also writes `reflections` (radiance, confidence) for the debug view;
+//   - SsrHistoryPass: after TAA, keeps the frame's finished HDR image (with mips) for the next frame's
+//     resolve.
+
+#include "passes/FramePass.h"
+
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+namespace photopic {
+
+/// std140 mirror of ssr_common.h.glsl's parameter block (the trace and the resolve).
+struct SsrParameters {
+    glm::mat4 projection{1.0f};
+    glm::mat4 reprojection{1.0f}; ///< this frame's view space -> last frame's clip space
+    /// The view-space ray through NDC (x, y): its point at NDC z = -1 is rayNear[0] + x rayNear[1] + y
+    /// rayNear[2], at NDC z = 0 the same with rayFar.
+    glm::vec4 rayNear[3] = {};
+    glm::vec4 rayFar[3] = {};
+    glm::vec2 fullSize{1.0f};  ///< pixels
+    glm::vec2 traceSize{1.0f}; ///< pixels of the trace target
+    float thickness = 0.25f;   ///< world units
+    float maxDistance = 50.0f; ///< world units
+    float roughnessCutoff = 0.6f;
+    float edgeFade = 1.0f; ///< pixels
+    float intensity = 1.0f;
+    std::int32_t maxSteps = 200;
+    std::int32_t levels = 1;
+    std::int32_t normals = 0; ///< 0: none (reconstructed from depth), 1: view xyz, 2: octahedral
+    std::int32_t hasMaterial = 0;
+    std::int32_t hasHistory = 0;
+    std::int32_t hasMotion = 0;
+    std::int32_t half = 0;
+};
+static_assert(sizeof(SsrParameters) == 288);
+static_assert(offsetof(SsrParameters, rayNear) == 128);
+static_assert(offsetof(SsrParameters, fullSize) == 224);
+static_assert(offsetof(SsrParameters, thickness) == 240);
+static_assert(offsetof(SsrParameters, intensity) == 256);
+static_assert(offsetof(SsrParameters, half) == 284);
+
+/// Levels of the depth pyramid for an image (at most 7: cells of up to 64 pixels).
+[[nodiscard]] int depthPyramidLevels(Extent e) noexcept;
+/// Level 0's extent: the image's, padded up to a whole number of the coarsest cells (the padding is sky).
+[[nodiscard]] Extent depthPyramidExtent(Extent e) noexcept;
+
+class DepthPyramidPass final : public FramePass {
+public:
+    DepthPyramidPass();
+    [[nodiscard]] std::string_view name() const override { return "ssr depth pyramid"; }
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
+        return ctx.settings.ssr.enabled && ctx.hdr;
+    }
+    void execute(FrameContext& ctx, FrameResources& resources) override;
+
+private:
+    Program mProgram;
+};
+
+/// Keeps the frame's HDR image after TAA for the next frame's reflections.
+class SsrHistoryPass final : public FramePass {
+public:
+    SsrHistoryPass();
+    [[nodiscard]] std::string_view name() const override { return "ssr history"; }
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
+        return ctx.settings.ssr.enabled && ctx.hdr;
+    }
+    /// Nothing in this frame reads it: the next frame's SsrPass does.
+    [[nodiscard]] bool hasSideEffects() const override { return true; }
+    void invalidateHistory() override { mValid = false; }
+    void execute(FrameContext& ctx, FrameResources& resources) override;
+
+    /// Last frame's image, or nullptr when there is none to reuse (first frame, resize, cut, reset).
+    [[nodiscard]] const Texture* previous() const { return mValid ? &mHistory : nullptr; }
+
+private:
+    Program mProgram;
+    Texture mHistory;
+    bool mValid = false;
+};
+
+class SsrPass final : public FramePass {
+public:
+    explicit SsrPass(const SsrHistoryPass& history);
+    [[nodiscard]] std::string_view name() const override { return "ssr"; }
+    /// sceneColor, depthPyramid, linearDepth and the camera; normals (else reconstructed from depth),
+    /// material (else a dielectric mirror) and motion (else the camera's reprojection) when present.
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
+        return ctx.settings.ssr.enabled && ctx.hdr;
+    }
+    void execute(FrameContext& ctx, FrameResources& resources) override;
+
+private:
+    const SsrHistoryPass& mHistory;
+    Program mTrace;
+    Program mResolve;
+    ParameterBlock<SsrParameters> mParameters;
+};
+
+} // namespace photopic

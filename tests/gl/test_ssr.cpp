@@ -1,0 +1,309 @@
+// Screen-space reflections against the testbed's ray-traced mirror reflection (`reflection` truth: the
+// radiance along the mirror direction at each pixel centre on metals), read through the `ssr` debug view's
+// raw values (RGB: the reflected radiance, A: the confidence) as a host or the CLI gets them.
+//
+// Pixels measured: the metal strip's, where the ray tracer's mirror ray from the pixel centre hits a surface
+// whose point projects on screen and is the surface the camera sees there (the "resolvable" pixels); and the
+// strip's pixels whose mirror ray leaves the screen or hits the sky ("unresolvable"), where the confidence
+// must be exactly 0. Left out, and counted: strip pixels whose 3x3 neighbourhood is not all strip (the pixel
+// footprint straddles the strip's edge), and reflected points whose 3x3 neighbourhood on screen is not one
+// object (the reflection straddles a silhouette, where one pixel centre's ray and the depth buffer's pixel
+// disagree about which object is hit).
+
+#include "GlTest.h"
+
+#include "gl/Objects.h"
+#include "gl/TextureIo.h"
+#include "scenes/testbed/TestbedRaytracer.h"
+#include "scenes/testbed/TestbedRenderer.h"
+#include "scenes/testbed/TestbedScene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace photopic::test {
+
+namespace {
+
+constexpr int kW = 160;
+constexpr int kH = 90;
+constexpr float kDt = 1.0f / 30.0f;
+
+testbed::TruthOptions stillOptions(float seconds) {
+    TestbedScene scene;
+    for (const std::string& a :
+         {std::string("cameraSpeed=0"), std::string("objectSpeed=0"),
+          "cameraStart=" + std::to_string(seconds), "objectStart=" + std::to_string(seconds)}) {
+        EXPECT_TRUE(scene.applyOverride(a).empty()) << a;
+    }
+    scene.resize({kW, kH});
+    return scene.truthOptions({.dt = kDt, .frameIndex = 0});
+}
+
+/// SSR traced and resolved but not added to the image (intensity 0): the ray tracer's truth is the local
+/// shading of the reflected point, and with intensity 1 the history the resolve reads would hold the
+/// reflections SSR added to that point (F0 0.04 on every dielectric), a second bounce the truth has not.
+Settings ssrSettings(ReflectionResolution resolution = ReflectionResolution::Full) {
+    Settings s;
+    s.ssr.intensity = 0.0f;
+    s.autoExposure.enabled = false;
+    s.ssr.enabled = true;
+    s.ssr.resolution = resolution;
+    s.debug.view = DebugView::Ssr;
+    return s;
+}
+
+/// Renders `frames` still frames of the testbed through the pipeline; returns the last frame's `ssr` view
+/// (raw values).
+ImageF renderSsr(const testbed::TruthOptions& options, const Settings& settings, int frames,
+                 bool material = true, const Texture* colorOverride = nullptr,
+                 const Texture* depthOverride = nullptr, const Texture* normalsOverride = nullptr) {
+    testbed::TestbedRenderer renderer;
+    renderer.resize({options.width, options.height});
+    Pipeline pipeline({.settings = settings});
+    const Camera camera = testbed::truthCamera(options);
+    const std::vector<testbed::Primitive> prims =
+        testbed::primitivesAt(options.times.objects, options.times.prevObjects);
+    for (int i = 0; i < frames; ++i) {
+        const FrameTime time{.dt = kDt, .frameIndex = std::uint64_t(i)};
+        const glm::vec2 jitter = pipeline.beginFrame(time, &camera);
+        renderer.draw({.camera = &camera, .jitter = jitter, .primitives = &prims});
+        FrameInputs in{.color = colorOverride ? colorOverride : &renderer.color(),
+                       .depth = depthOverride ? depthOverride : &renderer.depth(),
+                       .depthKind = depthOverride ? DepthKind::LinearView : DepthKind::Standard,
+                       .normals = normalsOverride ? normalsOverride : &renderer.normals(),
+                       .motion = &renderer.motion(),
+                       .camera = &camera,
+                       .material = material ? &renderer.material() : nullptr};
+        pipeline.execute(in, time);
+        EXPECT_TRUE(pipeline.status().skipped.empty());
+    }
+    return readTextureF(pipeline.sceneReferred());
+}
+
+enum class PixelClass { Other, Resolvable, Unresolvable, Excluded };
+
+/// Classifies the strip's pixels by where the ray tracer's mirror ray from the pixel centre ends.
+std::vector<PixelClass> classify(const testbed::TruthOptions& o) {
+    const ImageF ids = testbed::renderTruth(testbed::TruthKind::ObjectId, o);
+    const ImageF depth = testbed::renderTruth(testbed::TruthKind::Depth, o);
+    testbed::TruthOptions centres = o;
+    centres.samples = 1;
+    const ImageF colour = testbed::renderTruth(testbed::TruthKind::Color, centres);
+    const Camera camera = testbed::truthCamera(o);
+    const std::vector<testbed::Primitive> prims = testbed::primitivesAt(o.times.objects, o.times.prevObjects);
+    const auto id = [&](int x, int y) {
+        return std::uint32_t(ids.at(std::clamp(x, 0, kW - 1), std::clamp(y, 0, kH - 1))[0]);
+    };
+    const auto uniform = [&](int x, int y) {
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                if (id(x + dx, y + dy) != id(x, y)) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    };
+    // The 3x3 neighbourhood's colours within 25% of each other (no checker edge or shading step in it).
+    const auto smooth = [&](int x, int y) {
+        double lo = 1e30, hi = 0.0;
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                const float* c = colour.at(std::clamp(x + dx, 0, kW - 1), std::clamp(y + dy, 0, kH - 1));
+                const double l = 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+                lo = std::min(lo, l);
+                hi = std::max(hi, l);
+            }
+        }
+        return hi <= 1.25 * lo;
+    };
+    std::vector<PixelClass> classes(std::size_t(kW * kH), PixelClass::Other);
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) {
+            if (id(x, y) != testbed::ids::kStrip) {
+                continue;
+            }
+            PixelClass& c = classes[std::size_t(y * kW + x)];
+            if (!uniform(x, y)) {
+                c = PixelClass::Excluded;
+                continue;
+            }
+            const glm::vec2 ndc(2.0f * (float(x) + 0.5f) / kW - 1.0f, 1.0f - 2.0f * (float(y) + 0.5f) / kH);
+            const testbed::Ray ray = testbed::cameraRay(camera, ndc);
+            testbed::Hit hit;
+            if (!testbed::intersectScene(prims, ray, 0.0f, 1e4f, hit)) {
+                c = PixelClass::Excluded;
+                continue;
+            }
+            const glm::vec3 p = ray.origin + hit.t * ray.direction;
+            const glm::vec3 r = glm::normalize(glm::reflect(ray.direction, hit.worldNormal));
+            testbed::Hit second;
+            if (!testbed::intersectScene(prims, {p + 1e-3f * hit.worldNormal, r}, 0.0f, 1e4f, second)) {
+                c = PixelClass::Unresolvable; // the sky
+                continue;
+            }
+            const glm::vec3 q = p + 1e-3f * hit.worldNormal + second.t * r;
+            const glm::vec4 clip = camera.viewProjection() * glm::vec4(q, 1.0f);
+            const glm::vec2 qn = glm::vec2(clip) / clip.w;
+            const float qx = (qn.x + 1.0f) * 0.5f * kW;
+            const float qy = (1.0f - qn.y) * 0.5f * kH;
+            if (clip.w <= 0.0f || qx < 0.0f || qy < 0.0f || qx >= kW || qy >= kH) {
+                c = PixelClass::Unresolvable;
+                continue;
+            }
+            const int ix = int(qx);
+            const int iy = int(qy);
+            const float seen = depth.at(ix, iy)[0];
+            const float qDepth = -(camera.view * glm::vec4(q, 1.0f)).z;
+            if (!uniform(ix, iy) || !smooth(ix, iy) || !(std::abs(seen - qDepth) < 0.01f * qDepth)) {
+                c = PixelClass::Excluded; // a silhouette or a colour edge, or hidden from the camera
+                continue;
+            }
+            c = PixelClass::Resolvable;
+        }
+    }
+    return classes;
+}
+
+struct Figures {
+    int resolvable = 0, unresolvable = 0, excluded = 0;
+    int covered = 0;           ///< resolvable pixels with confidence > 0
+    double meanRelative = 0.0; ///< over covered pixels: |ssr - truth| / truth, luminance
+    double p95Relative = 0.0;
+    double within10 = 0.0;       ///< fraction of covered pixels within 10% of the truth
+    int unresolvableNonZero = 0; ///< unresolvable pixels with confidence != 0
+};
+
+double luminance(const float* c) {
+    return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+}
+
+Figures measure(const ImageF& view, const ImageF& truth, const std::vector<PixelClass>& classes) {
+    Figures f;
+    std::vector<double> errors;
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) {
+            const PixelClass c = classes[std::size_t(y * kW + x)];
+            const float* v = view.at(x, y);
+            if (c == PixelClass::Excluded) {
+                ++f.excluded;
+            } else if (c == PixelClass::Unresolvable) {
+                ++f.unresolvable;
+                f.unresolvableNonZero += v[3] != 0.0f ? 1 : 0;
+            } else if (c == PixelClass::Resolvable) {
+                ++f.resolvable;
+                if (v[3] > 0.0f) {
+                    ++f.covered;
+                    const double t = luminance(truth.at(x, y));
+                    errors.push_back(std::abs(luminance(v) - t) / std::max(t, 1e-4));
+                }
+            }
+        }
+    }
+    if (!errors.empty()) {
+        double sum = 0.0;
+        for (double e : errors) {
+            sum += e;
+        }
+        f.meanRelative = sum / double(errors.size());
+        f.within10 = double(std::count_if(errors.begin(), errors.end(), [](double e) { return e <= 0.1; })) /
+                     double(errors.size());
+        std::sort(errors.begin(), errors.end());
+        f.p95Relative = errors[std::size_t(0.95 * double(errors.size() - 1))];
+    }
+    return f;
+}
+
+void print(const char* label, const Figures& f) {
+    std::printf("  %s: resolvable %d (covered %d, %.1f%%), within 10%%: %.1f%%, relative error mean %.4f, "
+                "p95 %.4f; unresolvable %d (confidence != 0: %d); excluded %d\n",
+                label, f.resolvable, f.covered, 100.0 * f.covered / std::max(f.resolvable, 1),
+                100.0 * f.within10, f.meanRelative, f.p95Relative, f.unresolvable, f.unresolvableNonZero,
+                f.excluded);
+}
+
+} // namespace
+
+TEST_F(GlTest, SsrMatchesTheRayTracedMirrorReflectionOnTheStrip) {
+    for (float seconds : {0.3f, 0.9f}) {
+        const testbed::TruthOptions o = stillOptions(seconds);
+        const std::vector<PixelClass> classes = classify(o);
+        const ImageF truth = testbed::renderTruth(testbed::TruthKind::Reflection, o);
+        const Figures full = measure(renderSsr(o, ssrSettings(), 4), truth, classes);
+        std::printf("path time %.1f s\n", double(seconds));
+        print("full", full);
+        EXPECT_GT(full.resolvable, 100);
+        EXPECT_GT(full.unresolvable, 100);
+        EXPECT_GE(full.covered, int(0.85 * full.resolvable)); // measured 90.5%, 98.3%
+        // Measured 96.2% and 96.0% within 10%, p95 0.041 and 0.038, mean 0.040 and 0.097. The rest are hits
+        // a pixel off across a step the 25% neighbourhood test lets through (a dark checker square reflected
+        // as the light one beside it: a relative error of up to 40), which dominate the mean: the bound is on
+        // the fraction and the 95th percentile.
+        EXPECT_GE(full.within10, 0.95);
+        EXPECT_LE(full.p95Relative, 0.10);
+        // Known limit: a mirror ray that grazes a silhouette within a pixel (over the wall's top edge, past a
+        // pole) meets that object's depth within `thickness` and is taken as a hit where the ray tracer sees
+        // the sky: measured 1 of 200 and 4 of 338 unresolvable pixels. Bounded here, not yet 0.
+        EXPECT_LE(full.unresolvableNonZero, int(0.02 * full.unresolvable));
+        // The first frame has no history: the radiance is this frame's colour at the hit.
+        const Figures first = measure(renderSsr(o, ssrSettings(), 1), truth, classes);
+        print("first frame", first);
+        EXPECT_GE(first.within10, 0.95);
+        EXPECT_LE(first.p95Relative, 0.10);
+        // Half resolution: each 2 x 2 block shares the ray of its first pixel, so a pixel gets its
+        // neighbour's reflection (up to a pixel off on screen, more in the reflected image): measured 82.4%
+        // and 87.6% within 10%, 8 and 11 unresolvable pixels with a confidence.
+        const Figures half =
+            measure(renderSsr(o, ssrSettings(ReflectionResolution::Half), 4), truth, classes);
+        print("half", half);
+        EXPECT_GE(half.covered, int(0.85 * half.resolvable));
+        EXPECT_GE(half.within10, 0.75);
+        EXPECT_LE(half.unresolvableNonZero, int(0.05 * half.unresolvable));
+    }
+}
+
+TEST_F(GlTest, SsrStaysFiniteWithNonFiniteInputs) {
+    const testbed::TruthOptions o = stillOptions(0.3f);
+    // Linear depth, normals and colour with NaN, +-Inf, zero and negative values in a pattern.
+    const float bad[] = {std::numeric_limits<float>::quiet_NaN(),
+                         std::numeric_limits<float>::infinity(),
+                         -std::numeric_limits<float>::infinity(),
+                         0.0f,
+                         -1.0f,
+                         1e30f};
+    ImageF depth(kW, kH, 5.0f), normals(kW, kH, 0.0f), color(kW, kH, 1.0f);
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) {
+            const int k = (x * 7 + y * 3) % 9;
+            depth.at(x, y)[0] = k < 6 ? bad[k] : 2.0f + 0.05f * float(y);
+            float* n = normals.at(x, y);
+            n[0] = k < 6 ? bad[(k + 1) % 6] : 0.0f;
+            n[1] = k < 6 ? bad[(k + 2) % 6] : 1.0f;
+            n[2] = 0.0f;
+            color.at(x, y)[0] = k < 6 ? bad[(k + 3) % 6] : 1.0f;
+        }
+    }
+    const Texture depthTexture = makeTexture(depth, "bad depth");
+    const Texture normalTexture = makeTexture(normals, "bad normals");
+    const Texture colorTexture = makeTexture(color, "bad colour");
+    for (bool material : {true, false}) {
+        const ImageF view =
+            renderSsr(o, ssrSettings(), 3, material, &colorTexture, &depthTexture, &normalTexture);
+        int nonFinite = 0;
+        for (int y = 0; y < kH; ++y) {
+            for (int x = 0; x < kW; ++x) {
+                for (int c = 0; c < 4; ++c) {
+                    nonFinite += std::isfinite(view.at(x, y)[c]) ? 0 : 1;
+                }
+            }
+        }
+        EXPECT_EQ(nonFinite, 0);
+    }
+}
+
+} // namespace photopic::test
