@@ -10,6 +10,8 @@
 #include "core/settings/ContactShadowSettings.h"
 #include "core/settings/DebugSettings.h"
 #include "core/settings/DisplaySettings.h"
+#include "core/settings/MotionBlurSettings.h"
+#include "core/settings/OutlineSettings.h"
 #include "core/settings/OutputSettings.h"
 #include "core/settings/QualitySettings.h"
 #include "core/settings/SubjectSettings.h"
@@ -38,6 +40,8 @@ struct Settings {
     SmaaSettings smaa;
     AmbientOcclusionSettings ssao;
     ContactShadowSettings contactShadows;
+    MotionBlurSettings motionBlur;
+    OutlineSettings outline;
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
     /// is none.
@@ -72,6 +76,8 @@ struct Settings {
         v.object("smaa", smaa);
         v.object("ssao", ssao);
         v.object("contactShadows", contactShadows);
+        v.object("motionBlur", motionBlur);
+        v.object("outline", outline);
     }
 };
 

@@ -42,6 +42,8 @@ std::string_view resourceName(Resource resource) noexcept {
         return "contactShadows";
     case Resource::ContactShadowSteps:
         return "contactShadowSteps";
+    case Resource::VelocityTiles:
+        return "velocityTiles";
     case Resource::DebugColor:
         return "debugColor";
     case Resource::DisplayColor:

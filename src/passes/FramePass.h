@@ -48,6 +48,8 @@ enum class Resource : std::uint8_t {
     DisplayColor,     ///< RGBA8 display-referred image
     /// lighting stage: the contact-shadow march's steps, when the contact-shadows-steps debug view shows them
     ContactShadowSteps,
+    /// motion blur's neighbourhood maximum velocity per pixel, when the velocity-tiles debug view shows it
+    VelocityTiles,
     Count
 };
 inline constexpr std::size_t kResourceCount = std::size_t(Resource::Count);

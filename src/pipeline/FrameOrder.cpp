@@ -25,8 +25,11 @@ FrameOrder::FrameOrder(const Capabilities& caps, bool keepTelemetryHistory)
         &cameraMotion,    // linearDepth, camera -> motion (only when the host gives none)
         &gtaoPost,        // linearDepth, normals, camera -> ambientOcclusion (ssao.apply = multiply)
         &aoMultiply,      // sceneColor, ambientOcclusion -> sceneColor (ssao.apply = multiply)
+        &outline,         // sceneColor, linearDepth, normals? -> sceneColor (outline.enabled)
+        &motionBlur,      // sceneColor, motion, linearDepth -> sceneColor, velocityTiles (before-taa)
         &smaaHdr,         // sceneColor, exposure (last frame's) -> sceneColor (aa.mode taa+smaa)
         &taa,             // sceneColor, motion, exposure (last frame's), linearDepth?, camera? -> sceneColor
+        &motionBlurLate,  // the same as motionBlur, when motionBlur.placement is after-taa
         &metering,        // sceneColor -> histogram, metering, meteringMask
         &probes,          // sceneColor, metering -> metering (subject probes; the subject's reading)
         &exposure,        // histogram, metering -> exposure (adaptation; telemetry readback)

@@ -14,6 +14,8 @@
 #include "passes/inputs/InputPasses.h"
 #include "passes/lensflare/LensFlarePass.h"
 #include "passes/metering/MeteringPass.h"
+#include "passes/motionblur/MotionBlurPass.h"
+#include "passes/outline/OutlinePass.h"
 #include "passes/probe/ProbePass.h"
 #include "passes/probe/SubjectContextsPass.h"
 #include "passes/sanitize/SanitizePass.h"
@@ -62,6 +64,9 @@ public:
     LensFlarePass lensFlare;
     DisplayEffectsPass displayEffects;
     HistogramOverlayPass histogramOverlay;
+    OutlinePass outline;
+    MotionBlurPass motionBlur{MotionBlurPlacement::BeforeTaa};
+    MotionBlurPass motionBlurLate{MotionBlurPlacement::AfterTaa};
 
 private:
     std::vector<FramePass*> mLighting;

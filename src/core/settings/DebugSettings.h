@@ -28,10 +28,13 @@ enum class DebugView {
     ContactShadows,
     /// The contact-shadow ray march's steps taken per pixel over contactShadows.steps (0: none marched)
     ContactShadowSteps,
+    /// Motion blur's velocity tiles: per pixel, its tile's neighbourhood maximum velocity in pixels of blur
+    /// radius (R x right, G y up, B length); raw values in an EXR; needs motionBlur.enabled and motion
+    VelocityTiles,
 };
 
 inline std::span<const std::string_view> debugViewNames() {
-    static constexpr std::array<std::string_view, 14> kNames{"none",
+    static constexpr std::array<std::string_view, 15> kNames{"none",
                                                              "exposure",
                                                              "luma",
                                                              "ev",
@@ -44,7 +47,8 @@ inline std::span<const std::string_view> debugViewNames() {
                                                              "taa-history-weight",
                                                              "disocclusion",
                                                              "contact-shadows",
-                                                             "contact-shadows-steps"};
+                                                             "contact-shadows-steps",
+                                                             "velocity-tiles"};
     return kNames;
 }
 

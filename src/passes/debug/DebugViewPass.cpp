@@ -33,10 +33,13 @@ constexpr ResourceUse kContactShadowViewUses[] = {{Resource::ContactShadows, Acc
                                                   {Resource::DebugColor, Access::Write}};
 constexpr ResourceUse kContactShadowStepsViewUses[] = {{Resource::ContactShadowSteps, Access::Read},
                                                        {Resource::DebugColor, Access::Write}};
+constexpr ResourceUse kVelocityTilesViewUses[] = {{Resource::VelocityTiles, Access::Read},
+                                                  {Resource::DebugColor, Access::Write}};
 
 /// Views of data rather than of the image: written to EXR, they keep their values.
 bool isDataView(DebugView view) {
-    return view == DebugView::ContactShadows || view == DebugView::ContactShadowSteps;
+    return view == DebugView::ContactShadows || view == DebugView::ContactShadowSteps ||
+           view == DebugView::VelocityTiles;
 }
 
 bool isInputView(DebugView view) {
@@ -67,6 +70,8 @@ std::span<const ResourceUse> DebugViewPass::uses() const {
         return kContactShadowViewUses;
     case DebugView::ContactShadowSteps:
         return kContactShadowStepsViewUses;
+    case DebugView::VelocityTiles:
+        return kVelocityTilesViewUses;
     default:
         return kSceneViewUses;
     }
@@ -135,6 +140,7 @@ void DebugViewPass::drawInputView(const FrameContext& ctx, const FrameResources&
                             : mView == DebugView::Motion             ? Resource::Motion
                             : mView == DebugView::ContactShadows     ? Resource::ContactShadows
                             : mView == DebugView::ContactShadowSteps ? Resource::ContactShadowSteps
+                            : mView == DebugView::VelocityTiles      ? Resource::VelocityTiles
                                                                      : Resource::TaaDebug;
     const Program& p = mInputProgram;
     const Camera* camera = ctx.inputs.camera;

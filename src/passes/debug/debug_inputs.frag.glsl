@@ -7,7 +7,7 @@ layout(binding = 0) uniform sampler2D uInput;
 // Mirrors photopic::DebugInputViewParameters (passes/debug/DebugViewPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform DebugInputViewParameters {
     int uView; // DebugView: 7 depth, 8 normals, 9 motion, 10 TAA history weight, 11 disocclusion,
-               // 12 contact shadows, 13 contact-shadow steps
+               // 12 contact shadows, 13 contact-shadow steps, 14 velocity tiles
     int uOctahedral;
     float uNear;
     float uFar;
@@ -82,6 +82,8 @@ void main() {
         c = vec3(t.g);
     } else if (uView == 12 || uView == 13) {
         c = vec3(t.r); // contact shadows' visibility, or the steps its march took (normalised)
+    } else if (uView == 14) {
+        c = t.rgb; // motion blur's neighbourhood maximum radius: x, y (pixels, y up), length
     }
     oColor = vec4(c, 1.0);
 }
