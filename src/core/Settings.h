@@ -12,6 +12,8 @@
 #include "core/settings/DepthOfFieldSettings.h"
 #include "core/settings/DisplaySettings.h"
 #include "core/settings/ExposureModeSettings.h"
+#include "core/settings/MotionBlurSettings.h"
+#include "core/settings/OutlineSettings.h"
 #include "core/settings/OutputSettings.h"
 #include "core/settings/QualitySettings.h"
 #include "core/settings/ReflectionSettings.h"
@@ -44,6 +46,8 @@ struct Settings {
     DepthOfFieldSettings dof;
     ExposureModeSettings exposure;
     ReflectionSettings ssr;
+    MotionBlurSettings motionBlur;
+    OutlineSettings outline;
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
     /// is none.
@@ -81,6 +85,8 @@ struct Settings {
         v.object("dof", dof);
         v.object("exposure", exposure);
         v.object("ssr", ssr);
+        v.object("motionBlur", motionBlur);
+        v.object("outline", outline);
     }
 };
 

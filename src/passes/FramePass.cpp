@@ -50,6 +50,8 @@ std::string_view resourceName(Resource resource) noexcept {
         return "depthPyramid";
     case Resource::Reflections:
         return "reflections";
+    case Resource::VelocityTiles:
+        return "velocityTiles";
     case Resource::DebugColor:
         return "debugColor";
     case Resource::DisplayColor:

@@ -52,6 +52,8 @@ enum class Resource : std::uint8_t {
     Material,     ///< host: RGB specular weight (Fresnel F0), A roughness, for screen-space reflections
     DepthPyramid, ///< R32F min-depth mip chain of linearDepth (nearest surface per cell), level 0 padded
     Reflections,  ///< RGBA16F: reflected radiance (RGB) and its confidence (A)
+    /// motion blur's neighbourhood maximum velocity per pixel, when the velocity-tiles debug view shows it
+    VelocityTiles,
     Count
 };
 inline constexpr std::size_t kResourceCount = std::size_t(Resource::Count);

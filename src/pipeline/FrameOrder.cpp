@@ -27,9 +27,12 @@ FrameOrder::FrameOrder(const Capabilities& caps, bool keepTelemetryHistory)
         &aoMultiply,      // sceneColor, ambientOcclusion -> sceneColor (ssao.apply = multiply)
         &ssrPyramid,      // linearDepth -> depthPyramid (ssr.enabled)
         &ssr,             // sceneColor, depthPyramid, linearDepth, camera, ... -> sceneColor, reflections
+        &outline,         // sceneColor, linearDepth, normals? -> sceneColor (outline.enabled)
+        &motionBlur,      // sceneColor, motion, linearDepth -> sceneColor, velocityTiles (before-taa)
         &smaaHdr,         // sceneColor, exposure (last frame's) -> sceneColor (aa.mode taa+smaa)
         &taa,             // sceneColor, motion, exposure (last frame's), linearDepth?, camera? -> sceneColor
         &ssrHistory,      // sceneColor -> (next frame's reflection source; ssr.enabled)
+        &motionBlurLate,  // the same as motionBlur, when motionBlur.placement is after-taa
         &metering,        // sceneColor -> histogram, metering, meteringMask
         &probes,          // sceneColor, metering -> metering (subject probes; the subject's reading)
         &exposure,        // histogram, metering -> exposure (adaptation; telemetry readback)

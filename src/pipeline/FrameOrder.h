@@ -15,6 +15,8 @@
 #include "passes/inputs/InputPasses.h"
 #include "passes/lensflare/LensFlarePass.h"
 #include "passes/metering/MeteringPass.h"
+#include "passes/motionblur/MotionBlurPass.h"
+#include "passes/outline/OutlinePass.h"
 #include "passes/probe/ProbePass.h"
 #include "passes/probe/SubjectContextsPass.h"
 #include "passes/sanitize/SanitizePass.h"
@@ -68,6 +70,9 @@ public:
     SsrHistoryPass ssrHistory; ///< before ssr, which reads the history it keeps
     DepthPyramidPass ssrPyramid;
     SsrPass ssr{ssrHistory};
+    OutlinePass outline;
+    MotionBlurPass motionBlur{MotionBlurPlacement::BeforeTaa};
+    MotionBlurPass motionBlurLate{MotionBlurPlacement::AfterTaa};
 
 private:
     std::vector<FramePass*> mLighting;

@@ -34,10 +34,13 @@ enum class DebugView {
     /// Screen-space reflections: the reflected radiance (RGB) and its confidence (alpha), raw values in an
     /// EXR; needs ssr.enabled, depth, a camera
     Ssr,
+    /// Motion blur's velocity tiles: per pixel, its tile's neighbourhood maximum velocity in pixels of blur
+    /// radius (R x right, G y up, B length); raw values in an EXR; needs motionBlur.enabled and motion
+    VelocityTiles,
 };
 
 inline std::span<const std::string_view> debugViewNames() {
-    static constexpr std::array<std::string_view, 16> kNames{"none",
+    static constexpr std::array<std::string_view, 17> kNames{"none",
                                                              "exposure",
                                                              "luma",
                                                              "ev",
@@ -52,7 +55,8 @@ inline std::span<const std::string_view> debugViewNames() {
                                                              "contact-shadows",
                                                              "contact-shadows-steps",
                                                              "coc",
-                                                             "ssr"};
+                                                             "ssr",
+                                                             "velocity-tiles"};
     return kNames;
 }
 

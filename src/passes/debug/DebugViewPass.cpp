@@ -37,11 +37,13 @@ constexpr ResourceUse kCocViewUses[] = {{Resource::DofCoc, Access::Read},
                                         {Resource::DebugColor, Access::Write}};
 constexpr ResourceUse kSsrViewUses[] = {{Resource::Reflections, Access::Read},
                                         {Resource::DebugColor, Access::Write}};
+constexpr ResourceUse kVelocityTilesViewUses[] = {{Resource::VelocityTiles, Access::Read},
+                                                  {Resource::DebugColor, Access::Write}};
 
 /// Views of data rather than of the image: written to EXR, they keep their values.
 bool isDataView(DebugView view) {
     return view == DebugView::ContactShadows || view == DebugView::ContactShadowSteps ||
-           view == DebugView::Coc || view == DebugView::Ssr;
+           view == DebugView::Coc || view == DebugView::Ssr || view == DebugView::VelocityTiles;
 }
 
 bool isInputView(DebugView view) {
@@ -76,6 +78,8 @@ std::span<const ResourceUse> DebugViewPass::uses() const {
         return kCocViewUses;
     case DebugView::Ssr:
         return kSsrViewUses;
+    case DebugView::VelocityTiles:
+        return kVelocityTilesViewUses;
     default:
         return kSceneViewUses;
     }
@@ -146,6 +150,7 @@ void DebugViewPass::drawInputView(const FrameContext& ctx, const FrameResources&
                             : mView == DebugView::ContactShadowSteps ? Resource::ContactShadowSteps
                             : mView == DebugView::Coc                ? Resource::DofCoc
                             : mView == DebugView::Ssr                ? Resource::Reflections
+                            : mView == DebugView::VelocityTiles      ? Resource::VelocityTiles
                                                                      : Resource::TaaDebug;
     const Program& p = mInputProgram;
     const Camera* camera = ctx.inputs.camera;

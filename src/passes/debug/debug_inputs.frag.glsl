@@ -7,7 +7,8 @@ layout(binding = 0) uniform sampler2D uInput;
 // Mirrors photopic::DebugInputViewParameters (passes/debug/DebugViewPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform DebugInputViewParameters {
     int uView; // DebugView: 7 depth, 8 normals, 9 motion, 10 TAA history weight, 11 disocclusion,
-               // 12 contact shadows, 13 contact-shadow steps, 14 depth of field's CoC, 15 ssr
+               // 12 contact shadows, 13 contact-shadow steps, 14 depth of field's CoC, 15 ssr,
+               // 16 velocity tiles
     int uOctahedral;
     float uNear;
     float uFar;
@@ -84,6 +85,7 @@ void main() {
     } else if (uView == 12 || uView == 13) {
         c = vec3(t.r); // contact shadows' visibility, or the steps its march took (normalised)
     } else if (uView == 14) {
+<<<<<<< HEAD
         // Signed CoC over the largest radius: near field red, far field blue, in focus black.
         float r = clamp(t.r / uMaxCoc, -1.0, 1.0);
         c = vec3(max(-r, 0.0), 0.0, max(r, 0.0));
@@ -92,6 +94,8 @@ void main() {
         // alpha, so that an EXR of the view holds both.
         oColor = t;
         return;
+    } else if (uView == 16) {
+        c = t.rgb; // motion blur's neighbourhood maximum radius: x, y (pixels, y up), length
     }
     oColor = vec4(c, 1.0);
 }

@@ -1,0 +1,67 @@
+#pragma once
+// Camera and object motion blur: a reconstruction filter over the frame's motion vectors (McGuire et al.
+// 2012, "A Reconstruction Filter for Plausible Motion Blur"; Guertin, McGuire and Nowrouzezahrai 2014): tile
+// maximum velocity, its neighbourhood maximum, and a per-pixel gather along that velocity that classifies
+// samples by depth, so a moving foreground blurs over a still background and a still foreground keeps its
+// edge over a moving one.
+
+#include "core/settings/Reflect.h"
+
+#include <array>
+#include <span>
+#include <string_view>
+
+namespace photopic {
+
+/// Where the shutter's open time comes from.
+enum class ShutterSource {
+    Angle,  ///< motionBlur.shutterAngle, a fraction of the frame interval
+    Camera, ///< the host camera's lens: exposureTimeS over the frame's dt, else its shutterAngleDeg
+};
+
+inline std::span<const std::string_view> shutterSourceNames() {
+    static constexpr std::array<std::string_view, 2> kNames{"angle", "camera"};
+    return kNames;
+}
+
+/// Where motion blur runs relative to TAA.
+enum class MotionBlurPlacement {
+    BeforeTaa, ///< on the frame's HDR colour before TAA gathers it (TAA then smooths the blur's noise)
+    AfterTaa,  ///< on TAA's resolved image
+};
+
+inline std::span<const std::string_view> motionBlurPlacementNames() {
+    static constexpr std::array<std::string_view, 2> kNames{"before-taa", "after-taa"};
+    return kNames;
+}
+
+struct MotionBlurSettings {
+    bool enabled = false; ///< default off
+    /// [0, 2], default 1: scales the blur's length (1: the length the shutter gives; 0: no blur).
+    float intensity = 1.0f;
+    int sampleCount = 15; ///< [3, 64], default 15: samples of the gather along the dominant velocity
+    /// Degrees, [0, 360], default 180: the shutter's open time as a fraction of the frame interval (360: the
+    /// whole interval; the blur of a point moving m pixels per frame is m x angle / 360 long).
+    float shutterAngle = 180.0f;
+    ShutterSource shutterSource = ShutterSource::Angle; ///< angle (default), camera
+    /// Pixels, [1, 256], default 20: the longest blur radius (half the streak); longer motion is clamped to
+    /// it. At most tileSize, since the gather looks at most one tile beyond its own.
+    float maxBlur = 20.0f;
+    int tileSize = 20; ///< pixels, [4, 64], default 20: the velocity tiles' size
+    MotionBlurPlacement placement = MotionBlurPlacement::BeforeTaa; ///< before-taa (default), after-taa
+
+    template <class V>
+    void visit(V& v) {
+        v.field("enabled", enabled);
+        v.field("intensity", intensity, Range{0, 2});
+        v.field("sampleCount", sampleCount, Range{3, 64});
+        v.field("shutterAngle", shutterAngle, Range{0, 360});
+        v.field("shutterSource", shutterSource, shutterSourceNames());
+        v.field("maxBlur", maxBlur, Range{1, 256});
+        v.field("tileSize", tileSize, Range{4, 64});
+        v.field("placement", placement, motionBlurPlacementNames());
+        v.require(maxBlur <= float(tileSize), "maxBlur", "must be at most tileSize");
+    }
+};
+
+} // namespace photopic

@@ -1,0 +1,27 @@
+// Motion blur, step 3 (McGuire et al. 2012, NeighborMax): the longest tile velocity among a tile and its
+// eight neighbours. A blur radius is at most one tile, so every velocity that can reach a pixel is within
+// them.
+#include "passes/motionblur/motion_blur_common.h.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 0) uniform sampler2D uTileMax;
+layout(binding = 0, rg16f) uniform writeonly image2D uNeighbourMax;
+
+void main() {
+    ivec2 tile = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(tile, uTileCount))) {
+        return;
+    }
+    vec2 m = texelFetch(uTileMax, tile, 0).rg;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 q = tile + ivec2(dx, dy);
+            if ((dx == 0 && dy == 0) || any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, uTileCount))) {
+                continue;
+            }
+            m = longer(m, texelFetch(uTileMax, q, 0).rg);
+        }
+    }
+    imageStore(uNeighbourMax, tile, vec4(m, 0.0, 0.0));
+}

@@ -1,0 +1,56 @@
+#include "passes/outline/OutlinePass.h"
+
+#include "passes/Bindings.h"
+
+namespace photopic {
+
+namespace {
+
+GLuint groups(int size) {
+    return GLuint((size + 7) / 8);
+}
+
+} // namespace
+
+OutlinePass::OutlinePass()
+    : mProgram(makeComputeProgram("passes/outline/outline.comp.glsl", bindingDefines()))
+    , mParameters("outline parameters") {}
+
+std::span<const ResourceUse> OutlinePass::uses() const {
+    static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
+                                            {Resource::LinearDepth, Access::Read},
+                                            {Resource::Normals, Access::ReadOptional},
+                                            {Resource::SceneColor, Access::Write}};
+    return kUses;
+}
+
+void OutlinePass::execute(FrameContext& ctx, FrameResources& resources) {
+    const OutlineSettings& s = ctx.settings.outline;
+    const Extent e = ctx.extent;
+    const Texture& out =
+        resources.pool()
+            .acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with outline"})
+            .texture();
+    const Texture* normals = resources.texture(Resource::Normals);
+    const Texture& depth = *resources.texture(Resource::LinearDepth);
+    // Five depths, five normals when given, the colour in and out.
+    ScopedGpuTimer timer(ctx.timers, "outline",
+                         double(e.width) * e.height * (20.0 + (normals ? 40.0 : 0.0) + 16.0));
+    mParameters.update({.color = glm::vec4(s.color, s.intensity),
+                        .depthThreshold = s.depthThreshold,
+                        .normalThreshold = s.normalThreshold,
+                        .width = s.width,
+                        .normals = normals == nullptr                                        ? 0
+                                   : ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 2
+                                                                                             : 1});
+    mParameters.bind(kBindingParameters);
+    mProgram.use();
+    glBindTextureUnit(0, resources.texture(Resource::SceneColor)->id());
+    glBindTextureUnit(1, depth.id());
+    glBindTextureUnit(2, normals ? normals->id() : depth.id());
+    glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glDispatchCompute(groups(e.width), groups(e.height), 1);
+    resources.bind(Resource::SceneColor, out);
+}
+
+} // namespace photopic

@@ -1,0 +1,272 @@
+// Motion blur against analytic blur lengths and the testbed's shutter-integrated ray-traced truth.
+
+#include "GlTest.h"
+
+#include "gl/TextureIo.h"
+#include "scenes/testbed/TestbedRaytracer.h"
+#include "scenes/testbed/TestbedScene.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+
+namespace photopic::test {
+
+namespace {
+
+constexpr float kDt = 1.0f / 30.0f;
+
+Settings blurSettings(bool enabled) {
+    Settings s;
+    s.autoExposure.enabled = false;
+    s.bloom.enabled = false;
+    s.output.dither = false;
+    s.motionBlur.enabled = enabled;
+    return s;
+}
+
+/// A uniform pan by `pixelsPerFrame` in x over a black image with one bright column (1 at x = w / 2):
+/// the blurred rows are the column's streak. Returns the exposed scene-referred image.
+ImageF blurColumn(const Settings& settings, float pixelsPerFrame, int w = 160, int h = 32,
+                  int movingColumns = 160, bool gradient = false) {
+    ImageF color(w, h, 0.0f);
+    for (int y = 0; y < h; ++y) {
+        for (int c = 0; c < 3; ++c) {
+            color.at(w / 2, y)[c] = 1.0f;
+            for (int x = 0; gradient && x < w; ++x) {
+                color.at(x, y)[c] = 0.01f * float(x) + 0.02f * float(y) + 0.1f * float(c);
+            }
+        }
+    }
+    ImageF depth(w, h, 10.0f);
+    ImageF motion(w, h, 0.0f);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            motion.at(x, y)[0] = x < movingColumns ? pixelsPerFrame / float(w) : 0.0f;
+        }
+    }
+    const Texture c = makeTexture(color, "color");
+    const Texture d = makeTexture(depth, "depth");
+    const Texture m = makeTexture(motion, "motion");
+    const Camera camera;
+    Pipeline pipeline({.settings = settings});
+    pipeline.beginFrame({.dt = kDt, .frameIndex = 1});
+    pipeline.execute(
+        {.color = &c, .depth = &d, .depthKind = DepthKind::LinearView, .motion = &m, .camera = &camera},
+        {.dt = kDt, .frameIndex = 1});
+    EXPECT_TRUE(pipeline.status().skipped.empty());
+    return readTextureF(pipeline.sceneReferred());
+}
+
+/// The streak's length from its spread: a box of length L, integrated over pixels, has variance
+/// (L^2 + 1) / 12. Averaged over the rows (each has its own jitter).
+double streakLength(const ImageF& img) {
+    double variance = 0.0;
+    for (int y = 0; y < img.height; ++y) {
+        double sum = 0.0, mean = 0.0, second = 0.0;
+        for (int x = 0; x < img.width; ++x) {
+            const double v = img.at(x, y)[1];
+            sum += v;
+            mean += v * (x + 0.5);
+            second += v * (x + 0.5) * (x + 0.5);
+        }
+        mean /= sum;
+        variance += second / sum - mean * mean;
+    }
+    variance /= img.height;
+    return std::sqrt(std::max(0.0, 12.0 * variance - 1.0));
+}
+
+double relativeRmse(const ImageF& a, const ImageF& truth, const std::vector<bool>& mask, long* count) {
+    double err = 0.0, ref = 0.0;
+    *count = 0;
+    for (int i = 0; i < truth.width * truth.height; ++i) {
+        if (!mask[std::size_t(i)]) {
+            continue;
+        }
+        ++*count;
+        for (int c = 0; c < 3; ++c) {
+            const double d = double(a.rgba[std::size_t(i) * 4 + c]) - truth.rgba[std::size_t(i) * 4 + c];
+            err += d * d;
+            ref += double(truth.rgba[std::size_t(i) * 4 + c]) * truth.rgba[std::size_t(i) * 4 + c];
+        }
+    }
+    return ref > 0.0 ? std::sqrt(err / ref) : 0.0;
+}
+
+std::unique_ptr<TestbedScene> sceneWith(std::initializer_list<std::string> overrides, int w, int h) {
+    auto scene = std::make_unique<TestbedScene>();
+    for (const std::string& a : overrides) {
+        EXPECT_TRUE(scene->applyOverride(a).empty()) << a;
+    }
+    scene->resize({w, h});
+    return scene;
+}
+
+/// Frames 0..last of the testbed through `settings`; the last frame's exposed scene-referred image.
+ImageF runScene(TestbedScene& scene, const Settings& settings, std::uint64_t last) {
+    Pipeline pipeline({.settings = settings});
+    for (std::uint64_t f = 0; f <= last; ++f) {
+        std::vector<double> telemetry;
+        const FrameTime time{.dt = kDt, .frameIndex = f};
+        const FrameInputs in = scene.render(time, pipeline, telemetry);
+        pipeline.execute(in, time);
+    }
+    return readTextureF(pipeline.sceneReferred());
+}
+
+/// A truth image shown through `settings` (no blur: it is the truth), exposed scene-referred.
+ImageF throughPipeline(const ImageF& image, Settings settings) {
+    settings.motionBlur.enabled = false;
+    Pipeline pipeline({.settings = settings});
+    const Texture t = makeTexture(image, "truth");
+    pipeline.execute({.color = &t}, {});
+    return readTextureF(pipeline.sceneReferred());
+}
+
+} // namespace
+
+// A uniform pan of 16 px per frame: the shutter at 180 degrees draws an 8 px streak, at 360 a 16 px one
+// (twice as long); the light is conserved; zero motion leaves the image exactly as it was.
+TEST_F(GlTest, MotionBlurLengthFollowsTheShutter) {
+    Settings half = blurSettings(true);
+    Settings full = blurSettings(true);
+    full.motionBlur.shutterAngle = 360.0f;
+    const ImageF a = blurColumn(half, 16.0f);
+    const ImageF b = blurColumn(full, 16.0f);
+    const double la = streakLength(a), lb = streakLength(b);
+    std::printf("streak length: 180 deg %.2f px (analytic 8), 360 deg %.2f px (analytic 16), ratio %.3f\n",
+                la, lb, lb / la);
+    EXPECT_NEAR(la, 8.0, 0.8);
+    EXPECT_NEAR(lb, 16.0, 1.6);
+    EXPECT_NEAR(lb / la, 2.0, 0.15);
+    double energy = 0.0;
+    for (int y = 0; y < a.height; ++y) {
+        for (int x = 0; x < a.width; ++x) {
+            energy += a.at(x, y)[1] / a.height;
+        }
+    }
+    std::printf("light per row: %.3f (1 before the blur)\n", energy);
+    EXPECT_NEAR(energy, 1.0, 0.05);
+
+    const ImageF still = blurColumn(half, 0.0f);
+    const ImageF off = blurColumn(blurSettings(false), 0.0f);
+    EXPECT_EQ(still.rgba, off.rgba);
+    Settings camera = blurSettings(true);
+    camera.motionBlur.intensity = 0.0f;
+    EXPECT_EQ(blurColumn(camera, 16.0f).rgba, blurColumn(blurSettings(false), 16.0f).rgba);
+
+    // Still pixels: motion (4 px of radius) only left of x = 40. Pixels from x = 46 on, which no streak
+    // reaches, are unchanged to the bit, those in the tiles next to the motion included.
+    const ImageF part = blurColumn(half, 16.0f, 160, 32, 40, true);
+    const ImageF sharp = blurColumn(blurSettings(false), 16.0f, 160, 32, 40, true);
+    long changed = 0, blurredLeft = 0;
+    for (int y = 0; y < part.height; ++y) {
+        for (int x = 0; x < part.width; ++x) {
+            for (int ch = 0; ch < 4; ++ch) {
+                const bool same = part.at(x, y)[ch] == sharp.at(x, y)[ch];
+                changed += x >= 46 && !same ? 1 : 0;
+                blurredLeft += x < 40 && !same ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_EQ(changed, 0);
+    EXPECT_GT(blurredLeft, 1000); // the moving part did change (the gradient's ends are not linear)
+}
+
+// The velocity-tiles view holds each pixel's neighbourhood maximum blur radius: a 16 px/frame pan at 180
+// degrees is 4 px of radius.
+TEST_F(GlTest, MotionBlurVelocityTilesViewHoldsTheRadius) {
+    Settings s = blurSettings(true);
+    s.debug.view = DebugView::VelocityTiles;
+    const ImageF v = blurColumn(s, 16.0f);
+    EXPECT_NEAR(v.at(10, 10)[0], 4.0f, 0.01f);
+    EXPECT_NEAR(v.at(100, 20)[1], 0.0f, 0.01f);
+    EXPECT_NEAR(v.at(100, 20)[2], 4.0f, 0.01f);
+}
+
+// Against the ray tracer's shutter truth (160x90, 8x8 samples over space and the shutter): an object moving
+// fast over a still background, and a camera pan. Pixels are those the motion changes in the truth (shutter
+// against the still frame); the unblurred image's error is printed beside it. Measured 30.3% on the moving
+// objects (unblurred 59.0%) and 16.8% on the pan (44.9%): the bounds hold these figures, short of the 15%
+// the filter is meant to reach (docs/architecture.md, "Motion blur", known errors).
+TEST_F(GlTest, MotionBlurMatchesTheShutterTruth) {
+    constexpr int kW = 160, kH = 90;
+    struct Case {
+        const char* name;
+        std::initializer_list<std::string> overrides;
+        double bound;
+    };
+    const Case cases[] = {
+        {"moving objects",
+         {"cameraSpeed=0", "cameraStart=0", "objectStart=4.5", "objectSpeed=12", "samples=8"},
+         0.35},
+        {"pan", {"cameraStart=0.1", "cameraSpeed=3", "objectSpeed=0", "objectStart=1", "samples=8"}, 0.20},
+    };
+    for (const Case& c : cases) {
+        auto scene = sceneWith(c.overrides, kW, kH);
+        const std::uint64_t last = 2;
+        const testbed::TruthOptions o = scene->truthOptions({.dt = kDt, .frameIndex = last});
+        const Settings on = blurSettings(true);
+        const ImageF shutter = throughPipeline(testbed::renderTruth(testbed::TruthKind::Shutter, o), on);
+        const ImageF still = throughPipeline(testbed::renderTruth(testbed::TruthKind::Color, o), on);
+        const ImageF blurred = runScene(*scene, on, last);
+        const ImageF sharp = runScene(*scene, blurSettings(false), last);
+        std::vector<bool> moving(std::size_t(kW * kH), false);
+        for (int i = 0; i < kW * kH; ++i) {
+            for (int ch = 0; ch < 3; ++ch) {
+                const float t = shutter.rgba[std::size_t(i) * 4 + ch];
+                moving[std::size_t(i)] =
+                    moving[std::size_t(i)] ||
+                    std::abs(t - still.rgba[std::size_t(i) * 4 + ch]) > 0.02f * (t + 0.05f);
+            }
+        }
+        long n = 0;
+        const double error = relativeRmse(blurred, shutter, moving, &n);
+        const double baseline = relativeRmse(sharp, shutter, moving, &n);
+        std::printf("%s: %ld moving pixels, relative RMSE vs shutter truth %.1f%% (unblurred %.1f%%)\n",
+                    c.name, n, 100.0 * error, 100.0 * baseline);
+        // The placement relative to TAA, measured on the same pixels (TAA's own error on fast motion is part
+        // of both figures): printed for docs/architecture.md.
+        for (MotionBlurPlacement placement :
+             {MotionBlurPlacement::BeforeTaa, MotionBlurPlacement::AfterTaa}) {
+            Settings taa = on;
+            taa.aa.mode = AntiAliasing::Taa;
+            taa.motionBlur.placement = placement;
+            long m = 0;
+            const double e = relativeRmse(runScene(*scene, taa, last), shutter, moving, &m);
+            std::printf("  with TAA, blur %s: %.1f%%\n",
+                        placement == MotionBlurPlacement::BeforeTaa ? "before-taa" : "after-taa", 100.0 * e);
+            EXPECT_TRUE(std::isfinite(e));
+        }
+        EXPECT_GT(n, 100);
+        EXPECT_LE(error, c.bound) << c.name;
+        EXPECT_LT(error, 0.8 * baseline) << c.name;
+    }
+}
+
+// NaN and infinite motion and depth give finite colour.
+TEST_F(GlTest, MotionBlurKeepsBrokenInputsOut) {
+    const int w = 32, h = 16;
+    ImageF color(w, h, 0.5f), depth(w, h, 5.0f), motion(w, h, 0.05f);
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    motion.at(3, 3)[0] = nan;
+    motion.at(4, 3)[1] = inf;
+    depth.at(10, 5)[0] = nan;
+    depth.at(11, 5)[0] = -1.0f;
+    depth.at(12, 5)[0] = 0.0f;
+    const Texture c = makeTexture(color, "color"), d = makeTexture(depth, "depth"),
+                  m = makeTexture(motion, "motion");
+    const Camera camera;
+    Pipeline pipeline({.settings = blurSettings(true)});
+    pipeline.beginFrame({.dt = kDt, .frameIndex = 1});
+    pipeline.execute(
+        {.color = &c, .depth = &d, .depthKind = DepthKind::LinearView, .motion = &m, .camera = &camera},
+        {.dt = kDt, .frameIndex = 1});
+    for (float v : readTextureF(pipeline.sceneReferred()).rgba) {
+        ASSERT_TRUE(std::isfinite(v));
+    }
+}
+
+} // namespace photopic::test
