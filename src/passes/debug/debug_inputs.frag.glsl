@@ -85,7 +85,6 @@ void main() {
     } else if (uView == 12 || uView == 13) {
         c = vec3(t.r); // contact shadows' visibility, or the steps its march took (normalised)
     } else if (uView == 14) {
-<<<<<<< HEAD
         // Signed CoC over the largest radius: near field red, far field blue, in focus black.
         float r = clamp(t.r / uMaxCoc, -1.0, 1.0);
         c = vec3(max(-r, 0.0), 0.0, max(r, 0.0));
