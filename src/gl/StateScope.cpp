@@ -51,6 +51,9 @@ void restoreIndexed(GLenum target, int index, GLint name, GLint64 start, GLint64
 } // namespace
 
 GlStateScope::GlStateScope() {
+    mImageUnits = std::clamp(integer(GL_MAX_IMAGE_UNITS), 0, kUnits);
+    mUniformBufferUnits = std::clamp(integer(GL_MAX_UNIFORM_BUFFER_BINDINGS), 0, kUnits);
+    mStorageBufferUnits = std::clamp(integer(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS), 0, kUnits);
     mDrawFramebuffer = integer(GL_DRAW_FRAMEBUFFER_BINDING);
     mReadFramebuffer = integer(GL_READ_FRAMEBUFFER_BINDING);
     glGetIntegerv(GL_VIEWPORT, mViewport.data());
@@ -63,19 +66,25 @@ GlStateScope::GlStateScope() {
         glActiveTexture(GLenum(GL_TEXTURE0 + unit));
         mTextures[unit] = integer(GL_TEXTURE_BINDING_2D);
         mSamplers[unit] = integer(GL_SAMPLER_BINDING);
-        ImageUnit& image = mImages[unit];
-        image.name = integerAt(GL_IMAGE_BINDING_NAME, unit);
-        image.level = integerAt(GL_IMAGE_BINDING_LEVEL, unit);
-        image.layered = integerAt(GL_IMAGE_BINDING_LAYERED, unit);
-        image.layer = integerAt(GL_IMAGE_BINDING_LAYER, unit);
-        image.access = integerAt(GL_IMAGE_BINDING_ACCESS, unit);
-        image.format = integerAt(GL_IMAGE_BINDING_FORMAT, unit);
-        mUniformBuffers[unit] = {integerAt(GL_UNIFORM_BUFFER_BINDING, unit),
-                                 integer64At(GL_UNIFORM_BUFFER_START, unit),
-                                 integer64At(GL_UNIFORM_BUFFER_SIZE, unit)};
-        mStorageBuffers[unit] = {integerAt(GL_SHADER_STORAGE_BUFFER_BINDING, unit),
-                                 integer64At(GL_SHADER_STORAGE_BUFFER_START, unit),
-                                 integer64At(GL_SHADER_STORAGE_BUFFER_SIZE, unit)};
+        if (unit < mImageUnits) {
+            ImageUnit& image = mImages[unit];
+            image.name = integerAt(GL_IMAGE_BINDING_NAME, unit);
+            image.level = integerAt(GL_IMAGE_BINDING_LEVEL, unit);
+            image.layered = integerAt(GL_IMAGE_BINDING_LAYERED, unit);
+            image.layer = integerAt(GL_IMAGE_BINDING_LAYER, unit);
+            image.access = integerAt(GL_IMAGE_BINDING_ACCESS, unit);
+            image.format = integerAt(GL_IMAGE_BINDING_FORMAT, unit);
+        }
+        if (unit < mUniformBufferUnits) {
+            mUniformBuffers[unit] = {integerAt(GL_UNIFORM_BUFFER_BINDING, unit),
+                                     integer64At(GL_UNIFORM_BUFFER_START, unit),
+                                     integer64At(GL_UNIFORM_BUFFER_SIZE, unit)};
+        }
+        if (unit < mStorageBufferUnits) {
+            mStorageBuffers[unit] = {integerAt(GL_SHADER_STORAGE_BUFFER_BINDING, unit),
+                                     integer64At(GL_SHADER_STORAGE_BUFFER_START, unit),
+                                     integer64At(GL_SHADER_STORAGE_BUFFER_SIZE, unit)};
+        }
     }
     glActiveTexture(GL_TEXTURE0);
     mUniformBuffer = integer(GL_UNIFORM_BUFFER_BINDING);
@@ -143,16 +152,20 @@ GlStateScope::~GlStateScope() {
         glBindTexture(GL_TEXTURE_2D, GLuint(mTextures[unit]));
         glBindSampler(GLuint(unit), GLuint(mSamplers[unit]));
         const ImageUnit& image = mImages[unit];
-        if (image.name != 0 && glIsTexture(GLuint(image.name))) {
+        if (unit < mImageUnits && image.name != 0 && glIsTexture(GLuint(image.name))) {
             glBindImageTexture(GLuint(unit), GLuint(image.name), image.level, GLboolean(image.layered),
                                image.layer, GLenum(image.access), GLenum(image.format));
-        } else {
+        } else if (unit < mImageUnits) {
             glBindImageTexture(GLuint(unit), 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R8);
         }
-        restoreIndexed(GL_UNIFORM_BUFFER, unit, mUniformBuffers[unit].name, mUniformBuffers[unit].start,
-                       mUniformBuffers[unit].size);
-        restoreIndexed(GL_SHADER_STORAGE_BUFFER, unit, mStorageBuffers[unit].name,
-                       mStorageBuffers[unit].start, mStorageBuffers[unit].size);
+        if (unit < mUniformBufferUnits) {
+            restoreIndexed(GL_UNIFORM_BUFFER, unit, mUniformBuffers[unit].name, mUniformBuffers[unit].start,
+                           mUniformBuffers[unit].size);
+        }
+        if (unit < mStorageBufferUnits) {
+            restoreIndexed(GL_SHADER_STORAGE_BUFFER, unit, mStorageBuffers[unit].name,
+                           mStorageBuffers[unit].start, mStorageBuffers[unit].size);
+        }
     }
     glActiveTexture(GLenum(mActiveTexture));
     // Indexed binds also set the generic binding point: the generic ones go back last.

@@ -39,6 +39,9 @@ private:
         GLint64 start = 0, size = 0;
     };
 
+    /// How many of the kUnits image, uniform-buffer and storage-buffer binding points this context has
+    /// (NVIDIA's driver has 8 image units; reaching past the limit is GL_INVALID_VALUE).
+    int mImageUnits = 0, mUniformBufferUnits = 0, mStorageBufferUnits = 0;
     GLint mDrawFramebuffer = 0, mReadFramebuffer = 0;
     std::array<GLint, 4> mViewport{}, mScissorBox{};
     GLint mProgram = 0, mProgramPipeline = 0, mVertexArray = 0, mActiveTexture = GL_TEXTURE0;
