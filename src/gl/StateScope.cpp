@@ -40,7 +40,19 @@ GLint64 integer64At(GLenum name, int index) {
     return value;
 }
 
+/// `name` if it still names an object (`isObject`), else 0. An object the host had bound can be deleted while
+/// the scope lives (a texture the pipeline owned and freed, say); deleting a bound object unbinds it, so 0 is
+/// what the host's binding would be had the scope not been there, and binding a deleted name is an error.
+GLuint alive(GLint name, GLboolean (*isObject)(GLuint)) {
+    return name != 0 && isObject(GLuint(name)) ? GLuint(name) : 0;
+}
+
+GLboolean isBuffer(GLuint name) {
+    return glIsBuffer(name);
+}
+
 void restoreIndexed(GLenum target, int index, GLint name, GLint64 start, GLint64 size) {
+    name = GLint(alive(name, isBuffer));
     if (name != 0 && size > 0) {
         glBindBufferRange(target, GLuint(index), GLuint(name), GLintptr(start), GLsizeiptr(size));
     } else {
@@ -149,8 +161,12 @@ GlStateScope::~GlStateScope() {
     glPixelStorei(GL_UNPACK_ROW_LENGTH, mUnpackRowLength);
     for (int unit = 0; unit < kUnits; ++unit) {
         glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-        glBindTexture(GL_TEXTURE_2D, GLuint(mTextures[unit]));
-        glBindSampler(GLuint(unit), GLuint(mSamplers[unit]));
+        glBindTexture(GL_TEXTURE_2D, mTextures[unit] != 0 && glIsTexture(GLuint(mTextures[unit]))
+                                         ? GLuint(mTextures[unit])
+                                         : 0);
+        glBindSampler(GLuint(unit), mSamplers[unit] != 0 && glIsSampler(GLuint(mSamplers[unit]))
+                                        ? GLuint(mSamplers[unit])
+                                        : 0);
         const ImageUnit& image = mImages[unit];
         if (unit < mImageUnits && image.name != 0 && glIsTexture(GLuint(image.name))) {
             glBindImageTexture(GLuint(unit), GLuint(image.name), image.level, GLboolean(image.layered),
@@ -169,19 +185,25 @@ GlStateScope::~GlStateScope() {
     }
     glActiveTexture(GLenum(mActiveTexture));
     // Indexed binds also set the generic binding point: the generic ones go back last.
-    glBindBuffer(GL_UNIFORM_BUFFER, GLuint(mUniformBuffer));
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, GLuint(mStorageBuffer));
-    glBindBuffer(GL_ARRAY_BUFFER, GLuint(mArrayBuffer));
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, GLuint(mPackBuffer));
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(mUnpackBuffer));
-    glBindBuffer(GL_COPY_READ_BUFFER, GLuint(mCopyReadBuffer));
-    glBindBuffer(GL_COPY_WRITE_BUFFER, GLuint(mCopyWriteBuffer));
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, GLuint(mDispatchIndirectBuffer));
-    glBindVertexArray(GLuint(mVertexArray));
-    glUseProgram(GLuint(mProgram));
-    glBindProgramPipeline(GLuint(mProgramPipeline));
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(mDrawFramebuffer));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(mReadFramebuffer));
+    glBindBuffer(GL_UNIFORM_BUFFER, alive(mUniformBuffer, isBuffer));
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, alive(mStorageBuffer, isBuffer));
+    glBindBuffer(GL_ARRAY_BUFFER, alive(mArrayBuffer, isBuffer));
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, alive(mPackBuffer, isBuffer));
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, alive(mUnpackBuffer, isBuffer));
+    glBindBuffer(GL_COPY_READ_BUFFER, alive(mCopyReadBuffer, isBuffer));
+    glBindBuffer(GL_COPY_WRITE_BUFFER, alive(mCopyWriteBuffer, isBuffer));
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, alive(mDispatchIndirectBuffer, isBuffer));
+    glBindVertexArray(mVertexArray != 0 && glIsVertexArray(GLuint(mVertexArray)) ? GLuint(mVertexArray) : 0);
+    glUseProgram(mProgram != 0 && glIsProgram(GLuint(mProgram)) ? GLuint(mProgram) : 0);
+    glBindProgramPipeline(mProgramPipeline != 0 && glIsProgramPipeline(GLuint(mProgramPipeline))
+                              ? GLuint(mProgramPipeline)
+                              : 0);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, mDrawFramebuffer != 0 && glIsFramebuffer(GLuint(mDrawFramebuffer))
+                                               ? GLuint(mDrawFramebuffer)
+                                               : 0);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, mReadFramebuffer != 0 && glIsFramebuffer(GLuint(mReadFramebuffer))
+                                               ? GLuint(mReadFramebuffer)
+                                               : 0);
     glViewport(mViewport[0], mViewport[1], mViewport[2], mViewport[3]);
     glScissor(mScissorBox[0], mScissorBox[1], mScissorBox[2], mScissorBox[3]);
 }
