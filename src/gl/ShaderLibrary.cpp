@@ -153,4 +153,14 @@ void setUniform(const Program& p, const char* name, float x, float y, float z, f
     glProgramUniform4f(p.id(), glGetUniformLocation(p.id(), name), x, y, z, w);
 }
 
+void dispatchPixels(Extent extent) noexcept {
+    glDispatchCompute(GLuint((extent.width + kPixelGroupSize - 1) / kPixelGroupSize),
+                      GLuint((extent.height + kPixelGroupSize - 1) / kPixelGroupSize), 1);
+}
+
+void imageWriteBarrier() noexcept {
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                    GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
+}
+
 } // namespace photopic

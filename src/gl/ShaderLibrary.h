@@ -27,6 +27,14 @@ Program makeComputeProgram(std::string_view computeName, const ShaderDefines& de
 Program makeGraphicsProgram(std::string_view vertexName, std::string_view fragmentName,
                             const ShaderDefines& defines = {});
 
+/// Work groups of a full-screen compute pass: 8x8 invocations, one pixel each, covering `extent` (shaders
+/// return early outside the image).
+inline constexpr int kPixelGroupSize = 8;
+void dispatchPixels(Extent extent) noexcept;
+/// After a pass's image stores: whatever reads the image next (a sampler, an image load, a blit, a readback
+/// or a copy) sees the stores.
+void imageWriteBarrier() noexcept;
+
 /// Set uniforms by name on a program (DSA: no bind needed). Missing names are ignored (optimised away).
 void setUniform(const Program& p, const char* name, float v);
 void setUniform(const Program& p, const char* name, int v);

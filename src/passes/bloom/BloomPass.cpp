@@ -8,9 +8,8 @@
 namespace photopic {
 
 namespace {
-constexpr const char* kVertex = "passes/common/fullscreen.vert.glsl";
-constexpr const char* kDown = "passes/bloom/bloom_downsample.frag.glsl";
-constexpr const char* kUp = "passes/bloom/bloom_upsample.frag.glsl";
+constexpr const char* kDown = "passes/bloom/bloom_downsample.comp.glsl";
+constexpr const char* kUp = "passes/bloom/bloom_upsample.comp.glsl";
 constexpr GLenum kFormat = GL_RGBA16F;
 
 double texelBytes(Extent e, GLenum format) {
@@ -19,12 +18,11 @@ double texelBytes(Extent e, GLenum format) {
 } // namespace
 
 BloomPass::BloomPass()
-    : mPrefilter(makeGraphicsProgram(kVertex, kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}})))
-    , mDownsample(makeGraphicsProgram(kVertex, kDown, bindingDefines()))
-    , mUpsample(makeGraphicsProgram(kVertex, kUp, bindingDefines()))
+    : mPrefilter(makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}})))
+    , mDownsample(makeComputeProgram(kDown, bindingDefines()))
+    , mUpsample(makeComputeProgram(kUp, bindingDefines()))
     , mDownsampleParameters("bloom downsample parameters")
-    , mUpsampleParameters("bloom upsample parameters")
-    , mVao(VertexArray::create("bloom fullscreen")) {}
+    , mUpsampleParameters("bloom upsample parameters") {}
 
 std::span<const ResourceUse> BloomPass::uses() const {
     static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
@@ -51,8 +49,6 @@ void BloomPass::resize(Extent extent) {
     mLevels = 0; // rebuilt on the next execute, at the size and depth that frame asks for
     mDown.clear();
     mUp.clear();
-    mDownFbo.clear();
-    mUpFbo.clear();
 }
 
 void BloomPass::ensureChain(int firstDivisor, int levels) {
@@ -63,17 +59,13 @@ void BloomPass::ensureChain(int firstDivisor, int levels) {
     mLevels = levels;
     mDown.clear();
     mUp.clear();
-    mDownFbo.clear();
-    mUpFbo.clear();
     for (int i = 0; i < levels; ++i) {
         const glm::ivec2 s = bloomMipSize({mExtent.width, mExtent.height}, firstDivisor, i);
         const std::string down = fmt::format("bloom down {}", i);
         mDown.emplace_back(TextureCreateInfo{.extent = {s.x, s.y}, .format = kFormat, .debugName = down});
-        mDownFbo.emplace_back(mDown.back(), 0, down);
         if (i + 1 < levels) {
             const std::string up = fmt::format("bloom up {}", i);
             mUp.emplace_back(TextureCreateInfo{.extent = {s.x, s.y}, .format = kFormat, .debugName = up});
-            mUpFbo.emplace_back(mUp.back(), 0, up);
         }
     }
 }
@@ -83,7 +75,6 @@ const Texture& BloomPass::execute(const Inputs& in) {
         bloomMipCount({mExtent.width, mExtent.height}, in.firstDivisor, std::max(1, in.mipCount));
     ensureChain(in.firstDivisor, levels);
     DebugGroup group("bloom");
-    glBindVertexArray(mVao.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState, in.exposureState->id());
 
     // Downsample chain; level 0 reads the scene with the prefilter (exposure, Karis, threshold).
@@ -105,8 +96,9 @@ const Texture& BloomPass::execute(const Inputs& in) {
         mDownsampleParameters.bind(kBindingParameters);
         program.use();
         glBindTextureUnit(0, source.id());
-        mDownFbo[std::size_t(i)].bind();
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
+        dispatchPixels(te);
+        imageWriteBarrier();
     }
 
     // Upsample chain, smallest level first: up[i] = mix(down[i], tent(up[i + 1]), radius).
@@ -123,8 +115,9 @@ const Texture& BloomPass::execute(const Inputs& in) {
         mUpsample.use();
         glBindTextureUnit(0, coarse.id());
         glBindTextureUnit(1, fine.id());
-        mUpFbo[std::size_t(i)].bind();
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindImageTexture(0, mUp[std::size_t(i)].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
+        dispatchPixels(te);
+        imageWriteBarrier();
     }
     return levels == 1 ? mDown[0] : mUp[0];
 }

@@ -14,8 +14,8 @@
 
 namespace photopic {
 
-/// std140 mirror of bloom_downsample.frag.glsl's parameter block (the prefilter and the plain downsample
-/// share it; only the prefilter reads threshold and knee). Rewritten before each level's draw.
+/// std140 mirror of bloom_downsample.comp.glsl's parameter block (the prefilter and the plain downsample
+/// share it; only the prefilter reads threshold and knee). Rewritten before each level's dispatch.
 struct BloomDownsampleParameters {
     float targetTexel[2] = {0.0f, 0.0f}; ///< 1 / target size
     float sourceStep[2] = {0.0f,
@@ -29,7 +29,7 @@ static_assert(offsetof(BloomDownsampleParameters, sourceStep) == 8 &&
               offsetof(BloomDownsampleParameters, threshold) == 16 &&
               offsetof(BloomDownsampleParameters, knee) == 32);
 
-/// std140 mirror of bloom_upsample.frag.glsl's parameter block, rewritten before each level's draw.
+/// std140 mirror of bloom_upsample.comp.glsl's parameter block, rewritten before each level's dispatch.
 struct BloomUpsampleParameters {
     float targetTexel[2] = {0.0f, 0.0f}; ///< 1 / size of level i
     float coarseTexel[2] = {0.0f, 0.0f}; ///< 1 / size of level i + 1
@@ -71,12 +71,10 @@ private:
     Program mUpsample;
     ParameterBlock<BloomDownsampleParameters> mDownsampleParameters;
     ParameterBlock<BloomUpsampleParameters> mUpsampleParameters;
-    VertexArray mVao;
     Extent mExtent;
     int mDivisor = 0;
     int mLevels = 0;
     std::vector<Texture> mDown, mUp;
-    std::vector<Framebuffer> mDownFbo, mUpFbo;
 };
 
 } // namespace photopic

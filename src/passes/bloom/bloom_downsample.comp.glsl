@@ -7,12 +7,18 @@
 // With PREFILTER the taps are scene colour multiplied by the frame's exposure (bloom works on exposed colour,
 // so what blooms does not depend on the scene's absolute level) and, in threshold mode, the soft knee
 // (constants from core/Bloom.cpp) keeps only what lies above the threshold.
+// A compute pass (8x8 groups, one target texel each, image store): on GPUs whose raster units are a small part
+// of the chip a full-screen triangle runs far below the memory's pace, and the taps hit the texture cache the
+// same way from either stage.
 #include "passes/common/color.h.glsl"
 #ifdef PREFILTER
 #include "passes/common/exposure.h.glsl"
 #endif
 
+layout(local_size_x = 8, local_size_y = 8) in;
+
 layout(binding = 0) uniform sampler2D uSource;
+layout(binding = 0, rgba16f) uniform writeonly image2D uTarget;
 // Mirrors photopic::BloomDownsampleParameters (passes/bloom/BloomPass.h), std140. The prefilter and the plain
 // downsample share the layout; only the prefilter reads uThreshold and uKnee.
 layout(std140, binding = BINDING_PARAMETERS) uniform BloomDownsampleParameters {
@@ -21,8 +27,6 @@ layout(std140, binding = BINDING_PARAMETERS) uniform BloomDownsampleParameters {
     int uThreshold;    // 1: threshold mode
     vec4 uKnee;        // T, T - knee, 2 knee, 1 / (4 knee)
 };
-
-layout(location = 0) out vec4 oColor;
 
 vec3 tap(vec2 uv) {
 #ifdef PREFILTER
@@ -40,7 +44,11 @@ float karisWeight(vec3 box) {
 #endif
 
 void main() {
-    vec2 uv = gl_FragCoord.xy * uTargetTexel;
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, imageSize(uTarget)))) {
+        return;
+    }
+    vec2 uv = (vec2(p) + 0.5) * uTargetTexel;
     vec2 t = uSourceStep;
     vec3 a = tap(uv + t * vec2(-2.0, 2.0));
     vec3 b = tap(uv + t * vec2(0.0, 2.0));
@@ -82,5 +90,5 @@ void main() {
         color *= max(rq, br - uKnee.x) / max(br, 1e-4);
     }
 #endif
-    oColor = vec4(color, 1.0);
+    imageStore(uTarget, p, vec4(color, 1.0));
 }
