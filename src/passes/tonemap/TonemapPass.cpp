@@ -10,14 +10,12 @@
 namespace photopic {
 
 namespace {
-constexpr const char* kVertex = "passes/common/fullscreen.vert.glsl";
-constexpr const char* kFragment = "passes/tonemap/tonemap.frag.glsl";
+constexpr const char* kCompute = "passes/tonemap/tonemap.comp.glsl";
 } // namespace
 
 TonemapPass::TonemapPass(const Capabilities& caps)
     : mParameters("tonemap parameters")
-    , mCaps(caps)
-    , mVao(VertexArray::create("fullscreen")) {}
+    , mCaps(caps) {}
 
 std::span<const ResourceUse> TonemapPass::uses() const {
     static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
@@ -46,7 +44,7 @@ const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool
         if (scene) {
             defines.emplace_back("OUTPUT_SCENE", "1");
         }
-        it = mPrograms.emplace(key, makeGraphicsProgram(kVertex, kFragment, bindingDefines(defines))).first;
+        it = mPrograms.emplace(key, makeComputeProgram(kCompute, bindingDefines(defines))).first;
     }
     return it->second;
 }
@@ -63,7 +61,8 @@ void TonemapPass::configure(const Settings& settings) {
     }
 }
 
-void TonemapPass::draw(const Program& program, const Inputs& in, Extent extent) {
+void TonemapPass::dispatch(const Program& program, const Inputs& in, const Texture& target) {
+    const Extent extent = target.extent();
     TonemapParameters parameters{.whitePoint = in.tonemapping->whitePoint,
                                  .agxLook = int(in.tonemapping->agxLook),
                                  .dither = in.output->dither ? 1 : 0,
@@ -105,8 +104,9 @@ void TonemapPass::draw(const Program& program, const Inputs& in, Extent extent) 
     program.use();
     glBindTextureUnit(0, in.scene->id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState, in.exposureState->id());
-    glBindVertexArray(mVao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, target.format());
+    dispatchPixels(extent);
+    imageWriteBarrier();
 }
 
 void TonemapPass::execute(FrameContext& ctx, FrameResources& resources) {
@@ -129,9 +129,8 @@ void TonemapPass::execute(FrameContext& ctx, FrameResources& resources) {
             double(in.bloom->extent().width) * in.bloom->extent().height * bytesPerTexel(in.bloom->format());
     }
     ScopedGpuTimer timer(in.timers, "composite + grade + tonemap", bytes);
-    out.framebuffer().bind();
     const bool grade = in.grading && in.grading->enabled;
-    draw(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, false), in, e);
+    dispatch(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, false), in, out.texture());
     resources.bind(Resource::DisplayColor, out.texture());
 }
 
@@ -139,12 +138,10 @@ const Texture& TonemapPass::renderScene(const Inputs& in) {
     const Extent e = in.scene->extent();
     if (!mScene.valid() || mScene.extent() != e) {
         mScene = Texture({.extent = e, .format = GL_RGBA32F, .debugName = "scene-referred output"});
-        mSceneFbo = Framebuffer(mScene, 0, "scene-referred output");
     }
     DebugGroup group("scene-referred output");
-    mSceneFbo.bind();
     const bool grade = in.grading && in.grading->enabled;
-    draw(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, true), in, e);
+    dispatch(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, true), in, mScene);
     return mScene;
 }
 

@@ -9,7 +9,7 @@
 
 namespace photopic {
 
-/// std140 mirror of tonemap.frag.glsl's parameter block, one layout for every variant: the bloom, glow and
+/// std140 mirror of tonemap.comp.glsl's parameter block, one layout for every variant: the bloom, glow and
 /// grading members are read only by the variants that #define BLOOM, GLOW and GRADE.
 struct TonemapParameters {
     float whitePoint = 1.0f;
@@ -70,7 +70,8 @@ public:
     const Texture& renderScene(const Inputs& in);
 
 private:
-    void draw(const Program& program, const Inputs& in, Extent extent);
+    /// One dispatch of `program` over `target` (RGBA8 display, or RGBA32F scene-referred output).
+    void dispatch(const Program& program, const Inputs& in, const Texture& target);
     /// One program per (curve, bloom, grading, scene output): the curve and the switches are #defines, not
     /// uniforms. Mesa llvmpipe executes every case of a switch on a uniform under a SIMD mask, so a runtime
     /// curve switch cost all eleven curves per pixel (1920x1080, --sync wall time: 280 ms against 49 ms for
@@ -80,9 +81,7 @@ private:
     std::map<int, Program> mPrograms; ///< by variant key (see variant())
     ParameterBlock<TonemapParameters> mParameters;
     const Capabilities& mCaps;
-    VertexArray mVao;
     Texture mScene;
-    Framebuffer mSceneFbo;
 };
 
 } // namespace photopic

@@ -7,13 +7,22 @@
 // With OUTPUT_SCENE defined it stops before the curve and writes the graded scene-referred value (EXR output).
 // Variants are #defines, never uniform branches (TonemapPass.h: llvmpipe runs every case of a uniform switch):
 // TONEMAP_MODE (static_cast<int>(ToneMapper)), BLOOM, GLOW (the legacy tier's glow), GRADE, OUTPUT_SCENE.
+// A compute pass (8x8 groups, one pixel each, image store into RGBA8, or RGBA32F for OUTPUT_SCENE): on GPUs
+// whose raster units are a small part of the chip a full-screen triangle runs far below the memory's pace.
 #include "passes/common/color.h.glsl"
 #include "passes/common/exposure.h.glsl"
 #include "passes/common/noise.h.glsl"
 #include "passes/common/sanitize.h.glsl"
 #include "passes/tonemap/tonecurves.h.glsl"
 
+layout(local_size_x = 8, local_size_y = 8) in;
+
 layout(binding = 0) uniform sampler2D uScene;
+#ifdef OUTPUT_SCENE
+layout(binding = 0, rgba32f) uniform writeonly image2D uOutput;
+#else
+layout(binding = 0, rgba8) uniform writeonly image2D uOutput;
+#endif
 #ifdef BLOOM
 layout(binding = 1) uniform sampler2D uBloom;
 #endif
@@ -38,8 +47,6 @@ layout(std140, binding = BINDING_PARAMETERS) uniform TonemapParameters {
 };
 
 const float kMiddleGrey = 0.18; // core/ColorGrading.h kGradingMiddleGrey
-
-layout(location = 0) out vec4 oColor;
 
 #ifdef BLOOM
 // The bloom image is half or a quarter of the frame and already blurred by the chain's tent upsamples: one
@@ -87,27 +94,31 @@ vec3 grade(vec3 c) {
 }
 
 void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, imageSize(uOutput)))) {
+        return;
+    }
+    vec2 fragCoord = vec2(p) + 0.5;
     // Sanitised here as well: on the LDR path this is where the pipeline first reads the host's colour.
     vec3 c = sanitize(texelFetch(uScene, p, 0).rgb) * gExposure.exposure;
 #ifdef BLOOM
-    vec3 bloom = bloomAt(gl_FragCoord.xy / vec2(textureSize(uScene, 0)));
+    vec3 bloom = bloomAt(fragCoord / vec2(textureSize(uScene, 0)));
     c = uBloomAdditive != 0 ? c + uBloomIntensity * bloom : mix(c, bloom, uBloomIntensity);
 #endif
 #ifdef GLOW
-    c += uGlowIntensity * glowAt(gl_FragCoord.xy);
+    c += uGlowIntensity * glowAt(fragCoord);
 #endif
 #ifdef GRADE
     c = grade(c);
 #endif
 #ifdef OUTPUT_SCENE
-    oColor = vec4(c, 1.0);
+    imageStore(uOutput, p, vec4(c, 1.0));
 #else
     vec3 display = srgbEncode(toneMap(TONEMAP_MODE, c, uWhitePoint, uAgxLook));
     if (uDither != 0) {
         display += vec3(triangularNoise(p, uFrame, 0u), triangularNoise(p, uFrame, 1u),
                         triangularNoise(p, uFrame, 2u)) * (1.0 / 255.0);
     }
-    oColor = vec4(clamp(display, 0.0, 1.0), 1.0);
+    imageStore(uOutput, p, vec4(clamp(display, 0.0, 1.0), 1.0));
 #endif
 }
