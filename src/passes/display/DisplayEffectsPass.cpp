@@ -5,10 +5,8 @@
 namespace photopic {
 
 DisplayEffectsPass::DisplayEffectsPass()
-    : mProgram(makeGraphicsProgram("passes/common/fullscreen.vert.glsl",
-                                   "passes/display/display_effects.frag.glsl", bindingDefines()))
+    : mProgram(makeComputeProgram("passes/display/display_effects.comp.glsl", bindingDefines()))
     , mParameters("display effects parameters")
-    , mVao(VertexArray::create("display effects fullscreen"))
     , mBlack({.extent = {1, 1}, .format = GL_RGBA16F, .debugName = "black texel"}) {
     const float black[4] = {0, 0, 0, 1};
     mBlack.uploadRgba32f(black);
@@ -66,9 +64,9 @@ void DisplayEffectsPass::execute(FrameContext& ctx, FrameResources& resources) {
     glBindTextureUnit(0, display.id());
     glBindTextureUnit(1, flare ? flare->id() : mBlack.id());
     glBindTextureUnit(2, glare ? glare->id() : mBlack.id());
-    out.framebuffer().bind();
-    glBindVertexArray(mVao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    dispatchPixels(e);
+    imageWriteBarrier();
     resources.bind(Resource::DisplayColor, out.texture());
 }
 

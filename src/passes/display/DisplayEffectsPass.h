@@ -10,7 +10,7 @@
 
 namespace photopic {
 
-/// std140 mirror of display_effects.frag.glsl's parameter block.
+/// std140 mirror of display_effects.comp.glsl's parameter block.
 struct DisplayEffectsParameters {
     float texel[2] = {0.0f, 0.0f}; ///< 1 / size
     float chromaticAberration = 0.0f;
@@ -45,7 +45,6 @@ public:
 private:
     Program mProgram;
     ParameterBlock<DisplayEffectsParameters> mParameters;
-    VertexArray mVao;
     Texture mBlack; ///< bound where an optional input is absent, so every sampler has a complete texture
 };
 

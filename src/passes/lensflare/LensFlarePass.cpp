@@ -7,18 +7,14 @@
 namespace photopic {
 
 namespace {
-constexpr const char* kVertex = "passes/common/fullscreen.vert.glsl";
 constexpr GLenum kFormat = GL_RGBA16F;
 } // namespace
 
 LensFlarePass::LensFlarePass()
-    : mPrefilter(
-          makeGraphicsProgram(kVertex, "passes/lensflare/lensflare_prefilter.frag.glsl", bindingDefines()))
-    , mFeatures(
-          makeGraphicsProgram(kVertex, "passes/lensflare/lensflare_features.frag.glsl", bindingDefines()))
+    : mPrefilter(makeComputeProgram("passes/lensflare/lensflare_prefilter.comp.glsl", bindingDefines()))
+    , mFeatures(makeComputeProgram("passes/lensflare/lensflare_features.comp.glsl", bindingDefines()))
     , mPrefilterParameters("lens flare prefilter parameters")
-    , mFeaturesParameters("lens flare features parameters")
-    , mVao(VertexArray::create("lens flare fullscreen")) {}
+    , mFeaturesParameters("lens flare features parameters") {}
 
 std::span<const ResourceUse> LensFlarePass::uses() const {
     static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
@@ -50,9 +46,7 @@ void LensFlarePass::ensureTargets(int divisor) {
     mDivisor = divisor;
     const Extent e{std::max(1, mExtent.width / divisor), std::max(1, mExtent.height / divisor)};
     mSource = Texture({.extent = e, .format = kFormat, .debugName = "lens flare source"});
-    mSourceFbo = Framebuffer(mSource, 0, "lens flare source");
     mFlare = Texture({.extent = e, .format = kFormat, .debugName = "lens flare"});
-    mFlareFbo = Framebuffer(mFlare, 0, "lens flare");
 }
 
 const Texture& LensFlarePass::execute(const Inputs& in) {
@@ -60,7 +54,6 @@ const Texture& LensFlarePass::execute(const Inputs& in) {
     const Extent e = mSource.extent();
     const double small = double(e.width) * e.height * bytesPerTexel(kFormat);
     DebugGroup group("lens flare");
-    glBindVertexArray(mVao.id());
     {
         const Extent se = in.scene->extent();
         ScopedGpuTimer timer(in.timers, "lens flare prefilter",
@@ -75,11 +68,13 @@ const Texture& LensFlarePass::execute(const Inputs& in) {
         mPrefilter.use();
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState, in.exposureState->id());
         glBindTextureUnit(0, in.scene->id());
-        mSourceFbo.bind();
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindImageTexture(0, mSource.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
+        dispatchPixels(e);
+        imageWriteBarrier();
     }
     {
-        ScopedGpuTimer timer(in.timers, "lens flare features", small * (in.settings->ghosts + 2));
+        // The small source read once from memory (every ghost's taps hit the cache), the flare written.
+        ScopedGpuTimer timer(in.timers, "lens flare features", small * 2.0);
         mFeaturesParameters.update({.targetTexel = {1.0f / float(e.width), 1.0f / float(e.height)},
                                     .ghosts = in.settings->ghosts,
                                     .ghostSpacing = in.settings->ghostSpacing,
@@ -89,8 +84,9 @@ const Texture& LensFlarePass::execute(const Inputs& in) {
         mFeaturesParameters.bind(kBindingParameters);
         mFeatures.use();
         glBindTextureUnit(0, mSource.id());
-        mFlareFbo.bind();
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindImageTexture(0, mFlare.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
+        dispatchPixels(e);
+        imageWriteBarrier();
     }
     return mFlare;
 }

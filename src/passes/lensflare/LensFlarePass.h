@@ -14,7 +14,7 @@ namespace photopic {
 // Two blocks, one per program: each program's block holds only what it reads, and each draw has its own
 // buffer, so neither is rewritten between the two draws.
 
-/// std140 mirror of lensflare_prefilter.frag.glsl's parameter block.
+/// std140 mirror of lensflare_prefilter.comp.glsl's parameter block.
 struct LensFlarePrefilterParameters {
     float targetTexel[2] = {0.0f, 0.0f}; ///< 1 / flare buffer size
     float sourceStep[2] = {0.0f, 0.0f};  ///< UV offset of the 4 taps: a quarter of a target texel
@@ -25,7 +25,7 @@ static_assert(sizeof(LensFlarePrefilterParameters) == 32);
 static_assert(offsetof(LensFlarePrefilterParameters, sourceStep) == 8 &&
               offsetof(LensFlarePrefilterParameters, threshold) == 16);
 
-/// std140 mirror of lensflare_features.frag.glsl's parameter block.
+/// std140 mirror of lensflare_features.comp.glsl's parameter block.
 struct LensFlareFeaturesParameters {
     float targetTexel[2] = {0.0f, 0.0f}; ///< 1 / flare buffer size
     std::int32_t ghosts = 0;
@@ -66,11 +66,9 @@ private:
     Program mFeatures;
     ParameterBlock<LensFlarePrefilterParameters> mPrefilterParameters;
     ParameterBlock<LensFlareFeaturesParameters> mFeaturesParameters;
-    VertexArray mVao;
     Extent mExtent;
     int mDivisor = 0;
     Texture mSource, mFlare;
-    Framebuffer mSourceFbo, mFlareFbo;
 };
 
 } // namespace photopic

@@ -11,11 +11,15 @@
 //    centre normalised to 1 at the corners (core/DisplayEffects.h vignetteFactor is the CPU reference).
 //  - Grain: monochrome triangular hash noise (passes/common/noise.h.glsl), deterministic per frame index,
 //    weighted 4 y (1 - y) so it is strongest in the mid-tones and leaves black and white clean.
+// A compute pass (8x8 groups, one pixel each, image store), like every full-screen pass.
 #include "passes/common/color.h.glsl"
 #include "passes/common/exposure.h.glsl"
 #include "passes/common/noise.h.glsl"
 
+layout(local_size_x = 8, local_size_y = 8) in;
+
 layout(binding = 0) uniform sampler2D uDisplay; // RGBA8, sRGB-encoded
+layout(binding = 0, rgba8) uniform writeonly image2D uOutput;
 layout(binding = 1) uniform sampler2D uFlareTex;  // exposed HDR flare, or a black texel
 layout(binding = 2) uniform sampler2D uGlareTex; // exposed HDR bloom, or a black texel
 // Mirrors photopic::DisplayEffectsParameters (passes/display/DisplayEffectsPass.h), std140.
@@ -34,11 +38,12 @@ layout(std140, binding = BINDING_PARAMETERS) uniform DisplayEffectsParameters {
     uint uFrame;
 };
 
-layout(location = 0) out vec4 oColor;
-
 void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
-    vec2 uv = gl_FragCoord.xy * uTexel;
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, imageSize(uOutput)))) {
+        return;
+    }
+    vec2 uv = (vec2(p) + 0.5) * uTexel;
     vec2 d = uv - 0.5;
     vec3 c;
     if (uChromaticAberration > 0.0) {
@@ -72,5 +77,5 @@ void main() {
         float y = luma709(encoded);
         encoded += vec3(triangularNoise(p, uFrame, 11u) * uGrainIntensity * 4.0 * y * (1.0 - y));
     }
-    oColor = vec4(clamp(encoded, 0.0, 1.0), 1.0);
+    imageStore(uOutput, p, vec4(clamp(encoded, 0.0, 1.0), 1.0));
 }
