@@ -8,7 +8,6 @@
 namespace photopic {
 
 namespace {
-constexpr const char* kVertex = "passes/common/fullscreen.vert.glsl";
 /// Histogram panel: margin and largest size in pixels; it shrinks with small images.
 constexpr int kPanelMargin = 8;
 constexpr int kPanelMaxWidth = 512;
@@ -53,11 +52,12 @@ bool isInputView(DebugView view) {
 } // namespace
 
 DebugViewPass::DebugViewPass()
-    : mSceneProgram(makeGraphicsProgram(kVertex, "passes/debug/debug_view.frag.glsl", bindingDefines()))
-    , mInputProgram(makeGraphicsProgram(kVertex, "passes/debug/debug_inputs.frag.glsl", bindingDefines()))
+    : mSceneProgram(makeComputeProgram("passes/debug/debug_view.comp.glsl", bindingDefines()))
+    , mInputProgram(makeComputeProgram("passes/debug/debug_inputs.comp.glsl", bindingDefines()))
+    , mInputRawProgram(
+          makeComputeProgram("passes/debug/debug_inputs.comp.glsl", bindingDefines({{"RAW", "1"}})))
     , mSceneParameters("debug scene view parameters")
-    , mInputParameters("debug input view parameters")
-    , mVao(VertexArray::create("debug view")) {}
+    , mInputParameters("debug input view parameters") {}
 
 std::span<const ResourceUse> DebugViewPass::uses() const {
     switch (mView) {
@@ -89,28 +89,29 @@ void DebugViewPass::execute(FrameContext& ctx, FrameResources& resources) {
     PooledTexture& out =
         resources.pool().acquire({.extent = ctx.extent, .format = GL_RGBA8, .debugName = "debug view"});
     const Extent e = ctx.extent;
-    ScopedGpuTimer timer(ctx.timers, "debug view", double(e.width) * e.height * 12);
-    out.framebuffer().bind();
-    if (isInputView(mView)) {
-        drawInputView(ctx, resources);
-    } else {
-        drawSceneView(ctx, resources);
-    }
-    glBindVertexArray(mVao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    resources.bind(Resource::DebugColor, out.texture());
+    const bool raw = isDataView(mView);
+    // One read of the source and an RGBA8 write, plus the RGBA32F copy of a data view's values.
+    ScopedGpuTimer timer(ctx.timers, "debug view", double(e.width) * e.height * (raw ? 36 : 12));
     mRaw = nullptr;
-    if (isDataView(mView)) {
-        // The same draw into a float target: what an EXR of the view holds (sceneReferred()).
-        PooledTexture& raw = resources.pool().acquire(
-            {.extent = ctx.extent, .format = GL_RGBA32F, .debugName = "debug view (raw values)"});
-        raw.framebuffer().bind();
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        mRaw = &raw.texture();
+    if (isInputView(mView)) {
+        bindInputView(ctx, resources, raw);
+    } else {
+        bindSceneView(ctx, resources);
     }
+    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    if (raw) {
+        // The same values unclamped: what an EXR of the view holds (sceneReferred()).
+        PooledTexture& values = resources.pool().acquire(
+            {.extent = ctx.extent, .format = GL_RGBA32F, .debugName = "debug view (raw values)"});
+        glBindImageTexture(1, values.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        mRaw = &values.texture();
+    }
+    dispatchPixels(e);
+    imageWriteBarrier();
+    resources.bind(Resource::DebugColor, out.texture());
 }
 
-void DebugViewPass::drawSceneView(const FrameContext& ctx, const FrameResources& resources) {
+void DebugViewPass::bindSceneView(const FrameContext& ctx, const FrameResources& resources) {
     const AutoExposureSettings& ae = ctx.settings.autoExposure;
     const Texture* scene = resources.texture(Resource::SceneColor);
     const Texture* bloom = resources.texture(Resource::Bloom);
@@ -142,7 +143,7 @@ void DebugViewPass::drawSceneView(const FrameContext& ctx, const FrameResources&
     glBindTextureUnit(2, bloom ? bloom->id() : scene->id());
 }
 
-void DebugViewPass::drawInputView(const FrameContext& ctx, const FrameResources& resources) {
+void DebugViewPass::bindInputView(const FrameContext& ctx, const FrameResources& resources, bool raw) {
     const Resource source = mView == DebugView::Depth                ? Resource::LinearDepth
                             : mView == DebugView::Normals            ? Resource::Normals
                             : mView == DebugView::Motion             ? Resource::Motion
@@ -152,7 +153,7 @@ void DebugViewPass::drawInputView(const FrameContext& ctx, const FrameResources&
                             : mView == DebugView::Ssr                ? Resource::Reflections
                             : mView == DebugView::VelocityTiles      ? Resource::VelocityTiles
                                                                      : Resource::TaaDebug;
-    const Program& p = mInputProgram;
+    const Program& p = raw ? mInputRawProgram : mInputProgram;
     const Camera* camera = ctx.inputs.camera;
     mInputParameters.update({.view = int(mView),
                              .octahedral = ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 1 : 0,
@@ -165,9 +166,8 @@ void DebugViewPass::drawInputView(const FrameContext& ctx, const FrameResources&
 }
 
 HistogramOverlayPass::HistogramOverlayPass()
-    : mProgram(makeGraphicsProgram(kVertex, "passes/debug/debug_histogram.frag.glsl", bindingDefines()))
-    , mParameters("histogram overlay parameters")
-    , mVao(VertexArray::create("histogram overlay")) {}
+    : mProgram(makeComputeProgram("passes/debug/debug_histogram.comp.glsl", bindingDefines()))
+    , mParameters("histogram overlay parameters") {}
 
 std::span<const ResourceUse> HistogramOverlayPass::uses() const {
     static constexpr ResourceUse kUses[] = {{Resource::DisplayColor, Access::Read},
@@ -182,8 +182,8 @@ void HistogramOverlayPass::execute(FrameContext& ctx, FrameResources& resources)
         {.extent = ctx.extent, .format = GL_RGBA8, .debugName = "histogram overlay"});
     const Extent e = ctx.extent;
     const AutoExposureSettings& ae = ctx.settings.autoExposure;
-    ScopedGpuTimer timer(ctx.timers, "debug view", double(e.width) * e.height * 12);
-    out.framebuffer().bind();
+    // The display image read and written once (RGBA8); the histogram is 1 KB.
+    ScopedGpuTimer timer(ctx.timers, "histogram overlay", double(e.width) * e.height * 8);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
                      resources.buffer(Resource::ExposureState)->id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingHistogram,
@@ -198,8 +198,9 @@ void HistogramOverlayPass::execute(FrameContext& ctx, FrameResources& resources)
     mParameters.bind(kBindingParameters);
     p.use();
     glBindTextureUnit(0, resources.texture(Resource::DisplayColor)->id());
-    glBindVertexArray(mVao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    dispatchPixels(e);
+    imageWriteBarrier();
     resources.bind(Resource::DisplayColor, out.texture());
 }
 

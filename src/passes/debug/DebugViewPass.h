@@ -12,7 +12,7 @@
 
 namespace photopic {
 
-/// std140 mirror of debug_view.frag.glsl's parameter block (the scene views).
+/// std140 mirror of debug_view.comp.glsl's parameter block (the scene views).
 struct DebugSceneViewParameters {
     std::int32_t view = 0; ///< DebugView
     std::int32_t hasBloom = 0;
@@ -29,7 +29,7 @@ static_assert(offsetof(DebugSceneViewParameters, log2Min) == 16 &&
               offsetof(DebugSceneViewParameters, spotUv) == 24 &&
               offsetof(DebugSceneViewParameters, spotRadius) == 32);
 
-/// std140 mirror of debug_inputs.frag.glsl's parameter block (the input views).
+/// std140 mirror of debug_inputs.comp.glsl's parameter block (the input views).
 struct DebugInputViewParameters {
     std::int32_t view = 0; ///< DebugView
     std::int32_t octahedral = 0;
@@ -43,7 +43,7 @@ static_assert(offsetof(DebugInputViewParameters, octahedral) == 4 &&
               offsetof(DebugInputViewParameters, nearPlane) == 8 &&
               offsetof(DebugInputViewParameters, farPlane) == 12);
 
-/// std140 mirror of debug_histogram.frag.glsl's parameter block.
+/// std140 mirror of debug_histogram.comp.glsl's parameter block.
 struct HistogramOverlayParameters {
     float panel[4] = {}; ///< x0, y0, width, height in pixels (GL window coordinates, origin bottom-left)
     float log2Min = 0.0f;
@@ -77,14 +77,16 @@ public:
     }
 
 private:
-    void drawSceneView(const FrameContext& ctx, const FrameResources& resources);
-    void drawInputView(const FrameContext& ctx, const FrameResources& resources);
+    /// Bind the scene views' program and inputs (the dispatch follows).
+    void bindSceneView(const FrameContext& ctx, const FrameResources& resources);
+    /// Bind the input views' program (`raw`: the variant that also writes image unit 1) and inputs.
+    void bindInputView(const FrameContext& ctx, const FrameResources& resources, bool raw);
 
     Program mSceneProgram;
     Program mInputProgram;
+    Program mInputRawProgram; ///< also writes the unclamped values (data views' EXR)
     ParameterBlock<DebugSceneViewParameters> mSceneParameters;
     ParameterBlock<DebugInputViewParameters> mInputParameters;
-    VertexArray mVao;
     DebugView mView = DebugView::None;
     const Texture* mRaw = nullptr;
 };
@@ -102,7 +104,6 @@ public:
 private:
     Program mProgram;
     ParameterBlock<HistogramOverlayParameters> mParameters;
-    VertexArray mVao;
 };
 
 } // namespace photopic

@@ -1,8 +1,16 @@
 // Debug views of the 3D inputs, shown as they are (never tone mapped): linear depth, view-space normals and
 // motion vectors, as the pipeline sees them after decoding, and the lighting stage's contact shadows.
+// A compute pass (8x8 groups, one pixel each, image store); with RAW the same values also go, unclamped, to an
+// RGBA32F image (what an EXR of a data view holds).
 #include "passes/common/inputs.h.glsl"
 
+layout(local_size_x = 8, local_size_y = 8) in;
+
 layout(binding = 0) uniform sampler2D uInput;
+layout(binding = 0, rgba8) uniform writeonly image2D uOutput;
+#ifdef RAW
+layout(binding = 1, rgba32f) uniform writeonly image2D uRaw;
+#endif
 
 // Mirrors photopic::DebugInputViewParameters (passes/debug/DebugViewPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform DebugInputViewParameters {
@@ -14,8 +22,6 @@ layout(std140, binding = BINDING_PARAMETERS) uniform DebugInputViewParameters {
     float uFar;
     float uMaxCoc; // pixels
 };
-
-layout(location = 0) out vec4 oColor;
 
 float segmentDistance(vec2 q, vec2 a, vec2 b) {
     vec2 ab = b - a;
@@ -54,8 +60,18 @@ float arrowCoverage(ivec2 p, ivec2 size) {
     return d < 0.6 ? 1.0 : 0.0;
 }
 
+void store(ivec2 p, vec4 value) {
+    imageStore(uOutput, p, value);
+#ifdef RAW
+    imageStore(uRaw, p, value);
+#endif
+}
+
 void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, imageSize(uOutput)))) {
+        return;
+    }
     ivec2 size = textureSize(uInput, 0);
     vec4 t = texelFetch(uInput, p, 0);
     vec3 c = vec3(0.0);
@@ -91,10 +107,10 @@ void main() {
     } else if (uView == 15) {
         // Screen-space reflections: the reflected radiance as it is (scene-referred) and the confidence in
         // alpha, so that an EXR of the view holds both.
-        oColor = t;
+        store(p, t);
         return;
     } else if (uView == 16) {
         c = t.rgb; // motion blur's neighbourhood maximum radius: x, y (pixels, y up), length
     }
-    oColor = vec4(c, 1.0);
+    store(p, vec4(c, 1.0));
 }

@@ -4,11 +4,15 @@
 // vertical markers in log2 scene luminance: the window's average (cyan), the luminance the target exposure
 // maps to the key value (green) and the one the current exposure maps to it (red). Binning as in
 // core/Metering.h.
+// A compute pass (8x8 groups, one pixel each, image store), like every full-screen pass.
 #include "passes/common/exposure.h.glsl"
 #include "passes/metering/metering.h.glsl"
 #include "passes/metering/metering_buffers.h.glsl"
 
+layout(local_size_x = 8, local_size_y = 8) in;
+
 layout(binding = 0) uniform sampler2D uDisplay;
+layout(binding = 0, rgba8) uniform writeonly image2D uOutput;
 
 // Mirrors photopic::HistogramOverlayParameters (passes/debug/DebugViewPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform HistogramOverlayParameters {
@@ -17,8 +21,6 @@ layout(std140, binding = BINDING_PARAMETERS) uniform HistogramOverlayParameters 
     float uLog2Max;
     float uKeyValue;
 };
-
-layout(location = 0) out vec4 oColor;
 
 // Panel x (0..1) of a log2 luminance: bin b spans [b, b + 1) / 256 and its centre is at (b + 0.5) / 256.
 float panelX(float log2L) {
@@ -32,9 +34,12 @@ bool nearMarker(float x, float markerX, float pixel) {
 }
 
 void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, imageSize(uOutput)))) {
+        return;
+    }
     vec3 c = texelFetch(uDisplay, p, 0).rgb;
-    vec2 local = (gl_FragCoord.xy - uPanel.xy) / uPanel.zw;
+    vec2 local = (vec2(p) + 0.5 - uPanel.xy) / uPanel.zw;
     if (all(greaterThanEqual(local, vec2(0.0))) && all(lessThan(local, vec2(1.0)))) {
         int bin = clamp(int(local.x * float(kHistogramBins)), 0, kHistogramBins - 1);
         float centre = histogramBinCentreLog2(bin, uLog2Min, uLog2Max);
@@ -61,5 +66,5 @@ void main() {
             c = vec3(1.0, 0.15, 0.1);
         }
     }
-    oColor = vec4(c, 1.0);
+    imageStore(uOutput, p, vec4(c, 1.0));
 }

@@ -3,12 +3,16 @@
 // Conventions (false-colour bands: blue ramp below 1, yellow >= 1, orange >= 2, magenta >= 4, white >= 8;
 // stops log2(Y exposure / 0.18), one colour per stop -6..+6, as in the EL Zone System); core/Metering.h for
 // the metering weights.
+// A compute pass (8x8 groups, one pixel each, image store), like every full-screen pass.
 #include "passes/common/color.h.glsl"
 #include "passes/common/exposure.h.glsl"
 #include "passes/common/sanitize.h.glsl"
 #include "passes/metering/metering.h.glsl"
 
+layout(local_size_x = 8, local_size_y = 8) in;
+
 layout(binding = 0) uniform sampler2D uScene;
+layout(binding = 0, rgba8) uniform writeonly image2D uOutput;
 layout(binding = 1) uniform sampler2D uMask;
 layout(binding = 2) uniform sampler2D uBloom;
 
@@ -23,8 +27,6 @@ layout(std140, binding = BINDING_PARAMETERS) uniform DebugSceneViewParameters {
     vec2 uSpotUv;
     float uSpotRadius;
 };
-
-layout(location = 0) out vec4 oColor;
 
 // Display colours (sRGB-encoded, written as they are).
 vec3 falseColor(float y) {
@@ -87,7 +89,10 @@ float meteringWeight(ivec2 texel, ivec2 size, float lum) {
 }
 
 void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, imageSize(uOutput)))) {
+        return;
+    }
     ivec2 size = textureSize(uScene, 0);
     vec3 scene = sanitize(texelFetch(uScene, p, 0).rgb);
     float lum = luma709(scene);
@@ -106,5 +111,5 @@ void main() {
     } else if (uView == 6 && uHasBloom != 0) {
         c = srgbEncode(sanitize(texelFetch(uBloom, p, 0).rgb));
     }
-    oColor = vec4(c, 1.0);
+    imageStore(uOutput, p, vec4(c, 1.0));
 }
