@@ -11,6 +11,7 @@ namespace photopic {
 namespace {
 
 std::atomic<std::uint64_t> gErrors{0};
+std::atomic<std::uint64_t> gPerformanceWarnings{0};
 
 void GLAPIENTRY onMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
                           const GLchar* message, const void*) {
@@ -21,6 +22,10 @@ void GLAPIENTRY onMessage(GLenum source, GLenum type, GLuint id, GLenum severity
     const std::string_view text(message,
                                 length < 0 ? std::char_traits<char>::length(message) : std::size_t(length));
     const bool error = type == GL_DEBUG_TYPE_ERROR || severity == GL_DEBUG_SEVERITY_HIGH;
+    if (type == GL_DEBUG_TYPE_PERFORMANCE &&
+        (severity == GL_DEBUG_SEVERITY_MEDIUM || severity == GL_DEBUG_SEVERITY_HIGH)) {
+        ++gPerformanceWarnings;
+    }
     if (error) {
         ++gErrors;
         logError("GL error (id {}): {}", id, text);
@@ -48,8 +53,12 @@ void installDebugOutput() {
 std::uint64_t glDebugErrorCount() {
     return gErrors.load();
 }
+std::uint64_t glDebugPerformanceWarningCount() {
+    return gPerformanceWarnings.load();
+}
 void resetGlDebugErrorCount() {
     gErrors = 0;
+    gPerformanceWarnings = 0;
 }
 
 } // namespace photopic

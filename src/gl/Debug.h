@@ -9,6 +9,10 @@ namespace photopic {
 void installDebugOutput();
 /// Number of GL_DEBUG_TYPE_ERROR / high-severity messages seen since start (or the last reset).
 std::uint64_t glDebugErrorCount();
+/// Number of GL_DEBUG_TYPE_PERFORMANCE messages of medium or high severity since start (or the last reset):
+/// the driver saying that it moves or copies memory, recompiles a shader or stalls because of how it is used.
+std::uint64_t glDebugPerformanceWarningCount();
+/// Resets both counts.
 void resetGlDebugErrorCount();
 
 } // namespace photopic

@@ -1,6 +1,9 @@
 #pragma once
 // GL test fixture: one headless context per test process (made in main), any GL debug error during a test
-// fails it, and a test skips -- with the reason -- only when no context could be made.
+// fails it, and a test skips -- with the reason -- only when no context could be made. On NVIDIA's driver a
+// performance warning fails the test too: it reports memory moved between the GPU and the host, shader
+// recompiles and stalls, which a frame must never cause (other drivers' warnings are logged only: Mesa's
+// software renderer reports its own fallbacks that say nothing of a GPU).
 
 #include "gl/Context.h"
 #include "gl/Debug.h"
@@ -26,6 +29,10 @@ protected:
     void TearDown() override {
         if (glContext()) {
             EXPECT_EQ(glDebugErrorCount(), 0u) << "GL debug errors were raised during the test (see log)";
+            if (glContext()->info().vendor.find("NVIDIA") != std::string::npos) {
+                EXPECT_EQ(glDebugPerformanceWarningCount(), 0u)
+                    << "the driver raised performance warnings during the test (see log)";
+            }
         }
     }
 };

@@ -26,6 +26,15 @@ int meteringModeIndex(MeteringPass::Weights w) {
     return -1; // the metering dispatch computes no partials
 }
 
+/// The header every frame's metering starts from (an empty min/max), copied on the GPU into the working
+/// buffer: a working buffer the CPU rewrites every frame is one a driver may move to host memory.
+Buffer meteringResetBuffer() {
+    GpuMeteringHeader header;
+    header.minBits = 0xffffffffu;
+    return Buffer(
+        {.size = sizeof(header), .flags = 0, .data = &header, .debugName = "metering header reset"});
+}
+
 } // namespace
 
 MeteringPass::MeteringPass()
@@ -33,7 +42,8 @@ MeteringPass::MeteringPass()
     , mReduce(makeComputeProgram("passes/metering/metering_reduce.comp.glsl", bindingDefines()))
     , mMeterParameters("metering parameters")
     , mReduceParameters("metering reduce parameters")
-    , mHistogram({.size = kGpuHistogramBytes, .flags = 0, .data = nullptr, .debugName = "histogram bins"}) {}
+    , mHistogram({.size = kGpuHistogramBytes, .flags = 0, .data = nullptr, .debugName = "histogram bins"})
+    , mMeteringReset(meteringResetBuffer()) {}
 
 std::span<const ResourceUse> MeteringPass::uses() const {
     static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
@@ -115,25 +125,24 @@ void MeteringPass::resize(Extent extent) {
     mGroupsY = (extent.height + kGroupSize - 1) / kGroupSize;
     const std::size_t bytes =
         sizeof(GpuMeteringHeader) + std::size_t(mGroupsX) * std::size_t(mGroupsY) * 2 * sizeof(float);
-    mMetering = Buffer(
-        {.size = bytes, .flags = GL_DYNAMIC_STORAGE_BIT, .data = nullptr, .debugName = "metering partials"});
+    mMetering = Buffer({.size = bytes, .flags = 0, .data = nullptr, .debugName = "metering partials"});
 }
 
 MeteringPass::Outputs MeteringPass::execute(const Inputs& in) noexcept {
     const Extent e = mExtent;
     const bool weighted = in.weights != Weights::None && in.weights != Weights::Spot;
-    const double bytes = double(e.width) * e.height * bytesPerTexel(in.scene->format());
+    // One read of the image, when anything is metered; otherwise the frame only clears the bins.
+    const bool meters = in.histogram || in.weights != Weights::None;
+    const double bytes = meters ? double(e.width) * e.height * bytesPerTexel(in.scene->format()) : 0.0;
     DebugGroup group("metering");
     ScopedGpuTimer timer(in.timers, "metering", bytes);
 
     // Every frame starts from empty bins (nothing carries over between frames) and an empty min/max.
     const std::uint32_t zero = 0;
     glClearNamedBufferData(mHistogram.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    GpuMeteringHeader header;
-    header.minBits = 0xffffffffu;
-    mMetering.update(&header, sizeof(header));
+    glCopyNamedBufferSubData(mMeteringReset.id(), mMetering.id(), 0, 0, sizeof(GpuMeteringHeader));
 
-    if (!in.histogram && in.weights == Weights::None) {
+    if (!meters) {
         return outputs(); // nothing is metered: the bins stay empty
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingHistogram, mHistogram.id());

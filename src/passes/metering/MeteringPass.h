@@ -86,6 +86,7 @@ private:
     ParameterBlock<MeteringReduceParameters> mReduceParameters;
     Buffer mHistogram;
     Buffer mMetering;
+    Buffer mMeteringReset; ///< the header each frame starts from (copied on the GPU)
     Texture mMask;
     std::string mMaskPath;
     Extent mExtent;

@@ -2,8 +2,8 @@
 // The canvas scene's CPU-side content: a painting (linear colour) and its material map (encoding in
 // CanvasMaterial.h), either procedural or loaded from files, always at the render size.
 
-#include "scenes/canvas/CanvasMaterial.h"
 #include "core/Image.h"
+#include "scenes/canvas/CanvasMaterial.h"
 
 #include <cstdint>
 #include <filesystem>

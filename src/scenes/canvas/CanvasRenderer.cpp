@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 #include <vector>
 
@@ -37,8 +38,8 @@ CanvasRenderer::CanvasRenderer()
     : mTilesProgram(makeComputeProgram("scenes/canvas/canvas_tiles.comp.glsl", defines(false, false)))
     , mFullscreenProgram(makeComputeProgram("scenes/canvas/canvas_shade.comp.glsl", defines(false, true)))
     , mTiledSpecularProgram(makeComputeProgram("scenes/canvas/canvas_shade.comp.glsl", defines(true, true)))
-    , mTiledDiffuseProgram(makeComputeProgram("scenes/canvas/canvas_shade.comp.glsl", defines(true, false))) {
-}
+    , mTiledDiffuseProgram(makeComputeProgram("scenes/canvas/canvas_shade.comp.glsl", defines(true, false)))
+    , mTileCountReadback(sizeof(GpuTileListsHeader), 1, "canvas tile count") {}
 
 void CanvasRenderer::setCanvas(const CanvasImages& images, int tileSize) {
     if (tileSize < kGroupSize || tileSize > 1024 || tileSize % kGroupSize != 0) {
@@ -97,8 +98,13 @@ void CanvasRenderer::setCanvas(const CanvasImages& images, int tileSize) {
     glDispatchCompute(GLuint(grid.tilesX), GLuint(grid.tilesY), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 
+    // Through a mapped copy, not glGetNamedBufferSubData: reading a GPU-written buffer directly makes a
+    // driver move it to host memory (NVIDIA says so in a performance warning), slowing every later dispatch.
+    mTileCountReadback.enqueue(mTileLists, 0, 0);
     GpuTileListsHeader counted{};
-    glGetNamedBufferSubData(mTileLists.id(), 0, sizeof(counted), &counted);
+    for (const ReadbackRing::Result& r : mTileCountReadback.drain()) {
+        std::memcpy(&counted, r.bytes.data(), sizeof(counted));
+    }
     mOccupiedTiles = int(counted.occupiedArgs[2]);
 }
 

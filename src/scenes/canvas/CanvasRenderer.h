@@ -3,10 +3,11 @@
 // directly): uploads a canvas, builds the tile occupancy (which tiles hold material) and tile lists on the
 // GPU, and shades a frame into an RGBA16F scene-linear target either tile by tile or full screen.
 
-#include "scenes/canvas/CanvasMaterial.h"
 #include "gl/GpuTimers.h"
 #include "gl/Objects.h"
+#include "gl/ReadbackRing.h"
 #include "scenes/canvas/CanvasImages.h"
+#include "scenes/canvas/CanvasMaterial.h"
 
 #include <array>
 #include <span>
@@ -65,6 +66,7 @@ private:
     Texture mMaterial;
     Texture mOutput;
     Buffer mTileLists;
+    ReadbackRing mTileCountReadback; ///< the header with the occupied count, read once per canvas
     TileGrid mGrid;
     int mOccupiedTiles = 0;
 };

@@ -18,9 +18,9 @@ struct CanvasSceneSettings {
     int tileSize = 256;                           ///< px, [16, 1024], multiple of 16, default 256
     float occupancy = 0.5f; ///< [0, 1], default 0.5: fraction of tiles given material (procedural material)
     int seed = 3;           ///< [0, 1000000], default 3: the painting's strokes, glitter facets and tiles
-    float lightIntensity = 1.0f; ///< scene-linear, [0, 1000], default 1: the lamp
-    float ambient = 0.25f;       ///< [0, 10], default 0.25: fill light, a fraction of the lamp
-    float specular = 0.6f;       ///< [0, 100], default 0.6: Blinn-Phong strength ks
+    float lightIntensity = 1.0f;  ///< scene-linear, [0, 1000], default 1: the lamp
+    float ambient = 0.25f;        ///< [0, 10], default 0.25: fill light, a fraction of the lamp
+    float specular = 0.6f;        ///< [0, 100], default 0.6: Blinn-Phong strength ks
     float sparkleExposure = 4.0f; ///< [0, 1000], default 4: exposure on the sparkle (>1 at the peak)
     float viewDistance = 1.5f; ///< image heights, [0.1, 100], default 1.5: eye in front of the canvas centre
     float sweepPeriod = 6.0f;  ///< s, [0.1, 600], default 6: scripted tilt's roll period (pitch: 1.5x)
