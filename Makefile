@@ -30,13 +30,14 @@ test: build
 	cmake --build build/example -j$(JOBS)
 	build/example/photopic_minimal
 
-# On Mesa llvmpipe a 1080p frame takes ~0.15 s, so the whole target runs in about a minute there; read the timer
-# query columns on a GPU and the --sync / wall+finish columns on llvmpipe (apps/cli/Bench.cpp explains why).
-BENCH_FRAMES ?= 60
+# The per-pass tables at 720p, 1080p, 4K and 8K, each beside the same run's copy reference, and the scaling
+# summary, into out/bench/ (scripts/bench-table.sh). On Mesa llvmpipe a 1080p frame takes ~0.15 s, so the
+# target takes a few minutes there; read the timer query columns on a GPU (apps/cli/Bench.cpp explains why).
+BENCH_FRAMES ?= 20
 bench: build
 	@if [ -x build/release/bench/photopic_bench ]; then build/release/bench/photopic_bench; else echo "no benchmarks yet"; fi
-	build/release/photopic bench --size 1920x1080 --frames $(BENCH_FRAMES)
-	build/release/photopic bench --scene canvas --size 1920x1080 --frames $(BENCH_FRAMES)
+	scripts/bench-table.sh build/release/photopic $(BENCH_FRAMES)
+	build/release/photopic bench --scene canvas --size 1920x1080 --frames $(BENCH_FRAMES) --json out/bench/canvas.json
 
 # Fuzzing (fuzz/): libFuzzer + ASan/UBSan harnesses built by clang in their own tree, each run for FUZZ_SECONDS
 # on one core. The committed corpus also runs in `make test` (photopic_fuzz_corpus_tests), with any compiler.

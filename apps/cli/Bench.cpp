@@ -18,6 +18,8 @@
 #include "core/settings/SettingsJson.h"
 #include "gl/Capabilities.h"
 #include "gl/Context.h"
+#include "gl/GpuTimers.h"
+#include "gl/ShaderLibrary.h"
 #include "gl/TextureIo.h"
 #include "io/ImageIO.h"
 #include "pipeline/Pipeline.h"
@@ -326,6 +328,73 @@ private:
     Camera mCamera;
 };
 
+/// The bandwidth reference measured in the same run: a compute copy of a texture of the frame's format and
+/// size into another, timed as the passes are (GPU timestamps around each copy after a warm-up, collected
+/// every frame), its output checked against its input.
+struct CopyReference {
+    std::string format; ///< GLSL image format of the copy
+    double medianMs = 0;
+    double bytes = 0; ///< read + written per copy
+    [[nodiscard]] double gbPerSecond() const { return medianMs > 0 ? bytes / (medianMs * 1e6) : 0.0; }
+};
+
+/// GLSL image format qualifier of the formats a frame comes in.
+std::string imageFormatName(GLenum format) {
+    switch (format) {
+    case GL_RGBA32F:
+        return "rgba32f";
+    case GL_RGBA8:
+        return "rgba8";
+    default:
+        return "rgba16f";
+    }
+}
+
+CopyReference measureCopy(int width, int height, GLenum format, const BenchOptions& options) {
+    const GLenum kFormat = format == GL_RGBA32F || format == GL_RGBA8 ? format : GL_RGBA16F;
+    const std::string name = imageFormatName(kFormat);
+    const Program program = makeComputeProgram("gl/bandwidth_copy.comp.glsl", {{"FORMAT", name}});
+    const Texture source({.extent = {width, height}, .format = kFormat, .debugName = "bench copy source"});
+    const Texture target({.extent = {width, height}, .format = kFormat, .debugName = "bench copy target"});
+    const float value[4] = {0.25f, 0.5f, 0.75f, 1.0f};
+    glClearTexImage(source.id(), 0, GL_RGBA, GL_FLOAT, value);
+    const auto copy = [&] {
+        program.use();
+        glBindTextureUnit(0, source.id());
+        glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
+        dispatchPixels({width, height});
+        imageWriteBarrier();
+    };
+    CopyReference r{.format = name, .bytes = 2.0 * double(width) * height * bytesPerTexel(kFormat)};
+    for (int i = 0; i < options.warmup; ++i) {
+        copy();
+    }
+    GpuTimers timers;
+    timers.setSynchronous(options.sync);
+    std::vector<double> ms;
+    for (int i = 0; i < options.frames; ++i) {
+        timers.beginFrame();
+        {
+            ScopedGpuTimer timer(&timers, "copy", r.bytes);
+            copy();
+        }
+        timers.endFrame();
+        for (const auto& frame : timers.drain()) {
+            for (const PassTiming& t : frame) {
+                ms.push_back(options.sync ? t.wallMs : t.gpuMs);
+            }
+        }
+    }
+    // A copy that did not copy would make every fraction meaningless.
+    const ImageF out = readTextureF(target);
+    const auto near = [](float a, float b) { return std::abs(a - b) <= 0.5f / 255.0f; }; // RGBA8 rounding
+    if (out.rgba.empty() || !near(out.rgba[0], value[0]) || !near(out.rgba[out.rgba.size() - 2], value[2])) {
+        throw std::runtime_error("bench: the bandwidth reference copy did not reproduce its input");
+    }
+    r.medianMs = median(ms);
+    return r;
+}
+
 /// Per-pass timings over the measured frames, passes in the order they first ran.
 struct PassSamples {
     std::vector<std::string> order;
@@ -360,10 +429,13 @@ struct PassTable {
     double totalBytes = 0, totalMs = 0, totalWallMs = 0;
 };
 
-/// The per-pass table on stdout: median GPU time, bytes moved, bandwidth (and wall time with --sync).
-PassTable printPassTable(const BenchOptions& options, PassSamples& samples) {
-    std::printf("%-36s %12s %12s %10s%s\n", "pass", "median ms", "MB moved", "GB/s",
+/// The per-pass table on stdout: median GPU time, bytes moved, bandwidth and its fraction of the same run's
+/// copy (and wall time with --sync).
+PassTable printPassTable(const BenchOptions& options, PassSamples& samples, const CopyReference& copy) {
+    std::printf("%-36s %12s %12s %10s %8s%s\n", "pass", "median ms", "MB moved", "GB/s", "of copy",
                 options.sync ? "      wall ms" : "");
+    const double copyGbps = copy.gbPerSecond();
+    const auto fractionOf = [copyGbps](double gbps) { return copyGbps > 0 ? gbps / copyGbps : 0.0; };
     PassTable table{.passes = nlohmann::json::array()};
     double& totalBytes = table.totalBytes;
     for (const auto& name : samples.order) {
@@ -375,20 +447,23 @@ PassTable printPassTable(const BenchOptions& options, PassSamples& samples) {
                               {"medianGpuMs", ms},
                               {"bytesMoved", b},
                               {"gbPerSecond", gbps},
+                              {"fractionOfCopy", fractionOf(gbps)},
                               {"samples", samples.times[name].size()}};
+        std::printf("%-36s %12.3f %12.2f %10.2f %7.0f%%", name.c_str(), ms, b / 1e6, gbps,
+                    100.0 * fractionOf(gbps));
         if (options.sync) {
             const double wall = median(samples.walls[name]);
-            std::printf("%-36s %12.3f %12.2f %10.2f %12.3f\n", name.c_str(), ms, b / 1e6, gbps, wall);
+            std::printf(" %12.3f", wall);
             row["medianWallMs"] = wall;
-        } else {
-            std::printf("%-36s %12.3f %12.2f %10.2f\n", name.c_str(), ms, b / 1e6, gbps);
         }
+        std::printf("\n");
         table.passes.push_back(row);
     }
     const double totalMs = table.totalMs = median(samples.totals);
     const double totalWallMs = table.totalWallMs = median(samples.wallTotals);
-    std::printf("%-36s %12.3f %12.2f %10.2f", "total (median of frame sums)", totalMs, totalBytes / 1e6,
-                totalMs > 0 ? totalBytes / (totalMs * 1e6) : 0.0);
+    const double totalGbps = totalMs > 0 ? totalBytes / (totalMs * 1e6) : 0.0;
+    std::printf("%-36s %12.3f %12.2f %10.2f %7.0f%%", "total (median of frame sums)", totalMs,
+                totalBytes / 1e6, totalGbps, 100.0 * fractionOf(totalGbps));
     if (options.sync) {
         std::printf(" %12.3f", totalWallMs);
     }
@@ -458,7 +533,11 @@ int runBench(const BenchOptions& options) {
                     "timestamps and into a later pass's: run with --sync for per-pass wall times\n",
                     info.renderer.c_str());
     }
-    const PassTable table = printPassTable(options, samples);
+    const CopyReference copy = measureCopy(image.width, image.height, input.format(), options);
+    std::printf("bandwidth reference: %s copy %dx%d, %.3f ms, %.2f MB, %.2f GB/s (%s)\n", copy.format.c_str(),
+                image.width, image.height, copy.medianMs, copy.bytes / 1e6, copy.gbPerSecond(),
+                options.sync ? "wall ms with glFinish" : "GPU timestamps");
+    const PassTable table = printPassTable(options, samples, copy);
     const nlohmann::json& passesJson = table.passes;
     const double totalBytes = table.totalBytes, totalMs = table.totalMs, totalWallMs = table.totalWallMs;
 
@@ -469,6 +548,14 @@ int runBench(const BenchOptions& options) {
             {"frames", options.frames},
             {"warmup", options.warmup},
             {"renderer", info.renderer},
+            {"vendor", info.vendor},
+            {"driver", info.version},
+            {"platform", info.platform},
+            {"copyReference",
+             {{"format", copy.format},
+              {"medianMs", copy.medianMs},
+              {"bytesMoved", copy.bytes},
+              {"gbPerSecond", copy.gbPerSecond()}}},
             {"colourPath", t.path == ColorPath::Hdr ? "hdr" : "ldr"},
             {"colourPathReason", t.pathReason},
             {"quality", std::string(qualityNames()[std::size_t(t.quality)])},

@@ -158,8 +158,9 @@ void ContactShadowsPass::execute(FrameContext& ctx, FrameResources& resources) {
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     glBindSampler(2, 0);
     {
-        // One surface texel per step, then the result.
-        ScopedGpuTimer timer(ctx.timers, "contact shadows", texels * (16.0 + s.steps * 16.0 + 2.0));
+        // The surfaces read once from memory (a short march stays in the cache), the result written (and the
+        // steps view).
+        ScopedGpuTimer timer(ctx.timers, "contact shadows", texels * (16.0 + 2.0 + (steps ? 1.0 : 0.0)));
         mMarch.use();
         glBindTextureUnit(3, surface.id());
         glBindImageTexture(0, raw.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);

@@ -91,7 +91,6 @@ void DofPass::execute(FrameContext& ctx, FrameResources& resources) {
 
     const double texels = double(e.width) * e.height;
     const double halfTexels = double(half.width) * half.height;
-    const double samples = 1.0 + 4.0 * p.rings * (p.rings + 1);
     {
         ScopedGpuTimer timer(ctx.timers, "dof coc", texels * (4.0 + 2.0));
         mCoc.use();
@@ -124,7 +123,8 @@ void DofPass::execute(FrameContext& ctx, FrameResources& resources) {
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
-        ScopedGpuTimer timer(ctx.timers, "dof far", halfTexels * (samples * 8.0 + 8.0));
+        // The half-resolution field read once from memory (the disc's taps hit the cache), the blur written.
+        ScopedGpuTimer timer(ctx.timers, "dof far", halfTexels * (8.0 + 8.0));
         mFar.use();
         glBindTextureUnit(0, farField.id());
         glBindTextureUnit(1, tileReach.id());
@@ -132,7 +132,7 @@ void DofPass::execute(FrameContext& ctx, FrameResources& resources) {
         glDispatchCompute(groups(half.width), groups(half.height), 1);
     }
     {
-        ScopedGpuTimer timer(ctx.timers, "dof near", halfTexels * (samples * 8.0 + 8.0));
+        ScopedGpuTimer timer(ctx.timers, "dof near", halfTexels * (8.0 + 8.0));
         mNear.use();
         glBindTextureUnit(0, nearField.id());
         glBindTextureUnit(1, tileReach.id());

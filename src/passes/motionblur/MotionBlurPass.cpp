@@ -115,9 +115,10 @@ void MotionBlurPass::execute(FrameContext& ctx, FrameResources& resources) {
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
-        // Per sample: colour, velocity and depth; then the result (and the view).
+        // Colour, velocity and depth, each read once from memory (the samples along a streak hit the cache),
+        // the result (and the view) written.
         ScopedGpuTimer timer(ctx.timers, "motion blur gather",
-                             texels * (s.sampleCount * (8.0 + 4.0 + 4.0) + 8.0 + (writeTiles ? 8.0 : 0.0)));
+                             texels * (8.0 + 4.0 + 4.0 + 8.0 + (writeTiles ? 8.0 : 0.0)));
         mGather.use();
         glBindTextureUnit(0, resources.texture(Resource::SceneColor)->id());
         glBindTextureUnit(1, velocity.id());

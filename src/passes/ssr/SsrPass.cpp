@@ -196,9 +196,11 @@ void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
     glBindTextureUnit(1, normals ? normals->id() : depth.id());
     glBindTextureUnit(2, material ? material->id() : depth.id());
     {
-        // Depth, normal and material at the origin; about one pyramid texel per step, a few dozen steps on
-        // average (an estimate: the real count depends on the scene); the hit out.
-        ScopedGpuTimer timer(ctx.timers, "ssr trace", tracePixels * (4.0 + 8.0 + 8.0 + 32.0 * 4.0 + 16.0));
+        // Depth, normal and material at the origin, the pyramid (4/3 of a full-resolution R32F) read once
+        // from memory, the hit written.
+        const double inputs =
+            pixels * (4.0 + (normals ? 8.0 : 0.0) + (material ? 8.0 : 0.0) + 4.0 * 4.0 / 3.0);
+        ScopedGpuTimer timer(ctx.timers, "ssr trace", inputs + tracePixels * 16.0);
         mTrace.use();
         glBindTextureUnit(3, pyramid.id());
         glBindImageTexture(0, hits.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
@@ -206,8 +208,11 @@ void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
-        // The hit, the scene colour at the pixel and at the hit, the history, motion, material; two outputs.
-        ScopedGpuTimer timer(ctx.timers, "ssr resolve", pixels * (16.0 + 8.0 + 8.0 + 8.0 + 4.0 + 8.0 + 16.0));
+        // The hits, the scene colour, the history, motion and material where present, each once; two outputs.
+        ScopedGpuTimer timer(ctx.timers, "ssr resolve",
+                             tracePixels * 16.0 +
+                                 pixels * (8.0 + (history ? 8.0 : 0.0) + (motion ? 4.0 : 0.0) +
+                                           (material ? 8.0 : 0.0) + 16.0));
         mResolve.use();
         glBindTextureUnit(1, scene.id());
         glBindTextureUnit(2, history ? history->id() : scene.id());
