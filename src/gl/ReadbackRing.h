@@ -6,6 +6,7 @@
 
 #include "gl/Objects.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -60,6 +61,10 @@ public:
 
     [[nodiscard]] int inFlight() const;
     [[nodiscard]] std::uint64_t dropped() const { return mDropped; }
+    /// True when every slot is in flight: the next enqueue() would be dropped.
+    [[nodiscard]] bool full() const {
+        return std::all_of(mSlots.begin(), mSlots.end(), [](const Slot& s) { return s.busy; });
+    }
     [[nodiscard]] int slotCount() const { return int(mSlots.size()); }
 
 private:

@@ -100,6 +100,14 @@ void ExposurePass::execute(FrameContext& ctx, FrameResources& resources) {
     glCopyNamedBufferSubData(histogram.id(), mRecord.id(), 0, sizeof(GpuExposureState),
                              GLsizeiptr(kGpuHistogramBytes));
     pollTelemetry(); // frees finished slots first
+    if (mKeepHistory && mRing.full()) {
+        // Every frame's record is wanted (a telemetry file, a test): when the CPU runs a whole ring ahead of
+        // the GPU (a GPU does; a software renderer finishes each frame as it is flushed), wait for the frames
+        // in flight rather than drop this one.
+        for (const auto& r : mRing.drain()) {
+            keep(decodeTelemetry(r.tag, r.bytes));
+        }
+    }
     mRing.enqueue(mRecord, 0, ctx.time.frameIndex);
 }
 
