@@ -165,7 +165,9 @@ GlStateScope::~GlStateScope() {
     glBindBuffer(GL_COPY_WRITE_BUFFER, GLuint(mCopyWriteBuffer));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, GLuint(mDispatchIndirectBuffer));
     glBindVertexArray(GLuint(mVertexArray));
-    glUseProgram(GLuint(mProgram));
+    // A host may delete its current program and then call us: GL keeps it alive only while it is current,
+    // so once our passes have used their own programs the name is gone and restoring it is an error.
+    glUseProgram(mProgram != 0 && glIsProgram(GLuint(mProgram)) ? GLuint(mProgram) : 0u);
     glBindProgramPipeline(GLuint(mProgramPipeline));
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(mDrawFramebuffer));
     glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(mReadFramebuffer));
