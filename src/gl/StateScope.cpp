@@ -138,10 +138,14 @@ GlStateScope::~GlStateScope() {
     glPixelStorei(GL_UNPACK_ALIGNMENT, mUnpackAlignment);
     glPixelStorei(GL_PACK_ROW_LENGTH, mPackRowLength);
     glPixelStorei(GL_UNPACK_ROW_LENGTH, mUnpackRowLength);
+    // A texture or sampler deleted while the scope was open (a pipeline texture the host had bound, freed
+    // by the pipeline) is unbound by GL on deletion: rebinding its name would be an error, 0 is what GL left.
     for (int unit = 0; unit < kUnits; ++unit) {
         glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-        glBindTexture(GL_TEXTURE_2D, GLuint(mTextures[unit]));
-        glBindSampler(GLuint(unit), GLuint(mSamplers[unit]));
+        const auto texture = GLuint(mTextures[unit]);
+        glBindTexture(GL_TEXTURE_2D, texture != 0 && glIsTexture(texture) ? texture : 0u);
+        const auto sampler = GLuint(mSamplers[unit]);
+        glBindSampler(GLuint(unit), sampler != 0 && glIsSampler(sampler) ? sampler : 0u);
         const ImageUnit& image = mImages[unit];
         if (image.name != 0 && glIsTexture(GLuint(image.name))) {
             glBindImageTexture(GLuint(unit), GLuint(image.name), image.level, GLboolean(image.layered),
