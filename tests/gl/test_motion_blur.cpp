@@ -210,6 +210,39 @@ double rmseOverMean(const ImageF& a, const ImageF& truth, const std::vector<bool
     return sum > 0.0 ? std::sqrt(err / double(n)) / (sum / double(n)) : 0.0;
 }
 
+/// Channels that differ between `a` and `b` over the pixels farther than the longest blur radius (180
+/// degrees: a quarter of the longest motion, plus a pixel) from any motion in `motion` (UV); `count` gets
+/// how many such pixels there are.
+long changedWhereNoMotionReaches(const ImageF& motion, const ImageF& a, const ImageF& b, long* count) {
+    const int w = motion.width, h = motion.height;
+    float longest = 0.0f;
+    for (int i = 0; i < w * h; ++i) {
+        longest = std::max(longest, std::hypot(motion.rgba[std::size_t(i) * 4] * float(w),
+                                               motion.rgba[std::size_t(i) * 4 + 1] * float(h)));
+    }
+    const int reach = int(std::ceil(0.25f * longest)) + 1;
+    long changed = 0;
+    *count = 0;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            bool near = false;
+            for (int dy = -reach; dy <= reach && !near; ++dy) {
+                for (int dx = -reach; dx <= reach && !near; ++dx) {
+                    const float* m = motion.at(std::clamp(x + dx, 0, w - 1), std::clamp(y + dy, 0, h - 1));
+                    near = m[0] != 0.0f || m[1] != 0.0f;
+                }
+            }
+            if (!near) {
+                ++*count;
+                for (int ch = 0; ch < 4; ++ch) {
+                    changed += a.at(x, y)[ch] != b.at(x, y)[ch] ? 1 : 0;
+                }
+            }
+        }
+    }
+    return changed;
+}
+
 } // namespace
 
 // Against the ray tracer's shutter truth (160x90): an object moving fast over a still background, and a
@@ -264,31 +297,8 @@ TEST_F(GlTest, MotionBlurMatchesTheShutterTruth) {
         EXPECT_LE(error, c.bound) << c.name;
         EXPECT_LT(error, 0.5 * baseline) << c.name;
 
-        // Still pixels farther than the longest blur radius (plus a pixel) from any motion keep their value.
-        float longest = 0.0f;
-        for (int i = 0; i < kW * kH; ++i) {
-            longest = std::max(longest, std::hypot(motion.rgba[std::size_t(i) * 4] * kW,
-                                                   motion.rgba[std::size_t(i) * 4 + 1] * kH));
-        }
-        const int reach = int(std::ceil(0.25f * longest)) + 1;
-        long unreached = 0, changed = 0;
-        for (int y = 0; y < kH; ++y) {
-            for (int x = 0; x < kW; ++x) {
-                bool near = false;
-                for (int dy = -reach; dy <= reach && !near; ++dy) {
-                    for (int dx = -reach; dx <= reach && !near; ++dx) {
-                        const int qx = std::clamp(x + dx, 0, kW - 1), qy = std::clamp(y + dy, 0, kH - 1);
-                        near = motion.at(qx, qy)[0] != 0.0f || motion.at(qx, qy)[1] != 0.0f;
-                    }
-                }
-                if (!near) {
-                    ++unreached;
-                    for (int ch = 0; ch < 4; ++ch) {
-                        changed += blurred.at(x, y)[ch] != sharp.at(x, y)[ch] ? 1 : 0;
-                    }
-                }
-            }
-        }
+        long unreached = 0;
+        const long changed = changedWhereNoMotionReaches(motion, blurred, sharp, &unreached);
         std::printf("  %ld pixels no motion reaches, %ld channels of them changed\n", unreached, changed);
         EXPECT_EQ(changed, 0) << c.name;
 
