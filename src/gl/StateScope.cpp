@@ -159,6 +159,8 @@ GlStateScope::~GlStateScope() {
     glPixelStorei(GL_UNPACK_ALIGNMENT, mUnpackAlignment);
     glPixelStorei(GL_PACK_ROW_LENGTH, mPackRowLength);
     glPixelStorei(GL_UNPACK_ROW_LENGTH, mUnpackRowLength);
+    // A texture or sampler deleted while the scope was open (a pipeline texture the host had bound, freed
+    // by the pipeline) is unbound by GL on deletion: rebinding its name would be an error, 0 is what GL left.
     for (int unit = 0; unit < kUnits; ++unit) {
         glActiveTexture(GLenum(GL_TEXTURE0 + unit));
         glBindTexture(GL_TEXTURE_2D, mTextures[unit] != 0 && glIsTexture(GLuint(mTextures[unit]))
@@ -194,6 +196,8 @@ GlStateScope::~GlStateScope() {
     glBindBuffer(GL_COPY_WRITE_BUFFER, alive(mCopyWriteBuffer, isBuffer));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, alive(mDispatchIndirectBuffer, isBuffer));
     glBindVertexArray(mVertexArray != 0 && glIsVertexArray(GLuint(mVertexArray)) ? GLuint(mVertexArray) : 0);
+    // A host may delete its current program and then call us: GL keeps it alive only while it is current,
+    // so once our passes have used their own programs the name is gone and restoring it is an error.
     glUseProgram(mProgram != 0 && glIsProgram(GLuint(mProgram)) ? GLuint(mProgram) : 0);
     glBindProgramPipeline(mProgramPipeline != 0 && glIsProgramPipeline(GLuint(mProgramPipeline))
                               ? GLuint(mProgramPipeline)

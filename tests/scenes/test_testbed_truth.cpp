@@ -144,6 +144,21 @@ TEST(TestbedTruth, ShutterWithNoMotionEqualsColourAndDiffersWithMotion) {
     EXPECT_GT(rmse(renderTruth(TruthKind::Shutter, o), renderTruth(TruthKind::Color, o)), 1e-3);
 }
 
+// shutterTimes instants per position: at the pixel centre (samples = 1), still, it is the rasteriser's colour
+// exactly; moving, it differs, and one instant per position (the default) is the frame's still colour.
+TEST(TestbedTruth, ShutterTimesAtThePixelCentre) {
+    TruthOptions o = options(10, 64, 36);
+    o.samples = 1;
+    o.shutterTimes = 16;
+    o.times = frameTimes(10, kDt, {0.3, 0.0}, {0.3, 0.0});
+    EXPECT_EQ(renderTruth(TruthKind::Shutter, o).rgba, renderTruth(TruthKind::Color, o).rgba);
+    o.times = frameTimes(10, kDt);
+    const ImageF colour = renderTruth(TruthKind::Color, o);
+    EXPECT_GT(rmse(renderTruth(TruthKind::Shutter, o), colour), 1e-3);
+    o.shutterTimes = 1;
+    EXPECT_EQ(renderTruth(TruthKind::Shutter, o).rgba, colour.rgba);
+}
+
 TEST(TestbedTruth, ThinLensAtF256IsThePinholeAndBlursWhenOpen) {
     TruthOptions o = options(10, 64, 36);
     o.samples = 4;

@@ -4,8 +4,9 @@
 // Guertin, McGuire and Nowrouzezahrai 2014, "A Fast and Stable Feature-Aware Motion Blur Filter". Four
 // dispatches: prepare (motion to blur radius in pixels over the shutter, clamped), tile maximum,
 // neighbourhood maximum, and the gather along the neighbourhood's dominant velocity, which composites front
-// to back: samples nearer than the pixel cover it by the share of their streak that reaches it, the pixel's
-// own layer fills the rest, and what its own motion uncovers comes from the samples behind it.
+// to back: samples nearer than the pixel cover it by the share of their streak that reaches it, and the
+// pixel's own layer fills the rest: the points its own streak sweeps (its surface, what its motion uncovers
+// behind it, and its own colour where a still nearer surface hides where it comes from).
 
 #include "passes/FramePass.h"
 

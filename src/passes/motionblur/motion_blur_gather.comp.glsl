@@ -2,13 +2,20 @@
 // Filter for Plausible Motion Blur" (samples along the neighbourhood's longest velocity, classified by depth)
 // and Guertin, McGuire and Nowrouzezahrai 2014, "A Fast and Stable Feature-Aware Motion Blur Filter"
 // (per-pixel jittered sample positions). The weights here are coverage rather than the paper's cones: the
-// N samples spread over the streak [-vmax, vmax], so each stands for `spacing` = 2 |vmax| / N pixels of it,
-// and a sample Y whose own streak (radius rY) reaches this pixel X covers it for spacing / (2 rY) of the
-// shutter. The pixel's colour is then composited front to back:
-//   samples nearer than X cover it by their summed coverage (at most all of it);
-//   X's own surface fills the rest: still, its colour; moving, the samples of its own depth that reach it
-//   (itself among them), and for the share of the shutter its surface has moved off X, the samples behind
-//   it within X's own streak (what its motion uncovers).
+// N samples spread evenly over the streak [-vmax, vmax], each standing for `spacing` = 2 |vmax| / N pixels
+// of it, and a sample at distance d whose own streak (radius rY) reaches this pixel X covers X for
+// spacing / (2 rY) of the shutter. d is the distance of the point the sample stands for, not of its pixel's
+// centre: the nearest-pixel lookup already gives a streak's end pixels their partial share, and weighing
+// them down again by their centres' distance made every streak half a pixel short of motion x shutter.
+// The pixel is composited front to back:
+//   samples nearer than X that reach it cover it by their summed coverage (at most all of it);
+//   X's own layer fills the rest. Still, that is its colour. Moving, X sees over the shutter the points its
+//   streak sweeps, the samples within rX of it, each for an equal share: a sample at X's depth is its
+//   surface there, one behind it is what X's motion uncovers, and a nearer one that does not reach X hides
+//   X's surface there, which is taken to go on behind it (X's colour: an object moving out from behind a
+//   still one keeps its colour). A nearer sample that reaches X is left out of the layer, since X's layer is
+//   not seen while it covers X; so when every velocity is the same the result is the box average along the
+//   streak whatever the depths, as a uniform pan must give.
 // A pixel whose neighbourhood moves less than half a pixel is copied unchanged.
 #include "passes/common/noise.h.glsl"
 #include "passes/motionblur/motion_blur_common.h.glsl"
@@ -61,43 +68,40 @@ void main() {
     float spacing = 2.0 * lenMax / n;
     float jitter = hashUniform(p, uFrame, 0u) - 0.5;
 
-    vec3 front = vec3(0.0), layer = vec3(0.0), behind = vec3(0.0);
-    float frontCover = 0.0, layerCover = 0.0, behindWeight = 0.0;
+    vec3 front = vec3(0.0), layer = vec3(0.0);
+    float frontCover = 0.0, layerWeight = 0.0;
     for (int i = 0; i < uSampleCount; ++i) {
         float t = -1.0 + 2.0 * (float(i) + 0.5 + jitter) / n;
         ivec2 q = clamp(ivec2(floor(centre + t * vmax)), ivec2(0), size - 1);
-        float d = length(vec2(q) + 0.5 - centre);
+        // The sample's distance along the streak: the point it stands for, not its pixel's centre (the
+        // pixel lookup already gives the streak's end pixels their partial share).
+        float d = abs(t) * lenMax;
         float rY = length(texelFetch(uVelocity, q, 0).rg);
         float zY = depthAt(q);
         vec3 cY = texelFetch(uScene, q, 0).rgb;
         float f = inFront(zY, zX);
         float b = inFront(zX, zY);
-        // Y's streak reaches X (anti-aliased at its end), for spacing / (2 rY) of the shutter.
-        float reachY = clamp(rY - d + 0.5, 0.0, 1.0) * spacing / (2.0 * max(rY, 0.5));
+        // Y's streak reaches X (anti-aliased over a pixel at its end: the rasterised edge is only known to
+        // a pixel); then it covers X for spacing / (2 rY) of the shutter. Still samples reach nothing.
+        float reachY = rY >= 0.5 ? clamp(rY - d + 0.5, 0.0, 1.0) : 0.0;
+        float coverY = reachY * spacing / (2.0 * max(rY, 0.5));
         if (movingX) {
-            front += f * reachY * cY;
-            frontCover += f * reachY;
-            float same = 1.0 - f - b;
-            layer += same * reachY * cY;
-            layerCover += same * reachY;
-            float reachX = b * clamp(rX - d + 0.5, 0.0, 1.0);
-            behind += reachX * cY;
-            behindWeight += reachX;
+            front += f * coverY * cY;
+            frontCover += f * coverY;
+            if (d <= rX) {
+                float shown = 1.0 - f; // X's own surface there, or what its motion uncovers
+                float hidden = f * (1.0 - reachY);
+                layer += shown * cY + hidden * c0.rgb;
+                layerWeight += shown + hidden;
+            }
         } else {
             // A still pixel: only moving samples not behind it pass over it.
-            float w = (1.0 - b) * reachY * step(0.5, rY);
+            float w = (1.0 - b) * coverY;
             front += w * cY;
             frontCover += w;
         }
     }
-    vec3 own = c0.rgb;
-    if (movingX) {
-        if (layerCover >= 1.0 || behindWeight <= 0.0) {
-            own = layerCover > 0.0 ? layer / layerCover : c0.rgb;
-        } else {
-            own = layer + (1.0 - layerCover) * behind / behindWeight;
-        }
-    }
+    vec3 own = layerWeight > 0.0 ? layer / layerWeight : c0.rgb;
     vec3 result = frontCover >= 1.0 ? front / frontCover : front + (1.0 - frontCover) * own;
     imageStore(uOut, p, vec4(result, c0.a));
 }

@@ -136,10 +136,15 @@ glm::vec2 subPixel(const TruthOptions& o, int x, int y, int k) {
     return glm::vec2(float(x), float(y)) + stratified(k, o.samples, pixel, 1u);
 }
 
-/// The shutter's time stratum of sub-sample k (of N^2 strata centred on the frame's time): a per-pixel
-/// rotation of the strata decorrelates time from the position within the pixel.
+/// The number of shutter instants (strata of the shutter interval) per pixel.
+int shutterCount(const TruthOptions& o) {
+    return o.samples * o.samples * std::max(o.shutterTimes, 1);
+}
+
+/// The shutter's time stratum of sub-sample k (of shutterCount strata centred on the frame's time): a
+/// per-pixel rotation of the strata decorrelates time from the position within the pixel.
 int shutterStratum(const TruthOptions& o, int x, int y, int k) {
-    const auto count = std::uint32_t(o.samples * o.samples);
+    const auto count = std::uint32_t(shutterCount(o));
     const std::uint32_t pixel = std::uint32_t(y * o.width + x);
     return int((std::uint32_t(k) * 7919u + hash32(pixel ^ 0x51ed270bU)) % count);
 }
@@ -203,13 +208,15 @@ void pixelCentreKinds(TruthKind kind, const Frame& f, const TruthOptions& o, int
 
 ImageF renderColor(TruthKind kind, const TruthOptions& o) {
     ImageF image(o.width, o.height, 0.0f);
-    const int count = o.samples * o.samples;
     const double shutter = o.lens.exposureTimeS > 0.0f ? double(o.lens.exposureTimeS)
                                                        : double(o.lens.shutterAngleDeg) / 360.0 * o.dt;
     const bool moving =
         kind == TruthKind::Shutter && shutter > 0.0 && (o.times.cameraRate > 0.0 || o.times.objectRate > 0.0);
+    // Sub-samples per pixel: each position once, or shutterTimes times (one instant each) with motion.
+    const int times = moving ? std::max(o.shutterTimes, 1) : 1;
+    const int count = o.samples * o.samples * times;
     const Frame still = frameAt(o, o.times.camera, o.times.objects);
-    // The shutter's instants: the centres of N^2 equal strata of [t - s/2, t + s/2] in frame time.
+    // The shutter's instants: the centres of `count` equal strata of [t - s/2, t + s/2] in frame time.
     std::vector<Frame> instants;
     if (moving) {
         instants.reserve(std::size_t(count));
@@ -226,7 +233,7 @@ ImageF renderColor(TruthKind kind, const TruthOptions& o) {
         for (int x = 0; x < o.width; ++x) {
             glm::vec3 sum(0.0f);
             for (int k = 0; k < count; ++k) {
-                const glm::vec2 s = subPixel(o, x, y, k);
+                const glm::vec2 s = subPixel(o, x, y, k / times);
                 const glm::vec2 ndc = ndcOf(o, s.x, s.y);
                 if (moving) {
                     const Frame& f = instants[std::size_t(shutterStratum(o, x, y, k))];

@@ -15,7 +15,7 @@
 //                                 its centre) that reach it, occluders counted within sunMaxDistance (0:
 //                                 any distance); 0 where the surface faces away from the sun; sky 1
 //   shutter     RGB, A = 1        colour averaged over the shutter interval centred on the frame's time
-//                                 (camera and objects moving), one time per colour sub-sample
+//                                 (camera and objects moving), shutterTimes instants per colour sub-sample
 //   thinlens    RGB, A = 1        colour through a thin lens (the camera's focus distance and f-number)
 //   reflection  RGB, A = mask     radiance along the mirror direction at the pixel centre on surfaces
 //                                 with metallic > 0 (A = 1 there, RGB = A = 0 elsewhere); the mirror term's
@@ -58,6 +58,10 @@ struct TruthOptions {
     /// Colour, shutter, thin lens: samples x samples per pixel; 1: one sample at the pixel centre (moved by
     /// the jitter), the rasteriser's colour.
     int samples = 16;
+    /// Shutter: instants per sub-pixel position, each its own stratum of the shutter (samples^2 x
+    /// shutterTimes strata in all). With samples = 1 the truth is time-supersampled at the pixel centre only:
+    /// what a rasteriser's one sample per pixel sees over the shutter, with no spatial anti-aliasing.
+    int shutterTimes = 1;
     float aoRadius = 1.0f;       ///< scene units
     int aoSamples = 16;          ///< aoSamples x aoSamples cosine-weighted rays per pixel
     float sunMaxDistance = 0.0f; ///< scene units; 0: any distance
