@@ -24,8 +24,8 @@ struct VolumetricLightSettings {
     /// [0, 16], default 1: the weight of each sample (the paper's `weight`), normalised by the sample count.
     float weight = 1.0f;
     /// [0, 1], default 0.005: the final scale (the paper's `exposure`). The sun's disc dominates the sums:
-    /// the testbed's sun (radiance about 8000) adds about 1 at a quarter of the image width from the sun with
-    /// the defaults; a scene with another sun radiance scales it to taste.
+    /// with the defaults the testbed's sun (radiance about 8000) adds about 0.2 at a quarter of the image
+    /// height from it and 0.1 at half; a scene with another sun radiance scales it to taste.
     float exposure = 0.005f;
     /// [4, 256], default 64: samples along each ray (half resolution, a dithered start per pixel and frame,
     /// accumulated over frames).
