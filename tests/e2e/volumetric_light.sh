@@ -49,6 +49,9 @@ expect 0 "the image with the light added, as PNG" -- "$PHOTOPIC" image "$S/view/
     -o "$S/image.png" "${ON[@]}"
 check "PNG written" test -s "$S/image.png"
 
+expect 0 "an image without depth, camera or sun: the pass is skipped and says so" -- "$PHOTOPIC" image \
+    "$DATA/Desk.exr" -o "$S/desk.png" "${ON[@]}"
+check "reports what is missing" contains "pass 'volumetric light' skipped: the frame has no camera, sunDirection"
 expect 0 "the testbed with volumetric light" -- "$PHOTOPIC" scene testbed -o "$S/png" --frames 2 --size 96x54 \
     "${ON[@]}" "${SUN[@]}"
 check "PNG written" test -s "$S/png/frame_0001.png"
