@@ -435,6 +435,25 @@ TEST_F(GlTest, VolumetricLightOfAUniformSkyIsTheAnalyticMean) {
     EXPECT_LE(worst, 0.02);
 }
 
+// intensity 0: the light is computed but not added, and the image is bit for bit the image without the pass;
+// at the default intensity the image changes (the light is added to the frame, not only to the view).
+TEST_F(GlTest, VolumetricLightAtIntensityZeroLeavesTheImageUnchanged) {
+    const glm::vec3 forward = aroundTheSun(8.0f, -6.0f);
+    const Camera camera = cameraLooking(kSceneEye, forward, forward);
+    ImageF images[3];
+    for (int i = 0; i < 3; ++i) {
+        Settings s = volumetricSettings();
+        s.debug.view = DebugView::None;
+        s.volumetricLight.enabled = i > 0;
+        s.volumetricLight.intensity = i == 1 ? 0.0f : 1.0f;
+        Host host;
+        Pipeline pipeline({.settings = s});
+        images[i] = host.still(pipeline, camera, stillPrimitives(), 3);
+    }
+    EXPECT_EQ(images[0].rgba, images[1].rgba);
+    EXPECT_NE(images[0].rgba, images[2].rgba);
+}
+
 // NaN, infinite and negative colour, and NaN, infinite, zero and negative depths: the image and the light
 // stay finite (the sun on screen, so every dispatch does its work).
 TEST_F(GlTest, VolumetricLightKeepsBrokenInputsOut) {
