@@ -20,6 +20,7 @@
 #include "core/settings/SubjectSettings.h"
 #include "core/settings/TemporalSettings.h"
 #include "core/settings/ToneMappingSettings.h"
+#include "core/settings/VolumetricLightSettings.h"
 
 namespace photopic {
 
@@ -48,6 +49,7 @@ struct Settings {
     ReflectionSettings ssr;
     MotionBlurSettings motionBlur;
     OutlineSettings outline;
+    VolumetricLightSettings volumetricLight;
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
     /// is none.
@@ -87,6 +89,7 @@ struct Settings {
         v.object("ssr", ssr);
         v.object("motionBlur", motionBlur);
         v.object("outline", outline);
+        v.object("volumetricLight", volumetricLight);
     }
 };
 

@@ -52,6 +52,8 @@ std::string_view resourceName(Resource resource) noexcept {
         return "reflections";
     case Resource::VelocityTiles:
         return "velocityTiles";
+    case Resource::VolumetricLight:
+        return "volumetricLight";
     case Resource::DebugColor:
         return "debugColor";
     case Resource::DisplayColor:

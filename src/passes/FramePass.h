@@ -54,6 +54,8 @@ enum class Resource : std::uint8_t {
     Reflections,  ///< RGBA16F: reflected radiance (RGB) and its confidence (A)
     /// motion blur's neighbourhood maximum velocity per pixel, when the velocity-tiles debug view shows it
     VelocityTiles,
+    /// RGBA16F: the light volumetric light added, when the volumetric-light debug view shows it
+    VolumetricLight,
     Count
 };
 inline constexpr std::size_t kResourceCount = std::size_t(Resource::Count);

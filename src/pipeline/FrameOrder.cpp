@@ -27,6 +27,7 @@ FrameOrder::FrameOrder(const Capabilities& caps, bool keepTelemetryHistory)
         &aoMultiply,      // sceneColor, ambientOcclusion -> sceneColor (ssao.apply = multiply)
         &ssrPyramid,      // linearDepth -> depthPyramid (ssr.enabled)
         &ssr,             // sceneColor, depthPyramid, linearDepth, camera, ... -> sceneColor, reflections
+        &volumetricLight, // sceneColor, linearDepth, camera, sunDirection, motion? -> sceneColor
         &outline,         // sceneColor, linearDepth, normals? -> sceneColor (outline.enabled)
         &motionBlur,      // sceneColor, motion, linearDepth -> sceneColor, velocityTiles (before-taa)
         &smaaHdr,         // sceneColor, exposure (last frame's) -> sceneColor (aa.mode taa+smaa)

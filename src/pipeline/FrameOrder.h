@@ -24,6 +24,7 @@
 #include "passes/ssr/SsrPass.h"
 #include "passes/taa/TaaPass.h"
 #include "passes/tonemap/TonemapPass.h"
+#include "passes/volumetric/VolumetricLightPass.h"
 
 #include <span>
 #include <vector>
@@ -70,6 +71,7 @@ public:
     SsrHistoryPass ssrHistory; ///< before ssr, which reads the history it keeps
     DepthPyramidPass ssrPyramid;
     SsrPass ssr{ssrHistory};
+    VolumetricLightPass volumetricLight;
     OutlinePass outline;
     MotionBlurPass motionBlur{MotionBlurPlacement::BeforeTaa};
     MotionBlurPass motionBlurLate{MotionBlurPlacement::AfterTaa};

@@ -37,10 +37,13 @@ enum class DebugView {
     /// Motion blur's velocity tiles: per pixel, its tile's neighbourhood maximum velocity in pixels of blur
     /// radius (R x right, G y up, B length); raw values in an EXR; needs motionBlur.enabled and motion
     VelocityTiles,
+    /// Volumetric light: the light it adds (RGB), raw values in an EXR; needs volumetricLight.enabled,
+    /// depth, a camera and the sun's direction
+    VolumetricLight,
 };
 
 inline std::span<const std::string_view> debugViewNames() {
-    static constexpr std::array<std::string_view, 17> kNames{"none",
+    static constexpr std::array<std::string_view, 18> kNames{"none",
                                                              "exposure",
                                                              "luma",
                                                              "ev",
@@ -56,7 +59,8 @@ inline std::span<const std::string_view> debugViewNames() {
                                                              "contact-shadows-steps",
                                                              "coc",
                                                              "ssr",
-                                                             "velocity-tiles"};
+                                                             "velocity-tiles",
+                                                             "volumetric-light"};
     return kNames;
 }
 

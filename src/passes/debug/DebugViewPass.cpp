@@ -38,11 +38,14 @@ constexpr ResourceUse kSsrViewUses[] = {{Resource::Reflections, Access::Read},
                                         {Resource::DebugColor, Access::Write}};
 constexpr ResourceUse kVelocityTilesViewUses[] = {{Resource::VelocityTiles, Access::Read},
                                                   {Resource::DebugColor, Access::Write}};
+constexpr ResourceUse kVolumetricLightViewUses[] = {{Resource::VolumetricLight, Access::Read},
+                                                    {Resource::DebugColor, Access::Write}};
 
 /// Views of data rather than of the image: written to EXR, they keep their values.
 bool isDataView(DebugView view) {
     return view == DebugView::ContactShadows || view == DebugView::ContactShadowSteps ||
-           view == DebugView::Coc || view == DebugView::Ssr || view == DebugView::VelocityTiles;
+           view == DebugView::Coc || view == DebugView::Ssr || view == DebugView::VelocityTiles ||
+           view == DebugView::VolumetricLight;
 }
 
 bool isInputView(DebugView view) {
@@ -80,6 +83,8 @@ std::span<const ResourceUse> DebugViewPass::uses() const {
         return kSsrViewUses;
     case DebugView::VelocityTiles:
         return kVelocityTilesViewUses;
+    case DebugView::VolumetricLight:
+        return kVolumetricLightViewUses;
     default:
         return kSceneViewUses;
     }
@@ -152,6 +157,7 @@ void DebugViewPass::bindInputView(const FrameContext& ctx, const FrameResources&
                             : mView == DebugView::Coc                ? Resource::DofCoc
                             : mView == DebugView::Ssr                ? Resource::Reflections
                             : mView == DebugView::VelocityTiles      ? Resource::VelocityTiles
+                            : mView == DebugView::VolumetricLight    ? Resource::VolumetricLight
                                                                      : Resource::TaaDebug;
     const Program& p = raw ? mInputRawProgram : mInputProgram;
     const Camera* camera = ctx.inputs.camera;

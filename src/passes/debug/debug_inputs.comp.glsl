@@ -16,7 +16,7 @@ layout(binding = 1, rgba32f) uniform writeonly image2D uRaw;
 layout(std140, binding = BINDING_PARAMETERS) uniform DebugInputViewParameters {
     int uView; // DebugView: 7 depth, 8 normals, 9 motion, 10 TAA history weight, 11 disocclusion,
                // 12 contact shadows, 13 contact-shadow steps, 14 depth of field's CoC, 15 ssr,
-               // 16 velocity tiles
+               // 16 velocity tiles, 17 volumetric light
     int uOctahedral;
     float uNear;
     float uFar;
@@ -111,6 +111,8 @@ void main() {
         return;
     } else if (uView == 16) {
         c = t.rgb; // motion blur's neighbourhood maximum radius: x, y (pixels, y up), length
+    } else if (uView == 17) {
+        c = t.rgb; // the light volumetric light added (scene-referred)
     }
     store(p, vec4(c, 1.0));
 }

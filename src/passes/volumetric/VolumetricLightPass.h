@@ -1,0 +1,68 @@
+#pragma once
+// Volumetric light (Mitchell, "Volumetric Light Scattering as a Post-Process", GPU Gems 3 ch. 13): light
+// scattered towards the camera along rays from the sun's projected position, added to the HDR image after
+// SSR. Four compute dispatches: the occlusion source at full resolution (the sky's colour, 0 where depth
+// holds a surface), the radial march from each half-resolution texel towards the sun, a temporal
+// accumulation of the dithered march (reprojected, clamped to this frame's neighbourhood), and the composite
+// at full resolution. The rays fade out as the sun leaves the screen (core/VolumetricLight.h).
+// docs/architecture.md ("Volumetric light") has the settings, the measured figures and the limits.
+
+#include "passes/FramePass.h"
+#include "passes/HistoryTexture.h"
+
+#include <cstdint>
+#include <glm/vec2.hpp>
+
+namespace photopic {
+
+/// std140 mirror of volumetric_light_common.h.glsl's parameter block (every dispatch of the pass).
+struct VolumetricLightParameters {
+    glm::vec2 sunUv{0.5f};      ///< the sun's projected position, UV ((0, 0) bottom-left; may be off screen)
+    glm::vec2 halfSize{1.0f};   ///< texels of the half-resolution march
+    glm::vec2 fullSize{1.0f};   ///< pixels
+    float density = 1.0f;       ///< fraction of the way to the sun the samples reach
+    float logDecay = 0.0f;      ///< 64 log2(decay): a sample at fraction t of the way weighs exp2(t logDecay)
+    float scale = 0.0f;         ///< intensity x weight x exposure x the sun's fade
+    float historyWeight = 0.9f; ///< the clamped history's weight in the accumulation
+    std::int32_t samples = 64;
+    std::uint32_t frame = 0; ///< moves the dithered start
+    std::int32_t hasHistory = 0;
+    std::int32_t hasMotion = 0;
+    std::int32_t writeView = 0; ///< the volumetric-light debug view is on: write the light added
+    std::int32_t active = 0;    ///< the sun's fade is above 0 (else every dispatch writes 0)
+    float skyDepth = 0.0f;      ///< linear depths at or beyond this are the sky (+inf always is)
+    float padding[3] = {};
+};
+static_assert(sizeof(VolumetricLightParameters) == 80);
+static_assert(offsetof(VolumetricLightParameters, density) == 24);
+static_assert(offsetof(VolumetricLightParameters, historyWeight) == 36);
+static_assert(offsetof(VolumetricLightParameters, samples) == 40);
+static_assert(offsetof(VolumetricLightParameters, active) == 60);
+static_assert(offsetof(VolumetricLightParameters, skyDepth) == 64);
+
+class VolumetricLightPass final : public FramePass {
+public:
+    VolumetricLightPass();
+    [[nodiscard]] std::string_view name() const override { return "volumetric light"; }
+    /// sceneColor, linearDepth, camera, sunDirection, motion? -> sceneColor, volumetricLight (view)
+    [[nodiscard]] std::span<const ResourceUse> uses() const override;
+    [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
+        return ctx.hdr && ctx.settings.volumetricLight.enabled;
+    }
+    void invalidateHistory() override { mHistory.invalidate(); }
+    void execute(FrameContext& ctx, FrameResources& resources) override;
+
+    /// The history's weight against this frame's march, per frame (about 10 frames of accumulation).
+    static constexpr float kHistoryWeight = 0.9f;
+
+private:
+    Program mPrepare;
+    Program mScatter;
+    Program mResolve;
+    Program mComposite;
+    ParameterBlock<VolumetricLightParameters> mParameters;
+    HistoryTexture mHistory; ///< the accumulated half-resolution light (before the final scale)
+    Texture mNoView;         ///< bound to the view's image unit when no debug view asks for it
+};
+
+} // namespace photopic
