@@ -8,7 +8,7 @@
 
 namespace photopic {
 
-/// std140 mirror of fxaa.frag.glsl's parameter block.
+/// std140 mirror of fxaa.comp.glsl's parameter block.
 struct FxaaParameters {
     float texel[2] = {0.0f, 0.0f}; ///< 1 / size
     float subpix = 0.75f;
