@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `make bench`: the pipeline's per-pass table at 720p, 1080p, 4K and 8K (each beside its own copy reference,
 # bench --json written to out/bench/SIZE.json and the console table to out/bench/SIZE.txt), then one summary
-# table of the chain's time per frame and per megapixel (out/bench/scaling.md): the cost should grow linearly
+# table of the chain's time (the sum of the passes' GPU times, and the whole frame between one pair of
+# timestamps) per frame and per megapixel (out/bench/scaling.md): the cost should grow linearly
 # with pixels. Usage: scripts/bench-table.sh PHOTOPIC FRAMES [SIZES...] [-- bench options]
 set -euo pipefail
 photopic=$1 frames=$2
@@ -20,13 +21,15 @@ import json, sys
 out, sizes = sys.argv[1], sys.argv[2:]
 rows = [json.load(open(f"{out}/{s}.json")) for s in sizes]
 print(f"Device: {rows[0]['renderer']} ({rows[0]['driver']})\n")
-print("| size | megapixels | chain ms | ms per megapixel | copy GB/s | chain GB/s | of copy |")
-print("|---|---|---|---|---|---|---|")
+print("| size | megapixels | passes ms | whole frame ms | ms per megapixel | copy GB/s | passes GB/s | of copy |")
+print("|---|---|---|---|---|---|---|---|")
 for s, d in zip(sizes, rows):
     mp = d["width"] * d["height"] / 1e6
     ms = d["totalMedianGpuMs"]
     copy = d["copyReference"]["gbPerSecond"]
     gbps = d["totalBytesMoved"] / (ms * 1e6) if ms > 0 else 0
-    print(f"| {s} | {mp:.2f} | {ms:.3f} | {ms / mp:.3f} | {copy:.1f} | {gbps:.1f} | {100 * gbps / copy:.0f}% |")
+    frame = d.get("frameMedianGpuMs", 0.0)
+    print(f"| {s} | {mp:.2f} | {ms:.3f} | {frame:.3f} | {frame / mp:.3f} | {copy:.1f} | {gbps:.1f} | "
+          f"{100 * gbps / copy:.0f}% |")
 PY
 cat "$out/scaling.md"

@@ -10,6 +10,10 @@ Query& GpuTimers::queryAt(std::vector<Query>& queries, int index) {
 }
 
 void GpuTimers::beginFrame() {
+    if (!mEnabled) {
+        mOpen = false;
+        return;
+    }
     Slot& slot = mSlots[std::size_t(mCurrent)];
     if (slot.pending) {
         // The ring is full: harvest if ready; if not, this frame's slot is reused and its old results dropped

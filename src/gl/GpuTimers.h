@@ -36,6 +36,9 @@ public:
     /// measurement tool for drivers whose timestamps miss deferred work (Mesa llvmpipe runs a draw when its
     /// scene is flushed, possibly after the pass's end timestamp), never for a frame loop.
     void setSynchronous(bool synchronous) { mSynchronous = synchronous; }
+    /// Off: beginFrame() opens nothing and every begin()/end() is a no-op, so a frame issues no timestamp of
+    /// its own (a benchmark that brackets whole frames with its own timers measures the frame without them).
+    void setEnabled(bool enabled) { mEnabled = enabled; }
     [[nodiscard]] bool synchronous() const { return mSynchronous; }
 
     /// The most recent frame whose results have arrived (empty until one has).
@@ -66,6 +69,7 @@ private:
     std::int64_t mFrameCounter = 0;
     bool mOpen = false;
     bool mSynchronous = false;
+    bool mEnabled = true;
     std::chrono::steady_clock::time_point mWallStart;
     std::vector<PassTiming> mLatest;
     std::int64_t mLatestFrame = -1;

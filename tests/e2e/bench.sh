@@ -14,12 +14,14 @@ done
 check "bench prints GB/s" contains "GB/s"
 check "bench measures its copy reference" contains "bandwidth reference: rgba32f copy 256x144"
 check "bench prints the fraction of the copy" contains "of copy"
+check "bench times the whole frame" contains "whole frame"
 check "JSON written" test -s "$S/bench.json"
 check "no temporary file left" test ! -e "$S/bench.json.tmp"
 check "JSON has the passes" grep -q '"medianGpuMs"' "$S/bench.json"
 check "JSON has each pass's fraction of the copy" grep -q '"fractionOfCopy"' "$S/bench.json"
 check "JSON names the device and the driver" grep -q '"driver"' "$S/bench.json"
 check "JSON has the copy reference" grep -q '"copyReference"' "$S/bench.json"
+check "JSON has the whole frame's time" grep -q '"frameMedianGpuMs"' "$S/bench.json"
 expect 0 "bench of the default chain" -- "$PHOTOPIC" bench --size 64x64 --frames 2 --json "$S/default.json"
 # Nothing is metered with auto exposure off: the metering line must not claim the image's bytes.
 check "unmetered frame moves no metering bytes" python3 -c "import json,sys; d=json.load(open('$S/default.json')); \
