@@ -4,15 +4,9 @@
 
 #include "core/ColorGrading.h"
 #include "gl/TextureIo.h"
-#include "passes/Bindings.h"
-#include "passes/bloom/BloomPass.h"
 #include "pipeline/Pipeline.h"
 
-#include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstdio>
-#include <utility>
 
 namespace photopic::test {
 
@@ -214,51 +208,6 @@ TEST_F(GlTest, LegacyTierGlowsAroundABrightDiscWithoutTheBloomChain) {
     EXPECT_LT(bilinear(none, c + r, c, 1), 1e-4f) << "bloom.enabled=false turns the glow off";
     const Image8 display = processImage(pipeline, image);
     EXPECT_EQ(display.width, size);
-}
-
-} // namespace photopic::test
-
-namespace photopic::test {
-
-// The shared-memory tile (exact halvings) and the 13 filtered taps are the same filter: every tap lies on a
-// texel corner, where the hardware's bilinear weights are exactly 0.5. They differ only in float rounding, on
-// an image with fireflies, dark texels and an odd size where some levels are not exact halvings.
-TEST_F(GlTest, BloomTiledTapsEqualTheFilteredTaps) {
-    for (const auto [w, h] : {std::pair{96, 64}, std::pair{90, 54}}) {
-        ImageF image(w, h);
-        std::uint32_t state = 12345u;
-        for (std::size_t i = 0; i < image.rgba.size(); ++i) {
-            state = state * 1664525u + 1013904223u;
-            const float u = float(state >> 8) / float(1u << 24);
-            image.rgba[i] = i % 4 == 3 ? 1.0f : (u > 0.995f ? 500.0f : 4.0f * u * u);
-        }
-        const Texture scene = makeTexture(image, "bloom tile input");
-        const GpuExposureState exposure{.exposure = 0.75f};
-        const Buffer state_(
-            {.size = sizeof(exposure), .flags = 0, .data = &exposure, .debugName = "exposure"});
-        const BloomSettings settings;
-        BloomPass pass;
-        pass.resize(scene.extent());
-        auto run = [&](bool tiled) {
-            pass.setTiledTaps(tiled);
-            return readTextureF(
-                pass.execute({.scene = &scene, .exposureState = &state_, .settings = &settings}));
-        };
-        const ImageF filtered = run(false);
-        const ImageF tiled = run(true);
-        ASSERT_EQ(filtered.rgba.size(), tiled.rgba.size());
-        double worst = 0;
-        for (std::size_t i = 0; i < tiled.rgba.size(); ++i) {
-            const double a = tiled.rgba[i], b = filtered.rgba[i];
-            ASSERT_TRUE(std::isfinite(a));
-            worst = std::max(worst, std::abs(a - b) / std::max(1e-3, std::abs(b)));
-        }
-        std::printf("bloom %dx%d: tiled against filtered taps, largest relative difference %.2e\n", w, h,
-                    worst);
-        // Half-float storage of each level rounds at 2^-11 relative; the two orders of summation stay within
-        // a few of those steps through the chain.
-        EXPECT_LT(worst, 4e-3);
-    }
 }
 
 } // namespace photopic::test

@@ -20,9 +20,6 @@ double texelBytes(Extent e, GLenum format) {
 BloomPass::BloomPass()
     : mPrefilter(makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}})))
     , mDownsample(makeComputeProgram(kDown, bindingDefines()))
-    , mPrefilterTiled(
-          makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {"TILE", "1"}})))
-    , mDownsampleTiled(makeComputeProgram(kDown, bindingDefines({{"TILE", "1"}})))
     , mUpsample(makeComputeProgram(kUp, bindingDefines()))
     , mDownsampleParameters("bloom downsample parameters")
     , mUpsampleParameters("bloom upsample parameters") {}
@@ -84,13 +81,9 @@ const Texture& BloomPass::execute(const Inputs& in) {
     for (int i = 0; i < levels; ++i) {
         const Texture& source = i == 0 ? *in.scene : mDown[std::size_t(i - 1)];
         const Texture& target = mDown[std::size_t(i)];
+        const Program& program = i == 0 ? mPrefilter : mDownsample;
         const Extent se = source.extent(), te = target.extent();
         const float step = i == 0 ? float(in.firstDivisor) * 0.5f : 1.0f;
-        // Taps on texel corners (an exact halving, one texel per step) come from the shared-memory tile.
-        const bool tiled =
-            mTiledTaps && step == 1.0f && se.width == 2 * te.width && se.height == 2 * te.height;
-        const Program& program =
-            i == 0 ? (tiled ? mPrefilterTiled : mPrefilter) : (tiled ? mDownsampleTiled : mDownsample);
         ScopedGpuTimer timer(in.timers, i == 0 ? "bloom prefilter" : fmt::format("bloom down {}", i),
                              texelBytes(se, source.format()) + texelBytes(te, kFormat));
         BloomDownsampleParameters parameters{.targetTexel = {1.0f / float(te.width), 1.0f / float(te.height)},

@@ -62,24 +62,18 @@ public:
     const Texture& execute(const Inputs& in);
     /// Levels of the chain the last execute ran.
     [[nodiscard]] int levels() const { return mLevels; }
-    /// Exact halvings take their taps from a shared-memory tile (the default); off, every level samples the
-    /// texture with 13 filtered taps. The two agree up to float rounding (a test holds them together).
-    void setTiledTaps(bool enabled) { mTiledTaps = enabled; }
 
 private:
     void ensureChain(int firstDivisor, int levels);
 
     Program mPrefilter; ///< level 0: exposure, Karis average, threshold
     Program mDownsample;
-    Program mPrefilterTiled; ///< the prefilter with TILE: taps from shared memory
-    Program mDownsampleTiled;
     Program mUpsample;
     ParameterBlock<BloomDownsampleParameters> mDownsampleParameters;
     ParameterBlock<BloomUpsampleParameters> mUpsampleParameters;
     Extent mExtent;
     int mDivisor = 0;
     int mLevels = 0;
-    bool mTiledTaps = true;
     std::vector<Texture> mDown, mUp;
 };
 

@@ -8,12 +8,8 @@
 // so what blooms does not depend on the scene's absolute level) and, in threshold mode, the soft knee
 // (constants from core/Bloom.cpp) keeps only what lies above the threshold.
 // A compute pass (8x8 groups, one target texel each, image store): on GPUs whose raster units are a small part
-// of the chip a full-screen triangle runs far below the memory's pace.
-// With TILE (a level exactly half its source in both directions, one source texel per step) every tap sits on
-// a source texel corner, so it is the mean of the 2x2 texels around that corner: the group loads its 20x20
-// source texels into shared memory once (6.25 unfiltered fetches per target texel instead of 13 filtered
-// ones, which bound the pass on the texture units) and forms the taps there. The result equals the filtered
-// taps up to float rounding (the hardware's weights are exactly 0.5 at a corner).
+// of the chip a full-screen triangle runs far below the memory's pace, and the taps hit the texture cache the
+// same way from either stage.
 #include "passes/common/color.h.glsl"
 #ifdef PREFILTER
 #include "passes/common/exposure.h.glsl"
@@ -32,37 +28,6 @@ layout(std140, binding = BINDING_PARAMETERS) uniform BloomDownsampleParameters {
     vec4 uKnee;        // T, T - knee, 2 knee, 1 / (4 knee)
 };
 
-#ifdef TILE
-const int kTile = 20; // 2 x 8 target texels and 2 texels of border on each side
-shared vec3 sTexel[kTile][kTile];
-
-vec3 fetch(ivec2 q, ivec2 size) {
-    // Clamped to the edge, as the sampler does.
-#ifdef PREFILTER
-    return texelFetch(uSource, clamp(q, ivec2(0), size - 1), 0).rgb * gExposure.exposure;
-#else
-    return texelFetch(uSource, clamp(q, ivec2(0), size - 1), 0).rgb;
-#endif
-}
-
-void loadTile() {
-    ivec2 size = textureSize(uSource, 0);
-    ivec2 origin = ivec2(gl_WorkGroupID.xy) * 16 - 2;
-    for (int i = int(gl_LocalInvocationIndex); i < kTile * kTile; i += 64) {
-        ivec2 t = ivec2(i % kTile, i / kTile);
-        sTexel[t.y][t.x] = fetch(origin + t, size);
-    }
-    barrier();
-}
-
-// The tap `offset` source texels from the target texel's centre: the mean of the four texels around that
-// corner.
-vec3 tileTap(ivec2 offset) {
-    ivec2 a = 2 * ivec2(gl_LocalInvocationID.xy) + 2 + offset;
-    return 0.25 * (sTexel[a.y][a.x] + sTexel[a.y][a.x + 1] + sTexel[a.y + 1][a.x] + sTexel[a.y + 1][a.x + 1]);
-}
-#endif
-
 vec3 tap(vec2 uv) {
 #ifdef PREFILTER
     // Exposed before the Karis weights, which must see the luma the viewer will see.
@@ -80,25 +45,6 @@ float karisWeight(vec3 box) {
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-#ifdef TILE
-    loadTile(); // every invocation takes part, also those past the image's edge
-    if (any(greaterThanEqual(p, imageSize(uTarget)))) {
-        return;
-    }
-    vec3 a = tileTap(ivec2(-2, 2));
-    vec3 b = tileTap(ivec2(0, 2));
-    vec3 c = tileTap(ivec2(2, 2));
-    vec3 d = tileTap(ivec2(-1, 1));
-    vec3 e = tileTap(ivec2(1, 1));
-    vec3 f = tileTap(ivec2(-2, 0));
-    vec3 g = tileTap(ivec2(0, 0));
-    vec3 h = tileTap(ivec2(2, 0));
-    vec3 i = tileTap(ivec2(-1, -1));
-    vec3 j = tileTap(ivec2(1, -1));
-    vec3 k = tileTap(ivec2(-2, -2));
-    vec3 l = tileTap(ivec2(0, -2));
-    vec3 m = tileTap(ivec2(2, -2));
-#else
     if (any(greaterThanEqual(p, imageSize(uTarget)))) {
         return;
     }
@@ -117,7 +63,6 @@ void main() {
     vec3 k = tap(uv + t * vec2(-2.0, -2.0));
     vec3 l = tap(uv + t * vec2(0.0, -2.0));
     vec3 m = tap(uv + t * vec2(2.0, -2.0));
-#endif
 
     vec3 centre = (d + e + i + j) * 0.25;
     vec3 topLeft = (a + b + f + g) * 0.25;
