@@ -121,8 +121,8 @@ void MeteringPass::resize(Extent extent) {
         return;
     }
     mExtent = extent;
-    mGroupsX = (extent.width + kGroupTile - 1) / kGroupTile;
-    mGroupsY = (extent.height + kGroupTile - 1) / kGroupTile;
+    mGroupsX = (extent.width + kGroupSize - 1) / kGroupSize;
+    mGroupsY = (extent.height + kGroupSize - 1) / kGroupSize;
     const std::size_t bytes =
         sizeof(GpuMeteringHeader) + std::size_t(mGroupsX) * std::size_t(mGroupsY) * 2 * sizeof(float);
     mMetering = Buffer({.size = bytes, .flags = 0, .data = nullptr, .debugName = "metering partials"});

@@ -77,11 +77,7 @@ public:
     Outputs execute(const Inputs& in) noexcept;
     [[nodiscard]] Outputs outputs() const { return {&mHistogram, &mMetering}; }
 
-    static constexpr int kGroupSize = 16; ///< invocations per side of a metering workgroup
-    /// Pixels per side one workgroup meters (4 x 4 per invocation): 16 times fewer groups than one pixel per
-    /// invocation, so 16 times fewer global atomics on the bins and the min/max, which every group aims at
-    /// the same few addresses.
-    static constexpr int kGroupTile = 64;
+    static constexpr int kGroupSize = 16;
 
 private:
     Program mMeter;

@@ -2,9 +2,7 @@
 // the image in one dispatch: the 256-bin log2 histogram (Tardif 2019: shared-memory atomics per workgroup,
 // then one global atomic per non-empty bin), the frame's min/max meterable luminance, and per-workgroup
 // partial sums of w log2 L and w for the weighted geometric means (average, centre, mask), reduced by
-// metering_reduce.comp.glsl. Formulas: core/Metering.h. Each 16 x 16 group meters a 64 x 64 tile (4 x 4 pixels
-// per invocation), so the global atomics on the bins and the min/max, which all groups aim at the same few
-// addresses, are 16 times fewer than with one pixel per invocation (MeteringPass.h).
+// metering_reduce.comp.glsl. Formulas: core/Metering.h.
 #include "passes/common/sanitize.h.glsl"
 #include "passes/metering/metering.h.glsl"
 #include "passes/metering/metering_buffers.h.glsl"
@@ -41,54 +39,34 @@ void main() {
     barrier();
 
     ivec2 size = textureSize(uScene, 0);
-    // 4 x 4 pixels per invocation, 16 pixels apart, so a warp's fetches stay side by side: the group meters a
-    // 64 x 64 tile and makes one set of global atomics for it.
-    ivec2 origin = ivec2(gl_WorkGroupID.xy) * 64 + ivec2(gl_LocalInvocationID.xy);
-    uint minBits = 0xffffffffu;
-    uint maxBits = 0u;
-    float sum = 0.0;
-    float weight = 0.0;
-    for (int j = 0; j < 4; ++j) {
-        for (int i = 0; i < 4; ++i) {
-            ivec2 p = origin + 16 * ivec2(i, j);
-            if (!all(lessThan(p, size))) {
-                continue;
-            }
-            // sanitize() is the identity on the HDR path's already sanitised image; on the LDR path it is the
-            // first read.
-            float lum = luma709(sanitize(texelFetch(uScene, p, 0).rgb));
-            bool meterable = isMeterable(lum);
-            if (meterable) {
-                minBits = min(minBits, floatBitsToUint(lum));
-                maxBits = max(maxBits, floatBitsToUint(lum));
-            }
-            if (uBuildHistogram != 0) {
-                int bin = histogramBin(lum, uLog2Min, uLog2Max);
-                if (bin >= 0) {
-                    atomicAdd(sBins[bin], 1u);
-                }
-            }
-            if (uWeights >= 0 && meterable) {
-                vec2 uv = imageUv(imagePixel(p, size), size);
-                float w = 1.0;
-                if (uWeights == kMeterCenter) {
-                    w = centerWeight(uv, float(size.x) / float(size.y));
-                } else if (uWeights == kMeterMask) {
-                    w = maskWeight(uMask, uv);
-                }
-                if (w > 0.0) {
-                    sum += w * log2(lum);
-                    weight += w;
-                }
-            }
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    bool inside = all(lessThan(p, size));
+    // sanitize() is the identity on the HDR path's already sanitised image; on the LDR path it is the first read.
+    float lum = inside ? luma709(sanitize(texelFetch(uScene, p, 0).rgb)) : 0.0;
+    bool meterable = inside && isMeterable(lum);
+    if (meterable) {
+        atomicMin(sMinBits, floatBitsToUint(lum));
+        atomicMax(sMaxBits, floatBitsToUint(lum));
+    }
+    if (uBuildHistogram != 0 && inside) {
+        int bin = histogramBin(lum, uLog2Min, uLog2Max);
+        if (bin >= 0) {
+            atomicAdd(sBins[bin], 1u);
         }
     }
-    if (maxBits != 0u) {
-        atomicMin(sMinBits, minBits);
-        atomicMax(sMaxBits, maxBits);
+    float w = 0.0;
+    if (uWeights >= 0 && meterable) {
+        vec2 uv = imageUv(imagePixel(p, size), size);
+        if (uWeights == kMeterCenter) {
+            w = centerWeight(uv, float(size.x) / float(size.y));
+        } else if (uWeights == kMeterMask) {
+            w = maskWeight(uMask, uv);
+        } else {
+            w = 1.0;
+        }
     }
-    sSum[li] = sum;
-    sWeight[li] = weight;
+    sSum[li] = w > 0.0 ? w * log2(lum) : 0.0;
+    sWeight[li] = w > 0.0 ? w : 0.0;
     barrier();
 
     if (uBuildHistogram != 0 && sBins[li] != 0u) {
