@@ -73,6 +73,19 @@ struct ExrFrame {
 /// IoError naming the file for anything readImage rejects, a layer with some of its components missing
 /// (N.X and N.Y without N.Z) and a camera attribute of the wrong type.
 [[nodiscard]] ExrFrame readExrFrame(const std::filesystem::path& path, const ImageReadLimits& limits = {});
+
+/// readExrFrame for a sequence: each frame is read into storage kept from the one before (the file's bytes
+/// here, the layers in the ExrFrame passed in), so after its first frame a sequence of one size allocates
+/// no pixel memory: no page faults, no clearing of buffers that are overwritten anyway.
+class ExrFrameReader {
+public:
+    /// readExrFrame into `frame`, every field replaced; its vectors' capacity is reused. On IoError
+    /// `frame` holds no meaningful values.
+    void read(const std::filesystem::path& path, ExrFrame& frame, const ImageReadLimits& limits = {});
+
+private:
+    std::vector<unsigned char> mBytes;
+};
 /// Writes colour (half RGBA), Z (float), N.X/Y/Z (half), motion.X/Y (float) for the layers that are not
 /// empty, and the camera attributes that are set; data window = display window = the colour image (the
 /// displaySize/dataOrigin fields are not written). Atomic, like writeExr; throws IoError naming the file when
