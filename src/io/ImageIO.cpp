@@ -13,6 +13,7 @@
 #include <ImfStdIO.h>
 #include <ImfThreading.h>
 #include <png.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -77,6 +78,11 @@ void readBytes(const fs::path& path, Bytes& bytes, std::size_t limit = SIZE_MAX)
         throw IoError(path, "cannot open: " + errnoMessage(errno));
     constexpr std::size_t kChunk = std::size_t(1) << 20;
     bytes.clear();
+    // One allocation of the file's size, not a doubling series (each step copied, the old block left in
+    // the heap): a frame's file is read into one buffer, which the next frame's reuses.
+    struct stat info {};
+    if (::fstat(::fileno(file.get()), &info) == 0 && info.st_size > 0)
+        bytes.reserve(std::min(std::size_t(info.st_size), limit));
     while (bytes.size() < limit) {
         const std::size_t old = bytes.size();
         const std::size_t want = std::min(kChunk, limit - old);
@@ -612,9 +618,10 @@ ImageF readPngLinear(const fs::path& path, std::span<const unsigned char> bytes,
     return image;
 }
 
-/// Encodes `image` into `out` (resized to the stream), `rgb` holding the alpha-less copy of an opaque image;
-/// both keep their capacity, so a sequence encoded through the same buffers allocates once.
-void encodePng(const fs::path& path, const Image8& image, Bytes& rgb, Bytes& out) {
+/// Encodes `image` into `out` (its first `size` bytes), `rgb` holding the alpha-less copy of an opaque image;
+/// both are kept, so a sequence encoded through the same buffers allocates once. `out` is sized for the worst
+/// case and never cleared: only the pages the stream is written to are touched.
+std::size_t encodePng(const fs::path& path, const Image8& image, Bytes& rgb, PngWriter::EncodeBuffer& out) {
     bool opaque = true;
     for (std::size_t i = 3; i < image.rgba.size() && opaque; i += 4)
         opaque = image.rgba[i] == 255;
@@ -642,13 +649,16 @@ void encodePng(const fs::path& path, const Image8& image, Bytes& rgb, Bytes& out
     const std::size_t raw = std::size_t(image.height) * (std::size_t(stride) + 1);
     const std::size_t deflated = raw + (raw + 7) / 8 + (raw + 63) / 64 + 11;
     png_alloc_size_t size = 8 + 25 + 16 + 44 + 12 + 12 + 12 * (deflated / 8192 + 1) + deflated;
-    out.resize(size);
-    if (!png_image_write_to_memory(&png, out.data(), &size, 0, pixels, stride, nullptr)) {
+    if (out.capacity < size) {
+        out.bytes.reset(new unsigned char[size]); // default-initialised: not cleared
+        out.capacity = size;
+    }
+    if (!png_image_write_to_memory(&png, out.bytes.get(), &size, 0, pixels, stride, nullptr)) {
         const std::string message = png.message;
         png_image_free(&png);
         throw IoError(path, "cannot encode PNG: " + message);
     }
-    out.resize(size);
+    return size;
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -900,8 +910,8 @@ void writePng(const fs::path& path, const Image8& image) {
 
 void PngWriter::write(const fs::path& path, const Image8& image) {
     requirePixels(path, image);
-    encodePng(path, image, mRgb, mEncoded);
-    writeAtomically(path, mEncoded);
+    const std::size_t size = encodePng(path, image, mRgb, mEncoded);
+    writeAtomically(path, {mEncoded.bytes.get(), size});
 }
 
 void writeExr(const fs::path& path, const ImageF& image) {

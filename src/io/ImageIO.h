@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string_view>
@@ -76,9 +77,15 @@ class PngWriter {
 public:
     void write(const std::filesystem::path& path, const Image8& image);
 
+    /// A buffer that is never cleared: only what the encoder writes is touched.
+    struct EncodeBuffer {
+        std::unique_ptr<unsigned char[]> bytes;
+        std::size_t capacity = 0;
+    };
+
 private:
     std::vector<unsigned char> mRgb;
-    std::vector<unsigned char> mEncoded;
+    EncodeBuffer mEncoded;
 };
 
 /// Writes a text file (CSV telemetry, JSON) atomically, like writePng.
