@@ -383,6 +383,11 @@ void ExrFrameReader::read(const fs::path& path, ExrFrame& frame, const ImageRead
         const std::optional<Layer> normals = findLayer(path, channels, {"N.", "normal."}, {"X", "Y", "Z"});
         const std::optional<Layer> motion = findLayer(path, channels, {"motion."}, {"X", "Y"});
         frame.camera = readCameraAttributes(path, header);
+        frame.halfColor = true;
+        for (const char* name : {"R", "G", "B", "A", "Y"}) {
+            const Imf::Channel* channel = channels.findChannel(name);
+            frame.halfColor = frame.halfColor && (channel == nullptr || channel->type == Imf::HALF);
+        }
         // A layer this file lacks is empty, whatever an earlier frame read into the same storage.
         frame.depth.clear();
         frame.normals.clear();

@@ -67,6 +67,9 @@ struct ExrFrame {
     /// data window (like readImage), while worldToNDC refers to the display window.
     glm::ivec2 displaySize{0, 0};
     glm::ivec2 dataOrigin{0, 0};
+    /// Every colour channel read (R, G, B, A or Y; luminance/chroma, which OpenEXR converts in half) is
+    /// stored as half: each colour value is a half float exactly, so a half-float texture holds it unchanged.
+    bool halfColor = false;
 };
 
 /// Reads colour as readImage does, plus the layers and attributes above when present, in one pass. Throws
