@@ -303,9 +303,10 @@ int runImage(const ImageOptions& options) {
                                                 : std::optional<CameraJson>(loadCameraJson(options.camera)),
                          options.jitter == "halton" ? settings.temporal.jitterCycle : 0, options.maxPixels);
     FrameReader reader(decoder, inputs, options.inFlight > 1);
-    (void)reader.next(); // a bad first input fails before a GL context is made
+    const DecodedFrame& first = reader.next(); // a bad first input fails before a GL context is made
 
     HeadlessContext context;
+    requireTextureFits(inputs.front(), first.color.width, first.color.height); // before any GL object
     const std::unique_ptr<Pipeline> pipeline = makeImagePipeline(
         {.settings = settings, .forceLdr = options.forceLdr, .keepTelemetryHistory = telemetry.has_value()});
     InputTextures textures; // created for the first frame, re-uploaded for the others
