@@ -18,6 +18,7 @@
 #include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <thread>
@@ -268,6 +269,27 @@ std::unique_ptr<Pipeline> makeImagePipeline(const PipelineCreateInfo& createInfo
     }
 }
 
+/// Reads the frame's result back into `image`: the scene-referred image for an .exr `out`, else the display
+/// image.
+void readBack(Pipeline& pipeline, const Texture& display, const fs::path& out, FrameImage& image) {
+    if (lowerExtension(out) == ".exr") {
+        readTextureF(pipeline.sceneReferred(), image.scene);
+    } else {
+        readTexture8(display, image.display);
+    }
+}
+
+/// Prints "IN -> OUT (WxH, ms since the frame started)" once the frame is on disk.
+std::function<void()> writtenLine(const fs::path& in, const fs::path& out, Extent size,
+                                  std::chrono::steady_clock::time_point start) {
+    return [&in, &out, size, start] {
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        std::printf("%s -> %s (%dx%d, %.1f ms)\n", in.string().c_str(), out.string().c_str(), size.width,
+                    size.height, ms);
+    };
+}
+
 /// Frames in flight between the decode of one and the write of another: 1 is serial, else one frame is
 /// decoded ahead and up to inFlight - 2 (at least one) are being written behind the one on the GPU.
 std::size_t pendingWrites(int inFlight) {
@@ -332,20 +354,11 @@ int runImage(const ImageOptions& options) {
         const Texture& display = pipeline->execute(frameInputs, time);
         const fs::path& out = outPaths[i];
         FrameImage image = writer.storage();
-        if (lowerExtension(out) == ".exr") {
-            readTextureF(pipeline->sceneReferred(), image.scene);
-        } else {
-            readTexture8(display, image.display);
-        }
+        readBack(*pipeline, display, out, image);
         if (telemetry) {
             telemetry->take(*pipeline, i, i + 1 == inputs.size());
         }
-        writer.write(out, std::move(image), [&in = inputs[i], &out, start, width, height] {
-            const double ms =
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-            std::printf("%s -> %s (%dx%d, %.1f ms)\n", in.string().c_str(), out.string().c_str(), width,
-                        height, ms);
-        });
+        writer.write(out, std::move(image), writtenLine(inputs[i], out, {width, height}, start));
     }
     writer.finish();
     if (telemetry) {
