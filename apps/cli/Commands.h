@@ -44,6 +44,10 @@ struct ImageOptions {
     std::string jitter =
         "attribute"; ///< attribute: the EXR `jitter` attribute when present; halton: Photopic's
     std::int64_t maxPixels = kDefaultMaxPixels; ///< larger inputs are refused before they are decoded
+    /// Frames between decode and write at once, [1, 16]: 1 runs each frame's decode, GPU work and write one
+    /// after another; more decode one frame ahead and write up to N - 2 (at least one) behind on other
+    /// threads.
+    int inFlight = 3;
 };
 
 struct SceneOptions {

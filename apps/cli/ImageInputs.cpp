@@ -16,6 +16,7 @@
 #include <fstream>
 #include <limits>
 #include <set>
+#include <span>
 
 namespace photopic::cli {
 
@@ -208,9 +209,9 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
         mFirst = false;
         return out;
     }
-    ExrFrame frame;
+    ExrFrame& frame = mFrame; // storage kept from the frame before (recycle())
     try {
-        frame = readExrFrame(path, {.maxPixels = mMaxPixels});
+        mReader.read(path, frame, {.maxPixels = mMaxPixels});
     } catch (const IoError& e) {
         throw InputError(e.what());
     }
@@ -266,11 +267,19 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
                               mPreviousJitter.value_or(glm::vec2(0.0f)));
     }
     out.color = std::move(frame.color);
+    out.halfColor = frame.halfColor;
     mPrevious = frame.camera;
     mPreviousJitter = jitter;
     ++mIndex;
     mFirst = false;
     return out;
+}
+
+void InputDecoder::recycle(DecodedFrame&& frame) {
+    if (frame.color.rgba.capacity() > mFrame.color.rgba.capacity())
+        mFrame.color = std::move(frame.color);
+    if (frame.depth.capacity() > mFrame.depth.capacity())
+        mFrame.depth = std::move(frame.depth);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -279,18 +288,17 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
 namespace {
 
 /// Uploads `components` floats per pixel, rows top to bottom, into level 0 of `texture` (rows flipped so
-/// that texel (x, y) is image pixel (x, height - 1 - y), as Texture::uploadRgba32f does).
-void uploadFlipped(const Texture& texture, const std::vector<float>& values, int components) {
+/// that texel (x, y) is image pixel (x, height - 1 - y), as Texture::uploadRgba32f does). Row by row from
+/// `values` itself: a flipped copy would be a frame-sized allocation (page faults and a memset) every frame.
+void uploadFlipped(const Texture& texture, std::span<const float> values, int components) {
     const Extent extent = texture.extent();
     const std::size_t row = std::size_t(extent.width) * std::size_t(components);
-    std::vector<float> flipped(values.size());
-    for (int y = 0; y < extent.height; ++y) {
-        std::copy_n(values.data() + std::size_t(extent.height - 1 - y) * row, row,
-                    flipped.data() + std::size_t(y) * row);
-    }
     const GLenum format = components == 1 ? GL_RED : components == 2 ? GL_RG : GL_RGBA;
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage2D(texture.id(), 0, 0, 0, extent.width, extent.height, format, GL_FLOAT, flipped.data());
+    for (int y = 0; y < extent.height; ++y) {
+        glTextureSubImage2D(texture.id(), 0, 0, y, extent.width, 1, format, GL_FLOAT,
+                            values.data() + std::size_t(extent.height - 1 - y) * row);
+    }
 }
 
 /// Makes `texture` `extent` x `format` unless it already is.
@@ -301,10 +309,10 @@ void ensure(Texture& texture, Extent extent, GLenum format, std::string_view nam
 
 } // namespace
 
-FrameInputs InputTextures::upload(const DecodedFrame& frame) {
+FrameInputs InputTextures::upload(const DecodedFrame& frame, bool halfTexture) {
     const Extent extent{frame.color.width, frame.color.height};
-    ensure(mColor, extent, GL_RGBA32F, "cli.input.color");
-    mColor.uploadRgba32f(frame.color.rgba.data());
+    ensure(mColor, extent, halfTexture && frame.halfColor ? GL_RGBA16F : GL_RGBA32F, "cli.input.color");
+    uploadFlipped(mColor, frame.color.rgba, 4);
     FrameInputs inputs{.color = &mColor};
     if (!frame.depth.empty()) {
         ensure(mDepth, extent, GL_R32F, "cli.input.depth");

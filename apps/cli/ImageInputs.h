@@ -45,6 +45,8 @@ struct DecodedFrame {
     /// The frame's samples were jittered: it carries a `jitter` attribute, or the sequence was rendered with
     /// Photopic's Halton(2, 3) jitter (--jitter halton).
     bool jittered = false;
+    /// Every colour value is a half float exactly (an EXR whose colour channels are half).
+    bool halfColor = false;
 };
 
 /// Decodes a sequence in order, remembering the previous frame's camera attributes (prevViewProjection and
@@ -58,8 +60,13 @@ public:
                           std::int64_t maxPixels = kDefaultMaxPixels);
     /// Throws InputError naming the file for unreadable files and bad camera attributes.
     [[nodiscard]] DecodedFrame decode(const std::filesystem::path& path);
+    /// Gives back a frame decode() returned and the caller is done with: the next decode() reads into its
+    /// storage instead of allocating (and clearing) a frame's worth of memory.
+    void recycle(DecodedFrame&& frame);
 
 private:
+    ExrFrameReader mReader;
+    ExrFrame mFrame; ///< the storage decode() reads into; its colour and depth move out to the caller
     std::optional<CameraJson> mCameraJson;
     std::optional<ExrCameraAttributes> mPrevious;
     std::optional<glm::vec2> mPreviousJitter; ///< pixels, x right, y down
@@ -74,8 +81,10 @@ private:
 class InputTextures {
 public:
     /// Uploads `frame` and returns inputs pointing at the textures and camera held here (valid until the
-    /// next upload).
-    [[nodiscard]] FrameInputs upload(const DecodedFrame& frame);
+    /// next upload). `halfTexture`: the colour texture is RGBA16F instead of RGBA32F; only for a frame whose
+    /// colour is half exactly (halfColor) and a pipeline whose only reader of it fetches texels (the HDR
+    /// path's sanitize pass), which then reads the same values from half the memory.
+    [[nodiscard]] FrameInputs upload(const DecodedFrame& frame, bool halfTexture = false);
 
 private:
     Texture mColor;

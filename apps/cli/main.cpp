@@ -107,6 +107,12 @@ void addImageCommand(CLI::App& app, Cli& c) {
         ->check(CLI::IsMember({"attribute", "halton"}));
     addSettingsOptions(c.image, c.imageOptions.settings);
     addMaxPixelsOption(c.image, c.imageOptions.maxPixels);
+    c.image
+        ->add_option("--frames-in-flight", c.imageOptions.inFlight,
+                     "frames of a sequence between decode and write at once: 1 decodes, processes and writes "
+                     "each frame before the next; more decode the next frame and write earlier ones on other "
+                     "threads (same outputs, bounded memory)")
+        ->check(CLI::Range(1, 16));
 }
 
 void addSettingsCommand(CLI::App& app, Cli& c) {

@@ -23,12 +23,19 @@ Texture makeTexture(const ImageF& image, std::string_view debugName) {
 }
 
 ImageF readTextureF(const Texture& texture) {
-    ImageF image(texture.extent().width, texture.extent().height);
+    ImageF image;
+    readTextureF(texture, image);
+    return image;
+}
+
+void readTextureF(const Texture& texture, ImageF& image) {
+    image.width = texture.extent().width;
+    image.height = texture.extent().height;
+    image.rgba.resize(image.pixelCount() * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(image.rgba.size() * sizeof(float)),
                       image.rgba.data());
     flipRows(image.rgba, image.width, image.height);
-    return image;
 }
 
 std::vector<float> readDepthTexture(const Texture& texture) {
@@ -47,12 +54,19 @@ std::vector<float> readDepthTexture(const Texture& texture) {
 }
 
 Image8 readTexture8(const Texture& texture) {
-    Image8 image(texture.extent().width, texture.extent().height);
+    Image8 image;
+    readTexture8(texture, image);
+    return image;
+}
+
+void readTexture8(const Texture& texture, Image8& image) {
+    image.width = texture.extent().width;
+    image.height = texture.extent().height;
+    image.rgba.resize(std::size_t(image.width) * std::size_t(image.height) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTextureImage(texture.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(image.rgba.size()),
                       image.rgba.data());
     flipRows(image.rgba, image.width, image.height);
-    return image;
 }
 
 } // namespace photopic

@@ -19,5 +19,9 @@ ImageF readTextureF(const Texture& texture);
 std::vector<float> readDepthTexture(const Texture& texture);
 /// Blocking read of level 0 as 8-bit RGBA.
 Image8 readTexture8(const Texture& texture);
+/// readTextureF and readTexture8 into an image whose storage is kept when it already has the texture's size,
+/// so a sequence read back frame after frame allocates nothing after its first frame.
+void readTextureF(const Texture& texture, ImageF& into);
+void readTexture8(const Texture& texture, Image8& into);
 
 } // namespace photopic

@@ -21,9 +21,10 @@ namespace photopic::detail {
 
 /// The whole file, checked before OpenEXR parses it: the magic number, every header attribute's declared size
 /// against the bytes left, and the data window against `limits` and against the bytes that could hold it
-/// (OpenEXR allocates by what the header declares). Throws IoError naming `path`.
-[[nodiscard]] std::vector<unsigned char> readCheckedExrBytes(const std::filesystem::path& path,
-                                                             const ImageReadLimits& limits = {});
+/// (OpenEXR allocates by what the header declares). Throws IoError naming `path`. Into `bytes`, whose
+/// capacity is kept: a sequence's reader reuses one buffer.
+void readCheckedExrBytes(const std::filesystem::path& path, std::vector<unsigned char>& bytes,
+                         const ImageReadLimits& limits = {});
 
 /// OpenEXR's input stream over bytes in memory; reads past the end throw like a short file does.
 class MemoryIStream : public Imf::IStream {
@@ -57,11 +58,12 @@ private:
 using ExrExtraSlices =
     std::function<void(Imf::FrameBuffer& frameBuffer, const Imath::Box2i& dataWindow, int width, int height)>;
 
-/// The colour of an OpenEXR file open over `bytes`, as readImage returns it, plus whatever `extra` adds, read
-/// in the same pass. Throws IoError naming `path`; OpenEXR's exceptions pass through (callers wrap them).
-[[nodiscard]] ImageF readExrColor(const std::filesystem::path& path, std::span<const unsigned char> bytes,
-                                  Imf::InputFile& file, const ExrExtraSlices& extra = {},
-                                  const ImageReadLimits& limits = {});
+/// The colour of an OpenEXR file open over `bytes`, as readImage returns it, into `image` (its storage kept
+/// when large enough), plus whatever `extra` adds, read in the same pass. Throws IoError naming `path`;
+/// OpenEXR's exceptions pass through (callers wrap them).
+void readExrColor(const std::filesystem::path& path, std::span<const unsigned char> bytes,
+                  Imf::InputFile& file, ImageF& image, const ExrExtraSlices& extra = {},
+                  const ImageReadLimits& limits = {});
 
 /// Writes `bytes` to a temporary in the destination folder, fsyncs it and renames it over `path`.
 void writeAtomically(const std::filesystem::path& path, std::span<const unsigned char> bytes);

@@ -354,16 +354,24 @@ Lens lensFromExr(const ExrCameraAttributes& a, float verticalFov) {
 } // namespace
 
 ExrFrame readExrFrame(const fs::path& path, const ImageReadLimits& limits) {
-    const std::vector<unsigned char> bytes = detail::readCheckedExrBytes(path, limits);
+    ExrFrameReader reader;
+    ExrFrame frame;
+    reader.read(path, frame, limits);
+    return frame;
+}
+
+void ExrFrameReader::read(const fs::path& path, ExrFrame& frame, const ImageReadLimits& limits) {
+    detail::readCheckedExrBytes(path, mBytes, limits);
     try {
-        detail::MemoryIStream stream(path, bytes);
+        detail::MemoryIStream stream(path, mBytes);
         Imf::InputFile file(stream);
         const Imf::Header& header = file.header();
         const Imf::ChannelList& channels = header.channels();
 
-        ExrFrame frame;
+        frame.channels.clear();
         for (auto it = channels.begin(); it != channels.end(); ++it)
             frame.channels.emplace_back(it.name());
+        frame.attributes.clear();
         for (auto it = header.begin(); it != header.end(); ++it)
             frame.attributes.push_back(std::string(it.name()) + " (" + it.attribute().typeName() + ")");
         const Imath::Box2i display = header.displayWindow();
@@ -375,9 +383,18 @@ ExrFrame readExrFrame(const fs::path& path, const ImageReadLimits& limits) {
         const std::optional<Layer> normals = findLayer(path, channels, {"N.", "normal."}, {"X", "Y", "Z"});
         const std::optional<Layer> motion = findLayer(path, channels, {"motion."}, {"X", "Y"});
         frame.camera = readCameraAttributes(path, header);
+        frame.halfColor = true;
+        for (const char* name : {"R", "G", "B", "A", "Y"}) {
+            const Imf::Channel* channel = channels.findChannel(name);
+            frame.halfColor = frame.halfColor && (channel == nullptr || channel->type == Imf::HALF);
+        }
+        // A layer this file lacks is empty, whatever an earlier frame read into the same storage.
+        frame.depth.clear();
+        frame.normals.clear();
+        frame.motion.clear();
 
-        frame.color = detail::readExrColor(
-            path, bytes, file,
+        detail::readExrColor(
+            path, mBytes, file, frame.color,
             [&](Imf::FrameBuffer& frameBuffer, const Imath::Box2i& dataWindow, int width, int height) {
                 if (depth)
                     addLayerSlices(frameBuffer, *depth, frame.depth, dataWindow, width, height);
@@ -385,8 +402,8 @@ ExrFrame readExrFrame(const fs::path& path, const ImageReadLimits& limits) {
                     addLayerSlices(frameBuffer, *normals, frame.normals, dataWindow, width, height);
                 if (motion)
                     addLayerSlices(frameBuffer, *motion, frame.motion, dataWindow, width, height);
-            });
-        return frame;
+            },
+            limits);
     } catch (const IoError&) {
         throw;
     } catch (const std::exception& e) {

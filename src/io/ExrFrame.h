@@ -67,12 +67,28 @@ struct ExrFrame {
     /// data window (like readImage), while worldToNDC refers to the display window.
     glm::ivec2 displaySize{0, 0};
     glm::ivec2 dataOrigin{0, 0};
+    /// Every colour channel read (R, G, B, A or Y; luminance/chroma, which OpenEXR converts in half) is
+    /// stored as half: each colour value is a half float exactly, so a half-float texture holds it unchanged.
+    bool halfColor = false;
 };
 
 /// Reads colour as readImage does, plus the layers and attributes above when present, in one pass. Throws
 /// IoError naming the file for anything readImage rejects, a layer with some of its components missing
 /// (N.X and N.Y without N.Z) and a camera attribute of the wrong type.
 [[nodiscard]] ExrFrame readExrFrame(const std::filesystem::path& path, const ImageReadLimits& limits = {});
+
+/// readExrFrame for a sequence: each frame is read into storage kept from the one before (the file's bytes
+/// here, the layers in the ExrFrame passed in), so after its first frame a sequence of one size allocates
+/// no pixel memory: no page faults, no clearing of buffers that are overwritten anyway.
+class ExrFrameReader {
+public:
+    /// readExrFrame into `frame`, every field replaced; its vectors' capacity is reused. On IoError
+    /// `frame` holds no meaningful values.
+    void read(const std::filesystem::path& path, ExrFrame& frame, const ImageReadLimits& limits = {});
+
+private:
+    std::vector<unsigned char> mBytes;
+};
 /// Writes colour (half RGBA), Z (float), N.X/Y/Z (half), motion.X/Y (float) for the layers that are not
 /// empty, and the camera attributes that are set; data window = display window = the colour image (the
 /// displaySize/dataOrigin fields are not written). Atomic, like writeExr; throws IoError naming the file when

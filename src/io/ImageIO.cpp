@@ -11,7 +11,9 @@
 #include <ImfInputFile.h>
 #include <ImfRgbaFile.h>
 #include <ImfStdIO.h>
+#include <ImfThreading.h>
 #include <png.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -69,13 +71,18 @@ void requireRegularFile(const fs::path& path) {
         throw IoError(path, "is not a regular file");
 }
 
-/// The first `limit` bytes of the file (all of it by default).
-Bytes readBytes(const fs::path& path, std::size_t limit = SIZE_MAX) {
+/// The first `limit` bytes of the file (all of it by default), into `bytes` (its capacity kept).
+void readBytes(const fs::path& path, Bytes& bytes, std::size_t limit = SIZE_MAX) {
     const FilePtr file(std::fopen(path.c_str(), "rb"));
     if (!file)
         throw IoError(path, "cannot open: " + errnoMessage(errno));
     constexpr std::size_t kChunk = std::size_t(1) << 20;
-    Bytes bytes;
+    bytes.clear();
+    // One allocation of the file's size, not a doubling series (each step copied, the old block left in
+    // the heap): a frame's file is read into one buffer, which the next frame's reuses.
+    struct stat info {};
+    if (::fstat(::fileno(file.get()), &info) == 0 && info.st_size > 0)
+        bytes.reserve(std::min(std::size_t(info.st_size), limit));
     while (bytes.size() < limit) {
         const std::size_t old = bytes.size();
         const std::size_t want = std::min(kChunk, limit - old);
@@ -88,6 +95,11 @@ Bytes readBytes(const fs::path& path, std::size_t limit = SIZE_MAX) {
             break;
         }
     }
+}
+
+Bytes readBytes(const fs::path& path) {
+    Bytes bytes;
+    readBytes(path, bytes);
     return bytes;
 }
 
@@ -276,7 +288,9 @@ ImageF readExr(const fs::path& path, std::span<const unsigned char> bytes, const
         checkExrHeader(path, bytes, limits);
         detail::MemoryIStream stream(path, bytes);
         Imf::InputFile file(stream);
-        return detail::readExrColor(path, bytes, file, {}, limits);
+        ImageF image;
+        detail::readExrColor(path, bytes, file, image, {}, limits);
+        return image;
     } catch (const IoError&) {
         throw;
     } catch (const std::exception& e) {
@@ -604,13 +618,15 @@ ImageF readPngLinear(const fs::path& path, std::span<const unsigned char> bytes,
     return image;
 }
 
-Bytes encodePng(const fs::path& path, const Image8& image) {
+/// Encodes `image` into `out` (its first `size` bytes), `rgb` holding the alpha-less copy of an opaque image;
+/// both are kept, so a sequence encoded through the same buffers allocates once. `out` is sized for the worst
+/// case and never cleared: only the pages the stream is written to are touched.
+std::size_t encodePng(const fs::path& path, const Image8& image, Bytes& rgb, PngWriter::EncodeBuffer& out) {
     bool opaque = true;
     for (std::size_t i = 3; i < image.rgba.size() && opaque; i += 4)
         opaque = image.rgba[i] == 255;
     const std::size_t pixelCount = std::size_t(image.width) * std::size_t(image.height);
     const std::size_t channels = opaque ? 3 : 4;
-    Bytes rgb;
     if (opaque) {
         rgb.resize(pixelCount * 3);
         for (std::size_t i = 0; i < pixelCount; ++i)
@@ -633,14 +649,16 @@ Bytes encodePng(const fs::path& path, const Image8& image) {
     const std::size_t raw = std::size_t(image.height) * (std::size_t(stride) + 1);
     const std::size_t deflated = raw + (raw + 7) / 8 + (raw + 63) / 64 + 11;
     png_alloc_size_t size = 8 + 25 + 16 + 44 + 12 + 12 + 12 * (deflated / 8192 + 1) + deflated;
-    Bytes out(size);
-    if (!png_image_write_to_memory(&png, out.data(), &size, 0, pixels, stride, nullptr)) {
+    if (out.capacity < size) {
+        out.bytes.reset(new unsigned char[size]); // default-initialised: not cleared
+        out.capacity = size;
+    }
+    if (!png_image_write_to_memory(&png, out.bytes.get(), &size, 0, pixels, stride, nullptr)) {
         const std::string message = png.message;
         png_image_free(&png);
         throw IoError(path, "cannot encode PNG: " + message);
     }
-    out.resize(size);
-    return out;
+    return size;
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -685,17 +703,17 @@ void requirePixels(const fs::path& path, const Image& image) {
 // ---------------------------------------------------------------------------------------------------------------
 // Shared with ExrFrame.cpp (io/ExrDetail.h)
 
-std::vector<unsigned char> detail::readCheckedExrBytes(const fs::path& path, const ImageReadLimits& limits) {
+void detail::readCheckedExrBytes(const fs::path& path, std::vector<unsigned char>& bytes,
+                                 const ImageReadLimits& limits) {
     requireRegularFile(path);
-    Bytes bytes = readBytes(path);
+    readBytes(path, bytes);
     if (!startsWith(bytes, kExrMagic))
         throw IoError(path, "is not an OpenEXR file (no OpenEXR magic number)");
     checkExrHeader(path, bytes, limits);
-    return bytes;
 }
 
-ImageF detail::readExrColor(const fs::path& path, std::span<const unsigned char> bytes, Imf::InputFile& file,
-                            const ExrExtraSlices& extra, const ImageReadLimits& limits) {
+void detail::readExrColor(const fs::path& path, std::span<const unsigned char> bytes, Imf::InputFile& file,
+                          ImageF& image, const ExrExtraSlices& extra, const ImageReadLimits& limits) {
     const Imf::Header& header = file.header();
     const Imath::Box2i dataWindow = header.dataWindow();
     const std::int64_t width64 = std::int64_t(dataWindow.max.x) - dataWindow.min.x + 1;
@@ -710,14 +728,14 @@ ImageF detail::readExrColor(const fs::path& path, std::span<const unsigned char>
     const auto has = [&](const char* name) { return channels.findChannel(name) != nullptr; };
     const bool hasRgb = has("R") || has("G") || has("B");
     if (!hasRgb && has("Y") && (has("RY") || has("BY"))) {
-        ImageF image = readExrLuminanceChroma(path, bytes, width, height);
+        image = readExrLuminanceChroma(path, bytes, width, height);
         if (extra) { // RgbaInputFile reads colour only: the extra layers take a second pass
             Imf::FrameBuffer frameBuffer;
             extra(frameBuffer, dataWindow, width, height);
             file.setFrameBuffer(frameBuffer);
             file.readPixels(dataWindow.min.y, dataWindow.max.y);
         }
-        return image;
+        return;
     }
     if (!hasRgb && !has("Y")) {
         std::string names;
@@ -726,7 +744,11 @@ ImageF detail::readExrColor(const fs::path& path, std::span<const unsigned char>
         throw IoError(path, "OpenEXR file has no R, G, B or Y channel (channels: " + names + ")");
     }
 
-    ImageF image(width, height);
+    // Every value is written below (absent channels take their fill), so storage kept from an earlier frame
+    // needs no clearing.
+    image.width = width;
+    image.height = height;
+    image.rgba.resize(image.pixelCount() * 4);
     Imf::FrameBuffer frameBuffer;
     const std::size_t xStride = 4 * sizeof(float);
     const std::size_t yStride = xStride * std::size_t(width);
@@ -752,7 +774,6 @@ ImageF detail::readExrColor(const fs::path& path, std::span<const unsigned char>
         for (std::size_t i = 0; i < image.pixelCount(); ++i)
             image.rgba[i * 4 + 1] = image.rgba[i * 4 + 2] = image.rgba[i * 4];
     }
-    return image;
 }
 
 void detail::writeAtomically(const fs::path& path, std::span<const unsigned char> bytes) {
@@ -855,6 +876,10 @@ ImageF decodeImage(std::span<const unsigned char> bytes, const fs::path& name,
     throw IoError(name, unknownFormatMessage(name, bytes.first(std::min<std::size_t>(bytes.size(), 16))));
 }
 
+void setExrThreads(int threads) {
+    Imf::setGlobalThreadCount(std::max(threads, 0));
+}
+
 ImageF readImage(const fs::path& path, const ImageReadLimits& limits) {
     requireRegularFile(path);
     const Bytes bytes = readBytes(path);
@@ -880,8 +905,13 @@ Image8 readPng8(const fs::path& path, const ImageReadLimits& limits) {
 }
 
 void writePng(const fs::path& path, const Image8& image) {
+    PngWriter().write(path, image);
+}
+
+void PngWriter::write(const fs::path& path, const Image8& image) {
     requirePixels(path, image);
-    writeAtomically(path, encodePng(path, image));
+    const std::size_t size = encodePng(path, image, mRgb, mEncoded);
+    writeAtomically(path, {mEncoded.bytes.get(), size});
 }
 
 void writeExr(const fs::path& path, const ImageF& image) {

@@ -7,9 +7,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string_view>
+#include <vector>
 
 namespace photopic {
 
@@ -45,6 +47,10 @@ struct ImageReadLimits {
 /// gigabytes).
 [[nodiscard]] ImageF readImage(const std::filesystem::path& path, const ImageReadLimits& limits = {});
 
+/// Threads OpenEXR decodes (and encodes) a file's chunks on: 0 decodes on the calling thread (OpenEXR's own
+/// default). The pool is process-wide; the pixels are the same whatever the count.
+void setExrThreads(int threads);
+
 /// readImage on bytes already in memory; `name` only names the source in errors. Any byte string gives an
 /// image or an IoError (the fuzzers hold it to that).
 [[nodiscard]] ImageF decodeImage(std::span<const unsigned char> bytes, const std::filesystem::path& name,
@@ -63,6 +69,24 @@ struct ImageReadLimits {
 /// failure the temporary is removed, `path` is left as it was and IoError is thrown. The destination folder
 /// must already exist; it is never created.
 void writePng(const std::filesystem::path& path, const Image8& image);
+
+/// writePng for a sequence: the encoder's buffers (an opaque image's RGB copy, the encoded stream) are kept
+/// from one image to the next, so frames of one size allocate nothing after the first. The same bytes as
+/// writePng. One thread at a time.
+class PngWriter {
+public:
+    void write(const std::filesystem::path& path, const Image8& image);
+
+    /// A buffer that is never cleared: only what the encoder writes is touched.
+    struct EncodeBuffer {
+        std::unique_ptr<unsigned char[]> bytes;
+        std::size_t capacity = 0;
+    };
+
+private:
+    std::vector<unsigned char> mRgb;
+    EncodeBuffer mEncoded;
+};
 
 /// Writes a text file (CSV telemetry, JSON) atomically, like writePng.
 void writeTextFile(const std::filesystem::path& path, std::string_view text);

@@ -39,6 +39,7 @@ Buffer meteringResetBuffer() {
 
 MeteringPass::MeteringPass()
     : mMeter(makeComputeProgram("passes/metering/metering.comp.glsl", bindingDefines()))
+    , mMeterRows(makeComputeProgram("passes/metering/metering_rows.comp.glsl", bindingDefines()))
     , mReduce(makeComputeProgram("passes/metering/metering_reduce.comp.glsl", bindingDefines()))
     , mMeterParameters("metering parameters")
     , mReduceParameters("metering reduce parameters")
@@ -123,8 +124,8 @@ void MeteringPass::resize(Extent extent) {
     mExtent = extent;
     mGroupsX = (extent.width + kGroupSize - 1) / kGroupSize;
     mGroupsY = (extent.height + kGroupSize - 1) / kGroupSize;
-    const std::size_t bytes =
-        sizeof(GpuMeteringHeader) + std::size_t(mGroupsX) * std::size_t(mGroupsY) * 2 * sizeof(float);
+    const std::size_t bytes = sizeof(GpuMeteringHeader) + std::size_t(mGroupsX) * std::size_t(mGroupsY) *
+                                                              std::size_t(kGroupSize) * 2 * sizeof(float);
     mMetering = Buffer({.size = bytes, .flags = 0, .data = nullptr, .debugName = "metering partials"});
 }
 
@@ -157,7 +158,8 @@ MeteringPass::Outputs MeteringPass::execute(const Inputs& in) noexcept {
                              .log2Min = s.histogramLog2Min,
                              .log2Max = s.histogramLog2Max});
     mMeterParameters.bind(kBindingParameters);
-    mMeter.use();
+    const int rowsPerGroup = in.histogram ? 1 : kGroupSize;
+    (in.histogram ? mMeter : mMeterRows).use();
     glDispatchCompute(GLuint(mGroupsX), GLuint(mGroupsY), 1);
 
     if (in.weights != Weights::None) {
@@ -166,7 +168,8 @@ MeteringPass::Outputs MeteringPass::execute(const Inputs& in) noexcept {
                                   .groups = mGroupsX * mGroupsY,
                                   .spotUv = {s.spot.u, s.spot.v},
                                   .spotRadius = s.spot.radius,
-                                  .spotTaps = s.spot.taps});
+                                  .spotTaps = s.spot.taps,
+                                  .rowsPerGroup = rowsPerGroup});
         mReduceParameters.bind(kBindingParameters);
         mReduce.use();
         glDispatchCompute(1, 1, 1);

@@ -30,13 +30,15 @@ struct MeteringReduceParameters {
     float spotUv[2] = {0.5f, 0.5f}; ///< image UV, v down
     float spotRadius = 0.0f;
     std::int32_t spotTaps = 0;
-    std::int32_t padding[2] = {};
+    std::int32_t rowsPerGroup = 1; ///< partials per block: 1 (histogram shader) or 16 (row shader)
+    std::int32_t padding = 0;
 };
 static_assert(sizeof(MeteringReduceParameters) == 32);
 static_assert(offsetof(MeteringReduceParameters, groups) == 4 &&
               offsetof(MeteringReduceParameters, spotUv) == 8 &&
               offsetof(MeteringReduceParameters, spotRadius) == 16 &&
-              offsetof(MeteringReduceParameters, spotTaps) == 20);
+              offsetof(MeteringReduceParameters, spotTaps) == 20 &&
+              offsetof(MeteringReduceParameters, rowsPerGroup) == 24);
 
 class MeteringPass final : public FramePass {
 public:
@@ -62,7 +64,7 @@ public:
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
     /// Loads the mask image that `autoExposure.mask.path` names (throws IoError naming the file).
     void configure(const Settings& settings) override;
-    /// Sizes the partial-sum buffer for `extent` (one vec2 per 16x16 workgroup).
+    /// Sizes the partial-sum buffer for `extent` (one vec2 per row of each 16x16 block).
     void resize(Extent extent) override;
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
@@ -73,7 +75,8 @@ public:
     [[nodiscard]] static Weights weightsFor(const AutoExposureSettings& ae, bool haveMask) noexcept;
 
     /// Clears the bins and the min/max, then meters: nothing more when neither a histogram nor a mean is
-    /// wanted, else one metering dispatch plus, for a mean, one reduction dispatch.
+    /// wanted, else one metering dispatch plus, for a mean, one reduction dispatch. Without a histogram the
+    /// metering dispatch is the barrier-free row shader, which gives the same reading bit for bit.
     Outputs execute(const Inputs& in) noexcept;
     [[nodiscard]] Outputs outputs() const { return {&mHistogram, &mMetering}; }
 
@@ -81,6 +84,7 @@ public:
 
 private:
     Program mMeter;
+    Program mMeterRows; ///< no histogram: one invocation per block row, no barriers
     Program mReduce;
     ParameterBlock<MeteringParameters> mMeterParameters;
     ParameterBlock<MeteringReduceParameters> mReduceParameters;

@@ -1,5 +1,7 @@
 // Final reduction of the weighted geometric mean (core/Metering.h: exp2(sum(w log2 L) / sum(w)), 0 when no weight):
-// one workgroup folds every partial of metering.comp.glsl, or, for spot metering, the 1/5/9/13 taps of the disc.
+// one workgroup folds every block's partial of metering.comp.glsl (or the block's rows of metering_rows.comp.glsl,
+// added top to bottom first, the order that shader's block totals use), or, for spot metering, the 1/5/9/13 taps
+// of the disc.
 #include "passes/common/sanitize.h.glsl"
 #include "passes/metering/metering.h.glsl"
 #include "passes/metering/metering_buffers.h.glsl"
@@ -14,6 +16,7 @@ layout(std140, binding = BINDING_PARAMETERS) uniform MeteringReduceParameters {
     vec2 uSpotUv; // image UV, v down
     float uSpotRadius;
     int uSpotTaps;
+    int uRowsPerGroup; // 1: one partial per block (metering.comp.glsl); 16: one per block row (metering_rows)
 };
 
 shared float sSum[256];
@@ -35,7 +38,10 @@ void main() {
         }
     } else {
         for (int i = int(li); i < uGroups; i += 256) {
-            vec2 partial = gPartials[i];
+            vec2 partial = vec2(0.0);
+            for (int r = 0; r < uRowsPerGroup; ++r) {
+                partial += gPartials[i * uRowsPerGroup + r];
+            }
             sum += partial.x;
             weight += partial.y;
         }

@@ -1,0 +1,189 @@
+#include "FrameStream.h"
+
+#include "io/ImageIO.h"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+#include <utility>
+
+namespace photopic::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+/// Encoder threads at most: PNG encoding is one thread's work per frame, and on a machine with few cores
+/// more would only take cores from the GPU (llvmpipe) work.
+constexpr std::size_t kMaxWorkers = 2;
+} // namespace
+
+// ---------------------------------------------------------------------------------------------------------------
+// Worker
+
+Worker::Worker()
+    : mThread([this] { loop(); }) {}
+
+Worker::~Worker() {
+    {
+        const std::lock_guard lock(mMutex);
+        mStop = true;
+    }
+    mWake.notify_one();
+    mThread.join();
+}
+
+void Worker::post(std::function<void()> task) {
+    {
+        const std::lock_guard lock(mMutex);
+        mTasks.push_back(std::move(task));
+    }
+    mWake.notify_one();
+}
+
+void Worker::loop() {
+    for (;;) {
+        std::function<void()> task;
+        {
+            std::unique_lock lock(mMutex);
+            mWake.wait(lock, [this] { return mStop || !mTasks.empty(); });
+            if (mTasks.empty()) {
+                return; // stopped, and nothing left to run
+            }
+            task = std::move(mTasks.front());
+            mTasks.pop_front();
+        }
+        task(); // a packaged task: its exception goes to its future
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Reading
+
+FrameReader::FrameReader(InputDecoder& decoder, const std::vector<fs::path>& inputs, bool ahead)
+    : mDecoder(decoder)
+    , mInputs(inputs)
+    , mAhead(ahead) {
+    if (mAhead) {
+        mWorker = std::make_unique<Worker>();
+        start();
+    }
+}
+
+FrameReader::~FrameReader() {
+    if (mPending.valid()) {
+        mPending.wait();
+    }
+}
+
+void FrameReader::start() {
+    if (mNext >= mInputs.size()) {
+        return;
+    }
+    // The decoder keeps the previous frame's camera, so frames are decoded one after another, never two at
+    // once: a decode starts only after the one before it was taken.
+    const fs::path& path = mInputs[mNext++];
+    mPending = mWorker->run([this, &path] { return mDecoder.decode(path); });
+}
+
+const DecodedFrame& FrameReader::next() {
+    if (!mHave) {
+        mCurrent = mAhead ? mPending.get() : mDecoder.decode(mInputs[mNext++]);
+        mHave = true;
+    }
+    return mCurrent;
+}
+
+void FrameReader::release() {
+    mDecoder.recycle(std::move(mCurrent)); // no decode is running now
+    mCurrent = {};
+    mHave = false;
+    if (mAhead) {
+        start();
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Writing
+
+namespace {
+
+bool isExrPath(const fs::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".exr";
+}
+
+FrameImage writeFrame(const fs::path& path, FrameImage image, PngWriter& png) {
+    if (isExrPath(path)) {
+        writeExr(path, image.scene);
+    } else {
+        png.write(path, image.display);
+    }
+    return image;
+}
+
+} // namespace
+
+FrameWriter::FrameWriter(RunOutputs& outputs, std::size_t maxPending)
+    : mOutputs(outputs)
+    , mMaxPending(maxPending)
+    , mEncoders(std::max<std::size_t>(std::min<std::size_t>(maxPending, kMaxWorkers), 1)) {
+    for (std::size_t i = 0; maxPending > 0 && i < mEncoders.size(); ++i) {
+        mWorkers.push_back(std::make_unique<Worker>());
+    }
+}
+
+FrameWriter::~FrameWriter() {
+    for (Pending& p : mPending) {
+        try {
+            p.done.get();
+            mOutputs.wrote(p.path);
+        } catch (...) { // the run is failing already; the writer removed its own temporary
+        }
+    }
+}
+
+FrameImage FrameWriter::storage() {
+    if (mFree.empty()) {
+        return {};
+    }
+    FrameImage image = std::move(mFree.back());
+    mFree.pop_back();
+    return image;
+}
+
+void FrameWriter::write(const fs::path& path, FrameImage image, std::function<void()> report) {
+    if (mWorkers.empty()) {
+        mFree.push_back(writeFrame(path, std::move(image), mEncoders.front()));
+        mOutputs.wrote(path);
+        report();
+        return;
+    }
+    while (mPending.size() >= mMaxPending) {
+        retireOldest();
+    }
+    const std::size_t w = mWritten++ % mWorkers.size();
+    PngWriter& png = mEncoders[w];
+    mPending.push_back({.path = path,
+                        .done = mWorkers[w]->run([path, image = std::move(image), &png]() mutable {
+                            return writeFrame(path, std::move(image), png);
+                        }),
+                        .report = std::move(report)});
+}
+
+void FrameWriter::retireOldest() {
+    Pending p = std::move(mPending.front());
+    mPending.pop_front();
+    mFree.push_back(p.done.get());
+    mOutputs.wrote(p.path);
+    p.report();
+}
+
+void FrameWriter::finish() {
+    while (!mPending.empty()) {
+        retireOldest();
+    }
+}
+
+} // namespace photopic::cli

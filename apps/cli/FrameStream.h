@@ -1,0 +1,131 @@
+#pragma once
+// `photopic image` over a sequence streams its frames: while the GL thread processes frame N, frame N+1 is
+// decoded and frames N-1, N-2, ... are encoded and written on other threads. Everything else stays on the
+// calling thread in frame order (GL, telemetry, the lines printed, RunOutputs), so the outputs, the telemetry
+// and the console are the same as a serial run's. What is in flight is bounded (one frame decoded ahead, a
+// fixed number being written), so memory stays flat over a sequence of any length, and the images read back
+// are recycled, so a steady-state frame allocates none.
+
+#include "ImageInputs.h"
+#include "Outputs.h"
+
+#include "core/Image.h"
+
+#include "io/ImageIO.h"
+
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
+#include <filesystem>
+#include <functional>
+#include <future>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace photopic::cli {
+
+/// One thread that runs the tasks given to it one after another, in order; each task's result or exception
+/// comes back through the future run() returns. A thread that lives as long as the sequence (rather than
+/// one per task) keeps its buffers in one malloc arena, where the next frame finds them again.
+class Worker {
+public:
+    Worker();
+    /// Runs the tasks still queued, then joins.
+    ~Worker();
+    Worker(const Worker&) = delete;
+    Worker& operator=(const Worker&) = delete;
+
+    template <class F>
+    [[nodiscard]] auto run(F task) -> std::future<decltype(task())> {
+        using Result = decltype(task());
+        auto packaged = std::make_shared<std::packaged_task<Result()>>(std::move(task));
+        std::future<Result> result = packaged->get_future();
+        post([packaged] { (*packaged)(); });
+        return result;
+    }
+
+private:
+    void post(std::function<void()> task);
+    void loop();
+    std::mutex mMutex;
+    std::condition_variable mWake;
+    std::deque<std::function<void()>> mTasks;
+    bool mStop = false;
+    std::thread mThread;
+};
+
+/// Decodes a sequence's frames in order into one frame's storage: the next frame is decoded (on a worker
+/// thread when `ahead`) as soon as the caller has released this one, i.e. uploaded it, so its decode runs
+/// while this frame is on the GPU, and a sequence holds one decoded frame whatever its length. A decode
+/// error (InputError) comes out of next() for the frame it belongs to.
+class FrameReader {
+public:
+    FrameReader(InputDecoder& decoder, const std::vector<std::filesystem::path>& inputs, bool ahead);
+    /// Waits for the decode in flight (its error, if any, goes with it: the run failed already).
+    ~FrameReader();
+    FrameReader(const FrameReader&) = delete;
+    FrameReader& operator=(const FrameReader&) = delete;
+
+    /// The current frame, in input order (waits for its decode); the same frame until release().
+    [[nodiscard]] const DecodedFrame& next();
+    /// The caller is done with the frame next() returned: its storage goes back to the decoder, which starts
+    /// on the following frame (at once when `ahead`, else at the next next()).
+    void release();
+
+private:
+    void start();
+    InputDecoder& mDecoder;
+    const std::vector<std::filesystem::path>& mInputs;
+    bool mAhead;
+    std::size_t mNext = 0; ///< the index of the frame decoded next
+    bool mHave = false;    ///< mCurrent holds the frame next() returned, not yet released
+    DecodedFrame mCurrent;
+    std::future<DecodedFrame> mPending;
+    std::unique_ptr<Worker> mWorker; ///< last: joined before the members its task uses go
+};
+
+/// A frame read back from the GPU: the display image (PNG outputs) or the scene-referred one (EXR outputs).
+struct FrameImage {
+    Image8 display;
+    ImageF scene;
+};
+
+/// Encodes and writes frames on worker threads, at most `maxPending` at a time (0: on the caller's thread,
+/// before write() returns), and reports each written frame in the order the frames were given: the path
+/// goes to RunOutputs and `report` runs, both on the caller's thread.
+class FrameWriter {
+public:
+    FrameWriter(RunOutputs& outputs, std::size_t maxPending);
+    /// Waits for every write still running; the files that were written go to RunOutputs (which removes
+    /// them when the run failed).
+    ~FrameWriter();
+    FrameWriter(const FrameWriter&) = delete;
+    FrameWriter& operator=(const FrameWriter&) = delete;
+
+    /// Storage for the next frame's read-back, recycled from a frame already written when there is one.
+    [[nodiscard]] FrameImage storage();
+    /// Writes `image.scene` to an .exr `path`, else `image.display` as PNG. When `maxPending` writes are
+    /// running, first waits for the oldest (and throws its error).
+    void write(const std::filesystem::path& path, FrameImage image, std::function<void()> report);
+    /// Waits for every write, in order; throws the first error.
+    void finish();
+
+private:
+    struct Pending {
+        std::filesystem::path path;
+        std::future<FrameImage> done;
+        std::function<void()> report;
+    };
+    void retireOldest();
+    RunOutputs& mOutputs;
+    std::size_t mMaxPending;
+    std::deque<Pending> mPending;
+    std::vector<FrameImage> mFree;
+    std::size_t mWritten = 0;         ///< frames given to write(); frame i goes to worker i % workers
+    std::vector<PngWriter> mEncoders; ///< one per worker, used only on its thread
+    std::vector<std::unique_ptr<Worker>> mWorkers; ///< last: joined before the encoders go
+};
+
+} // namespace photopic::cli
