@@ -297,7 +297,8 @@ ImageF benchInput(const BenchOptions& options) {
     return readInput(options.input, options.maxPixels);
 }
 
-/// Depth (R32F linear), motion (RG16F, zero), a camera and a sun for the benchmark frame.
+/// Depth (R32F linear), view-space normals (RGBA16F, facing the camera), motion (RG16F, zero), a camera and a
+/// sun for the benchmark frame: a wall 10 units away.
 class BenchInputs3d {
 public:
     /// `sunInView`: the sun ahead of the camera, near the image's centre, so volumetric light marches every
@@ -306,11 +307,14 @@ public:
         : mSunDirection(sunInView ? glm::normalize(glm::vec3(0.05f, 0.03f, -1.0f))
                                   : glm::normalize(glm::vec3(0.3f, 0.5f, 0.8f)))
         , mDepth({.extent = {width, height}, .format = GL_R32F, .debugName = "bench depth"})
+        , mNormals({.extent = {width, height}, .format = GL_RGBA16F, .debugName = "bench normals"})
         , mMotion({.extent = {width, height}, .format = GL_RG16F, .debugName = "bench motion"}) {
         const float depth = 10.0f;
         glClearTexImage(mDepth.id(), 0, GL_RED, GL_FLOAT, &depth);
         const float zero[2] = {0.0f, 0.0f};
         glClearTexImage(mMotion.id(), 0, GL_RG, GL_FLOAT, zero);
+        const float facing[4] = {0.0f, 0.0f, 1.0f, 0.0f};
+        glClearTexImage(mNormals.id(), 0, GL_RGBA, GL_FLOAT, facing);
         mCamera.projection = perspectiveProjection(mCamera.verticalFov, float(width) / float(height),
                                                    mCamera.nearPlane, mCamera.farPlane);
         mCamera.prevViewProjection = mCamera.viewProjection();
@@ -319,6 +323,7 @@ public:
         return {.color = &color,
                 .depth = &mDepth,
                 .depthKind = DepthKind::LinearView,
+                .normals = &mNormals,
                 .motion = &mMotion,
                 .camera = &mCamera,
                 // Unless the sun is in view: behind the camera, up and to the right; the wall faces it, so
@@ -329,6 +334,7 @@ public:
 private:
     glm::vec3 mSunDirection;
     Texture mDepth;
+    Texture mNormals;
     Texture mMotion;
     Camera mCamera;
 };

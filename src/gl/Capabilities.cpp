@@ -62,4 +62,12 @@ Capabilities detectCapabilities(bool forceLdr) {
     return caps;
 }
 
+bool isSoftwareRenderer() {
+    const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string_view renderer = name ? name : "";
+    return renderer.find("llvmpipe") != std::string_view::npos ||
+           renderer.find("softpipe") != std::string_view::npos ||
+           renderer.find("SwiftShader") != std::string_view::npos;
+}
+
 } // namespace photopic

@@ -20,4 +20,8 @@ struct Capabilities {
 /// LDR path whatever the hardware can do; the reason says so.
 Capabilities detectCapabilities(bool forceLdr = false);
 
+/// True when the current context renders on the CPU (Mesa llvmpipe or softpipe, SwiftShader): there a
+/// workgroup barrier costs more than the work between two, on a GPU it costs next to nothing.
+bool isSoftwareRenderer();
+
 } // namespace photopic

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <random>
 
 namespace photopic::test {
@@ -53,14 +54,20 @@ struct GpuMetering {
     GpuMeteringHeader header;
 };
 
+/// `rows`: which shader meters without a histogram (the row shader, or the block shader; by default the one
+/// the device gets).
 GpuMetering meterOnGpu(const ImageF& image, const AutoExposureSettings& settings,
-                       MeteringPass::Weights weights, bool histogram, const ImageF* mask = nullptr) {
+                       MeteringPass::Weights weights, bool histogram, const ImageF* mask = nullptr,
+                       std::optional<bool> rows = std::nullopt) {
     const Texture texture = makeTexture(image, "metering input");
     Texture maskTexture;
     if (mask) {
         maskTexture = makeTexture(*mask, "metering mask");
     }
     MeteringPass pass;
+    if (rows) {
+        pass.setRowShaderWithoutHistogram(*rows);
+    }
     pass.resize(texture.extent());
     const MeteringPass::Outputs out = pass.execute({.scene = &texture,
                                                     .mask = mask ? &maskTexture : nullptr,
@@ -212,6 +219,34 @@ TEST_F(GlTest, GpuSpotFollowsItsDisc) {
     EXPECT_NEAR(edge.header.reading / meterSpot(image, settings.spot), 1.0f, 1e-4f);
     EXPECT_GT(edge.header.reading, 0.02f);
     EXPECT_LT(edge.header.reading, 3.0f);
+}
+
+} // namespace photopic::test
+
+namespace photopic::test {
+
+// Without a histogram, a software renderer meters with the barrier-free row shader and a GPU with the block
+// shader: the same reading, bit for bit, in every weighted mode (odd size: partial blocks at two edges).
+TEST_F(GlTest, RowAndBlockMeteringShadersGiveTheSameReading) {
+    const ImageF image = randomImage(157, 93, 7u);
+    ImageF mask(157, 93, 0.0f);
+    for (int y = 0; y < 93; ++y) {
+        for (int x = 0; x < 157; ++x) {
+            mask.at(x, y)[0] = float((x * 3 + y) % 11) / 10.0f;
+        }
+    }
+    AutoExposureSettings settings;
+    for (const MeteringPass::Weights weights :
+         {MeteringPass::Weights::Average, MeteringPass::Weights::Center, MeteringPass::Weights::Mask}) {
+        const ImageF* m = weights == MeteringPass::Weights::Mask ? &mask : nullptr;
+        const GpuMetering rows = meterOnGpu(image, settings, weights, false, m, true);
+        const GpuMetering block = meterOnGpu(image, settings, weights, false, m, false);
+        EXPECT_GT(rows.header.reading, 0.0f);
+        EXPECT_EQ(rows.header.reading, block.header.reading) << int(weights);
+        EXPECT_EQ(rows.header.weightSum, block.header.weightSum) << int(weights);
+        EXPECT_EQ(rows.header.minBits, block.header.minBits);
+        EXPECT_EQ(rows.header.maxBits, block.header.maxBits);
+    }
 }
 
 } // namespace photopic::test

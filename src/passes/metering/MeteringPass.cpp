@@ -1,6 +1,7 @@
 #include "passes/metering/MeteringPass.h"
 
 #include "core/Log.h"
+#include "gl/Capabilities.h"
 #include "gl/TextureIo.h"
 #include "io/ImageIO.h"
 #include "passes/Bindings.h"
@@ -44,7 +45,8 @@ MeteringPass::MeteringPass()
     , mMeterParameters("metering parameters")
     , mReduceParameters("metering reduce parameters")
     , mHistogram({.size = kGpuHistogramBytes, .flags = 0, .data = nullptr, .debugName = "histogram bins"})
-    , mMeteringReset(meteringResetBuffer()) {}
+    , mMeteringReset(meteringResetBuffer())
+    , mRowsWithoutHistogram(isSoftwareRenderer()) {}
 
 std::span<const ResourceUse> MeteringPass::uses() const {
     static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
@@ -158,8 +160,9 @@ MeteringPass::Outputs MeteringPass::execute(const Inputs& in) noexcept {
                              .log2Min = s.histogramLog2Min,
                              .log2Max = s.histogramLog2Max});
     mMeterParameters.bind(kBindingParameters);
-    const int rowsPerGroup = in.histogram ? 1 : kGroupSize;
-    (in.histogram ? mMeter : mMeterRows).use();
+    const bool rows = !in.histogram && mRowsWithoutHistogram;
+    const int rowsPerGroup = rows ? kGroupSize : 1;
+    (rows ? mMeterRows : mMeter).use();
     glDispatchCompute(GLuint(mGroupsX), GLuint(mGroupsY), 1);
 
     if (in.weights != Weights::None) {
