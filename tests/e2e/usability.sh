@@ -78,6 +78,11 @@ for command in info settings demo bench; do
     expect 0 "$command --help" -- "$PHOTOPIC" "$command" --help
     check "$command --help shows examples" contains "Examples:"
 done
+VIEW="$(dirname "$PHOTOPIC")/photopic-view" # built only where GLFW and Dear ImGui are installed
+if [ -x "$VIEW" ]; then
+    expect 0 "photopic-view --help" -- "$VIEW" --help
+    check "photopic-view takes -q, -v and --log-level" contains "-v,--verbose"
+fi
 
 # The README's canvas command, as written there, from the repository root (its --motion file ships).
 readme=$(grep -o 'photopic scene canvas -o out/canvas [^#]*--motion examples/[^ ]*\.csv' "$ROOT/README.md")
