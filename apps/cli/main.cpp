@@ -148,7 +148,9 @@ void addSettingsCommand(CLI::App& app, Cli& c) {
 
 void addSceneCommand(CLI::App& app, Cli& c) {
     c.scene = app.add_subcommand("scene", "render a built-in scene's frames and telemetry.csv");
-    c.scene->add_option("name", c.sceneOptions.name, "scene name (photopic scene --list)");
+    c.scene->add_option("name", c.sceneOptions.name,
+                        "scene name: " + joined(builtInScenes() | std::views::transform(&SceneInfo::name)) +
+                            " (photopic scene --list says what each shows)");
     c.scene->add_flag("--list", c.listScenes, "list the built-in scenes");
     c.scene->add_option("-o,--output", c.sceneOptions.output, "output folder (default out/scene-NAME)");
     c.scene->add_option("--frames", c.sceneOptions.frames, "number of frames")->check(CLI::Range(1, 100000));

@@ -72,6 +72,9 @@ for command in image scene; do
     check "$command --help shows --log-level" contains "--log-level"
 done
 check "scene --help lists the truth kinds" contains "thinlens, reflection, or all"
+for name in gradient canvas tabletop testbed; do
+    check "scene --help names the scene $name" contains "$name"
+done
 expect 0 "image --help" -- "$PHOTOPIC" image --help
 check "image --help lists --jitter's names" contains "{attribute,halton}"
 for command in info settings demo bench; do
