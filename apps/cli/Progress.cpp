@@ -77,6 +77,14 @@ void Progress::draw() {
     mShown = true;
 }
 
+void Progress::note(std::string_view text) {
+    if (mTerminal) {
+        std::fprintf(stderr, "\r%s: %.*s\x1b[K", mLabel.c_str(), int(text.size()), text.data());
+        std::fflush(stderr);
+        mShown = true;
+    }
+}
+
 void Progress::clear() {
     if (mShown) {
         std::fputs("\r\x1b[K", stderr);

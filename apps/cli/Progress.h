@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstddef>
 #include <string>
+#include <string_view>
 
 namespace photopic::cli {
 
@@ -21,6 +22,9 @@ public:
     void advance(std::size_t count = 1);
     /// Takes the line off the terminal, so a line printed next starts clean; the next advance() redraws it.
     void clear();
+    /// Shows "label: text" at once, until clear() or the next advance(): for a step that cannot count its
+    /// work (an external encoder). Same rules: a terminal only, never with -q.
+    void note(std::string_view text);
 
     /// -q turns every progress line off (main sets it once, before any command runs).
     static void setEnabled(bool enabled);

@@ -168,8 +168,10 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     }
     std::string video = "demo.mp4 skipped (--no-video)";
     if (options.video) {
+        progress.note(fmt::format("encoding {} with ffmpeg", videoPath.filename().string()));
         const VideoResult result =
             encodeFrameSequence(options.output, double(options.fps) / double(every), videoPath);
+        progress.clear();
         if (result.written) {
             outputs.wrote(videoPath);
         }
