@@ -12,6 +12,7 @@
 #include "Bench.h"
 
 #include "Outputs.h"
+#include "Progress.h"
 
 #include "core/Log.h"
 #include "core/Motion.h"
@@ -518,11 +519,14 @@ int runBench(const BenchOptions& options) {
                                  settings.volumetricLight.enabled && !settings.contactShadows.enabled);
     const FrameInputs inputs = inputs3d.frame(input);
     std::uint64_t frame = 0;
+    // The line is drawn between frames, never inside a timed pass or the whole-frame pair of timestamps.
+    Progress progress("bench", std::size_t(options.warmup) + 2 * std::size_t(options.frames));
     for (int i = 0; i < options.warmup; ++i) {
         pipeline.beginFrame({.frameIndex = frame});
         pipeline.renderLighting(inputs, {.frameIndex = frame});
         pipeline.execute(inputs, {.frameIndex = frame++});
         pipeline.timers().drain();
+        progress.advance();
     }
     PassSamples samples;
     for (int i = 0; i < options.frames; ++i) {
@@ -530,6 +534,7 @@ int runBench(const BenchOptions& options) {
         pipeline.renderLighting(inputs, {.frameIndex = frame});
         pipeline.execute(inputs, {.frameIndex = frame++});
         samples.add(pipeline.timers().drain());
+        progress.advance();
     }
 
     // The whole frame between one pair of timestamps, with the passes' own timers off: the chain as a frame
@@ -553,6 +558,7 @@ int runBench(const BenchOptions& options) {
                     frameMs.push_back(options.sync ? p.wallMs : p.gpuMs);
                 }
             }
+            progress.advance();
         }
         pipeline.timers().setEnabled(true);
     }

@@ -1,5 +1,7 @@
 #include "Commands.h"
 
+#include "Progress.h"
+
 #include "FrameStream.h"
 #include "ImageInputs.h"
 #include "Outputs.h"
@@ -279,14 +281,18 @@ void readBack(Pipeline& pipeline, const Texture& display, const fs::path& out, F
     }
 }
 
-/// Prints "IN -> OUT (WxH, ms since the frame started)" once the frame is on disk.
+/// Prints "IN -> OUT (WxH, ms since the frame started)" once the frame is on disk, the progress line taken
+/// off the terminal first and counted on after.
 std::function<void()> writtenLine(const fs::path& in, const fs::path& out, Extent size,
-                                  std::chrono::steady_clock::time_point start) {
-    return [&in, &out, size, start] {
+                                  std::chrono::steady_clock::time_point start, Progress& progress) {
+    return [&in, &out, size, start, &progress] {
+        progress.clear();
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         std::printf("%s -> %s (%dx%d, %.1f ms)\n", in.string().c_str(), out.string().c_str(), size.width,
                     size.height, ms);
+        std::fflush(stdout);
+        progress.advance();
     };
 }
 
@@ -335,6 +341,7 @@ int runImage(const ImageOptions& options) {
     // On the HDR path the colour input is read only by the sanitize pass's texel fetches, so a half EXR's
     // colour can stay half on the GPU (16 MB less at 1080p, same values).
     const bool hdrPath = pipeline->status().path == ColorPath::Hdr;
+    Progress progress("image", inputs.size());
     FrameWriter writer(outputs, pendingWrites(options.inFlight));
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         const DecodedFrame& frame = reader.next();
@@ -358,9 +365,10 @@ int runImage(const ImageOptions& options) {
         if (telemetry) {
             telemetry->take(*pipeline, i, i + 1 == inputs.size());
         }
-        writer.write(out, std::move(image), writtenLine(inputs[i], out, {width, height}, start));
+        writer.write(out, std::move(image), writtenLine(inputs[i], out, {width, height}, start, progress));
     }
     writer.finish();
+    progress.clear();
     if (telemetry) {
         telemetry->commit(inputs.size(), pipeline->droppedTelemetry());
         outputs.wrote(options.telemetry);

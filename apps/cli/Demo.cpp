@@ -3,6 +3,7 @@
 
 #include "Commands.h"
 #include "Outputs.h"
+#include "Progress.h"
 
 #include "common/Raster.h"
 #include "core/Metering.h"
@@ -47,6 +48,7 @@ int runDemo(const fs::path& dataDir, const fs::path& outDir, std::int64_t maxPix
     Pipeline pipeline;
     const ToneMapper curves[] = {ToneMapper::Aces, ToneMapper::Agx, ToneMapper::Neutral};
     std::vector<std::pair<std::string, Image8>> tiles;
+    Progress progress("demo --images", files.size(), "images");
     for (const auto& file : files) {
         const ImageF image = readInput(file, maxPixels);
         requireTextureFits(file, image.width, image.height);
@@ -62,8 +64,11 @@ int runDemo(const fs::path& dataDir, const fs::path& outDir, std::int64_t maxPix
                                            toneMapperName(curve), settings.tonemapping.exposure),
                                processImage(pipeline, image));
         }
+        progress.clear();
         std::printf("%s: %dx%d, geometric mean luminance %.4f -> exposure %+.2f EV\n",
                     file.filename().string().c_str(), image.width, image.height, double(mean), double(ev));
+        std::fflush(stdout);
+        progress.advance();
     }
     const Image8 sheet = makeContactSheet(tiles, 3, 420);
     writePng(out, sheet);

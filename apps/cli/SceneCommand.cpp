@@ -2,10 +2,12 @@
 
 #include "Commands.h"
 #include "Outputs.h"
+#include "Progress.h"
 #include "TelemetryCsv.h"
 
 #include "core/Color.h"
 #include "core/Hash.h"
+#include "core/Log.h"
 #include "core/settings/SettingsJson.h"
 #include "gl/Context.h"
 #include "gl/TextureIo.h"
@@ -141,8 +143,8 @@ ExrFrame truthExr(testbed::TruthKind kind, const ImageF& image, const Camera& ca
 /// `--truth KIND`: the testbed's ray-traced references for frames [start, start + frames).
 /// A 3D scene's frame as `photopic image` reads it: scene-referred colour, depth, normals, motion and camera.
 /// A jittered frame carries its sample offset, so TAA over the files knows the frames were jittered, and the
-/// motion of its jittered samples, as a renderer writes it (the reader takes the jitter out again). Moving the
-/// image by j (x right, y up) samples it at the pixel centre - j: in the file's convention (y down) that
+/// motion of its jittered samples, as a renderer writes it (the reader takes the jitter out again). Moving
+/// the image by j (x right, y up) samples it at the pixel centre - j: in the file's convention (y down) that
 /// offset is (-j.x, j.y). `previousJitter` is the last file's, and becomes this one's.
 ExrFrame sceneExr(const FrameInputs& inputs, glm::vec2 pipelineJitter, glm::vec2& previousJitter) {
     ExrFrame exr = exrFrameFromInputs(inputs);
@@ -176,6 +178,8 @@ int runTruth(const SceneOptions& options, Scene& scene, const fs::path& outDir, 
         throw InputError(fmt::format("--truth '{}' is not a truth kind ({}or all)", options.truth, known));
     }
     const float dt = 1.0f / options.fps;
+    Progress progress(fmt::format("scene {} --truth", scene.name()),
+                      std::size_t(options.frames) * kinds.size(), "images");
     for (int i = options.start; i < options.start + options.frames; ++i) {
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
         const testbed::TruthOptions truth = testbedScene->truthOptions(time);
@@ -190,7 +194,10 @@ int runTruth(const SceneOptions& options, Scene& scene, const fs::path& outDir, 
             outputs.wrote(outDir / (stem + ".exr"));
             writePng(outDir / (stem + ".png"), truthPreview(kind, image));
             outputs.wrote(outDir / (stem + ".png"));
+            progress.clear();
             std::printf("%s: %.3f s\n", stem.c_str(), seconds);
+            std::fflush(stdout);
+            progress.advance();
         }
     }
     outputs.commit();
@@ -266,6 +273,7 @@ int runScene(const SceneOptions& options) {
     Pipeline pipeline({.settings = resolved, .forceLdr = options.forceLdr, .keepTelemetryHistory = true});
     const int every = std::max(1, options.every);
     glm::vec2 previousJitter(0.0f); ///< the last scene EXR's jitter attribute (pixels, y down)
+    Progress progress("scene " + options.name, std::size_t(options.frames));
     for (int i = 0; i < options.frames; ++i) {
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
         std::vector<double> values;
@@ -284,12 +292,16 @@ int runScene(const SceneOptions& options) {
                 writePng(frame, readTexture8(display));
             }
             outputs.wroteSequenceItem();
+            logDebug("frame {} -> {}", i, frame.string());
         }
         telemetry.sceneValues(std::uint64_t(i), std::move(values));
         telemetry.take(pipeline, std::uint64_t(i), i + 1 == options.frames);
         if (options.reportRss && (i == 0 || i + 1 == options.frames)) {
+            progress.clear();
             std::printf("rss after frame %d: %ld kB\n", i + 1, residentKilobytes());
+            std::fflush(stdout);
         }
+        progress.advance();
     }
     telemetry.commit(std::uint64_t(options.frames), pipeline.droppedTelemetry());
     outputs.wrote(telemetryPath);

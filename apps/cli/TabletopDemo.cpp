@@ -5,10 +5,12 @@
 
 #include "Commands.h"
 #include "Outputs.h"
+#include "Progress.h"
 #include "TelemetryCsv.h"
 #include "Video.h"
 
 #include "common/Raster.h"
+#include "core/Log.h"
 #include "gl/Context.h"
 #include "gl/TextureIo.h"
 #include "io/ImageIO.h"
@@ -135,6 +137,7 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
         samples.push_back({float(t.frame) * dt, t.frameLuminance, t.targetLog2, t.appliedLog2,
                            values.size() > 5 ? float(values[5]) : 0.0f});
     };
+    Progress progress("demo", std::size_t(frames));
     for (int i = 0; i < frames; ++i) {
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
         std::vector<double> values;
@@ -144,10 +147,12 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
         if (i % every == 0) {
             writePng(framePath(options.output, std::size_t(i / every)), display);
             outputs.wroteSequenceItem();
+            logDebug("frame {} -> {}", i, framePath(options.output, std::size_t(i / every)).string());
         }
         brightness.push_back(meanDisplay(display));
         telemetry.sceneValues(std::uint64_t(i), std::move(values));
         telemetry.take(pipeline, std::uint64_t(i), i + 1 == frames, addSample);
+        progress.advance();
     }
     const auto rendered = std::chrono::steady_clock::now();
     telemetry.commit(std::uint64_t(frames), pipeline.droppedTelemetry());
@@ -163,8 +168,10 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     }
     std::string video = "demo.mp4 skipped (--no-video)";
     if (options.video) {
+        progress.note(fmt::format("encoding {} with ffmpeg", videoPath.filename().string()));
         const VideoResult result =
             encodeFrameSequence(options.output, double(options.fps) / double(every), videoPath);
+        progress.clear();
         if (result.written) {
             outputs.wrote(videoPath);
         }

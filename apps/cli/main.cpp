@@ -2,33 +2,49 @@
 
 #include "Bench.h"
 #include "Commands.h"
+#include "Progress.h"
 #include "TabletopDemo.h"
 
+#include "common/Verbosity.h"
 #include "core/Log.h"
+#include "core/ToneCurves.h"
 #include "core/settings/SettingsJson.h"
 #include "gl/Gl.h"
 #include "io/DataPath.h"
 #include "scenes/Scene.h"
+#include "scenes/testbed/TestbedRaytracer.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
 #include <cstdio>
+#include <ranges>
 
 using namespace photopic;
 using namespace photopic::cli;
 
 namespace {
 
+/// "a, b, c": an enum's names as its option's help lists them, from the same list the settings reader checks.
+template <class Names>
+std::string joined(const Names& names) {
+    std::string out;
+    for (const auto& name : names) {
+        out += (out.empty() ? "" : ", ") + std::string(name);
+    }
+    return out;
+}
+
 void addSettingsOptions(CLI::App* cmd, SettingsSources& s) {
     cmd->add_option("--settings", s.file, "settings JSON file ({\"version\": 1, \"postEffects\": {...}})")
         ->check(CLI::ExistingFile);
-    cmd->add_option("--tonemap", s.tonemap, "tone curve (same as --set tonemapping.mode=NAME)");
+    cmd->add_option("--tonemap", s.tonemap,
+                    "tone curve: " + joined(toneMapperNames()) + " (same as --set tonemapping.mode=NAME)");
     cmd->add_option("--exposure", s.exposure,
                     "manual exposure in EV (same as --set tonemapping.exposure=EV)");
-    cmd->add_option(
-        "--debug", s.debugView,
-        "debug view: none, exposure, luma, ev, metering, histogram, bloom (same as --set debug.view=NAME)");
+    cmd->add_option("--debug", s.debugView,
+                    "debug view: " + joined(debugViewNames()) +
+                        "; views of 3D inputs need them (same as --set debug.view=NAME)");
     cmd->add_option("--set", s.overrides, "override one setting: path=value, e.g. tonemapping.mode=agx")
         ->take_first();
 }
@@ -62,12 +78,17 @@ struct Cli {
     std::int64_t demoMaxPixels = kDefaultMaxPixels;
     CLI::App* bench = nullptr;
     BenchOptions benchOptions;
+    Verbosity verbosity;
 };
 
 void addInfoCommand(CLI::App& app, Cli& c) {
     c.info = app.add_subcommand("info", "GL vendor, renderer, version, and whether the HDR or LDR path runs");
     c.info->add_flag("--force-ldr", c.forceLdr, "report as if the LDR path were forced");
     addSettingsOptions(c.info, c.infoSettings);
+    c.info->footer("Examples:\n"
+                   "  photopic info\n"
+                   "  photopic info --force-ldr\n"
+                   "  photopic info --set quality=low     the quality tier and the path it takes");
 }
 
 void addImageCommand(CLI::App& app, Cli& c) {
@@ -113,6 +134,11 @@ void addImageCommand(CLI::App& app, Cli& c) {
                      "each frame before the next; more decode the next frame and write earlier ones on other "
                      "threads (same outputs, bounded memory)")
         ->check(CLI::Range(1, 16));
+    c.image->footer(
+        "Examples:\n"
+        "  photopic image in.exr -o out.png --tonemap agx --exposure -1.5\n"
+        "  photopic image f*.exr -o dir/ --fps 24 --telemetry t.csv --set autoExposure.enabled=true\n"
+        "  photopic image in.exr -o view.png --debug histogram");
 }
 
 void addSettingsCommand(CLI::App& app, Cli& c) {
@@ -121,11 +147,16 @@ void addSettingsCommand(CLI::App& app, Cli& c) {
     auto* checkOption = c.settings->add_option("--check", c.checkFile, "validate FILE and list every issue");
     defaultsFlag->excludes(checkOption);
     c.settings->require_option(1);
+    c.settings->footer("Examples:\n"
+                       "  photopic settings --defaults > mine.json\n"
+                       "  photopic settings --check mine.json");
 }
 
 void addSceneCommand(CLI::App& app, Cli& c) {
     c.scene = app.add_subcommand("scene", "render a built-in scene's frames and telemetry.csv");
-    c.scene->add_option("name", c.sceneOptions.name, "scene name (photopic scene --list)");
+    c.scene->add_option("name", c.sceneOptions.name,
+                        "scene name: " + joined(builtInScenes() | std::views::transform(&SceneInfo::name)) +
+                            " (photopic scene --list says what each shows)");
     c.scene->add_flag("--list", c.listScenes, "list the built-in scenes");
     c.scene->add_option("-o,--output", c.sceneOptions.output, "output folder (default out/scene-NAME)");
     c.scene->add_option("--frames", c.sceneOptions.frames, "number of frames")->check(CLI::Range(1, 100000));
@@ -144,14 +175,20 @@ void addSceneCommand(CLI::App& app, Cli& c) {
     c.scene->add_option("--material", c.sceneOptions.canvasMaterial,
                         "canvas scene: material PNG (RGBA: normal x, y; shininess; glitter mask)");
     c.scene->add_option("--motion", c.sceneOptions.motion,
-                        "canvas scene: device motion CSV (time_s,pitch,roll,yaw)");
-    c.scene->add_option(
-        "--truth", c.sceneOptions.truth,
-        "testbed scene: write the CPU ray tracer's KIND (color, depth, normals, motion, objectid, "
-        "ao, sun, shutter, thinlens, reflection, or all) for the frames instead of rendering");
+                        "canvas scene: device motion CSV, header time_s,pitch,roll,yaw: seconds, then "
+                        "radians (examples/canvas-motion/tilt.csv)");
+    c.scene->add_option("--truth", c.sceneOptions.truth,
+                        "testbed scene: write the CPU ray tracer's KIND (" +
+                            joined(testbed::allTruthKinds() | std::views::transform(testbed::truthKindName)) +
+                            ", or all) for the frames instead of rendering");
     c.scene->add_option("--start", c.sceneOptions.start, "first frame index (--truth)")
         ->check(CLI::Range(0, 10000000));
     addSettingsOptions(c.scene, c.sceneOptions.settings);
+    c.scene->footer("Examples:\n"
+                    "  photopic scene --list\n"
+                    "  photopic scene canvas -o out/canvas --frames 60 --size 960x540 --motion "
+                    "examples/canvas-motion/tilt.csv\n"
+                    "  photopic scene testbed -o out/testbed --frames 48 --tonemap agx --debug normals");
 }
 
 void addDemoCommand(CLI::App& app, Cli& c) {
@@ -175,6 +212,10 @@ void addDemoCommand(CLI::App& app, Cli& c) {
                        "folder of HDR images for --images (default: $PHOTOPIC_DATA_DIR, else the installed "
                        "share/photopic/data, else the checkout's data/)");
     addMaxPixelsOption(c.demo, c.demoMaxPixels);
+    c.demo->footer("Examples:\n"
+                   "  photopic demo                                  the walk at 320x180 into out/demo\n"
+                   "  photopic demo --size 960x540 --fps 60 -o out/big\n"
+                   "  photopic demo --images --data data/            the contact sheet of every HDR image");
 }
 
 void addBenchCommand(CLI::App& app, Cli& c) {
@@ -197,10 +238,14 @@ void addBenchCommand(CLI::App& app, Cli& c) {
                       "debug: glFinish() around every pass and report its wall time too (stalls each pass; "
                       "for drivers whose timer queries miss deferred work, e.g. llvmpipe)");
     c.bench->add_option("--scene", c.benchOptions.scene,
-                        "canvas: time the canvas scene's tiled and full-screen shading paths instead "
-                        "(--set canvas.KEY=VALUE, e.g. canvas.occupancy=0.3, the default)");
+                        "canvas (the only one): time the canvas scene's tiled and full-screen shading paths "
+                        "instead (--set canvas.KEY=VALUE, e.g. canvas.occupancy=0.3, the default)");
     addSettingsOptions(c.bench, c.benchOptions.settings);
     addMaxPixelsOption(c.bench, c.benchOptions.maxPixels);
+    c.bench->footer("Examples:\n"
+                    "  photopic bench --size 1920x1080 --frames 100\n"
+                    "  photopic bench --input data/Desk.exr --json timings.json\n"
+                    "  photopic bench --scene canvas --set canvas.occupancy=0.3");
 }
 
 /// Runs the subcommand that was parsed; throws the errors main() turns into exit codes.
@@ -255,19 +300,31 @@ int main(int argc, char** argv) {
     addSceneCommand(app, c);
     addDemoCommand(app, c);
     addBenchCommand(app, c);
+    // -q, -v and --log-level read the same before or after the subcommand's name.
+    addVerbosityOptions(app, c.verbosity);
+    for (CLI::App* sub : {c.info, c.image, c.settings, c.scene, c.demo, c.bench}) {
+        addVerbosityOptions(*sub, c.verbosity);
+    }
+    app.footer("Examples:\n"
+               "  photopic image in.exr -o out.png --tonemap agx\n"
+               "  photopic scene canvas -o out/canvas --motion examples/canvas-motion/tilt.csv\n"
+               "  photopic demo -q\n"
+               "photopic COMMAND --help: each command's options and examples");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         const int code = app.exit(e);
         return code == 0 ? kOk : kBadInput;
     }
+    applyVerbosity(c.verbosity);
+    Progress::setEnabled(!c.verbosity.quiet);
     try {
         return runCommand(c);
     } catch (const InputError& e) {
         std::fprintf(stderr, "photopic: %s\n", e.what());
         return kBadInput;
     } catch (const SettingsError& e) {
-        std::fprintf(stderr, "photopic: invalid settings in %s", e.what());
+        std::fprintf(stderr, "photopic: %s", e.what());
         return kBadInput;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "photopic: %s\n", e.what());

@@ -3,6 +3,7 @@
 
 #include "Viewer.h"
 
+#include "common/Verbosity.h"
 #include "core/settings/SettingsJson.h"
 #include "gl/Gl.h"
 
@@ -54,6 +55,8 @@ int main(int argc, char** argv) {
             ->capture_default_str();
     auto* shotOption =
         app.add_option("--screenshot", options.screenshot, "with --frames: the last window frame as PNG");
+    photopic::Verbosity verbosity;
+    photopic::addVerbosityOptions(app, verbosity);
     try {
         app.parse(argc, argv);
         if (sceneOption->count() > 0 && !options.files.empty()) {
@@ -66,6 +69,7 @@ int main(int argc, char** argv) {
         const int code = app.exit(e);
         return code == 0 ? kOk : kBadInput;
     }
+    photopic::applyVerbosity(verbosity);
     if (dtOption->count() > 0) {
         options.fixedDt = fixedDt;
     }

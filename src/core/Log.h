@@ -23,6 +23,10 @@ void logMessage(LogLevel level, std::string_view message);
 void warnOnce(std::string_view key, std::string_view message);
 
 template <class... Args>
+void logDebug(fmt::format_string<Args...> f, Args&&... args) {
+    logMessage(LogLevel::Debug, fmt::format(f, std::forward<Args>(args)...));
+}
+template <class... Args>
 void logInfo(fmt::format_string<Args...> f, Args&&... args) {
     logMessage(LogLevel::Info, fmt::format(f, std::forward<Args>(args)...));
 }

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+
 namespace photopic {
 namespace {
 
@@ -76,6 +78,38 @@ TEST(Settings, UnknownKeyNamedByPath) {
     EXPECT_EQ(issues[0].code, SettingsIssueCode::UnknownKey);
     EXPECT_EQ(issues[0].path, "postEffects.output.dithering");
     EXPECT_NE(issues[0].message.find("dither"), std::string::npos); // lists the known keys
+    // The formatted line says "unknown key" once, after the path, then the keys that would have been read.
+    const std::string line = formatSettingsIssues(issues);
+    EXPECT_EQ(line.find("unknown key"), line.rfind("unknown key")) << line;
+    EXPECT_NE(line.find("postEffects.output.dithering: unknown key (known keys: "), std::string::npos)
+        << line;
+}
+
+TEST(Settings, MissingFileIsNamedAsMissing) {
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() / "photopic_no_such_settings.json";
+    std::filesystem::remove(file);
+    try {
+        (void)loadSettingsFile(file);
+        FAIL() << "no SettingsError";
+    } catch (const SettingsError& e) {
+        ASSERT_EQ(e.issues().size(), 1u);
+        EXPECT_EQ(e.issues()[0].code, SettingsIssueCode::MissingFile);
+        const std::string what = e.what();
+        EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+        EXPECT_NE(what.find("does not exist"), std::string::npos) << what;
+        EXPECT_EQ(what.find("JSON"), std::string::npos) << what; // not reported as a parse error
+    }
+}
+
+TEST(Settings, FolderIsNotReadAsSettings) {
+    try {
+        (void)loadSettingsFile(std::filesystem::temp_directory_path());
+        FAIL() << "no SettingsError";
+    } catch (const SettingsError& e) {
+        ASSERT_EQ(e.issues().size(), 1u);
+        EXPECT_EQ(e.issues()[0].code, SettingsIssueCode::UnreadableFile);
+    }
 }
 
 TEST(Settings, WrongTypeNamedByPath) {

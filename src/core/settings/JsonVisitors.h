@@ -264,7 +264,7 @@ public:
                 for (const auto& k : mKnown) {
                     known += (known.empty() ? "" : ", ") + k;
                 }
-                add(SettingsIssueCode::UnknownKey, key, fmt::format("unknown key (known keys: {})", known));
+                add(SettingsIssueCode::UnknownKey, key, fmt::format("known keys: {}", known));
             }
         }
     }

@@ -40,7 +40,9 @@ struct Range {
     X(BadEnum, "value not among the allowed names")                                                          \
     X(Constraint, "values break a rule between fields")                                                      \
     X(BadOverride, "a --set override is not of the form path=value")                                         \
-    X(InvalidUtf8, "the text is not valid UTF-8")
+    X(InvalidUtf8, "the text is not valid UTF-8")                                                            \
+    X(MissingFile, "the file does not exist")                                                                \
+    X(UnreadableFile, "the file cannot be read")
 
 enum class SettingsIssueCode {
 #define PHOTOPIC_X(name, text) name,

@@ -67,8 +67,7 @@ std::vector<SettingsIssue> readDocument(const json& doc, Settings& settings) {
     }
     for (const auto& [key, value] : doc.items()) {
         if (key != "version" && key != "postEffects") {
-            issues.push_back(
-                {SettingsIssueCode::UnknownKey, key, "unknown key (known keys: version, postEffects)"});
+            issues.push_back({SettingsIssueCode::UnknownKey, key, "known keys: version, postEffects"});
         }
     }
     const auto post = doc.find("postEffects");
@@ -85,17 +84,35 @@ std::vector<SettingsIssue> readDocument(const json& doc, Settings& settings) {
     return issues;
 }
 
+/// A file that could not be read has no settings to be invalid: its message stands alone.
+bool unreadable(const std::vector<SettingsIssue>& issues) {
+    return issues.size() == 1 && (issues[0].code == SettingsIssueCode::MissingFile ||
+                                  issues[0].code == SettingsIssueCode::UnreadableFile);
+}
+
+std::string describeSettingsError(const std::string& source, const std::vector<SettingsIssue>& issues) {
+    if (unreadable(issues)) {
+        return issues[0].message + "\n";
+    }
+    return "invalid settings in " + source + ":\n" + formatSettingsIssues(issues);
+}
+
 } // namespace
 
 SettingsError::SettingsError(std::string source, std::vector<SettingsIssue> issues)
-    : std::runtime_error(source + ":\n" + formatSettingsIssues(issues))
+    : std::runtime_error(describeSettingsError(source, issues))
     , mIssues(std::move(issues)) {}
 
 std::string formatSettingsIssues(const std::vector<SettingsIssue>& issues) {
     std::string out;
     for (const auto& issue : issues) {
-        out += fmt::format("  {}: {}: {}\n", issue.path.empty() ? "(document)" : issue.path,
-                           issueText(issue.code), issue.message);
+        const std::string path = issue.path.empty() ? "(document)" : issue.path;
+        // An unknown key's message is the keys that would have been read there: "unknown key" once.
+        if (issue.code == SettingsIssueCode::UnknownKey) {
+            out += fmt::format("  {}: {} ({})\n", path, issueText(issue.code), issue.message);
+        } else {
+            out += fmt::format("  {}: {}: {}\n", path, issueText(issue.code), issue.message);
+        }
     }
     return out;
 }
@@ -155,9 +172,17 @@ std::vector<SettingsIssue> readSettingsJson(std::string_view text, Settings& set
 }
 
 Settings loadSettingsFile(const std::filesystem::path& file, Settings base) {
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) {
+        throw SettingsError(file.string(), {{SettingsIssueCode::MissingFile, "",
+                                             fmt::format("settings file {} does not exist", file.string())}});
+    }
     std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        throw SettingsError(file.string(), {{SettingsIssueCode::ParseError, "", "cannot open the file"}});
+    if (!in || std::filesystem::is_directory(file, ec)) {
+        throw SettingsError(
+            file.string(),
+            {{SettingsIssueCode::UnreadableFile, "",
+              fmt::format("settings file {} cannot be read (a folder, or no permission)", file.string())}});
     }
     std::stringstream ss;
     ss << in.rdbuf();

@@ -18,6 +18,8 @@ namespace photopic {
 inline constexpr int kSettingsVersion = 1;
 
 /// Thrown at set-up boundaries when settings cannot be used; holds every issue found, not just the first.
+/// what() reads "invalid settings in SOURCE:" then one line per issue, or for a settings file that is missing
+/// or cannot be read, just that sentence naming the file.
 class SettingsError : public std::runtime_error {
 public:
     SettingsError(std::string source, std::vector<SettingsIssue> issues);
@@ -51,7 +53,8 @@ std::vector<SettingsIssue> validateSettings(const Settings& settings);
 /// surrogates, nothing above U+10FFFF), or nullopt when all of `text` is UTF-8.
 [[nodiscard]] std::optional<std::size_t> invalidUtf8Offset(std::string_view text);
 
-/// "postEffects.a.b: message (allowed ...)" lines, one per issue.
+/// "postEffects.a.b: message (allowed ...)" lines, one per issue; an unknown key reads "postEffects.a.b:
+/// unknown key (known keys: ...)".
 std::string formatSettingsIssues(const std::vector<SettingsIssue>& issues);
 
 } // namespace photopic
