@@ -111,8 +111,9 @@ void VolumetricLightPass::execute(FrameContext& ctx, FrameResources& resources) 
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
-        // A bilinear source fetch (four texels, mostly cached) per sample, one texel out.
-        ScopedGpuTimer timer(ctx.timers, "volumetric light march", halfTexels * (8.0 * p.samples + 8.0));
+        // The full-resolution source read once from memory (the samples along each ray hit the cache), one
+        // half-resolution texel out.
+        ScopedGpuTimer timer(ctx.timers, "volumetric light march", full * 8.0 + halfTexels * 8.0);
         mScatter.use();
         glBindTextureUnit(2, source.id());
         glBindImageTexture(0, raw.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
