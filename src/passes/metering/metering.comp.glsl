@@ -54,17 +54,7 @@ void main() {
             atomicAdd(sBins[bin], 1u);
         }
     }
-    float w = 0.0;
-    if (uWeights >= 0 && meterable) {
-        vec2 uv = imageUv(imagePixel(p, size), size);
-        if (uWeights == kMeterCenter) {
-            w = centerWeight(uv, float(size.x) / float(size.y));
-        } else if (uWeights == kMeterMask) {
-            w = maskWeight(uMask, uv);
-        } else {
-            w = 1.0;
-        }
-    }
+    float w = uWeights >= 0 && meterable ? pixelWeight(uWeights, p, size, uMask) : 0.0;
     sSum[li] = w > 0.0 ? w * log2(lum) : 0.0;
     sWeight[li] = w > 0.0 ? w : 0.0;
     barrier();

@@ -105,4 +105,17 @@ float maskWeight(sampler2D mask, vec2 uv) {
     return isFiniteBits(w) && w > 0.0 ? w : 0.0;
 }
 
+// The weight of a meterable pixel `p` of an image of `size` in the weighted mode `weights` (kMeterAverage,
+// kMeterCenter or kMeterMask), the mask read from `mask` (core/Metering.h).
+float pixelWeight(int weights, ivec2 p, ivec2 size, sampler2D mask) {
+    vec2 uv = imageUv(imagePixel(p, size), size);
+    if (weights == kMeterCenter) {
+        return centerWeight(uv, float(size.x) / float(size.y));
+    }
+    if (weights == kMeterMask) {
+        return maskWeight(mask, uv);
+    }
+    return 1.0;
+}
+
 #endif // PHOTOPIC_METERING_H_GLSL
