@@ -299,6 +299,7 @@ std::function<void()> writtenLine(const fs::path& in, const fs::path& out, Exten
 /// Frames in flight between the decode of one and the write of another: 1 is serial, else one frame is
 /// decoded ahead and up to inFlight - 2 (at least one) are being written behind the one on the GPU.
 std::size_t pendingWrites(int inFlight) {
+    inFlight = inFlight > 0 ? inFlight : defaultFramesInFlight();
     return inFlight <= 1 ? 0 : std::size_t(std::max(inFlight - 2, 1));
 }
 
@@ -326,11 +327,12 @@ int runImage(const ImageOptions& options) {
     if (!options.telemetry.empty()) {
         telemetry.emplace(options.telemetry, dt, std::vector<std::string>{});
     }
-    setExrThreads(options.inFlight > 1 ? int(std::max(std::thread::hardware_concurrency(), 1u)) : 0);
+    const int inFlight = options.inFlight > 0 ? options.inFlight : defaultFramesInFlight();
+    setExrThreads(inFlight > 1 ? int(std::max(std::thread::hardware_concurrency(), 1u)) : 0);
     InputDecoder decoder(options.camera.empty() ? std::nullopt
                                                 : std::optional<CameraJson>(loadCameraJson(options.camera)),
                          options.jitter == "halton" ? settings.temporal.jitterCycle : 0, options.maxPixels);
-    FrameReader reader(decoder, inputs, options.inFlight > 1);
+    FrameReader reader(decoder, inputs, inFlight > 1);
     const DecodedFrame& first = reader.next(); // a bad first input fails before a GL context is made
 
     HeadlessContext context;
@@ -342,7 +344,7 @@ int runImage(const ImageOptions& options) {
     // colour can stay half on the GPU (16 MB less at 1080p, same values).
     const bool hdrPath = pipeline->status().path == ColorPath::Hdr;
     Progress progress("image", inputs.size());
-    FrameWriter writer(outputs, pendingWrites(options.inFlight));
+    FrameWriter writer(outputs, pendingWrites(inFlight));
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         const DecodedFrame& frame = reader.next();
         const auto start = std::chrono::steady_clock::now();
@@ -388,6 +390,11 @@ int runSettingsCheck(const fs::path& file) {
     (void)settings;
     std::printf("%s: valid\n", file.string().c_str());
     return kOk;
+}
+
+int defaultFramesInFlight() {
+    const int cores = int(std::thread::hardware_concurrency());
+    return cores <= 4 ? 3 : std::clamp(cores / 2, 3, 8);
 }
 
 } // namespace photopic::cli

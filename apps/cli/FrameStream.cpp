@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <string>
+#include <thread>
 #include <utility>
 
 namespace photopic::cli {
@@ -12,9 +13,13 @@ namespace photopic::cli {
 namespace fs = std::filesystem;
 
 namespace {
-/// Encoder threads at most: PNG encoding is one thread's work per frame, and on a machine with few cores
-/// more would only take cores from the GPU (llvmpipe) work.
-constexpr std::size_t kMaxWorkers = 2;
+/// Encoder threads at most: PNG encoding is one thread's work per frame, so a machine with many cores encodes
+/// as many frames at once as `--frames-in-flight` allows, leaving one core to decode and one to drive GL;
+/// with few cores (llvmpipe renders on them) two at most.
+std::size_t maxWorkers() {
+    const std::size_t cores = std::thread::hardware_concurrency();
+    return std::max<std::size_t>(2, cores > 2 ? cores - 2 : 0);
+}
 } // namespace
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -128,7 +133,7 @@ FrameImage writeFrame(const fs::path& path, FrameImage image, PngWriter& png) {
 FrameWriter::FrameWriter(RunOutputs& outputs, std::size_t maxPending)
     : mOutputs(outputs)
     , mMaxPending(maxPending)
-    , mEncoders(std::max<std::size_t>(std::min<std::size_t>(maxPending, kMaxWorkers), 1)) {
+    , mEncoders(std::max<std::size_t>(std::min<std::size_t>(maxPending, maxWorkers()), 1)) {
     for (std::size_t i = 0; maxPending > 0 && i < mEncoders.size(); ++i) {
         mWorkers.push_back(std::make_unique<Worker>());
     }
