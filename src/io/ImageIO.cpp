@@ -678,7 +678,26 @@ fs::path outputFolder(const fs::path& path) {
     return folder;
 }
 
+/// A stream output takes the bytes as they come: there is no folder to put a temporary in, and renaming a
+/// file over a device or pipe would replace it, not write to it.
+void writeStream(const fs::path& path, std::span<const unsigned char> bytes) {
+    const bool toStdout = namesStandardOutput(path); // also /dev/stdout redirected to a file: not truncated
+    std::FILE* out = toStdout ? stdout : std::fopen(path.c_str(), "wb");
+    if (out == nullptr)
+        throw IoError(path, "cannot open: " + errnoMessage(errno));
+    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
+    const int writeErrno = errno;
+    const bool flushed = std::fflush(out) == 0;
+    const bool closed = toStdout || std::fclose(out) == 0;
+    if (!written || !flushed || !closed)
+        throw IoError(path, "cannot write: " + errnoMessage(written ? errno : writeErrno));
+}
+
 void writeAtomically(const fs::path& path, std::span<const unsigned char> bytes) {
+    if (isStreamOutput(path)) {
+        writeStream(path, bytes);
+        return;
+    }
     AtomicFileWriter file(path);
     file.write({reinterpret_cast<const char*>(bytes.data()), bytes.size()});
     file.commit();
@@ -838,7 +857,24 @@ void AtomicFileWriter::commit() {
     }
 }
 
+bool namesStandardOutput(const fs::path& path) {
+    struct stat target {};
+    struct stat out {};
+    return path == kStdoutPath || (::stat(path.c_str(), &target) == 0 && ::fstat(STDOUT_FILENO, &out) == 0 &&
+                                   target.st_dev == out.st_dev && target.st_ino == out.st_ino);
+}
+
+bool isStreamOutput(const fs::path& path) {
+    if (namesStandardOutput(path))
+        return true;
+    std::error_code ec;
+    const fs::file_status target = fs::status(path, ec); // through links: /dev/stdout is one
+    return !ec && fs::exists(target) && !fs::is_regular_file(target) && !fs::is_directory(target);
+}
+
 void requireWritableFile(const fs::path& path) {
+    if (isStreamOutput(path))
+        return;
     const fs::path folder = outputFolder(path);
     std::error_code ec;
     if (fs::is_directory(path, ec))
