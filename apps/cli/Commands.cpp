@@ -254,18 +254,15 @@ std::vector<InputFile> expandInputs(const ImageOptions& options) {
     bool anyPattern = false;
     for (const fs::path& in : options.inputs) {
         std::error_code ec;
-        if (fs::exists(in, ec) || !looksLikeFramePattern(in)) {
-            files.push_back({in, std::nullopt});
-            continue;
-        }
-        anyPattern = true;
+        std::optional<FramePattern> pattern;
         try {
-            if (!parseFramePattern(in.filename().string())) {
-                throw InputError(
-                    fmt::format("input \"{}\": a frame number (%04d, ####, @) belongs in the file "
-                                "name, not in a folder",
-                                in.string()));
+            // A file that exists is that file; only a file name holds a frame number, never a folder.
+            pattern = fs::exists(in, ec) ? std::nullopt : parseFramePattern(in.filename().string());
+            if (!pattern) {
+                files.push_back({in, std::nullopt});
+                continue;
             }
+            anyPattern = true;
             for (SequenceFrame& f : expandSequence(in, folderNames(in.parent_path()), selection)) {
                 files.push_back({std::move(f.path), f.frame});
             }
@@ -344,6 +341,16 @@ void requireExtension(const fs::path& out) {
     }
 }
 
+/// The frame-number pattern of an output's file name (out/f%04d.png), if it holds one. A name with a '%' that
+/// is no frame number ("50%.png") is an ordinary name, as it was before patterns.
+std::optional<FramePattern> outputPattern(const fs::path& out) {
+    try {
+        return parseFramePattern(out.filename().string());
+    } catch (const std::invalid_argument&) {
+        return std::nullopt;
+    }
+}
+
 /// `-n`: every output must be new.
 void requireNew(const std::vector<fs::path>& paths) {
     for (const fs::path& path : paths) {
@@ -371,18 +378,7 @@ std::vector<fs::path> plannedOutputs(const ImageOptions& options, const std::vec
     }
     std::vector<fs::path> paths;
     fs::path folder; // made before the outputs are checked; empty: none
-    if (looksLikeFramePattern(out)) {
-        std::optional<FramePattern> pattern;
-        try {
-            pattern = parseFramePattern(out.filename().string());
-        } catch (const std::invalid_argument& e) {
-            throw InputError(fmt::format("output {}", e.what()));
-        }
-        if (!pattern) {
-            throw InputError(fmt::format("output \"{}\": a frame number (%04d, ####, @) belongs in the file "
-                                         "name, not in a folder",
-                                         out.string()));
-        }
+    if (const std::optional<FramePattern> pattern = outputPattern(out)) {
         requireExtension(out);
         for (const std::int64_t n : outputFrameNumbers(files)) {
             paths.push_back(out.parent_path() / pattern->name(n));

@@ -114,19 +114,6 @@ std::optional<FramePattern> parseFramePattern(std::string_view fileName) {
     return pattern;
 }
 
-bool looksLikeFramePattern(const std::filesystem::path& path) {
-    for (const auto& part : path) {
-        try {
-            if (parseFramePattern(part.string())) {
-                return true;
-            }
-        } catch (const std::invalid_argument&) {
-            return true; // a token, badly written: parseFramePattern says what is wrong with it
-        }
-    }
-    return false;
-}
-
 FrameRange parseFrameRange(std::string_view text) {
     const auto bad = [&] {
         return std::invalid_argument("frame range " + inQuotes(text) +

@@ -31,9 +31,6 @@ struct FramePattern {
 /// Throws std::invalid_argument for a name with two tokens or a `%` that is neither `%d`, `%0Nd` nor `%%`.
 [[nodiscard]] std::optional<FramePattern> parseFramePattern(std::string_view fileName);
 
-/// Whether `path` holds a frame-number token anywhere (its file name or a folder), without throwing.
-[[nodiscard]] bool looksLikeFramePattern(const std::filesystem::path& path);
-
 /// An inclusive frame range: "1001-1100", or one frame "7". Throws std::invalid_argument naming the text.
 struct FrameRange {
     std::int64_t first = 0;

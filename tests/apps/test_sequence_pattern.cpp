@@ -117,12 +117,5 @@ TEST(SequencePattern, NoMatchNamesThePattern) {
     }
 }
 
-TEST(SequencePattern, LooksLikeAPatternAnywhere) {
-    EXPECT_TRUE(looksLikeFramePattern("a/f%04d.exr"));
-    EXPECT_TRUE(looksLikeFramePattern("shot_@/f.exr"));
-    EXPECT_TRUE(looksLikeFramePattern("f%s.exr")); // badly written, still meant as one
-    EXPECT_FALSE(looksLikeFramePattern("a/f0001.exr"));
-}
-
 } // namespace
 } // namespace photopic

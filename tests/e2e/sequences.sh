@@ -59,6 +59,14 @@ cp "$DATA/Desk.hdr" room.hdr
 expect 0 "an output pattern from inputs without numbers" -- "$PHOTOPIC" image room.hdr desk.exr -o pat3/v%03d.exr
 check "0-based, in input order" [ "$(lines)" = "desk.exr -> pat3/v000.exr room.hdr -> pat3/v001.exr " ]
 
+mkdir 'take@2#'
+expect 0 "a folder named with @ and # is a folder, not a pattern" -- "$PHOTOPIC" image desk.exr -o 'take@2#/desk.png'
+check "written there" [ -f 'take@2#/desk.png' ]
+expect 0 "a '%' that is no frame number is part of the name" -- "$PHOTOPIC" image desk.exr -o '50%.png'
+check "written as named" [ -f '50%.png' ]
+cp desk.exr 'shot#1.exr'
+expect 0 "an input that exists is a file, whatever its name holds" -- "$PHOTOPIC" image 'shot#1.exr' -o shot.png
+
 # Refusals, before any work.
 expect 2 "a pattern that matches no file" -- "$PHOTOPIC" image 'seq/h%04d.exr' -o none/
 check "names the pattern" contains 'seq/h%04d.exr'
