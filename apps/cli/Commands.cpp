@@ -487,8 +487,14 @@ int runImage(const ImageOptions& options) {
     if (options.noOverwrite) {
         requireNewSideOutputs(options, inputs);
     }
-    // The lines printed go to standard error when the image itself goes to standard output.
-    std::FILE* const console = namesStandardOutput(options.output) ? stderr : stdout;
+    // The lines printed go to standard error when the image or the telemetry goes to standard output.
+    const bool imageToStdout = namesStandardOutput(options.output);
+    const bool telemetryToStdout = !options.telemetry.empty() && namesStandardOutput(options.telemetry);
+    if (imageToStdout && telemetryToStdout) {
+        throw InputError(
+            "the image and the telemetry cannot both go to standard output: name a file for one");
+    }
+    std::FILE* const console = imageToStdout || telemetryToStdout ? stderr : stdout;
     if (!options.writeAux.empty()) {
         outputs.makeFolder(options.writeAux);
     }

@@ -678,26 +678,7 @@ fs::path outputFolder(const fs::path& path) {
     return folder;
 }
 
-/// A stream output takes the bytes as they come: there is no folder to put a temporary in, and renaming a
-/// file over a device or pipe would replace it, not write to it.
-void writeStream(const fs::path& path, std::span<const unsigned char> bytes) {
-    const bool toStdout = namesStandardOutput(path); // also /dev/stdout redirected to a file: not truncated
-    std::FILE* out = toStdout ? stdout : std::fopen(path.c_str(), "wb");
-    if (out == nullptr)
-        throw IoError(path, "cannot open: " + errnoMessage(errno));
-    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
-    const int writeErrno = errno;
-    const bool flushed = std::fflush(out) == 0;
-    const bool closed = toStdout || std::fclose(out) == 0;
-    if (!written || !flushed || !closed)
-        throw IoError(path, "cannot write: " + errnoMessage(written ? errno : writeErrno));
-}
-
 void writeAtomically(const fs::path& path, std::span<const unsigned char> bytes) {
-    if (isStreamOutput(path)) {
-        writeStream(path, bytes);
-        return;
-    }
     AtomicFileWriter file(path);
     file.write({reinterpret_cast<const char*>(bytes.data()), bytes.size()});
     file.commit();
@@ -801,6 +782,15 @@ void detail::writeAtomically(const fs::path& path, std::span<const unsigned char
 
 AtomicFileWriter::AtomicFileWriter(fs::path path)
     : mPath(std::move(path)) {
+    if (isStreamOutput(mPath)) {
+        // A stream takes the bytes as they come: there is no folder to put a temporary in, and a rename would
+        // replace the device or pipe rather than write to it. /dev/stdout redirected to a file is standard
+        // output too: written through the process's stdout, from where it stands, not reopened and truncated.
+        mFile = namesStandardOutput(mPath) ? stdout : std::fopen(mPath.c_str(), "wb");
+        if (!mFile)
+            throw IoError(mPath, "cannot open: " + errnoMessage(errno));
+        return;
+    }
     const fs::path folder = outputFolder(mPath);
     std::error_code ec;
     if (fs::is_directory(mPath, ec))
@@ -813,19 +803,23 @@ AtomicFileWriter::AtomicFileWriter(fs::path path)
                       "cannot create temporary file " + quoted(mTemporary) + ": " + errnoMessage(errno));
 }
 
-AtomicFileWriter::~AtomicFileWriter() {
-    if (mFile) {
-        std::fclose(mFile);
+bool AtomicFileWriter::close() {
+    const bool closed = mFile == stdout ? std::fflush(mFile) == 0 : std::fclose(mFile) == 0;
+    mFile = nullptr;
+    if (!mTemporary.empty()) {
         std::error_code ignored;
         fs::remove(mTemporary, ignored);
     }
+    return closed;
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+    if (mFile)
+        close();
 }
 
 void AtomicFileWriter::fail(const std::string& problem) {
-    std::fclose(mFile);
-    mFile = nullptr;
-    std::error_code ignored;
-    fs::remove(mTemporary, ignored);
+    close();
     throw IoError(mPath, problem);
 }
 
@@ -839,6 +833,11 @@ void AtomicFileWriter::write(std::string_view text) {
 void AtomicFileWriter::commit() {
     if (!mFile)
         throw IoError(mPath, "committed twice or after a failure");
+    if (mTemporary.empty()) { // a stream: flushed, and closed unless it is standard output
+        if (!close())
+            throw IoError(mPath, "cannot write: " + errnoMessage(errno));
+        return;
+    }
     // fsync before the rename: after a crash the path holds either the old file or the whole new one.
     if (std::fflush(mFile) != 0 || ::fsync(::fileno(mFile)) != 0)
         fail("cannot write: " + errnoMessage(errno));

@@ -111,7 +111,9 @@ void requireWritableFile(const std::filesystem::path& path);
 /// A file written piece by piece and published atomically: the pieces go to a temporary beside `path` (named
 /// like writePng's), commit() flushes it to disk and renames it over `path`; destroyed without commit(), it
 /// removes the temporary and leaves `path` as it was. The constructor creates the temporary at once, so an
-/// unwritable destination fails before any work. For outputs that grow with the run (telemetry CSV).
+/// unwritable destination fails before any work. For outputs that grow with the run (telemetry CSV). A stream
+/// output (isStreamOutput) is written straight through instead: commit() flushes it, and what was written
+/// before a failure stays written.
 class AtomicFileWriter {
 public:
     explicit AtomicFileWriter(std::filesystem::path path);
@@ -125,8 +127,9 @@ public:
 
 private:
     void fail(const std::string& problem);
+    bool close(); ///< closes the file (flushes standard output), removes the temporary; false on an error
     std::filesystem::path mPath;
-    std::filesystem::path mTemporary;
+    std::filesystem::path mTemporary; ///< empty for a stream
     std::FILE* mFile = nullptr;
 };
 

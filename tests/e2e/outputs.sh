@@ -30,6 +30,11 @@ expect 0 "the same image as a file" -- "$PHOTOPIC" image "$S/desk.exr" -o "$S/fi
 check "byte-identical to -o -" cmp -s "$S/file.png" "$S/stdout.png"
 "$PHOTOPIC" image "$S/desk.exr" -o /dev/stdout > "$S/devstdout.png" 2> /dev/null
 check "/dev/stdout redirected to a file: the same bytes" cmp -s "$S/file.png" "$S/devstdout.png"
+"$PHOTOPIC" image "$S/desk.exr" -o "$S/t.png" --telemetry "$S/t.csv" > /dev/null 2>&1
+"$PHOTOPIC" image "$S/desk.exr" -o "$S/t.png" --telemetry - > "$S/t-stdout.csv" 2> /dev/null
+check "--telemetry - streams the same CSV" cmp -s "$S/t.csv" "$S/t-stdout.csv"
+expect 2 "the image and the telemetry both to standard output is refused" -- \
+    "$PHOTOPIC" image "$S/desk.exr" -o - --telemetry -
 expect 2 "-o - with several inputs is refused" -- "$PHOTOPIC" image "$S/desk.exr" "$S/desk.hdr" -o -
 check "says a stream holds one image" contains "holds one image, not 2"
 expect 0 "a device is streamed to" -- "$PHOTOPIC" image "$S/desk.exr" -o /dev/null
