@@ -451,6 +451,18 @@ std::size_t pendingWrites(int inFlight) {
     return inFlight <= 1 ? 0 : std::size_t(std::max(inFlight - 2, 1));
 }
 
+/// Where the lines a run prints go: standard error when the image or the telemetry goes to standard output
+/// (both there would interleave, and are refused).
+std::FILE* consoleFor(const ImageOptions& options) {
+    const bool imageToStdout = namesStandardOutput(options.output);
+    const bool telemetryToStdout = !options.telemetry.empty() && namesStandardOutput(options.telemetry);
+    if (imageToStdout && telemetryToStdout) {
+        throw InputError(
+            "the image and the telemetry cannot both go to standard output: name a file for one");
+    }
+    return imageToStdout || telemetryToStdout ? stderr : stdout;
+}
+
 /// `-n`: the telemetry CSV and the --write-aux files must be new too.
 void requireNewSideOutputs(const ImageOptions& options, const std::vector<fs::path>& inputs) {
     std::vector<fs::path> paths;
@@ -477,9 +489,10 @@ int runImage(const ImageOptions& options) {
         return runImageInfo(inputs, options.camera);
     }
     if (options.output.empty()) {
-        throw InputError("image: an output is required (-o FILE or FOLDER), or --info");
+        throw InputError("image: an output is required (-o FILE, FOLDER/, PATTERN or -), or --info");
     }
     const Settings settings = resolveSettings(options.settings);
+    std::FILE* const console = consoleFor(options);
     // Every output is checked before any work; a run that fails takes back what it wrote, the frames it
     // had already written included.
     RunOutputs outputs;
@@ -487,14 +500,6 @@ int runImage(const ImageOptions& options) {
     if (options.noOverwrite) {
         requireNewSideOutputs(options, inputs);
     }
-    // The lines printed go to standard error when the image or the telemetry goes to standard output.
-    const bool imageToStdout = namesStandardOutput(options.output);
-    const bool telemetryToStdout = !options.telemetry.empty() && namesStandardOutput(options.telemetry);
-    if (imageToStdout && telemetryToStdout) {
-        throw InputError(
-            "the image and the telemetry cannot both go to standard output: name a file for one");
-    }
-    std::FILE* const console = imageToStdout || telemetryToStdout ? stderr : stdout;
     if (!options.writeAux.empty()) {
         outputs.makeFolder(options.writeAux);
     }
