@@ -8,6 +8,7 @@
 #include "TelemetryCsv.h"
 
 #include "common/SequencePattern.h"
+#include "core/Log.h"
 #include "core/settings/SettingsJson.h"
 #include "gl/Context.h"
 #include "gl/Gl.h"
@@ -248,6 +249,26 @@ FrameSelection frameSelection(const ImageOptions& options) {
     return selection;
 }
 
+/// Without --frames a pattern takes the frames that exist, so a frame missing in the middle would shift the
+/// adaptation in time without a word: say so (a range makes it an error).
+void warnAboutGaps(const fs::path& pattern, const std::vector<SequenceFrame>& frames) {
+    std::int64_t missing = 0;
+    std::optional<std::int64_t> firstMissing;
+    for (std::size_t i = 1; i < frames.size(); ++i) {
+        const std::int64_t gap = frames[i].frame - frames[i - 1].frame - 1;
+        if (gap > 0 && !firstMissing) {
+            firstMissing = frames[i - 1].frame + 1;
+        }
+        missing += gap;
+    }
+    if (firstMissing) {
+        logWarning(
+            "{}: {} frame(s) missing between {} and {}, the first {}; the sequence runs on without them "
+            "(--frames A-B refuses a gap)",
+            pattern.string(), missing, frames.front().frame, frames.back().frame, *firstMissing);
+    }
+}
+
 std::vector<InputFile> expandInputs(const ImageOptions& options) {
     const FrameSelection selection = frameSelection(options);
     std::vector<InputFile> files;
@@ -263,7 +284,9 @@ std::vector<InputFile> expandInputs(const ImageOptions& options) {
                 continue;
             }
             anyPattern = true;
-            for (SequenceFrame& f : expandSequence(in, folderNames(in.parent_path()), selection)) {
+            std::vector<SequenceFrame> frames = expandSequence(in, folderNames(in.parent_path()), selection);
+            warnAboutGaps(in, frames);
+            for (SequenceFrame& f : frames) {
                 files.push_back({std::move(f.path), f.frame});
             }
         } catch (const std::invalid_argument& e) { // the messages name the pattern or the missing file

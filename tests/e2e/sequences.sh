@@ -47,6 +47,12 @@ check "a range: telemetry identical" cmp -s range-list.csv range.csv
 expect 0 "--start-number 1004" -- "$PHOTOPIC" image 'seq/f####.exr' --start-number 1004 -o start/
 check "frames 1004 to the last" [ "$(ls start | tr '\n' ' ')" = "f1004.png f1005.png f1006.png " ]
 
+mkdir gap
+cp seq/f1001.exr seq/f1002.exr seq/f1005.exr gap/
+expect 0 "a pattern with a gap runs the frames that exist" -- "$PHOTOPIC" image 'gap/f%04d.exr' -o gapout/
+check "and warns, naming the first missing frame" contains "2 frame(s) missing between 1001 and 1005, the first 1003"
+check "three frames written" [ "$(ls gapout | wc -l)" = 3 ]
+
 # Output patterns: the inputs' frame numbers, or 0, 1, ... when the inputs carry none.
 expect 0 "-o out/f%04d.png" -- "$PHOTOPIC" image 'seq/f%04d.exr' -o pat/g%04d.png "${AE[@]}"
 check "named by the input frames, same bytes as the folder output" \
