@@ -95,10 +95,11 @@ void addImageCommand(CLI::App& app, Cli& c) {
     c.image = app.add_subcommand("image", "process HDR images (EXR, HDR, PNG) into PNG (display) or EXR "
                                           "(scene-referred, before tone mapping)");
     c.image
-        ->add_option("inputs", c.imageOptions.inputs,
-                     "input images, or frame-numbered patterns: f%04d.exr (zero padded, as ffmpeg), "
-                     "f.####.exr (one # a digit), f@.exr (unpadded); several are frames of a sequence, "
-                     "in natural order (f9 before f10)")
+        ->add_option(
+            "inputs", c.imageOptions.inputs,
+            "input images, or frame-numbered patterns when no such file exists: f%04d.exr (zero padded, "
+            "as ffmpeg), f.####.exr (one # a digit), f@.exr (unpadded); several are frames of a sequence, "
+            "in natural order (f9 before f10)")
         ->required();
     c.image->add_option("-o,--output", c.imageOptions.output,
                         "where results go, required unless --info: an extension means a file (.png, .exr); a "
