@@ -7,6 +7,8 @@
 #include "Outputs.h"
 #include "TelemetryCsv.h"
 
+#include "common/SequencePattern.h"
+#include "core/Log.h"
 #include "core/settings/SettingsJson.h"
 #include "gl/Context.h"
 #include "gl/Gl.h"
@@ -217,41 +219,210 @@ void requireDistinctOutputs(const std::vector<fs::path>& inputs, const std::vect
     }
 }
 
-std::vector<fs::path> plannedOutputs(const ImageOptions& options, const std::vector<fs::path>& inputs,
-                                     RunOutputs& outputs) {
-    if (options.output == "-") {
-        throw InputError(
-            "output '-': writing to standard output is not supported; name a file (.png, .exr) or "
-            "a folder");
-    }
+/// An input once its patterns are expanded, with the frame number its pattern matched.
+struct InputFile {
+    fs::path path;
+    std::optional<std::int64_t> frame;
+};
+
+std::vector<std::string> folderNames(const fs::path& folder) {
+    std::vector<std::string> names;
     std::error_code ec;
-    const fs::file_status status = fs::status(options.output, ec);
-    if (!ec && fs::exists(status) && !fs::is_directory(status) && !fs::is_regular_file(status)) {
-        throw InputError(
-            fmt::format("output {} is a device, pipe or socket, not a file or folder: writing to a "
-                        "stream is not supported; name a file (.png, .exr) or a folder",
-                        options.output.string()));
+    for (fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, ec), end; !ec && it != end;
+         it.increment(ec)) {
+        names.push_back(it->path().filename().string());
     }
-    const std::string outExt = lowerExtension(options.output);
-    const bool toFolder = inputs.size() > 1 || fs::is_directory(options.output) || outExt.empty();
-    if (!toFolder && outExt != ".png" && outExt != ".exr") {
+    return names;
+}
+
+/// The inputs in the order they run: each pattern replaced by its frames (--frames, --start-number), then
+/// everything in natural order. A name that exists as a file is that file, whatever characters it holds.
+FrameSelection frameSelection(const ImageOptions& options) {
+    FrameSelection selection{.range = std::nullopt, .startFrom = options.startNumber};
+    if (!options.frames.empty()) {
+        try {
+            selection.range = parseFrameRange(options.frames);
+        } catch (const std::invalid_argument& e) {
+            throw InputError(fmt::format("--frames: {}", e.what()));
+        }
+    }
+    return selection;
+}
+
+/// Without --frames a pattern takes the frames that exist, so a frame missing in the middle would shift the
+/// adaptation in time without a word: say so (a range makes it an error).
+void warnAboutGaps(const fs::path& pattern, const std::vector<SequenceFrame>& frames) {
+    std::int64_t missing = 0;
+    std::optional<std::int64_t> firstMissing;
+    for (std::size_t i = 1; i < frames.size(); ++i) {
+        const std::int64_t gap = frames[i].frame - frames[i - 1].frame - 1;
+        if (gap > 0 && !firstMissing) {
+            firstMissing = frames[i - 1].frame + 1;
+        }
+        missing += gap;
+    }
+    if (firstMissing) {
+        logWarning(
+            "{}: {} frame(s) missing between {} and {}, the first {}; the sequence runs on without them "
+            "(--frames A-B refuses a gap)",
+            pattern.string(), missing, frames.front().frame, frames.back().frame, *firstMissing);
+    }
+}
+
+std::vector<InputFile> expandInputs(const ImageOptions& options) {
+    const FrameSelection selection = frameSelection(options);
+    std::vector<InputFile> files;
+    bool anyPattern = false;
+    for (const fs::path& in : options.inputs) {
+        std::error_code ec;
+        std::optional<FramePattern> pattern;
+        try {
+            // A file that exists is that file; only a file name holds a frame number, never a folder.
+            pattern = fs::exists(in, ec) ? std::nullopt : parseFramePattern(in.filename().string());
+            if (!pattern) {
+                files.push_back({in, std::nullopt});
+                continue;
+            }
+            anyPattern = true;
+            std::vector<SequenceFrame> frames = expandSequence(in, folderNames(in.parent_path()), selection);
+            warnAboutGaps(in, frames);
+            for (SequenceFrame& f : frames) {
+                files.push_back({std::move(f.path), f.frame});
+            }
+        } catch (const std::invalid_argument& e) { // the messages name the pattern or the missing file
+            throw InputError(e.what());
+        }
+    }
+    if (!anyPattern && (selection.range || selection.startFrom)) {
+        throw InputError("--frames and --start-number pick frames of a pattern input (f%04d.exr, "
+                         "f.####.exr, f@.exr); these inputs are files");
+    }
+    std::stable_sort(files.begin(), files.end(),
+                     [](const InputFile& a, const InputFile& b) { return naturalLess(a.path, b.path); });
+    return files;
+}
+
+/// The last run of digits in a file name's stem ("frame_0012b" -> 12), if it has one that fits.
+std::optional<std::int64_t> numberInName(const fs::path& path) {
+    const std::string stem = path.stem().string();
+    const auto last =
+        std::find_if(stem.rbegin(), stem.rend(), [](unsigned char c) { return std::isdigit(c); });
+    if (last == stem.rend()) {
+        return std::nullopt;
+    }
+    const auto first = std::find_if(last, stem.rend(), [](unsigned char c) { return !std::isdigit(c); });
+    const std::string digits(first.base(), last.base());
+    if (digits.size() > 18) {
+        return std::nullopt;
+    }
+    return std::stoll(digits);
+}
+
+/// The number each input's result takes in an output pattern: the frame its input pattern matched, else the
+/// last number in its file name; when an input has neither, or two inputs would share one, every input is
+/// numbered by its position from 0.
+std::vector<std::int64_t> outputFrameNumbers(const std::vector<InputFile>& inputs) {
+    std::vector<std::int64_t> numbers;
+    for (const InputFile& in : inputs) {
+        const std::optional<std::int64_t> n = in.frame ? in.frame : numberInName(in.path);
+        if (!n || std::find(numbers.begin(), numbers.end(), *n) != numbers.end()) {
+            numbers.clear();
+            for (std::size_t i = 0; i < inputs.size(); ++i) {
+                numbers.push_back(std::int64_t(i));
+            }
+            return numbers;
+        }
+        numbers.push_back(*n);
+    }
+    return numbers;
+}
+
+/// `-o -`, a device or a pipe: one image, as PNG (or EXR into a pipe named .exr), written as it is encoded.
+fs::path streamOutput(const ImageOptions& options, std::size_t inputCount) {
+    const fs::path& out = options.output;
+    if (inputCount > 1) {
+        throw InputError(
+            fmt::format("output {} is a stream (standard output, a device or a pipe) and holds one "
+                        "image, not {}: name a folder (-o out/) or a pattern (-o out/f%04d.png)",
+                        out.string(), inputCount));
+    }
+    if (options.format == "exr" && lowerExtension(out) != ".exr") {
+        throw InputError(fmt::format("output {}: a stream carries the display image as PNG; --format exr "
+                                     "needs a file or folder",
+                                     out.string()));
+    }
+    return out;
+}
+
+void requireExtension(const fs::path& out) {
+    const std::string ext = lowerExtension(out);
+    if (ext != ".png" && ext != ".exr") {
         throw InputError(
             fmt::format("output {}: unsupported extension '{}' (use .png for the display image or "
                         ".exr for the scene-referred image)",
-                        options.output.string(), outExt));
+                        out.string(), ext));
+    }
+}
+
+/// The frame-number pattern of an output's file name (out/f%04d.png), if it holds one. A name with a '%' that
+/// is no frame number ("50%.png") is an ordinary name, as it was before patterns.
+std::optional<FramePattern> outputPattern(const fs::path& out) {
+    try {
+        return parseFramePattern(out.filename().string());
+    } catch (const std::invalid_argument&) {
+        return std::nullopt;
+    }
+}
+
+/// `-n`: every output must be new.
+void requireNew(const std::vector<fs::path>& paths) {
+    for (const fs::path& path : paths) {
+        std::error_code ec;
+        if (fs::exists(fs::symlink_status(path, ec))) {
+            throw InputError(fmt::format("output {} exists already (-n: never overwrite); remove it, choose "
+                                         "another output, or leave out -n",
+                                         path.string()));
+        }
+    }
+}
+
+/// Where runImage writes each input's result, every path checked before any work. The rules of -o: "-", a
+/// device or a pipe is a stream; a name with a frame number (out/f%04d.png) is a pattern; an extension
+/// means a file; a trailing '/', an existing folder, no extension or several inputs mean a folder.
+std::vector<fs::path> plannedOutputs(const ImageOptions& options, const std::vector<InputFile>& files,
+                                     RunOutputs& outputs) {
+    const fs::path& out = options.output;
+    if (isStreamOutput(out)) {
+        return {streamOutput(options, files.size())};
+    }
+    std::vector<fs::path> inputs;
+    for (const InputFile& f : files) {
+        inputs.push_back(f.path);
     }
     std::vector<fs::path> paths;
-    if (!toFolder) {
-        paths.push_back(options.output);
-        requireDistinctOutputs(inputs, paths);
-        RunOutputs::requireFile(options.output);
-        return paths;
-    }
-    for (const fs::path& in : inputs) {
-        paths.push_back(options.output / (in.stem().string() + "." + options.format));
+    fs::path folder; // made before the outputs are checked; empty: none
+    if (const std::optional<FramePattern> pattern = outputPattern(out)) {
+        requireExtension(out);
+        for (const std::int64_t n : outputFrameNumbers(files)) {
+            paths.push_back(out.parent_path() / pattern->name(n));
+        }
+        folder = out.parent_path();
+    } else if (inputs.size() > 1 || fs::is_directory(out) || lowerExtension(out).empty()) {
+        for (const fs::path& in : inputs) {
+            paths.push_back(out / (in.stem().string() + "." + options.format));
+        }
+        folder = out;
+    } else {
+        requireExtension(out);
+        paths.push_back(out);
     }
     requireDistinctOutputs(inputs, paths);
-    outputs.makeFolder(options.output);
+    if (options.noOverwrite) {
+        requireNew(paths);
+    }
+    if (!folder.empty()) {
+        outputs.makeFolder(folder);
+    }
     for (const fs::path& path : paths) {
         RunOutputs::requireFile(path);
     }
@@ -284,14 +455,15 @@ void readBack(Pipeline& pipeline, const Texture& display, const fs::path& out, F
 /// Prints "IN -> OUT (WxH, ms since the frame started)" once the frame is on disk, the progress line taken
 /// off the terminal first and counted on after.
 std::function<void()> writtenLine(const fs::path& in, const fs::path& out, Extent size,
-                                  std::chrono::steady_clock::time_point start, Progress& progress) {
-    return [&in, &out, size, start, &progress] {
+                                  std::chrono::steady_clock::time_point start, Progress& progress,
+                                  std::FILE* console) {
+    return [&in, &out, size, start, &progress, console] {
         progress.clear();
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        std::printf("%s -> %s (%dx%d, %.1f ms)\n", in.string().c_str(), out.string().c_str(), size.width,
-                    size.height, ms);
-        std::fflush(stdout);
+        std::fprintf(console, "%s -> %s (%dx%d, %.1f ms)\n", in.string().c_str(), out.string().c_str(),
+                     size.width, size.height, ms);
+        std::fflush(console);
         progress.advance();
     };
 }
@@ -303,22 +475,55 @@ std::size_t pendingWrites(int inFlight) {
     return inFlight <= 1 ? 0 : std::size_t(std::max(inFlight - 2, 1));
 }
 
+/// Where the lines a run prints go: standard error when the image or the telemetry goes to standard output
+/// (both there would interleave, and are refused).
+std::FILE* consoleFor(const ImageOptions& options) {
+    const bool imageToStdout = namesStandardOutput(options.output);
+    const bool telemetryToStdout = !options.telemetry.empty() && namesStandardOutput(options.telemetry);
+    if (imageToStdout && telemetryToStdout) {
+        throw InputError(
+            "the image and the telemetry cannot both go to standard output: name a file for one");
+    }
+    return imageToStdout || telemetryToStdout ? stderr : stdout;
+}
+
+/// `-n`: the telemetry CSV and the --write-aux files must be new too.
+void requireNewSideOutputs(const ImageOptions& options, const std::vector<fs::path>& inputs) {
+    std::vector<fs::path> paths;
+    if (!options.telemetry.empty()) {
+        paths.push_back(options.telemetry);
+    }
+    for (const fs::path& in : inputs) {
+        if (!options.writeAux.empty()) {
+            paths.push_back(options.writeAux / (in.stem().string() + ".aux.exr"));
+        }
+    }
+    requireNew(paths);
+}
+
 } // namespace
 
 int runImage(const ImageOptions& options) {
-    std::vector<fs::path> inputs = options.inputs;
-    std::sort(inputs.begin(), inputs.end(), naturalLess);
+    const std::vector<InputFile> files = expandInputs(options);
+    std::vector<fs::path> inputs;
+    for (const InputFile& f : files) {
+        inputs.push_back(f.path);
+    }
     if (options.info) {
         return runImageInfo(inputs, options.camera);
     }
     if (options.output.empty()) {
-        throw InputError("image: an output is required (-o FILE or FOLDER), or --info");
+        throw InputError("image: an output is required (-o FILE, FOLDER/, PATTERN or -), or --info");
     }
     const Settings settings = resolveSettings(options.settings);
+    std::FILE* const console = consoleFor(options);
     // Every output is checked before any work; a run that fails takes back what it wrote, the frames it
     // had already written included.
     RunOutputs outputs;
-    const std::vector<fs::path> outPaths = plannedOutputs(options, inputs, outputs);
+    const std::vector<fs::path> outPaths = plannedOutputs(options, files, outputs);
+    if (options.noOverwrite) {
+        requireNewSideOutputs(options, inputs);
+    }
     if (!options.writeAux.empty()) {
         outputs.makeFolder(options.writeAux);
     }
@@ -367,14 +572,16 @@ int runImage(const ImageOptions& options) {
         if (telemetry) {
             telemetry->take(*pipeline, i, i + 1 == inputs.size());
         }
-        writer.write(out, std::move(image), writtenLine(inputs[i], out, {width, height}, start, progress));
+        writer.write(out, std::move(image),
+                     writtenLine(inputs[i], out, {width, height}, start, progress, console));
     }
     writer.finish();
     progress.clear();
     if (telemetry) {
         telemetry->commit(inputs.size(), pipeline->droppedTelemetry());
         outputs.wrote(options.telemetry);
-        std::printf("telemetry -> %s (%zu frames)\n", options.telemetry.string().c_str(), inputs.size());
+        std::fprintf(console, "telemetry -> %s (%zu frames)\n", options.telemetry.string().c_str(),
+                     inputs.size());
     }
     outputs.commit();
     return kOk;

@@ -7,6 +7,7 @@
 #include "pipeline/Pipeline.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,8 +32,15 @@ struct SettingsSources {
 Settings resolveSettings(const SettingsSources& sources, Settings base = {});
 
 struct ImageOptions {
+    /// Files, or frame-numbered patterns (f%04d.exr, f.####.exr, f@.exr) expanded from their folder; a
+    /// name that exists as a file is a file.
     std::vector<std::filesystem::path> inputs;
+    std::string frames; ///< --frames A-B: every frame of the range, inclusive; empty: none
+    std::optional<std::int64_t> startNumber; ///< --start-number N: a pattern's frames from N on
+    /// A file (.png, .exr), a folder (a trailing '/', no extension, or several inputs), a pattern
+    /// (out/f%04d.png) or a stream ("-", a device, a pipe: one input, PNG).
     std::filesystem::path output;
+    bool noOverwrite = false;   ///< -n: an output that exists already is refused before any work
     std::string format = "png"; ///< for folder outputs: png or exr
     SettingsSources settings;
     bool forceLdr = false;

@@ -59,6 +59,9 @@ void RunOutputs::requireFile(const fs::path& path) {
 }
 
 void RunOutputs::wrote(const fs::path& path) {
+    if (isStreamOutput(path)) {
+        return; // standard output, a device or a pipe: nothing to take back, and never to be removed
+    }
     mFiles.push_back(path);
 }
 

@@ -26,7 +26,9 @@ public:
     /// before the work that makes it.
     static void requireFile(const std::filesystem::path& path);
 
-    void wrote(const std::filesystem::path& path); ///< a file of this run now exists
+    /// A file of this run now exists. A stream output (standard output, a device, a pipe) is not recorded:
+    /// what was streamed cannot be taken back, and the device must not be removed.
+    void wrote(const std::filesystem::path& path);
     /// Numbered files (frame_0000.png, ...): `name(i)` is the i-th one's path. Counted, not listed, so a run
     /// of any length holds no per-file memory here.
     void sequence(std::function<std::filesystem::path(std::size_t)> name) { mSequenceName = std::move(name); }

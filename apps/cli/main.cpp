@@ -95,11 +95,35 @@ void addImageCommand(CLI::App& app, Cli& c) {
     c.image = app.add_subcommand("image", "process HDR images (EXR, HDR, PNG) into PNG (display) or EXR "
                                           "(scene-referred, before tone mapping)");
     c.image
-        ->add_option("inputs", c.imageOptions.inputs,
-                     "input images; several are frames of a sequence in name order")
+        ->add_option(
+            "inputs", c.imageOptions.inputs,
+            "input images, or frame-numbered patterns when no such file exists: f%04d.exr (zero padded, "
+            "as ffmpeg), f.####.exr (one # a digit), f@.exr (unpadded); several are frames of a sequence, "
+            "in natural order (f9 before f10)")
         ->required();
     c.image->add_option("-o,--output", c.imageOptions.output,
-                        "output file (.png/.exr) or folder (several inputs); required unless --info");
+                        "where results go, required unless --info: an extension means a file (.png, .exr); a "
+                        "trailing '/', an existing folder, no extension or several inputs mean a folder "
+                        "(NAME.png, --format); a frame number means a pattern (out/f%04d.png: each input's "
+                        "frame number, or 0, 1, ... when the inputs carry none); '-', a device or a pipe is "
+                        "streamed (one input, PNG). An output that is an input, or that two inputs would "
+                        "share, is refused. Existing files are replaced (atomically) unless -n");
+    auto* noOverwrite = c.image->add_flag("-n,--no-overwrite", c.imageOptions.noOverwrite,
+                                          "never overwrite: an output that exists is refused (exit 2) "
+                                          "before any work, like ffmpeg -n");
+    c.image
+        ->add_flag_callback(
+            "-y,--overwrite", [] {}, "replace existing outputs (the default; like ffmpeg -y)")
+        ->excludes(noOverwrite);
+    auto* frames = c.image->add_option("--frames", c.imageOptions.frames,
+                                       "frames A-B of a pattern input, inclusive, each of which must exist "
+                                       "(1001-1100)");
+    c.image
+        ->add_option("--start-number", c.imageOptions.startNumber,
+                     "a pattern input's first frame (like ffmpeg -start_number); default: the lowest "
+                     "that exists. Every frame from it on that exists is taken")
+        ->check(CLI::NonNegativeNumber)
+        ->excludes(frames);
     c.image->add_option("--format", c.imageOptions.format, "file type written into an output folder")
         ->check(CLI::IsMember({"png", "exr"}));
     c.image->add_option("--fps", c.imageOptions.fps, "frame rate of a sequence")
@@ -140,6 +164,8 @@ void addImageCommand(CLI::App& app, Cli& c) {
         "Examples:\n"
         "  photopic image in.exr -o out.png --tonemap agx --exposure -1.5\n"
         "  photopic image f*.exr -o dir/ --fps 24 --telemetry t.csv --set autoExposure.enabled=true\n"
+        "  photopic image shot/f%04d.exr --frames 1001-1100 -o out/f%04d.png -n\n"
+        "  photopic image in.exr -o - | display -\n"
         "  photopic image in.exr -o view.png --debug histogram");
 }
 

@@ -782,6 +782,15 @@ void detail::writeAtomically(const fs::path& path, std::span<const unsigned char
 
 AtomicFileWriter::AtomicFileWriter(fs::path path)
     : mPath(std::move(path)) {
+    if (isStreamOutput(mPath)) {
+        // A stream takes the bytes as they come: there is no folder to put a temporary in, and a rename would
+        // replace the device or pipe rather than write to it. /dev/stdout redirected to a file is standard
+        // output too: written through the process's stdout, from where it stands, not reopened and truncated.
+        mFile = namesStandardOutput(mPath) ? stdout : std::fopen(mPath.c_str(), "wb");
+        if (!mFile)
+            throw IoError(mPath, "cannot open: " + errnoMessage(errno));
+        return;
+    }
     const fs::path folder = outputFolder(mPath);
     std::error_code ec;
     if (fs::is_directory(mPath, ec))
@@ -794,19 +803,23 @@ AtomicFileWriter::AtomicFileWriter(fs::path path)
                       "cannot create temporary file " + quoted(mTemporary) + ": " + errnoMessage(errno));
 }
 
-AtomicFileWriter::~AtomicFileWriter() {
-    if (mFile) {
-        std::fclose(mFile);
+bool AtomicFileWriter::close() {
+    const bool closed = mFile == stdout ? std::fflush(mFile) == 0 : std::fclose(mFile) == 0;
+    mFile = nullptr;
+    if (!mTemporary.empty()) {
         std::error_code ignored;
         fs::remove(mTemporary, ignored);
     }
+    return closed;
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+    if (mFile)
+        close();
 }
 
 void AtomicFileWriter::fail(const std::string& problem) {
-    std::fclose(mFile);
-    mFile = nullptr;
-    std::error_code ignored;
-    fs::remove(mTemporary, ignored);
+    close();
     throw IoError(mPath, problem);
 }
 
@@ -820,6 +833,11 @@ void AtomicFileWriter::write(std::string_view text) {
 void AtomicFileWriter::commit() {
     if (!mFile)
         throw IoError(mPath, "committed twice or after a failure");
+    if (mTemporary.empty()) { // a stream: flushed, and closed unless it is standard output
+        if (!close())
+            throw IoError(mPath, "cannot write: " + errnoMessage(errno));
+        return;
+    }
     // fsync before the rename: after a crash the path holds either the old file or the whole new one.
     if (std::fflush(mFile) != 0 || ::fsync(::fileno(mFile)) != 0)
         fail("cannot write: " + errnoMessage(errno));
@@ -838,7 +856,24 @@ void AtomicFileWriter::commit() {
     }
 }
 
+bool namesStandardOutput(const fs::path& path) {
+    struct stat target {};
+    struct stat out {};
+    return path == kStdoutPath || (::stat(path.c_str(), &target) == 0 && ::fstat(STDOUT_FILENO, &out) == 0 &&
+                                   target.st_dev == out.st_dev && target.st_ino == out.st_ino);
+}
+
+bool isStreamOutput(const fs::path& path) {
+    if (namesStandardOutput(path))
+        return true;
+    std::error_code ec;
+    const fs::file_status target = fs::status(path, ec); // through links: /dev/stdout is one
+    return !ec && fs::exists(target) && !fs::is_regular_file(target) && !fs::is_directory(target);
+}
+
 void requireWritableFile(const fs::path& path) {
+    if (isStreamOutput(path))
+        return;
     const fs::path folder = outputFolder(path);
     std::error_code ec;
     if (fs::is_directory(path, ec))

@@ -63,11 +63,22 @@ void setExrThreads(int threads);
 [[nodiscard]] Image8 decodePng8(std::span<const unsigned char> bytes, const std::filesystem::path& name,
                                 const ImageReadLimits& limits = {});
 
+/// The path that names standard output, as command-line tools spell it.
+inline const std::filesystem::path kStdoutPath{"-"};
+
+/// Whether `path` is standard output: "-", or a name of the file standard output is (/dev/stdout).
+[[nodiscard]] bool namesStandardOutput(const std::filesystem::path& path);
+
+/// Whether `path` is written as a stream rather than atomically: "-" (standard output), or an existing
+/// device, pipe or socket, links followed (/dev/null, a named pipe), or standard output whatever it is.
+[[nodiscard]] bool isStreamOutput(const std::filesystem::path& path);
+
 /// Writes an 8-bit sRGB PNG, stored as RGB when every alpha is 255 (smaller) and as RGBA otherwise; readPng8
-/// gives back the same RGBA bytes either way. Both writers are atomic: the file is written as
-/// `.<name>.tmp-<pid>-<n>` in the destination folder, flushed to disk, then renamed over `path`. On any
-/// failure the temporary is removed, `path` is left as it was and IoError is thrown. The destination folder
-/// must already exist; it is never created.
+/// gives back the same RGBA bytes either way. Both writers are atomic when `path` is a regular file: the file
+/// is written as `.<name>.tmp-<pid>-<n>` in the destination folder, flushed to disk, then renamed over
+/// `path`. On any failure the temporary is removed, `path` is left as it was and IoError is thrown. The
+/// destination folder must already exist; it is never created. A stream output (isStreamOutput) is written
+/// straight through instead, and what reached it before a failure stays there.
 void writePng(const std::filesystem::path& path, const Image8& image);
 
 /// writePng for a sequence: the encoder's buffers (an opaque image's RGB copy, the encoded stream) are kept
@@ -91,15 +102,18 @@ private:
 /// Writes a text file (CSV telemetry, JSON) atomically, like writePng.
 void writeTextFile(const std::filesystem::path& path, std::string_view text);
 
-/// Checks, without writing anything, that `path` can be an output file: it names a file (not a folder, not
-/// an existing folder), its folder exists and is writable. Throws IoError saying which of these fails. For
+/// Checks, without writing anything, that `path` can be an output file: a stream output (isStreamOutput), or
+/// it names a file (not a folder, not an existing folder, not a symbolic link), its folder exists and is
+/// writable. Throws IoError saying which of these fails. For
 /// validating every output before a long run starts.
 void requireWritableFile(const std::filesystem::path& path);
 
 /// A file written piece by piece and published atomically: the pieces go to a temporary beside `path` (named
 /// like writePng's), commit() flushes it to disk and renames it over `path`; destroyed without commit(), it
 /// removes the temporary and leaves `path` as it was. The constructor creates the temporary at once, so an
-/// unwritable destination fails before any work. For outputs that grow with the run (telemetry CSV).
+/// unwritable destination fails before any work. For outputs that grow with the run (telemetry CSV). A stream
+/// output (isStreamOutput) is written straight through instead: commit() flushes it, and what was written
+/// before a failure stays written.
 class AtomicFileWriter {
 public:
     explicit AtomicFileWriter(std::filesystem::path path);
@@ -113,8 +127,9 @@ public:
 
 private:
     void fail(const std::string& problem);
+    bool close(); ///< closes the file (flushes standard output), removes the temporary; false on an error
     std::filesystem::path mPath;
-    std::filesystem::path mTemporary;
+    std::filesystem::path mTemporary; ///< empty for a stream
     std::FILE* mFile = nullptr;
 };
 

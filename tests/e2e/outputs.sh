@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # `-o` never destroys what it should not: an output that is one of the inputs, two inputs that would share an
-# output, `-`, a device such as /dev/stdout and a symbolic link are refused before any work (exit 2, the path
-# named), and the input is left as it was.
+# output and a symbolic link are refused before any work (exit 2, the path named), and the input is left as it
+# was. `-o -` and devices are streamed, not replaced: one image, a PNG that decodes.
 source "$(dirname "$0")/lib.bash"
 S="$SCRATCH"
 cp "$DATA/Desk.exr" "$S/desk.exr"
@@ -15,10 +15,36 @@ expect 2 "the same file through another path is refused" -- "$PHOTOPIC" image "$
 expect 2 "two inputs with one stem are refused" -- "$PHOTOPIC" image "$S/desk.exr" "$S/desk.hdr" -o "$S/out/"
 check "names both inputs" contains "would both be written to"
 check "no folder was made" [ ! -e "$S/out" ]
-expect 2 "-o - is refused, not a folder named -" -- "$PHOTOPIC" image "$S/desk.exr" -o -
+checks=$((checks + 1))
+if "$PHOTOPIC" image "$S/desk.exr" -o - > "$S/stdout.png" 2> "$S/stderr.txt"; then
+    echo "ok: -o - writes to standard output"
+else
+    echo "FAIL: -o - writes to standard output"
+    failures=$((failures + 1))
+fi
 check "no file or folder named -" [ ! -e "-" ]
-expect 2 "a device is refused" -- "$PHOTOPIC" image "$S/desk.exr" -o /dev/null
-check "says it is not a file" contains "device, pipe or socket"
+check "the lines printed went to standard error" grep -q "desk.exr -> -" "$S/stderr.txt"
+check "it is a PNG" [ "$(head -c 8 "$S/stdout.png" | od -An -tx1 | tr -d ' ')" = 89504e470d0a1a0a ]
+expect 0 "the PNG from standard output decodes" -- "$PHOTOPIC" image "$S/stdout.png" -o "$S/decoded.exr"
+expect 0 "the same image as a file" -- "$PHOTOPIC" image "$S/desk.exr" -o "$S/file.png"
+check "byte-identical to -o -" cmp -s "$S/file.png" "$S/stdout.png"
+"$PHOTOPIC" image "$S/desk.exr" -o /dev/stdout > "$S/devstdout.png" 2> /dev/null
+check "/dev/stdout redirected to a file: the same bytes" cmp -s "$S/file.png" "$S/devstdout.png"
+"$PHOTOPIC" image "$S/desk.exr" -o "$S/t.png" --telemetry "$S/t.csv" > /dev/null 2>&1
+"$PHOTOPIC" image "$S/desk.exr" -o "$S/t.png" --telemetry - > "$S/t-stdout.csv" 2> /dev/null
+check "--telemetry - streams the same CSV" cmp -s "$S/t.csv" "$S/t-stdout.csv"
+expect 2 "the image and the telemetry both to standard output is refused" -- \
+    "$PHOTOPIC" image "$S/desk.exr" -o - --telemetry -
+expect 2 "-o - with several inputs is refused" -- "$PHOTOPIC" image "$S/desk.exr" "$S/desk.hdr" -o -
+check "says a stream holds one image" contains "holds one image, not 2"
+expect 0 "a device is streamed to" -- "$PHOTOPIC" image "$S/desk.exr" -o /dev/null
+check "and left a device" [ -c /dev/null ]
+mkfifo "$S/pipe.png"
+cat "$S/pipe.png" > "$S/from-pipe.png" &
+expect 0 "a named pipe is streamed to" -- "$PHOTOPIC" image "$S/desk.exr" -o "$S/pipe.png"
+wait
+check "the reader got the PNG" cmp -s "$S/file.png" "$S/from-pipe.png"
+check "the pipe is still a pipe" [ -p "$S/pipe.png" ]
 ln -s "$S/target.png" "$S/link.png"
 expect 2 "a symbolic link is refused" -- "$PHOTOPIC" image "$S/desk.exr" -o "$S/link.png"
 check "says why" contains "symbolic link"

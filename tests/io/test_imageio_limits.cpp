@@ -140,6 +140,26 @@ TEST(OutputChecks, RequireWritableFileNamesWhatIsWrong) {
     fs::remove_all(dir);
 }
 
+TEST(OutputChecks, DevicesAndStandardOutputAreStreamed) {
+    const fs::path dir = fs::temp_directory_path() / ("photopic-stream-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "file.png") << "x";
+    EXPECT_TRUE(isStreamOutput("-"));
+    EXPECT_TRUE(isStreamOutput("/dev/null"));
+    EXPECT_FALSE(isStreamOutput(dir / "file.png"));
+    EXPECT_FALSE(isStreamOutput(dir / "new.png"));
+    EXPECT_FALSE(isStreamOutput(dir));
+    EXPECT_NO_THROW(requireWritableFile("/dev/null"));
+    // Written through, not renamed over: /dev/null is still the device, and no temporary is left in /dev.
+    Image8 image;
+    image.width = 2;
+    image.height = 1;
+    image.rgba.assign(8, 255);
+    EXPECT_NO_THROW(writePng("/dev/null", image));
+    EXPECT_TRUE(fs::is_character_file("/dev/null"));
+    fs::remove_all(dir);
+}
+
 TEST(OutputChecks, AtomicFileWriterPublishesOnlyOnCommit) {
     const fs::path dir = fs::temp_directory_path() / ("photopic-atomic-" + std::to_string(::getpid()));
     fs::create_directories(dir);
