@@ -36,8 +36,17 @@ namespace photopic {
 
 namespace fs = std::filesystem;
 
+namespace {
+/// "\"PATH\": problem", built by appends: GCC 12 warns of a false overlap in `"\"" + std::string`.
+std::string ioErrorMessage(const fs::path& path, std::string_view problem) {
+    std::string message(1, '"');
+    message.append(path.string()).append("\": ").append(problem);
+    return message;
+}
+} // namespace
+
 IoError::IoError(const fs::path& path, std::string_view problem)
-    : std::runtime_error("\"" + path.string() + "\": " + std::string(problem)) {}
+    : std::runtime_error(ioErrorMessage(path, problem)) {}
 
 namespace {
 
@@ -795,8 +804,14 @@ AtomicFileWriter::AtomicFileWriter(fs::path path)
     std::error_code ec;
     if (fs::is_directory(mPath, ec))
         throw IoError(mPath, "is a folder, not a file");
-    mTemporary = folder / ("." + mPath.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                           std::to_string(gTemporaryCounter++));
+    // ".NAME.tmp-PID-N", built by appends: GCC 12 warns of a false overlap in `"." + std::string`.
+    std::string name(1, '.');
+    name.append(mPath.filename().string())
+        .append(".tmp-")
+        .append(std::to_string(::getpid()))
+        .append("-")
+        .append(std::to_string(gTemporaryCounter++));
+    mTemporary = folder / name;
     mFile = std::fopen(mTemporary.c_str(), "wbx");
     if (!mFile)
         throw IoError(mPath,
