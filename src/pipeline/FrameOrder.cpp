@@ -6,6 +6,8 @@ FrameOrder::FrameOrder(const Capabilities& caps, bool keepTelemetryHistory)
     : exposure(keepTelemetryHistory)
     , subjectContexts(probes, exposure)
     , tonemap(caps) {
+    // A host that keeps every frame's telemetry gets the frame's readings even with auto exposure off.
+    metering.setMeterForTelemetry(keepTelemetryHistory);
     // Lighting stage (3D hosts, while they shade): ambient occlusion for indirect light and contact
     // shadows for the sun read depth and normals and write ambientOcclusion / contactShadows. The post stage
     // starts from the host's inputs again (its own linear depth pass runs when a post pass needs it), so the

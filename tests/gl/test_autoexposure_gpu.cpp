@@ -113,7 +113,8 @@ TEST_P(StepResponseTest, FollowsTheModel) {
     const Settings settings = autoSettings(c.mode);
     const AutoExposureSettings& ae = settings.autoExposure;
     const float dt = 1.0f / 30.0f;
-    // 12 s after the step: the slowest case (hybrid at speedDown 1 EV/s over 6.6 EV, then exponential) settles.
+    // 12 s after the step: the slowest case (hybrid at speedDown 1 EV/s over 6.6 EV, then exponential)
+    // settles.
     const int before = 10, after = 360;
     Sequence seq(settings);
     for (int i = 0; i < before; ++i) {
@@ -334,12 +335,26 @@ TEST_F(GlTest, TelemetryHistogramRunsForTheDebugViewWithAutoExposureOff) {
     const ImageF image = greyImage(12, 10, 0.3f);
     const Texture input = makeTexture(image, "input");
 
-    Pipeline off({.settings = s, .keepTelemetryHistory = true});
+    Pipeline off({.settings = s});
     off.execute({.color = &input}, {});
-    const ExposureTelemetry none = off.drainTelemetry().at(0);
-    EXPECT_EQ(none.histogramCount, 0u) << "nothing is metered without auto exposure or a view needing it";
+    glFinish();
+    const ExposureTelemetry none = off.telemetry();
+    ASSERT_TRUE(none.valid);
+    EXPECT_EQ(none.histogramCount, 0u)
+        << "nothing is metered without auto exposure, telemetry or a view needing it";
     EXPECT_EQ(none.frameLuminance, 0.0f);
     EXPECT_FLOAT_EQ(none.exposure, std::exp2(1.5f));
+
+    // A host that keeps every frame's telemetry (the CLI's --telemetry) gets the readings in the configured
+    // mode (average here); exposure stays manual.
+    Pipeline telemetry({.settings = s, .keepTelemetryHistory = true});
+    telemetry.execute({.color = &input}, {});
+    const ExposureTelemetry metered = telemetry.drainTelemetry().at(0);
+    EXPECT_NEAR(metered.frameLuminance, asHalf(0.3f), 1e-3f); // a geometric mean: log2 and exp2 in float
+    EXPECT_NEAR(metered.meteredLuminance, asHalf(0.3f), 1e-3f);
+    EXPECT_GT(metered.maxLuminance, 0.0f);
+    EXPECT_FALSE(metered.autoEnabled);
+    EXPECT_FLOAT_EQ(metered.exposure, std::exp2(1.5f)) << "auto exposure stays off";
 
     s.debug.view = DebugView::Histogram;
     Pipeline withView({.settings = s, .keepTelemetryHistory = true});

@@ -66,10 +66,11 @@ void MeteringPass::configure(const Settings& settings) {
     mMaskPath = path;
 }
 
-bool MeteringPass::histogramWanted(const Settings& s) noexcept {
+bool MeteringPass::histogramWanted(const Settings& s, bool forTelemetry) noexcept {
     const AutoExposureSettings& ae = s.autoExposure;
     const DebugView view = s.debug.view;
-    return (ae.enabled && ae.metering == MeteringMode::Histogram) || view == DebugView::Histogram ||
+    return (metered(s, forTelemetry) && ae.metering == MeteringMode::Histogram) ||
+           view == DebugView::Histogram ||
            (view == DebugView::Metering && ae.metering == MeteringMode::Histogram);
 }
 
@@ -106,11 +107,13 @@ MeteringPass::Weights MeteringPass::weightsFor(const AutoExposureSettings& ae, b
 void MeteringPass::execute(FrameContext& ctx, FrameResources& resources) {
     const AutoExposureSettings& ae = ctx.settings.autoExposure;
     const Texture* mask = mMask.valid() ? &mMask : nullptr;
+    AutoExposureSettings weighting = ae; // weightsFor meters only what auto exposure (or telemetry) reads
+    weighting.enabled = metered(ctx.settings, mMeterForTelemetry);
     const Outputs out = execute({.scene = resources.texture(Resource::SceneColor),
                                  .mask = mask,
                                  .settings = &ae,
-                                 .histogram = histogramWanted(ctx.settings),
-                                 .weights = weightsFor(ae, mask != nullptr),
+                                 .histogram = histogramWanted(ctx.settings, mMeterForTelemetry),
+                                 .weights = weightsFor(weighting, mask != nullptr),
                                  .timers = ctx.timers});
     resources.bind(Resource::Histogram, *out.histogram);
     resources.bind(Resource::Metering, *out.metering);

@@ -72,7 +72,17 @@ public:
 
     /// The histogram is built when exposure or a debug view needs it (the histogram view works with auto
     /// exposure off). The exposure pass asks the same question to know whether the bins are this frame's.
-    [[nodiscard]] static bool histogramWanted(const Settings& settings) noexcept;
+    /// `forTelemetry`: the host keeps every frame's telemetry, so the frame is metered in the configured mode
+    /// even with auto exposure off (the readings are reported; exposure stays manual).
+    [[nodiscard]] static bool histogramWanted(const Settings& settings, bool forTelemetry = false) noexcept;
+    /// Whether the frame computes a reading for exposure (auto exposure on, or telemetry wanted).
+    [[nodiscard]] static bool metered(const Settings& settings, bool forTelemetry) noexcept {
+        return settings.autoExposure.enabled || forTelemetry;
+    }
+    /// Meter every frame in the configured mode even with auto exposure off (a host that keeps every
+    /// frame's telemetry: the CLI's --telemetry).
+    void setMeterForTelemetry(bool meter) { mMeterForTelemetry = meter; }
+    [[nodiscard]] bool metersForTelemetry() const { return mMeterForTelemetry; }
     /// The weighted mean this frame's settings ask for (the subject probe writes its own reading).
     [[nodiscard]] static Weights weightsFor(const AutoExposureSettings& ae, bool haveMask) noexcept;
 
@@ -98,6 +108,7 @@ private:
     /// (265 against 29 ms at 1920x1080) while on an H200 the row shader's uncoalesced reads cost 4x the block
     /// shader's (0.106 against 0.027 ms).
     bool mRowsWithoutHistogram = false;
+    bool mMeterForTelemetry = false;
     Texture mMask;
     std::string mMaskPath;
     Extent mExtent;
