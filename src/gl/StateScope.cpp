@@ -40,19 +40,25 @@ GLint64 integer64At(GLenum name, int index) {
     return value;
 }
 
-/// `name` if it still names an object (`isObject`), else 0. An object the host had bound can be deleted while
-/// the scope lives (a texture the pipeline owned and freed, say); deleting a bound object unbinds it, so 0 is
-/// what the host's binding would be had the scope not been there, and binding a deleted name is an error.
-GLuint alive(GLint name, GLboolean (*isObject)(GLuint)) {
+/// `name` if it still names an object (`isObject`, a glIs* query), else 0. An object the host had bound can
+/// be deleted while the scope lives (a texture the pipeline owned and freed, a program the host deleted while
+/// it was current); deleting a bound object unbinds it, so 0 is what the host's binding would be had the
+/// scope not been there, and binding a deleted name is an error.
+template <class IsObject>
+GLuint alive(GLint name, IsObject isObject) {
     return name != 0 && isObject(GLuint(name)) ? GLuint(name) : 0;
 }
 
-GLboolean isBuffer(GLuint name) {
-    return glIsBuffer(name);
+GLuint aliveBuffer(GLint name) {
+    return alive(name, [](GLuint n) { return glIsBuffer(n); });
+}
+
+GLuint aliveTexture(GLint name) {
+    return alive(name, [](GLuint n) { return glIsTexture(n); });
 }
 
 void restoreIndexed(GLenum target, int index, GLint name, GLint64 start, GLint64 size) {
-    name = GLint(alive(name, isBuffer));
+    name = GLint(aliveBuffer(name));
     if (name != 0 && size > 0) {
         glBindBufferRange(target, GLuint(index), GLuint(name), GLintptr(start), GLsizeiptr(size));
     } else {
@@ -159,22 +165,18 @@ GlStateScope::~GlStateScope() {
     glPixelStorei(GL_UNPACK_ALIGNMENT, mUnpackAlignment);
     glPixelStorei(GL_PACK_ROW_LENGTH, mPackRowLength);
     glPixelStorei(GL_UNPACK_ROW_LENGTH, mUnpackRowLength);
-    // A texture or sampler deleted while the scope was open (a pipeline texture the host had bound, freed
-    // by the pipeline) is unbound by GL on deletion: rebinding its name would be an error, 0 is what GL left.
     for (int unit = 0; unit < kUnits; ++unit) {
         glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-        glBindTexture(GL_TEXTURE_2D, mTextures[unit] != 0 && glIsTexture(GLuint(mTextures[unit]))
-                                         ? GLuint(mTextures[unit])
-                                         : 0);
-        glBindSampler(GLuint(unit), mSamplers[unit] != 0 && glIsSampler(GLuint(mSamplers[unit]))
-                                        ? GLuint(mSamplers[unit])
-                                        : 0);
-        const ImageUnit& image = mImages[unit];
-        if (unit < mImageUnits && image.name != 0 && glIsTexture(GLuint(image.name))) {
-            glBindImageTexture(GLuint(unit), GLuint(image.name), image.level, GLboolean(image.layered),
-                               image.layer, GLenum(image.access), GLenum(image.format));
-        } else if (unit < mImageUnits) {
-            glBindImageTexture(GLuint(unit), 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R8);
+        glBindTexture(GL_TEXTURE_2D, aliveTexture(mTextures[unit]));
+        glBindSampler(GLuint(unit), alive(mSamplers[unit], [](GLuint n) { return glIsSampler(n); }));
+        if (unit < mImageUnits) {
+            const ImageUnit& image = mImages[unit];
+            if (const GLuint name = aliveTexture(image.name); name != 0) {
+                glBindImageTexture(GLuint(unit), name, image.level, GLboolean(image.layered), image.layer,
+                                   GLenum(image.access), GLenum(image.format));
+            } else {
+                glBindImageTexture(GLuint(unit), 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R8);
+            }
         }
         if (unit < mUniformBufferUnits) {
             restoreIndexed(GL_UNIFORM_BUFFER, unit, mUniformBuffers[unit].name, mUniformBuffers[unit].start,
@@ -187,27 +189,20 @@ GlStateScope::~GlStateScope() {
     }
     glActiveTexture(GLenum(mActiveTexture));
     // Indexed binds also set the generic binding point: the generic ones go back last.
-    glBindBuffer(GL_UNIFORM_BUFFER, alive(mUniformBuffer, isBuffer));
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, alive(mStorageBuffer, isBuffer));
-    glBindBuffer(GL_ARRAY_BUFFER, alive(mArrayBuffer, isBuffer));
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, alive(mPackBuffer, isBuffer));
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, alive(mUnpackBuffer, isBuffer));
-    glBindBuffer(GL_COPY_READ_BUFFER, alive(mCopyReadBuffer, isBuffer));
-    glBindBuffer(GL_COPY_WRITE_BUFFER, alive(mCopyWriteBuffer, isBuffer));
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, alive(mDispatchIndirectBuffer, isBuffer));
-    glBindVertexArray(mVertexArray != 0 && glIsVertexArray(GLuint(mVertexArray)) ? GLuint(mVertexArray) : 0);
-    // A host may delete its current program and then call us: GL keeps it alive only while it is current,
-    // so once our passes have used their own programs the name is gone and restoring it is an error.
-    glUseProgram(mProgram != 0 && glIsProgram(GLuint(mProgram)) ? GLuint(mProgram) : 0);
-    glBindProgramPipeline(mProgramPipeline != 0 && glIsProgramPipeline(GLuint(mProgramPipeline))
-                              ? GLuint(mProgramPipeline)
-                              : 0);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, mDrawFramebuffer != 0 && glIsFramebuffer(GLuint(mDrawFramebuffer))
-                                               ? GLuint(mDrawFramebuffer)
-                                               : 0);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, mReadFramebuffer != 0 && glIsFramebuffer(GLuint(mReadFramebuffer))
-                                               ? GLuint(mReadFramebuffer)
-                                               : 0);
+    glBindBuffer(GL_UNIFORM_BUFFER, aliveBuffer(mUniformBuffer));
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, aliveBuffer(mStorageBuffer));
+    glBindBuffer(GL_ARRAY_BUFFER, aliveBuffer(mArrayBuffer));
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, aliveBuffer(mPackBuffer));
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, aliveBuffer(mUnpackBuffer));
+    glBindBuffer(GL_COPY_READ_BUFFER, aliveBuffer(mCopyReadBuffer));
+    glBindBuffer(GL_COPY_WRITE_BUFFER, aliveBuffer(mCopyWriteBuffer));
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, aliveBuffer(mDispatchIndirectBuffer));
+    glBindVertexArray(alive(mVertexArray, [](GLuint n) { return glIsVertexArray(n); }));
+    glUseProgram(alive(mProgram, [](GLuint n) { return glIsProgram(n); }));
+    glBindProgramPipeline(alive(mProgramPipeline, [](GLuint n) { return glIsProgramPipeline(n); }));
+    const auto isFramebuffer = [](GLuint n) { return glIsFramebuffer(n); };
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, alive(mDrawFramebuffer, isFramebuffer));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, alive(mReadFramebuffer, isFramebuffer));
     glViewport(mViewport[0], mViewport[1], mViewport[2], mViewport[3]);
     glScissor(mScissorBox[0], mScissorBox[1], mScissorBox[2], mScissorBox[3]);
 }
