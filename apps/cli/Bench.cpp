@@ -340,6 +340,30 @@ private:
     Camera mCamera;
 };
 
+/// The median time of `work` over `frames` runs, each between one pair of GPU timestamps collected before the
+/// next run (the wall time around it with --sync); `afterEach` runs between runs, outside the timestamps.
+template <class Work, class AfterEach>
+double medianTimed(const BenchOptions& options, Work&& work, AfterEach&& afterEach) {
+    GpuTimers timers;
+    timers.setSynchronous(options.sync);
+    std::vector<double> ms;
+    for (int i = 0; i < options.frames; ++i) {
+        timers.beginFrame();
+        {
+            ScopedGpuTimer timer(&timers, "timed");
+            work();
+        }
+        timers.endFrame();
+        for (const auto& frame : timers.drain()) {
+            for (const PassTiming& t : frame) {
+                ms.push_back(options.sync ? t.wallMs : t.gpuMs);
+            }
+        }
+        afterEach();
+    }
+    return median(ms);
+}
+
 /// The bandwidth reference measured in the same run: a compute copy of a texture of the frame's format and
 /// size into another, timed as the passes are (GPU timestamps around each copy after a warm-up, collected
 /// every frame), its output checked against its input.
@@ -381,29 +405,13 @@ CopyReference measureCopy(int width, int height, GLenum format, const BenchOptio
     for (int i = 0; i < options.warmup; ++i) {
         copy();
     }
-    GpuTimers timers;
-    timers.setSynchronous(options.sync);
-    std::vector<double> ms;
-    for (int i = 0; i < options.frames; ++i) {
-        timers.beginFrame();
-        {
-            ScopedGpuTimer timer(&timers, "copy", r.bytes);
-            copy();
-        }
-        timers.endFrame();
-        for (const auto& frame : timers.drain()) {
-            for (const PassTiming& t : frame) {
-                ms.push_back(options.sync ? t.wallMs : t.gpuMs);
-            }
-        }
-    }
+    r.medianMs = medianTimed(options, copy, [] {});
     // A copy that did not copy would make every fraction meaningless.
     const ImageF out = readTextureF(target);
     const auto near = [](float a, float b) { return std::abs(a - b) <= 0.5f / 255.0f; }; // RGBA8 rounding
     if (out.rgba.empty() || !near(out.rgba[0], value[0]) || !near(out.rgba[out.rgba.size() - 2], value[2])) {
         throw std::runtime_error("bench: the bandwidth reference copy did not reproduce its input");
     }
-    r.medianMs = median(ms);
     return r;
 }
 
@@ -539,30 +547,16 @@ int runBench(const BenchOptions& options) {
 
     // The whole frame between one pair of timestamps, with the passes' own timers off: the chain as a frame
     // loop runs it, gaps between passes included and no per-pass timestamps.
-    std::vector<double> frameMs;
-    {
-        pipeline.timers().setEnabled(false);
-        GpuTimers frameTimer;
-        frameTimer.setSynchronous(options.sync);
-        for (int i = 0; i < options.frames; ++i) {
-            frameTimer.beginFrame();
-            {
-                ScopedGpuTimer timer(&frameTimer, "frame");
-                pipeline.beginFrame({.frameIndex = frame});
-                pipeline.renderLighting(inputs, {.frameIndex = frame});
-                pipeline.execute(inputs, {.frameIndex = frame++});
-            }
-            frameTimer.endFrame();
-            for (const auto& passes : frameTimer.drain()) {
-                for (const PassTiming& p : passes) {
-                    frameMs.push_back(options.sync ? p.wallMs : p.gpuMs);
-                }
-            }
-            progress.advance();
-        }
-        pipeline.timers().setEnabled(true);
-    }
-    const double wholeFrameMs = median(frameMs);
+    pipeline.timers().setEnabled(false);
+    const double wholeFrameMs = medianTimed(
+        options,
+        [&] {
+            pipeline.beginFrame({.frameIndex = frame});
+            pipeline.renderLighting(inputs, {.frameIndex = frame});
+            pipeline.execute(inputs, {.frameIndex = frame++});
+        },
+        [&] { progress.advance(); });
+    pipeline.timers().setEnabled(true);
 
     const PipelineStatus t = pipeline.status();
     const ContextInfo& info = context.info();
