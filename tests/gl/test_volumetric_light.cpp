@@ -146,6 +146,20 @@ float lumaAt(const ImageF& image, glm::vec2 p) {
            fy * ((1.0f - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
 }
 
+/// `frames` frames of host-given colour and linear depth, the camera looking straight at the sun.
+void lookAtTheSun(Pipeline& pipeline, const Texture& color, const Texture& depth, std::uint64_t frames) {
+    const glm::vec3 forward = sunDirection();
+    const Camera camera = cameraLooking(kSkyEye, forward, forward);
+    for (std::uint64_t i = 0; i < frames; ++i) {
+        pipeline.execute({.color = &color,
+                          .depth = &depth,
+                          .depthKind = DepthKind::LinearView,
+                          .camera = &camera,
+                          .sunDirection = forward},
+                         {.dt = kDt, .frameIndex = i});
+    }
+}
+
 /// The sun's centre in pixel units (x right, y down).
 glm::vec2 sunPixel(const Camera& camera) {
     const SunOnScreen sun = sunOnScreen(camera, sunDirection());
@@ -408,18 +422,9 @@ TEST_F(GlTest, VolumetricLightOfAUniformSkyIsTheAnalyticMean) {
     const int w = 64, h = 36;
     ImageF color(w, h, 2.0f), depth(w, h, std::numeric_limits<float>::infinity());
     const Texture c = makeTexture(color, "color"), d = makeTexture(depth, "depth");
-    const glm::vec3 forward = sunDirection();
-    const Camera camera = cameraLooking(kSkyEye, forward, forward);
     const Settings s = volumetricSettings();
     Pipeline pipeline({.settings = s});
-    for (std::uint64_t i = 0; i < 12; ++i) {
-        pipeline.execute({.color = &c,
-                          .depth = &d,
-                          .depthKind = DepthKind::LinearView,
-                          .camera = &camera,
-                          .sunDirection = forward},
-                         {.dt = kDt, .frameIndex = i});
-    }
+    lookAtTheSun(pipeline, c, d, 12);
     const VolumetricLightSettings& v = s.volumetricLight;
     const double mean = (1.0 - std::pow(double(v.decay), 64.0)) / (-64.0 * std::log(double(v.decay)));
     const double expected = 2.0 * double(v.intensity * v.weight * v.exposure) * mean;
@@ -473,20 +478,11 @@ TEST_F(GlTest, VolumetricLightKeepsBrokenInputsOut) {
     depth.at(7, 6)[0] = 0.0f;
     depth.at(9, 6)[0] = -2.0f;
     const Texture c = makeTexture(color, "color"), d = makeTexture(depth, "depth");
-    const glm::vec3 forward = sunDirection();
-    const Camera camera = cameraLooking(kSkyEye, forward, forward);
     for (DebugView view : {DebugView::VolumetricLight, DebugView::None}) {
         Settings s = volumetricSettings();
         s.debug.view = view;
         Pipeline pipeline({.settings = s});
-        for (std::uint64_t i = 0; i < 3; ++i) {
-            pipeline.execute({.color = &c,
-                              .depth = &d,
-                              .depthKind = DepthKind::LinearView,
-                              .camera = &camera,
-                              .sunDirection = forward},
-                             {.dt = kDt, .frameIndex = i});
-        }
+        lookAtTheSun(pipeline, c, d, 3);
         for (float v : readTextureF(pipeline.sceneReferred()).rgba) {
             ASSERT_TRUE(std::isfinite(v));
         }
