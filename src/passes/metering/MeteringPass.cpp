@@ -74,8 +74,9 @@ bool MeteringPass::histogramWanted(const Settings& s, bool forTelemetry) noexcep
            (view == DebugView::Metering && ae.metering == MeteringMode::Histogram);
 }
 
-MeteringPass::Weights MeteringPass::weightsFor(const AutoExposureSettings& ae, bool haveMask) noexcept {
-    if (!ae.enabled) {
+MeteringPass::Weights MeteringPass::weightsFor(const AutoExposureSettings& ae, bool metered,
+                                               bool haveMask) noexcept {
+    if (!metered) {
         return Weights::None;
     }
     switch (ae.metering) {
@@ -107,14 +108,13 @@ MeteringPass::Weights MeteringPass::weightsFor(const AutoExposureSettings& ae, b
 void MeteringPass::execute(FrameContext& ctx, FrameResources& resources) {
     const AutoExposureSettings& ae = ctx.settings.autoExposure;
     const Texture* mask = mMask.valid() ? &mMask : nullptr;
-    AutoExposureSettings weighting = ae; // weightsFor meters only what auto exposure (or telemetry) reads
-    weighting.enabled = metered(ctx.settings, mMeterForTelemetry);
-    const Outputs out = execute({.scene = resources.texture(Resource::SceneColor),
-                                 .mask = mask,
-                                 .settings = &ae,
-                                 .histogram = histogramWanted(ctx.settings, mMeterForTelemetry),
-                                 .weights = weightsFor(weighting, mask != nullptr),
-                                 .timers = ctx.timers});
+    const Outputs out =
+        execute({.scene = resources.texture(Resource::SceneColor),
+                 .mask = mask,
+                 .settings = &ae,
+                 .histogram = histogramWanted(ctx.settings, mMeterForTelemetry),
+                 .weights = weightsFor(ae, metered(ctx.settings, mMeterForTelemetry), mask != nullptr),
+                 .timers = ctx.timers});
     resources.bind(Resource::Histogram, *out.histogram);
     resources.bind(Resource::Metering, *out.metering);
     if (mask) {

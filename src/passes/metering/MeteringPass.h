@@ -83,8 +83,10 @@ public:
     /// frame's telemetry: the CLI's --telemetry).
     void setMeterForTelemetry(bool meter) { mMeterForTelemetry = meter; }
     [[nodiscard]] bool metersForTelemetry() const { return mMeterForTelemetry; }
-    /// The weighted mean this frame's settings ask for (the subject probe writes its own reading).
-    [[nodiscard]] static Weights weightsFor(const AutoExposureSettings& ae, bool haveMask) noexcept;
+    /// The weighted mean this frame's settings ask for when the frame is `metered` (see metered()); the
+    /// subject probe writes its own reading.
+    [[nodiscard]] static Weights weightsFor(const AutoExposureSettings& ae, bool metered,
+                                            bool haveMask) noexcept;
 
     /// Clears the bins and the min/max, then meters: nothing more when neither a histogram nor a mean is
     /// wanted, else one metering dispatch plus, for a mean, one reduction dispatch. Without a histogram the
