@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 namespace {
 /// Encoder threads at most: PNG encoding is one thread's work per frame, so a machine with many cores encodes
 /// as many frames at once as `--frames-in-flight` allows, leaving one core to decode and one to drive GL;
-/// with few cores (llvmpipe renders on them) two at most.
+/// with up to four cores (llvmpipe renders on them) two.
 std::size_t maxWorkers() {
     const std::size_t cores = std::thread::hardware_concurrency();
     return std::max<std::size_t>(2, cores > 2 ? cores - 2 : 0);
