@@ -1,16 +1,19 @@
-// The smallest host: makes its own headless GL context, creates its own HDR texture (a horizontal ramp over
-// 0..8 scene-linear), hands it to the pipeline by id (adopted, not owned), and reads the display image back.
+// The smallest host: plain GL through <GL/gl.h> (its own "loader": the system's GL prototypes), a headless
+// context from the library, its own HDR texture (a horizontal ramp over 0..8 scene-linear) handed over by
+// name, and the display image delivered into a texture of its own and read back.
 
-#include <photopic/gl/Context.h>
-#include <photopic/gl/TextureIo.h>
-#include <photopic/pipeline/Pipeline.h>
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <photopic/photopic.h>
 
 #include <cstdio>
 #include <vector>
 
 int main() {
     try {
-        photopic::HeadlessContext context; // a real host would have its own context current instead
+        photopic::HeadlessGlContext context; // a real host has its own context current instead
         constexpr int kWidth = 64, kHeight = 16;
         std::vector<float> pixels(kWidth * kHeight * 4);
         for (int y = 0; y < kHeight; ++y) {
@@ -20,30 +23,32 @@ int main() {
                 p[3] = 1.0f;
             }
         }
-        // The host's texture, created with plain GL: the pipeline only borrows it.
-        GLuint hostTexture = 0;
-        glCreateTextures(GL_TEXTURE_2D, 1, &hostTexture);
-        glTextureStorage2D(hostTexture, 1, GL_RGBA32F, kWidth, kHeight);
-        glTextureSubImage2D(hostTexture, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, pixels.data());
-        const auto input = photopic::Texture::adopt(hostTexture, {kWidth, kHeight}, GL_RGBA32F);
+        // The host's textures, created with plain GL: the library only borrows them.
+        GLuint hdr = 0, display = 0;
+        glCreateTextures(GL_TEXTURE_2D, 1, &hdr);
+        glTextureStorage2D(hdr, 1, GL_RGBA32F, kWidth, kHeight);
+        glTextureSubImage2D(hdr, 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, pixels.data());
+        glCreateTextures(GL_TEXTURE_2D, 1, &display);
+        glTextureStorage2D(display, 1, GL_RGBA8, kWidth, kHeight);
 
-        photopic::Settings settings;
-        settings.tonemapping.mode = photopic::ToneMapper::Neutral;
-        // The check below is of the curve's range; bloom (on by default) spreads the ramp's light as veiling
-        // glare and would lift its black end.
-        settings.bloom.enabled = false;
-        photopic::Pipeline pipeline({.settings = settings});
-        const photopic::Texture& display =
-            pipeline.execute({.color = &input}, {.dt = 1.0f / 60, .frameIndex = 0});
-        const photopic::Image8 out = photopic::readTexture8(display);
+        // The check below is of the curve's range; bloom spreads the ramp's light as veiling glare and
+        // would lift its black end.
+        photopic::PostProcessor post({.settingsJson = R"({"version": 1, "postEffects": {
+            "tonemapping": {"mode": "neutral"}, "bloom": {"enabled": false}}})"});
+        post.execute({.color = hdr, .dt = 1.0f / 60, .frameIndex = 0}, photopic::TextureTarget{display});
+        for (const std::string& e : post.status().inputErrors) {
+            std::fprintf(stderr, "photopic_minimal: input error: %s\n", e.c_str());
+        }
 
-        const unsigned char* dark = out.at(0, 0);
-        const unsigned char* bright = out.at(kWidth - 1, 0);
-        std::printf("photopic_minimal: %s, ramp 0..8 -> display %d..%d\n", context.info().renderer.c_str(),
-                    dark[0], bright[0]);
-        glDeleteTextures(1, &hostTexture); // still valid after the pipeline used it: the host owns it
-        return (dark[0] <= 2 && bright[0] >= 230) ? 0 : 1;
-    } catch (const std::exception& e) {
+        std::vector<unsigned char> out(kWidth * kHeight * 4);
+        glGetTextureImage(display, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(out.size()), out.data());
+        const int dark = out[0], bright = out[(kWidth - 1) * 4];
+        std::printf("photopic_minimal: photopic %s on %s, ramp 0..8 -> display %d..%d\n",
+                    photopic::versionString(), context.renderer().c_str(), dark, bright);
+        glDeleteTextures(1, &hdr);
+        glDeleteTextures(1, &display);
+        return (dark <= 2 && bright >= 230) ? 0 : 1;
+    } catch (const photopic::Error& e) {
         std::fprintf(stderr, "photopic_minimal: %s\n", e.what());
         return 1;
     }
