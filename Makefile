@@ -3,7 +3,7 @@
 JOBS ?= $(shell nproc)
 CTEST_FLAGS ?= --output-on-failure -j$(JOBS)
 
-.PHONY: all deps build demo test bench fuzz soak install clean format
+.PHONY: all deps build demo test docs bench fuzz soak install clean format
 
 all: build
 
@@ -24,11 +24,16 @@ test: build
 	@cmake --preset asan > build-configure-asan.log 2>&1 || (cat build-configure-asan.log; exit 1)
 	cmake --build --preset asan -j$(JOBS)
 	cd build/asan && ctest $(CTEST_FLAGS)
-	@echo "== library use: install, then build examples/minimal against the installed package"
-	cmake --install build/release --prefix build/install > /dev/null
-	cmake -S examples/minimal -B build/example -DCMAKE_PREFIX_PATH=$(CURDIR)/build/install > build-configure-example.log 2>&1 || (cat build-configure-example.log; exit 1)
-	cmake --build build/example -j$(JOBS)
-	build/example/photopic_minimal
+	@echo "== library use: install, then build and run examples/minimal and examples/glfw-host against it"
+	JOBS=$(JOBS) scripts/check-library.sh
+	@echo "== API reference (warnings are errors: every public declaration is documented)"
+	@$(MAKE) --no-print-directory docs
+
+# The API reference of include/photopic/ into build/docs/html (Doxygen from Debian).
+docs: deps
+	@mkdir -p build/docs
+	doxygen docs/Doxyfile
+	@echo "API reference: build/docs/html/index.html"
 
 # The per-pass tables at 720p, 1080p, 4K and 8K, each beside the same run's copy reference, and the scaling
 # summary, into out/bench/ (scripts/bench-table.sh). On Mesa llvmpipe a 1080p frame takes ~0.15 s, so the

@@ -9,6 +9,7 @@ packages=(
     libopenexr-dev libpng-dev libstb-dev
     nlohmann-json3-dev libcli11-dev libfmt-dev libglm-dev
     libglfw3-dev libimgui-dev xvfb xauth
+    libopengl-dev libgl-dev python3-glad doxygen
     libgtest-dev libgmock-dev libbenchmark-dev
 )
 

@@ -36,6 +36,7 @@
 #define PHOTOPIC_API __declspec(dllimport)
 #endif
 #else
+/// Marks what the shared library exports.
 #define PHOTOPIC_API __attribute__((visibility("default")))
 #endif
 
@@ -106,7 +107,7 @@ struct HostCamera {
     float nearPlane = 0.1f;                 ///< scene units, > 0
     float farPlane = 1000.0f;               ///< scene units, > near; may be infinity
     float verticalFov = 1.0471976f;         ///< radians, (0, pi): the full vertical field of view
-    CameraLens lens;
+    CameraLens lens;                        ///< the lens: depth of field, motion blur, physical exposure
     bool cut = false; ///< a new shot or a teleport: histories are dropped, prevViewProjection ignored
 };
 
@@ -122,7 +123,7 @@ struct HostSubject {
 
 /// The light under a subject, as measured by the probe (a frame or more old: probes are never waited on).
 struct SubjectLight {
-    std::uint32_t id = 0;
+    std::uint32_t id = 0;      ///< the subject's HostSubject::id
     float outdoors = 0.0f;     ///< 0..1
     float measuredLuma = 0.0f; ///< scene-linear luma under the subject; 0 before the first probe
     float targetLog2 = 0.0f;   ///< EV: the exposure that subject asks for
@@ -136,9 +137,9 @@ struct SubjectLight {
 struct Frame {
     GlName color = 0; ///< scene-referred linear Rec.709 colour, a float format (RGBA16F, R11F_G11F_B10F...)
     GlName depth = 0; ///< depth buffer or linear view depth
-    DepthEncoding depthEncoding = DepthEncoding::Standard;
-    GlName normals = 0; ///< view-space unit normals
-    NormalsEncoding normalsEncoding = NormalsEncoding::ViewXyz;
+    DepthEncoding depthEncoding = DepthEncoding::Standard;      ///< how `depth` encodes distance
+    GlName normals = 0;                                         ///< view-space unit normals
+    NormalsEncoding normalsEncoding = NormalsEncoding::ViewXyz; ///< how `normals` is stored
     /// RG16F/RG32F: UV-space displacement of each pixel, current minus previous, jitter removed
     /// (uv_prev = uv - motion). Without it, motion comes from depth and the camera (static scenes only).
     GlName motion = 0;
@@ -168,15 +169,17 @@ enum class Output {
 /// image is scaled to the rectangle (nearest when the sizes match, bilinear otherwise); what lies outside
 /// is left alone. The framebuffer's current draw buffers receive it.
 struct FramebufferTarget {
-    GlName framebuffer = 0;
-    int x = 0, y = 0;          ///< lower-left corner, pixels
-    int width = 0, height = 0; ///< pixels; 0: the output's own size
+    GlName framebuffer = 0; ///< the host's framebuffer; 0: the default framebuffer
+    int x = 0;              ///< lower-left corner, pixels
+    int y = 0;              ///< lower-left corner, pixels
+    int width = 0;          ///< pixels; 0: the output's own width
+    int height = 0;         ///< pixels; 0: the output's own height
 };
 
 /// One of the host's textures (level 0) to write the output into, scaled to its size. Colour-renderable
 /// formats only: RGBA8, SRGB8_ALPHA8 (bytes written as they are), RGBA16F, RGBA32F, R11F_G11F_B10F...
 struct TextureTarget {
-    GlName texture = 0;
+    GlName texture = 0; ///< the host's 2D texture
 };
 
 /// What the lighting stage hands the host for shading; a name is 0 when that effect did not run.
@@ -184,14 +187,14 @@ struct Lighting {
     /// R8/R16F visibility in [0, 1] for indirect light only (ambient, IBL): multiply by
     /// pow(visibility, ambientOcclusionPower).
     GlName ambientOcclusion = 0;
-    float ambientOcclusionPower = 1.0f;
-    GlName contactShadows = 0; ///< R8/R16F visibility in [0, 1] for the sun's direct light only
+    float ambientOcclusionPower = 1.0f; ///< the exponent for ambientOcclusion (the ssao.power setting)
+    GlName contactShadows = 0;          ///< R8/R16F visibility in [0, 1] for the sun's direct light only
 };
 
 /// One pass's GPU time, from timer queries read a few frames late (never stalling).
 struct PassTime {
-    std::string name;
-    double milliseconds = 0.0;
+    std::string name;          ///< the pass's name, as in Status::ran
+    double milliseconds = 0.0; ///< GPU time between its first and last command
 };
 
 /// What the library is doing: degradations are never silent.
@@ -222,6 +225,7 @@ struct Telemetry {
 /// stencil, sRGB writes and bindings neither change the output nor are changed.
 class PHOTOPIC_API PostProcessor {
 public:
+    /// How to create a PostProcessor.
     struct CreateInfo {
         /// Settings as JSON ({"version": 1, "postEffects": {...}}, what `photopic settings --defaults`
         /// prints). Empty: the defaults.
@@ -233,8 +237,8 @@ public:
     /// (every issue, by JSON path).
     explicit PostProcessor(const CreateInfo& info);
     ~PostProcessor();
-    PostProcessor(PostProcessor&&) noexcept;
-    PostProcessor& operator=(PostProcessor&&) noexcept;
+    PostProcessor(PostProcessor&&) noexcept;            ///< moves the chain; the source is left empty
+    PostProcessor& operator=(PostProcessor&&) noexcept; ///< moves the chain; the source is left empty
     PostProcessor(const PostProcessor&) = delete;
     PostProcessor& operator=(const PostProcessor&) = delete;
 

@@ -5,31 +5,12 @@ source "$(dirname "$0")/lib.bash"
 S="$SCRATCH"
 VIEW="$(dirname "$PHOTOPIC")/photopic-view"
 
-if ! command -v Xvfb > /dev/null; then
-    echo "FAIL: Xvfb is missing; run scripts/deps.sh (installs xvfb and xauth)"
-    exit 1
-fi
 if [ ! -x "$VIEW" ]; then
     echo "FAIL: $VIEW was not built (needs libglfw3-dev and libimgui-dev; run scripts/deps.sh)"
     exit 1
 fi
-# One server for the script. Xvfb picks a free display itself and writes its number to fd 3 (-displayfd), so
-# parallel ctest jobs never race for a display number (xvfb-run -a did, and its clean-up failed under load).
-exec 3> "$S/display"
-Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp > "$S/xvfb.log" 2>&1 &
-XVFB_PID=$!
-exec 3>&-
-trap 'kill "$XVFB_PID" 2> /dev/null' EXIT
-for _ in $(seq 100); do
-    [ -s "$S/display" ] && break
-    sleep 0.1
-done
-if [ ! -s "$S/display" ]; then
-    echo "FAIL: Xvfb did not start"
-    cat "$S/xvfb.log"
-    exit 1
-fi
-export DISPLAY=":$(head -n 1 "$S/display")"
+source "$(dirname "$0")/../../scripts/xvfb.bash"
+start_xvfb "$S" || exit 1
 
 expect 0 "tabletop, 90 frames, screenshot and save" -- "$VIEW" --scene tabletop --frames 90 --size 640x360 \
     --fixed-dt 0.0333 --screenshot "$S/view.png" --save "$S/view.json" --set autoExposure.tauDarken=0.5
