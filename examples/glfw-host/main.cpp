@@ -213,7 +213,7 @@ bool writePpm(const std::string& path, int w, int h) {
 /// Renders frames until the window closes or `o.frames` have run; returns the exit status.
 int run(GLFWwindow* window, const Options& o) {
     photopic::PostProcessor post({.settingsJson = R"({"version": 1, "postEffects": {
-        "aa": {"mode": "taa"}, "bloom": {"intensity": 0.05}}})"});
+        "aa": {"mode": "taa"}, "bloom": {"intensity": 0.05}, "autoExposure": {"enabled": true}}})"});
     GLuint cubeBuffer = 0;
     const GLuint cube = makeCube(cubeBuffer);
     const GLuint program = makeProgram();
