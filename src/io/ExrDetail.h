@@ -1,7 +1,7 @@
 #pragma once
-// Internal to the io library: the pieces of ImageIO.cpp that ExrFrame.cpp shares (the checked reading of an
-// OpenEXR file from memory, colour reading with extra layers in the same pass, and the atomic writer). Not
-// part of the public API.
+// Internal to the io library: the pieces of ImageIO.cpp that ExrFrame.cpp and DisplayImageIO.cpp share (the
+// checked reading of an OpenEXR file from memory, colour reading with extra layers in the same pass, the
+// check of an image about to be written, and the atomic writer). Not part of the public API.
 
 #include "core/Image.h"
 #include "io/ImageIO.h"
@@ -15,6 +15,7 @@
 #include <functional>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace photopic::detail {
@@ -64,6 +65,22 @@ using ExrExtraSlices =
 void readExrColor(const std::filesystem::path& path, std::span<const unsigned char> bytes,
                   Imf::InputFile& file, ImageF& image, const ExrExtraSlices& extra = {},
                   const ImageReadLimits& limits = {});
+
+/// Throws IoError naming `path` unless `image` (ImageF, Image8 or Image16) can be written: not empty, its
+/// samples matching its size, within kDefaultMaxPixels.
+template <typename Image>
+void requirePixels(const std::filesystem::path& path, const Image& image) {
+    if (image.empty())
+        throw IoError(path, "cannot write an empty image (" + std::to_string(image.width) + "x" +
+                                std::to_string(image.height) + ")");
+    const std::size_t expected = std::size_t(image.width) * std::size_t(image.height) * 4;
+    if (image.rgba.size() != expected)
+        throw IoError(path, "image holds " + std::to_string(image.rgba.size()) + " values, expected " +
+                                std::to_string(expected) + " for " + std::to_string(image.width) + "x" +
+                                std::to_string(image.height) + " RGBA");
+    if (std::int64_t(image.width) * image.height > kDefaultMaxPixels)
+        throw IoError(path, "image is too large to write");
+}
 
 /// Writes `bytes` to a temporary in the destination folder, fsyncs it and renames it over `path`.
 void writeAtomically(const std::filesystem::path& path, std::span<const unsigned char> bytes);
