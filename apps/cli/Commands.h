@@ -3,6 +3,7 @@
 // failure.
 
 #include "core/Settings.h"
+#include "io/DisplayImageIO.h"
 #include "io/ImageIO.h"
 #include "pipeline/Pipeline.h"
 
@@ -37,11 +38,16 @@ struct ImageOptions {
     std::vector<std::filesystem::path> inputs;
     std::string frames; ///< --frames A-B: every frame of the range, inclusive; empty: none
     std::optional<std::int64_t> startNumber; ///< --start-number N: a pattern's frames from N on
-    /// A file (.png, .exr), a folder (a trailing '/', no extension, or several inputs), a pattern
-    /// (out/f%04d.png) or a stream ("-", a device, a pipe: one input, PNG).
+    /// A file (.png, .tif, .tiff, .jpg, .jpeg: the display image; .exr: scene-referred), a folder (a trailing
+    /// '/', no extension, or several inputs), a pattern (out/f%04d.png) or a stream ("-", a device, a pipe:
+    /// one input, PNG).
     std::filesystem::path output;
     bool noOverwrite = false;   ///< -n: an output that exists already is refused before any work
-    std::string format = "png"; ///< for folder outputs: png or exr
+    std::string format = "png"; ///< for folder outputs: png, tif, tiff, jpg, jpeg or exr
+    /// --bit-depth 8|16: output.bitDepth, the display image's bits per channel (and its PNG/TIFF files');
+    /// unset: the settings' value.
+    std::optional<int> bitDepth;
+    int jpegQuality = kDefaultJpegQuality; ///< --jpeg-quality, [1, 100], default 95
     SettingsSources settings;
     bool forceLdr = false;
     float fps = 30.0f;
