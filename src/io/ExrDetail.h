@@ -7,12 +7,15 @@
 #include "io/ImageIO.h"
 
 #include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
 #include <ImfIO.h>
 #include <ImfInputFile.h>
+#include <glm/mat3x3.hpp>
 
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -59,7 +62,17 @@ private:
 using ExrExtraSlices =
     std::function<void(Imf::FrameBuffer& frameBuffer, const Imath::Box2i& dataWindow, int width, int height)>;
 
-/// The colour of an OpenEXR file open over `bytes`, as readImage returns it, into `image` (its storage kept
+/// The matrix taking RGB in the primaries and white of the header's `chromaticities` attribute to linear
+/// Rec.709 with a D65 white (out = M * rgb; a Bradford adaptation when the whites differ), or nullopt when
+/// the attribute is absent or names Rec.709/D65 already (each xy within 1e-3). ExrColorSpace.cpp.
+[[nodiscard]] std::optional<glm::mat3> exrToRec709(const Imf::Header& header);
+
+/// Converts `image`'s RGB (alpha untouched) from the header's chromaticities to linear Rec.709 / D65 in
+/// place, and logs once per set of primaries (info, naming `path`); does nothing for Rec.709 / D65.
+void convertExrToRec709(const std::filesystem::path& path, const Imf::Header& header, ImageF& image);
+
+/// The colour of an OpenEXR file open over `bytes`, as readImage returns it (in linear Rec.709: other
+/// chromaticities are converted), into `image` (its storage kept
 /// when large enough), plus whatever `extra` adds, read in the same pass. Throws IoError naming `path`;
 /// OpenEXR's exceptions pass through (callers wrap them).
 void readExrColor(const std::filesystem::path& path, std::span<const unsigned char> bytes,

@@ -724,6 +724,7 @@ void detail::readExrColor(const fs::path& path, std::span<const unsigned char> b
     const bool hasRgb = has("R") || has("G") || has("B");
     if (!hasRgb && has("Y") && (has("RY") || has("BY"))) {
         image = readExrLuminanceChroma(path, bytes, width, height);
+        detail::convertExrToRec709(path, header, image);
         if (extra) { // RgbaInputFile reads colour only: the extra layers take a second pass
             Imf::FrameBuffer frameBuffer;
             extra(frameBuffer, dataWindow, width, height);
@@ -769,6 +770,7 @@ void detail::readExrColor(const fs::path& path, std::span<const unsigned char> b
         for (std::size_t i = 0; i < image.pixelCount(); ++i)
             image.rgba[i * 4 + 1] = image.rgba[i * 4 + 2] = image.rgba[i * 4];
     }
+    detail::convertExrToRec709(path, header, image);
 }
 
 void detail::writeAtomically(const fs::path& path, std::span<const unsigned char> bytes) {

@@ -35,7 +35,9 @@ struct ImageReadLimits {
 ///   the first part. Missing colour channels read 0 and a missing A reads 1; a luminance-only file (Y) is
 ///   copied to R, G and B, and luminance/chroma (Y, RY, BY) is converted to RGB. Returns the pixels of the
 ///   *data window*, its top-left corner at (0, 0); the display window is ignored. Values are kept as stored
-///   (negative, huge, NaN).
+///   (negative, huge, NaN), except that RGB whose `chromaticities` attribute names primaries or a white
+///   other than Rec.709 / D65 is converted to linear Rec.709 (a Bradford adaptation when the white differs;
+///   logged once per set of primaries).
 /// - Radiance RGBE, "-Y <h> +X <w>" orientation, flat or RLE scanlines; linear values, EXPOSURE lines
 /// ignored.
 /// - PNG, 8 or 16 bit, grey/RGB/palette, with or without alpha: colour decoded by the exact sRGB EOTF, alpha
