@@ -126,6 +126,9 @@ public:
     void write(std::string_view text); ///< throws IoError (the temporary is then removed)
     void commit();                     ///< throws IoError (the temporary is then removed)
     [[nodiscard]] const std::filesystem::path& path() const { return mPath; }
+    /// Where the file is written until commit() (empty for a stream output): for a program that writes the
+    /// file itself (ffmpeg), after which commit() flushes it to disk and renames it over path().
+    [[nodiscard]] const std::filesystem::path& temporaryPath() const { return mTemporary; }
 
 private:
     void fail(const std::string& problem);
