@@ -122,6 +122,19 @@ std::string lowerExtension(const fs::path& p) {
 
 } // namespace
 
+// A JPEG holds 8 bits per channel: a 16-bit display image bound for one is refused rather than narrowed
+// without a word.
+void requireBitDepthFits(const std::vector<fs::path>& outputs, int bitDepth, std::string_view source) {
+    for (const fs::path& out : outputs) {
+        const std::optional<DisplayFileFormat> format = displayFileFormatFor(out);
+        if (format && !holdsBitDepth(*format, bitDepth)) {
+            throw InputError(fmt::format("output {}: {} holds 8 bits per channel only, but {} is {}: write "
+                                         ".png or .tif for 16 bits, or use 8",
+                                         out.string(), displayFileFormatName(*format), source, bitDepth));
+        }
+    }
+}
+
 ImageF readInput(const fs::path& path, std::int64_t maxPixels) {
     try {
         return readImage(path, {.maxPixels = maxPixels});
@@ -361,19 +374,6 @@ void requireExtension(const fs::path& out) {
             fmt::format("output {}: unsupported extension '{}' (use .png, .tif, .tiff, .jpg or .jpeg for the "
                         "display image, or .exr for the scene-referred image)",
                         out.string(), ext));
-    }
-}
-
-/// A JPEG holds 8 bits per channel: a 16-bit display image bound for one is refused before any work rather
-/// than narrowed without a word. `source` names where the 16 came from (the option or the settings).
-void requireBitDepthFits(const std::vector<fs::path>& outputs, int bitDepth, std::string_view source) {
-    for (const fs::path& out : outputs) {
-        const std::optional<DisplayFileFormat> format = displayFileFormatFor(out);
-        if (format && !holdsBitDepth(*format, bitDepth)) {
-            throw InputError(fmt::format("output {}: {} holds 8 bits per channel only, but {} is {}: write "
-                                         ".png or .tif for 16 bits, or use 8",
-                                         out.string(), displayFileFormatName(*format), source, bitDepth));
-        }
     }
 }
 

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace photopic::cli {
@@ -70,7 +71,9 @@ struct SceneOptions {
     int frames = 60;
     float fps = 30.0f;
     std::string size = "640x360"; ///< WxH
-    std::string format = "png";   ///< frames as png (display) or exr (scene-referred)
+    std::string format = "png";   ///< frames as png, tif, tiff, jpg, jpeg (display) or exr (scene-referred)
+    std::optional<int> bitDepth;  ///< --bit-depth 8|16: output.bitDepth; unset: the settings' value
+    int jpegQuality = kDefaultJpegQuality; ///< --jpeg-quality, [1, 100], default 95
     SettingsSources settings; ///< --set NAME.key=value goes to the scene, other paths to the post settings
     bool forceLdr = false;
     std::string canvasColor;    ///< --canvas FILE: canvas scene only, = --set canvas.colour=FILE
@@ -104,6 +107,11 @@ int runSettingsDefaults();
 int runSettingsCheck(const std::filesystem::path& file);
 int runDemo(const std::filesystem::path& dataDir, const std::filesystem::path& outDir,
             std::int64_t maxPixels = kDefaultMaxPixels);
+
+/// Throws InputError (exit 2) naming the first of `outputs` whose format cannot hold `bitDepth` bits per
+/// channel (a JPEG at 16), before any work; `source` names where the depth came from ("--bit-depth").
+void requireBitDepthFits(const std::vector<std::filesystem::path>& outputs, int bitDepth,
+                         std::string_view source);
 
 /// Reads an input image, as bad input (InputError, exit 2) when it cannot be.
 ImageF readInput(const std::filesystem::path& path, std::int64_t maxPixels);

@@ -119,7 +119,9 @@ bool isExrPath(const fs::path& path) {
     return ext == ".exr";
 }
 
-FrameImage writeFrame(const fs::path& path, FrameImage image, PngWriter& png, DisplayEncoding encoding) {
+} // namespace
+
+FrameImage writeFrameImage(const fs::path& path, FrameImage image, PngWriter& png, DisplayEncoding encoding) {
     if (isExrPath(path)) {
         writeExr(path, image.scene);
         return image;
@@ -146,8 +148,6 @@ FrameImage writeFrame(const fs::path& path, FrameImage image, PngWriter& png, Di
     }
     return image;
 }
-
-} // namespace
 
 FrameWriter::FrameWriter(RunOutputs& outputs, std::size_t maxPending, DisplayEncoding encoding)
     : mOutputs(outputs)
@@ -180,7 +180,7 @@ FrameImage FrameWriter::storage() {
 
 void FrameWriter::write(const fs::path& path, FrameImage image, std::function<void()> report) {
     if (mWorkers.empty()) {
-        mFree.push_back(writeFrame(path, std::move(image), mEncoders.front(), mEncoding));
+        mFree.push_back(writeFrameImage(path, std::move(image), mEncoders.front(), mEncoding));
         mOutputs.wrote(path);
         report();
         return;
@@ -193,7 +193,7 @@ void FrameWriter::write(const fs::path& path, FrameImage image, std::function<vo
     mPending.push_back(
         {.path = path,
          .done = mWorkers[w]->run([path, image = std::move(image), &png, encoding = mEncoding]() mutable {
-             return writeFrame(path, std::move(image), png, encoding);
+             return writeFrameImage(path, std::move(image), png, encoding);
          }),
          .report = std::move(report)});
 }

@@ -101,6 +101,12 @@ struct DisplayEncoding {
     int jpegQuality = kDefaultJpegQuality; ///< [1, 100], default 95
 };
 
+/// Writes `image.scene` to an .exr `path`, else the display image (`display`, or `display16` at 16 bits) as
+/// the extension says, PNG when it names no display format (a stream); `png` keeps the 8-bit PNG encoder's
+/// buffers from frame to frame. Gives the image back for its storage to be reused. Throws IoError.
+FrameImage writeFrameImage(const std::filesystem::path& path, FrameImage image, PngWriter& png,
+                           DisplayEncoding encoding);
+
 /// Encodes and writes frames on worker threads, at most `maxPending` at a time (0: on the caller's thread,
 /// before write() returns), and reports each written frame in the order the frames were given: the path
 /// goes to RunOutputs and `report` runs, both on the caller's thread.

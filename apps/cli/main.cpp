@@ -18,7 +18,10 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <ranges>
+#include <string>
+#include <vector>
 
 using namespace photopic;
 using namespace photopic::cli;
@@ -91,6 +94,21 @@ void addInfoCommand(CLI::App& app, Cli& c) {
                    "  photopic info --set quality=low     the quality tier and the path it takes");
 }
 
+/// The file types a frame can be written as: the display image's formats, then EXR (scene-referred).
+const std::vector<std::string> kFrameFormats = {"png", "tif", "tiff", "jpg", "jpeg", "exr"};
+
+/// --bit-depth and --jpeg-quality, as `photopic image` and `photopic scene` both take them.
+void addDisplayEncodingOptions(CLI::App* cmd, std::optional<int>& bitDepth, int& jpegQuality) {
+    cmd->add_option("--bit-depth", bitDepth,
+                    "bits per channel of the display image and of PNG and TIFF outputs: 8 or 16 (16 renders "
+                    "the display passes at 16 bits, output.bitDepth=16; JPEG is 8-bit only); default: the "
+                    "settings' output.bitDepth, 8")
+        ->check(CLI::IsMember({8, 16}));
+    cmd->add_option("--jpeg-quality", jpegQuality, "quality of JPEG outputs, 1 to 100")
+        ->check(CLI::Range(1, 100))
+        ->capture_default_str();
+}
+
 void addImageCommand(CLI::App& app, Cli& c) {
     c.image = app.add_subcommand("image", "process HDR images (EXR, HDR, PNG) into PNG, TIFF or JPEG "
                                           "(display) or EXR (scene-referred, before tone mapping)");
@@ -126,17 +144,9 @@ void addImageCommand(CLI::App& app, Cli& c) {
         ->check(CLI::NonNegativeNumber)
         ->excludes(frames);
     c.image->add_option("--format", c.imageOptions.format, "file type written into an output folder")
-        ->check(CLI::IsMember({"png", "tif", "tiff", "jpg", "jpeg", "exr"}))
+        ->check(CLI::IsMember(kFrameFormats))
         ->capture_default_str();
-    c.image
-        ->add_option("--bit-depth", c.imageOptions.bitDepth,
-                     "bits per channel of the display image and of PNG and TIFF outputs: 8 or 16 (16 renders "
-                     "the display passes at 16 bits, output.bitDepth=16; JPEG is 8-bit only); default: the "
-                     "settings' output.bitDepth, 8")
-        ->check(CLI::IsMember({8, 16}));
-    c.image->add_option("--jpeg-quality", c.imageOptions.jpegQuality, "quality of JPEG outputs, 1 to 100")
-        ->check(CLI::Range(1, 100))
-        ->capture_default_str();
+    addDisplayEncodingOptions(c.image, c.imageOptions.bitDepth, c.imageOptions.jpegQuality);
     c.image->add_option("--fps", c.imageOptions.fps, "frame rate of a sequence")
         ->check(CLI::Range(0.001f, 10000.0f));
     c.image->add_flag("--force-ldr", c.imageOptions.forceLdr, "run the LDR (RGBA8) path");
@@ -204,8 +214,11 @@ void addSceneCommand(CLI::App& app, Cli& c) {
     c.scene->add_option("--fps", c.sceneOptions.fps, "frame rate")->check(CLI::Range(0.001f, 10000.0f));
     c.scene->add_option("--size", c.sceneOptions.size, "WIDTHxHEIGHT");
     c.scene
-        ->add_option("--format", c.sceneOptions.format, "frame files: png (display) or exr (scene-referred)")
-        ->check(CLI::IsMember({"png", "exr"}));
+        ->add_option("--format", c.sceneOptions.format,
+                     "frame files: png, tif, tiff, jpg, jpeg (display) or exr (scene-referred)")
+        ->check(CLI::IsMember(kFrameFormats))
+        ->capture_default_str();
+    addDisplayEncodingOptions(c.scene, c.sceneOptions.bitDepth, c.sceneOptions.jpegQuality);
     c.scene->add_flag("--force-ldr", c.sceneOptions.forceLdr, "run the LDR (RGBA8) path");
     c.scene
         ->add_option("--every", c.sceneOptions.every, "write every Nth frame (telemetry keeps every frame)")

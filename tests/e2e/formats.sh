@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Display images as TIFF, JPEG and 16-bit PNG/TIFF, chosen by the output's extension: each file is what it says
 # (its magic bytes, a 16-bit PNG's IHDR bit depth), a JPEG at 16 bits and other bad values are refused (exit 2,
-# the option or file named) before anything is written, and sequences, patterns and folders take the formats too.
+# the option or file named) before anything is written, and sequences, patterns, folders and scene frames take the
+# formats too.
 source "$(dirname "$0")/lib.bash"
 S="$SCRATCH"
 magic() { head -c "$2" "$1" | od -An -tx1 | tr -d ' \n'; }
@@ -47,4 +48,12 @@ expect 0 "a sequence into a folder as JPEG" -- "$PHOTOPIC" image "$S/in/frame_00
     -o "$S/jpgs/" --format jpg
 check "two JPEGs" [ "$(magic "$S/jpgs/frame_0001.jpg" 3)" = ffd8ff ]
 expect 2 "a stream with --format tif is refused" -- "$PHOTOPIC" image "$S/in/frame_0000.exr" -o - --format tif
+
+expect 0 "scene frames as 16-bit TIFF" -- "$PHOTOPIC" scene gradient --size 64x48 --frames 2 --format tif \
+    --bit-depth 16 -o "$S/scene16"
+check "two TIFFs" [ "$(magic "$S/scene16/frame_0001.tif" 4)" = 49492a00 ]
+expect 2 "scene frames as 16-bit JPEG are refused" -- "$PHOTOPIC" scene gradient --size 64x48 --frames 2 \
+    --format jpg --bit-depth 16 -o "$S/scenejpg"
+check "naming the frame" contains "frame_0000.jpg: JPEG holds 8 bits per channel only"
+check "and leaving no folder" [ ! -e "$S/scenejpg" ]
 finish
