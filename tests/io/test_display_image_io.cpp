@@ -247,10 +247,13 @@ TEST(DisplayImageIo, JpegDecodesWithStbImageToTheSizeWithSmallError) {
         }
     }
     stbi_image_free(pixels);
-    // Quality 95 on a smooth image: the mean error is about a level; the largest sits where the chroma
-    // subsampling meets the ramps' steepest colour change, so it is looser.
-    EXPECT_LT(sum / (double(width) * height * 3), 2.0);
-    EXPECT_LE(largest, 16);
+    RecordProperty("meanError", std::to_string(sum / (double(width) * height * 3)));
+    RecordProperty("largestError", largest);
+    // Quality 95 on a smooth image: measured 0.50 mean and 2 largest (Debian 12's stb_image_write, which
+    // keeps full-resolution chroma above quality 90); the limits are twice that, so another stb release's
+    // rounding does not fail the test.
+    EXPECT_LT(sum / (double(width) * height * 3), 1.0);
+    EXPECT_LE(largest, 4);
 }
 
 TEST(DisplayImageIo, BadWritesThrowNamingThePathAndLeaveNothing) {
