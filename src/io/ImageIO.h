@@ -1,6 +1,7 @@
 #pragma once
 // Image files in and out: OpenEXR, Radiance RGBE (.hdr) and PNG. Readers dispatch on the file's first bytes,
-// not on its name; writers are atomic (a reader never sees a half-written file).
+// not on its name; writers are atomic (a reader never sees a half-written file). Display images as 16-bit
+// PNG, TIFF and JPEG: io/DisplayImageIO.h.
 
 #include "core/Image.h"
 
