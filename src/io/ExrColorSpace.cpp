@@ -2,7 +2,7 @@
 // Technical Introduction, "Standard attributes"); absent, they are Rec.709 with a D65 white. The pipeline's
 // working space is linear Rec.709, so other primaries (ACES AP0, Rec.2020, ...) are converted on load: file
 // RGB -> XYZ (the file's primaries), a Bradford adaptation from the file's white to D65 when the two differ
-// (Lam 1985; the linear Bradford transform of ICC.1 Annex E), then XYZ -> Rec.709.
+// (Lam 1985, in the linear form colour-management systems use), then XYZ -> Rec.709.
 
 #include "io/ExrDetail.h"
 

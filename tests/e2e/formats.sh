@@ -25,7 +25,8 @@ check "is the default, byte for byte" cmp -s "$S/out.png" "$S/out8.png"
 check "of 8 bits per sample" [ "$(pngBitDepth "$S/out.png")" = 8 ]
 
 expect 2 "a 16-bit JPEG is refused" -- "$PHOTOPIC" image "$S/in/frame_0000.exr" -o "$S/deep.jpg" --bit-depth 16
-check "naming the file, the format and the option" contains "deep.jpg: JPEG holds 8 bits per channel only, but --bit-depth is 16"
+check "naming the file, the format and the option" \
+    contains "deep.jpg: JPEG holds 8 bits per channel only, but --bit-depth is 16"
 check "nothing written" [ ! -e "$S/deep.jpg" ]
 expect 2 "output.bitDepth=16 from the settings too" -- \
     "$PHOTOPIC" image "$S/in/frame_0000.exr" -o "$S/deep.jpeg" --set output.bitDepth=16

@@ -8,8 +8,8 @@
 // Variants are #defines, never uniform branches (TonemapPass.h: llvmpipe runs every case of a uniform switch):
 // TONEMAP_MODE (static_cast<int>(ToneMapper)), BLOOM, GLOW (the legacy tier's glow), GRADE, OUTPUT_SCENE,
 // DISPLAY_16 (RGBA16 display storage).
-// A compute pass (8x8 groups, one pixel each, image store into RGBA8 or RGBA16, or RGBA32F for OUTPUT_SCENE): on GPUs
-// whose raster units are a small part of the chip a full-screen triangle runs far below the memory's pace.
+// A compute pass (8x8 groups, one pixel each, image store into RGBA8 or RGBA16, or RGBA32F for OUTPUT_SCENE):
+// on GPUs whose raster units are a small part of the chip a full-screen triangle runs far below the memory's pace.
 #include "passes/common/color.h.glsl"
 #include "passes/common/display_format.h.glsl"
 #include "passes/common/exposure.h.glsl"
