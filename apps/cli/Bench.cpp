@@ -35,7 +35,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 
 namespace photopic::cli {
@@ -58,26 +57,10 @@ bool isSoftwareRenderer(const std::string& renderer) {
            renderer.find("SwiftShader") != std::string::npos;
 }
 
+/// The table as JSON, through the io library's atomic writer: flushed to disk and renamed into place, so a
+/// reader never sees half a table. Throws IoError naming the file.
 void writeJsonAtomically(const fs::path& path, const nlohmann::json& doc) {
-    const fs::path tmp = path.string() + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) {
-            throw std::runtime_error(fmt::format("cannot write {}", path.string()));
-        }
-        out << doc.dump(2) << "\n";
-        if (!out.flush()) {
-            std::error_code ec;
-            fs::remove(tmp, ec);
-            throw std::runtime_error(fmt::format("cannot write {}", path.string()));
-        }
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(), ec.message()));
-    }
+    writeTextFile(path, doc.dump(2) + "\n");
 }
 
 /// `--set canvas.key=value` into the canvas scene's settings; any other key is an error (this bench shades

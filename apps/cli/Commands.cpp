@@ -122,6 +122,19 @@ std::string lowerExtension(const fs::path& p) {
 
 } // namespace
 
+// A JPEG holds 8 bits per channel: a 16-bit display image bound for one is refused rather than narrowed
+// without a word.
+void requireBitDepthFits(const std::vector<fs::path>& outputs, int bitDepth, std::string_view source) {
+    for (const fs::path& out : outputs) {
+        const std::optional<DisplayFileFormat> format = displayFileFormatFor(out);
+        if (format && !holdsBitDepth(*format, bitDepth)) {
+            throw InputError(fmt::format("output {}: {} holds 8 bits per channel only, but {} is {}: write "
+                                         ".png or .tif for 16 bits, or use 8",
+                                         out.string(), displayFileFormatName(*format), source, bitDepth));
+        }
+    }
+}
+
 ImageF readInput(const fs::path& path, std::int64_t maxPixels) {
     try {
         return readImage(path, {.maxPixels = maxPixels});
@@ -346,20 +359,20 @@ fs::path streamOutput(const ImageOptions& options, std::size_t inputCount) {
                         "image, not {}: name a folder (-o out/) or a pattern (-o out/f%04d.png)",
                         out.string(), inputCount));
     }
-    if (options.format == "exr" && lowerExtension(out) != ".exr") {
-        throw InputError(fmt::format("output {}: a stream carries the display image as PNG; --format exr "
+    if (options.format != "png" && lowerExtension(out) != "." + options.format) {
+        throw InputError(fmt::format("output {}: a stream carries the display image as PNG; --format {} "
                                      "needs a file or folder",
-                                     out.string()));
+                                     out.string(), options.format));
     }
     return out;
 }
 
 void requireExtension(const fs::path& out) {
     const std::string ext = lowerExtension(out);
-    if (ext != ".png" && ext != ".exr") {
+    if (!displayFileFormatFor(out) && ext != ".exr") {
         throw InputError(
-            fmt::format("output {}: unsupported extension '{}' (use .png for the display image or "
-                        ".exr for the scene-referred image)",
+            fmt::format("output {}: unsupported extension '{}' (use .png, .tif, .tiff, .jpg or .jpeg for the "
+                        "display image, or .exr for the scene-referred image)",
                         out.string(), ext));
     }
 }
@@ -443,13 +456,25 @@ std::unique_ptr<Pipeline> makeImagePipeline(const PipelineCreateInfo& createInfo
 }
 
 /// Reads the frame's result back into `image`: the scene-referred image for an .exr `out`, else the display
-/// image.
-void readBack(Pipeline& pipeline, const Texture& display, const fs::path& out, FrameImage& image) {
+/// image at `bitDepth` bits.
+void readBack(Pipeline& pipeline, const Texture& display, const fs::path& out, int bitDepth,
+              FrameImage& image) {
     if (lowerExtension(out) == ".exr") {
         readTextureF(pipeline.sceneReferred(), image.scene);
+    } else if (bitDepth == 16) {
+        readTexture16(display, image.display16);
     } else {
         readTexture8(display, image.display);
     }
+}
+
+/// The run's settings with --bit-depth applied over them.
+Settings imageSettings(const ImageOptions& options) {
+    Settings settings = resolveSettings(options.settings);
+    if (options.bitDepth) {
+        settings.output.bitDepth = *options.bitDepth;
+    }
+    return settings;
 }
 
 /// Prints "IN -> OUT (WxH, ms since the frame started)" once the frame is on disk, the progress line taken
@@ -515,12 +540,14 @@ int runImage(const ImageOptions& options) {
     if (options.output.empty()) {
         throw InputError("image: an output is required (-o FILE, FOLDER/, PATTERN or -), or --info");
     }
-    const Settings settings = resolveSettings(options.settings);
+    const Settings settings = imageSettings(options);
     std::FILE* const console = consoleFor(options);
     // Every output is checked before any work; a run that fails takes back what it wrote, the frames it
     // had already written included.
     RunOutputs outputs;
     const std::vector<fs::path> outPaths = plannedOutputs(options, files, outputs);
+    requireBitDepthFits(outPaths, settings.output.bitDepth,
+                        options.bitDepth ? "--bit-depth" : "the settings' output.bitDepth");
     if (options.noOverwrite) {
         requireNewSideOutputs(options, inputs);
     }
@@ -549,7 +576,8 @@ int runImage(const ImageOptions& options) {
     // colour can stay half on the GPU (16 MB less at 1080p, same values).
     const bool hdrPath = pipeline->status().path == ColorPath::Hdr;
     Progress progress("image", inputs.size());
-    FrameWriter writer(outputs, pendingWrites(inFlight));
+    FrameWriter writer(outputs, pendingWrites(inFlight),
+                       {.bitDepth = settings.output.bitDepth, .jpegQuality = options.jpegQuality});
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         const DecodedFrame& frame = reader.next();
         const auto start = std::chrono::steady_clock::now();
@@ -568,7 +596,7 @@ int runImage(const ImageOptions& options) {
         const Texture& display = pipeline->execute(frameInputs, time);
         const fs::path& out = outPaths[i];
         FrameImage image = writer.storage();
-        readBack(*pipeline, display, out, image);
+        readBack(*pipeline, display, out, settings.output.bitDepth, image);
         if (telemetry) {
             telemetry->take(*pipeline, i, i + 1 == inputs.size());
         }

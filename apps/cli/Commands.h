@@ -3,12 +3,14 @@
 // failure.
 
 #include "core/Settings.h"
+#include "io/DisplayImageIO.h"
 #include "io/ImageIO.h"
 #include "pipeline/Pipeline.h"
 
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace photopic::cli {
@@ -37,11 +39,16 @@ struct ImageOptions {
     std::vector<std::filesystem::path> inputs;
     std::string frames; ///< --frames A-B: every frame of the range, inclusive; empty: none
     std::optional<std::int64_t> startNumber; ///< --start-number N: a pattern's frames from N on
-    /// A file (.png, .exr), a folder (a trailing '/', no extension, or several inputs), a pattern
-    /// (out/f%04d.png) or a stream ("-", a device, a pipe: one input, PNG).
+    /// A file (.png, .tif, .tiff, .jpg, .jpeg: the display image; .exr: scene-referred), a folder (a trailing
+    /// '/', no extension, or several inputs), a pattern (out/f%04d.png) or a stream ("-", a device, a pipe:
+    /// one input, PNG).
     std::filesystem::path output;
     bool noOverwrite = false;   ///< -n: an output that exists already is refused before any work
-    std::string format = "png"; ///< for folder outputs: png or exr
+    std::string format = "png"; ///< for folder outputs: png, tif, tiff, jpg, jpeg or exr
+    /// --bit-depth 8|16: output.bitDepth, the display image's bits per channel (and its PNG/TIFF files');
+    /// unset: the settings' value.
+    std::optional<int> bitDepth;
+    int jpegQuality = kDefaultJpegQuality; ///< --jpeg-quality, [1, 100], default 95
     SettingsSources settings;
     bool forceLdr = false;
     float fps = 30.0f;
@@ -64,7 +71,9 @@ struct SceneOptions {
     int frames = 60;
     float fps = 30.0f;
     std::string size = "640x360"; ///< WxH
-    std::string format = "png";   ///< frames as png (display) or exr (scene-referred)
+    std::string format = "png";   ///< frames as png, tif, tiff, jpg, jpeg (display) or exr (scene-referred)
+    std::optional<int> bitDepth;  ///< --bit-depth 8|16: output.bitDepth; unset: the settings' value
+    int jpegQuality = kDefaultJpegQuality; ///< --jpeg-quality, [1, 100], default 95
     SettingsSources settings; ///< --set NAME.key=value goes to the scene, other paths to the post settings
     bool forceLdr = false;
     std::string canvasColor;    ///< --canvas FILE: canvas scene only, = --set canvas.colour=FILE
@@ -98,6 +107,11 @@ int runSettingsDefaults();
 int runSettingsCheck(const std::filesystem::path& file);
 int runDemo(const std::filesystem::path& dataDir, const std::filesystem::path& outDir,
             std::int64_t maxPixels = kDefaultMaxPixels);
+
+/// Throws InputError (exit 2) naming the first of `outputs` whose format cannot hold `bitDepth` bits per
+/// channel (a JPEG at 16), before any work; `source` names where the depth came from ("--bit-depth").
+void requireBitDepthFits(const std::vector<std::filesystem::path>& outputs, int bitDepth,
+                         std::string_view source);
 
 /// Reads an input image, as bad input (InputError, exit 2) when it cannot be.
 ImageF readInput(const std::filesystem::path& path, std::int64_t maxPixels);

@@ -119,20 +119,40 @@ bool isExrPath(const fs::path& path) {
     return ext == ".exr";
 }
 
-FrameImage writeFrame(const fs::path& path, FrameImage image, PngWriter& png) {
+} // namespace
+
+FrameImage writeFrameImage(const fs::path& path, FrameImage image, PngWriter& png, DisplayEncoding encoding) {
     if (isExrPath(path)) {
         writeExr(path, image.scene);
-    } else {
-        png.write(path, image.display);
+        return image;
+    }
+    const bool deep = encoding.bitDepth == 16;
+    switch (displayFileFormatFor(path).value_or(DisplayFileFormat::Png)) {
+    case DisplayFileFormat::Png:
+        if (deep) {
+            writePng16(path, image.display16);
+        } else {
+            png.write(path, image.display);
+        }
+        break;
+    case DisplayFileFormat::Tiff:
+        if (deep) {
+            writeTiff(path, image.display16);
+        } else {
+            writeTiff(path, image.display);
+        }
+        break;
+    case DisplayFileFormat::Jpeg: // runImage refuses 16 bits for a JPEG before any work
+        writeJpeg(path, image.display, encoding.jpegQuality);
+        break;
     }
     return image;
 }
 
-} // namespace
-
-FrameWriter::FrameWriter(RunOutputs& outputs, std::size_t maxPending)
+FrameWriter::FrameWriter(RunOutputs& outputs, std::size_t maxPending, DisplayEncoding encoding)
     : mOutputs(outputs)
     , mMaxPending(maxPending)
+    , mEncoding(encoding)
     , mEncoders(std::max<std::size_t>(std::min<std::size_t>(maxPending, maxWorkers()), 1)) {
     for (std::size_t i = 0; maxPending > 0 && i < mEncoders.size(); ++i) {
         mWorkers.push_back(std::make_unique<Worker>());
@@ -160,7 +180,7 @@ FrameImage FrameWriter::storage() {
 
 void FrameWriter::write(const fs::path& path, FrameImage image, std::function<void()> report) {
     if (mWorkers.empty()) {
-        mFree.push_back(writeFrame(path, std::move(image), mEncoders.front()));
+        mFree.push_back(writeFrameImage(path, std::move(image), mEncoders.front(), mEncoding));
         mOutputs.wrote(path);
         report();
         return;
@@ -170,11 +190,12 @@ void FrameWriter::write(const fs::path& path, FrameImage image, std::function<vo
     }
     const std::size_t w = mWritten++ % mWorkers.size();
     PngWriter& png = mEncoders[w];
-    mPending.push_back({.path = path,
-                        .done = mWorkers[w]->run([path, image = std::move(image), &png]() mutable {
-                            return writeFrame(path, std::move(image), png);
-                        }),
-                        .report = std::move(report)});
+    mPending.push_back(
+        {.path = path,
+         .done = mWorkers[w]->run([path, image = std::move(image), &png, encoding = mEncoding]() mutable {
+             return writeFrameImage(path, std::move(image), png, encoding);
+         }),
+         .report = std::move(report)});
 }
 
 void FrameWriter::retireOldest() {

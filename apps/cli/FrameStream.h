@@ -11,6 +11,7 @@
 
 #include "core/Image.h"
 
+#include "io/DisplayImageIO.h"
 #include "io/ImageIO.h"
 
 #include <condition_variable>
@@ -86,18 +87,32 @@ private:
     std::unique_ptr<Worker> mWorker; ///< last: joined before the members its task uses go
 };
 
-/// A frame read back from the GPU: the display image (PNG outputs) or the scene-referred one (EXR outputs).
+/// A frame read back from the GPU: the display image (PNG, TIFF, JPEG outputs; 8 or 16 bits) or the
+/// scene-referred one (EXR outputs).
 struct FrameImage {
     Image8 display;
+    Image16 display16; ///< the display image at output.bitDepth 16
     ImageF scene;
 };
+
+/// How FrameWriter encodes the display image.
+struct DisplayEncoding {
+    int bitDepth = 8;                      ///< 8: FrameImage::display is written, 16: display16
+    int jpegQuality = kDefaultJpegQuality; ///< [1, 100], default 95
+};
+
+/// Writes `image.scene` to an .exr `path`, else the display image (`display`, or `display16` at 16 bits) as
+/// the extension says, PNG when it names no display format (a stream); `png` keeps the 8-bit PNG encoder's
+/// buffers from frame to frame. Gives the image back for its storage to be reused. Throws IoError.
+FrameImage writeFrameImage(const std::filesystem::path& path, FrameImage image, PngWriter& png,
+                           DisplayEncoding encoding);
 
 /// Encodes and writes frames on worker threads, at most `maxPending` at a time (0: on the caller's thread,
 /// before write() returns), and reports each written frame in the order the frames were given: the path
 /// goes to RunOutputs and `report` runs, both on the caller's thread.
 class FrameWriter {
 public:
-    FrameWriter(RunOutputs& outputs, std::size_t maxPending);
+    FrameWriter(RunOutputs& outputs, std::size_t maxPending, DisplayEncoding encoding);
     /// Waits for every write still running; the files that were written go to RunOutputs (which removes
     /// them when the run failed).
     ~FrameWriter();
@@ -106,8 +121,9 @@ public:
 
     /// Storage for the next frame's read-back, recycled from a frame already written when there is one.
     [[nodiscard]] FrameImage storage();
-    /// Writes `image.scene` to an .exr `path`, else `image.display` as PNG. When `maxPending` writes are
-    /// running, first waits for the oldest (and throws its error).
+    /// Writes `image.scene` to an .exr `path`, else the display image as the extension says (PNG when it
+    /// names no display format: a stream). When `maxPending` writes are running, first waits for the oldest
+    /// (and throws its error).
     void write(const std::filesystem::path& path, FrameImage image, std::function<void()> report);
     /// Waits for every write, in order; throws the first error.
     void finish();
@@ -121,6 +137,7 @@ private:
     void retireOldest();
     RunOutputs& mOutputs;
     std::size_t mMaxPending;
+    DisplayEncoding mEncoding;
     std::deque<Pending> mPending;
     std::vector<FrameImage> mFree;
     std::size_t mWritten = 0;         ///< frames given to write(); frame i goes to worker i % workers

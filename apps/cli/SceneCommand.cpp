@@ -1,6 +1,7 @@
 // `photopic scene NAME`: renders a built-in scene's frames through the pipeline, with per-frame telemetry.
 
 #include "Commands.h"
+#include "FrameStream.h"
 #include "Outputs.h"
 #include "Progress.h"
 #include "TelemetryCsv.h"
@@ -245,7 +246,10 @@ int runScene(const SceneOptions& options) {
     // scene's.
     SettingsSources post = options.settings;
     post.overrides = split.post;
-    const Settings resolved = resolveSettings(post, scene->defaultSettings());
+    Settings resolved = resolveSettings(post, scene->defaultSettings());
+    if (options.bitDepth) {
+        resolved.output.bitDepth = *options.bitDepth;
+    }
     // The scene reads its input files here, before any output exists: a bad one is bad input (exit 2).
     try {
         scene->resize(size);
@@ -265,6 +269,11 @@ int runScene(const SceneOptions& options) {
         return outDir / fmt::format("frame_{:04d}.{}", index, options.format);
     };
     RunOutputs::requireFile(framePath(0));
+    requireBitDepthFits({framePath(0)}, resolved.output.bitDepth,
+                        options.bitDepth ? "--bit-depth" : "the settings' output.bitDepth");
+    const DisplayEncoding encoding{.bitDepth = resolved.output.bitDepth, .jpegQuality = options.jpegQuality};
+    FrameImage image; // read-back storage, kept from frame to frame
+    PngWriter png;
     outputs.sequence(framePath);
     const float dt = 1.0f / options.fps;
     const fs::path telemetryPath = outDir / "telemetry.csv";
@@ -287,10 +296,13 @@ int runScene(const SceneOptions& options) {
             }
             const fs::path frame = framePath(std::size_t(i / every));
             if (options.format == "exr") {
-                writeExr(frame, readTextureF(pipeline.sceneReferred()));
+                readTextureF(pipeline.sceneReferred(), image.scene);
+            } else if (encoding.bitDepth == 16) {
+                readTexture16(display, image.display16);
             } else {
-                writePng(frame, readTexture8(display));
+                readTexture8(display, image.display);
             }
+            image = writeFrameImage(frame, std::move(image), png, encoding);
             outputs.wroteSequenceItem();
             logDebug("frame {} -> {}", i, frame.string());
         }

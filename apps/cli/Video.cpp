@@ -1,5 +1,7 @@
 #include "Video.h"
 
+#include "io/ImageIO.h"
+
 #include <fmt/format.h>
 
 #include <spawn.h>
@@ -10,6 +12,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <vector>
 
 extern char** environ;
@@ -60,8 +63,15 @@ int run(const std::vector<std::string>& args) {
 VideoResult encodeFrameSequence(const fs::path& folder, double fps, const fs::path& output) {
     // Absolute paths: a name starting with '-' could read as an option, one like "x:y" as a protocol.
     const fs::path target = fs::absolute(output);
-    const fs::path temporary =
-        target.parent_path() / fmt::format(".{}.tmp-{}", target.filename().string(), ::getpid());
+    // ffmpeg writes into the io library's atomic file (a temporary beside the target), which commit() then
+    // flushes to disk and renames into place; on any failure the writer removes it.
+    std::optional<AtomicFileWriter> file;
+    try {
+        file.emplace(target);
+    } catch (const IoError& e) {
+        return {false, fmt::format("{} FAILED ({})", output.filename().string(), e.what())};
+    }
+    const fs::path temporary = file->temporaryPath().empty() ? target : file->temporaryPath();
     const std::vector<std::string> args = {"ffmpeg",
                                            "-nostdin",
                                            "-y",
@@ -79,21 +89,19 @@ VideoResult encodeFrameSequence(const fs::path& folder, double fps, const fs::pa
                                            "mp4",
                                            temporary.string()};
     const int status = run(args);
-    std::error_code ec;
     if (status == -ENOENT) {
         return {false, fmt::format("{} skipped (no ffmpeg command)", output.filename().string())};
     }
     if (status != 0) {
-        fs::remove(temporary, ec);
         return {false, status < 0 ? fmt::format("{} FAILED (cannot start ffmpeg: {})",
                                                 output.filename().string(), std::strerror(-status))
                                   : fmt::format("{} FAILED (ffmpeg exited with {})",
                                                 output.filename().string(), status)};
     }
-    fs::rename(temporary, target, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        return {false, fmt::format("{} FAILED (cannot move it into place)", output.filename().string())};
+    try {
+        file->commit();
+    } catch (const IoError& e) {
+        return {false, fmt::format("{} FAILED ({})", output.filename().string(), e.what())};
     }
     return {true, output.filename().string()};
 }

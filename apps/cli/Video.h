@@ -14,7 +14,8 @@ struct VideoResult {
 };
 
 /// Encodes `folder`/frame_0000.png, frame_0001.png, ... at `fps` into `output` (H.264, yuv420p, sides rounded
-/// down to even). Written to a temporary beside `output` and renamed into place only when ffmpeg succeeds;
+/// down to even). Written to a temporary beside `output` (io/ImageIO.h AtomicFileWriter), flushed to disk and
+/// renamed into place only when ffmpeg succeeds;
 /// otherwise nothing is left. No ffmpeg on PATH is not an error: the result says so.
 VideoResult encodeFrameSequence(const std::filesystem::path& folder, double fps,
                                 const std::filesystem::path& output);

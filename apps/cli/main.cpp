@@ -18,7 +18,10 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <ranges>
+#include <string>
+#include <vector>
 
 using namespace photopic;
 using namespace photopic::cli;
@@ -91,9 +94,24 @@ void addInfoCommand(CLI::App& app, Cli& c) {
                    "  photopic info --set quality=low     the quality tier and the path it takes");
 }
 
+/// The file types a frame can be written as: the display image's formats, then EXR (scene-referred).
+const std::vector<std::string> kFrameFormats = {"png", "tif", "tiff", "jpg", "jpeg", "exr"};
+
+/// --bit-depth and --jpeg-quality, as `photopic image` and `photopic scene` both take them.
+void addDisplayEncodingOptions(CLI::App* cmd, std::optional<int>& bitDepth, int& jpegQuality) {
+    cmd->add_option("--bit-depth", bitDepth,
+                    "bits per channel of the display image and of PNG and TIFF outputs: 8 or 16 (16 renders "
+                    "the display passes at 16 bits, output.bitDepth=16; JPEG is 8-bit only); default: the "
+                    "settings' output.bitDepth, 8")
+        ->check(CLI::IsMember({8, 16}));
+    cmd->add_option("--jpeg-quality", jpegQuality, "quality of JPEG outputs, 1 to 100")
+        ->check(CLI::Range(1, 100))
+        ->capture_default_str();
+}
+
 void addImageCommand(CLI::App& app, Cli& c) {
-    c.image = app.add_subcommand("image", "process HDR images (EXR, HDR, PNG) into PNG (display) or EXR "
-                                          "(scene-referred, before tone mapping)");
+    c.image = app.add_subcommand("image", "process HDR images (EXR, HDR, PNG) into PNG, TIFF or JPEG "
+                                          "(display) or EXR (scene-referred, before tone mapping)");
     c.image
         ->add_option(
             "inputs", c.imageOptions.inputs,
@@ -102,7 +120,8 @@ void addImageCommand(CLI::App& app, Cli& c) {
             "in natural order (f9 before f10)")
         ->required();
     c.image->add_option("-o,--output", c.imageOptions.output,
-                        "where results go, required unless --info: an extension means a file (.png, .exr); a "
+                        "where results go, required unless --info: an extension means a file (.png, .tif, "
+                        ".tiff, .jpg, .jpeg: the display image; .exr: scene-referred); a "
                         "trailing '/', an existing folder, no extension or several inputs mean a folder "
                         "(NAME.png, --format); a frame number means a pattern (out/f%04d.png: each input's "
                         "frame number, or 0, 1, ... when the inputs carry none); '-', a device or a pipe is "
@@ -125,7 +144,9 @@ void addImageCommand(CLI::App& app, Cli& c) {
         ->check(CLI::NonNegativeNumber)
         ->excludes(frames);
     c.image->add_option("--format", c.imageOptions.format, "file type written into an output folder")
-        ->check(CLI::IsMember({"png", "exr"}));
+        ->check(CLI::IsMember(kFrameFormats))
+        ->capture_default_str();
+    addDisplayEncodingOptions(c.image, c.imageOptions.bitDepth, c.imageOptions.jpegQuality);
     c.image->add_option("--fps", c.imageOptions.fps, "frame rate of a sequence")
         ->check(CLI::Range(0.001f, 10000.0f));
     c.image->add_flag("--force-ldr", c.imageOptions.forceLdr, "run the LDR (RGBA8) path");
@@ -165,6 +186,8 @@ void addImageCommand(CLI::App& app, Cli& c) {
         "  photopic image in.exr -o out.png --tonemap agx --exposure -1.5\n"
         "  photopic image f*.exr -o dir/ --fps 24 --telemetry t.csv --set autoExposure.enabled=true\n"
         "  photopic image shot/f%04d.exr --frames 1001-1100 -o out/f%04d.png -n\n"
+        "  photopic image in.exr -o out.tif --bit-depth 16\n"
+        "  photopic image in.exr -o out.jpg --jpeg-quality 90\n"
         "  photopic image in.exr -o - | display -\n"
         "  photopic image in.exr -o view.png --debug histogram");
 }
@@ -191,8 +214,11 @@ void addSceneCommand(CLI::App& app, Cli& c) {
     c.scene->add_option("--fps", c.sceneOptions.fps, "frame rate")->check(CLI::Range(0.001f, 10000.0f));
     c.scene->add_option("--size", c.sceneOptions.size, "WIDTHxHEIGHT");
     c.scene
-        ->add_option("--format", c.sceneOptions.format, "frame files: png (display) or exr (scene-referred)")
-        ->check(CLI::IsMember({"png", "exr"}));
+        ->add_option("--format", c.sceneOptions.format,
+                     "frame files: png, tif, tiff, jpg, jpeg (display) or exr (scene-referred)")
+        ->check(CLI::IsMember(kFrameFormats))
+        ->capture_default_str();
+    addDisplayEncodingOptions(c.scene, c.sceneOptions.bitDepth, c.sceneOptions.jpegQuality);
     c.scene->add_flag("--force-ldr", c.sceneOptions.forceLdr, "run the LDR (RGBA8) path");
     c.scene
         ->add_option("--every", c.sceneOptions.every, "write every Nth frame (telemetry keeps every frame)")

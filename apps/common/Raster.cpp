@@ -1,6 +1,10 @@
 #include "common/Raster.h"
 
-#include "core/Color.h"
+#include "core/Log.h"
+
+#define STB_IMAGE_RESIZE_STATIC
+#define STB_IMAGE_RESIZE_IMPLEMENTATION
+#include <stb_image_resize.h>
 
 #include <algorithm>
 #include <cmath>
@@ -45,52 +49,10 @@ bool clipSegment(double& x0, double& y0, double& x1, double& y1, double lo, doub
     return true;
 }
 
-// Resampling happens in linear light (core/Color.h's exact sRGB transfer).
-const std::array<float, 256>& srgbDecodeTable() {
-    static const std::array<float, 256> table = [] {
-        std::array<float, 256> t{};
-        for (std::size_t i = 0; i < t.size(); ++i) {
-            t[i] = srgbDecode(float(i) / 255.0f);
-        }
-        return t;
-    }();
-    return table;
-}
-
-std::uint8_t encode8(float linear) {
-    return std::uint8_t(std::lround(srgbEncode(linear) * 255.0f));
-}
-
-struct Tap {
-    int index;
-    float weight;
-};
-
-/// For each destination sample along one axis, the source samples it reads and their weights (summing to 1).
-std::vector<std::vector<Tap>> resampleTaps(int srcSize, int dstSize) {
-    std::vector<std::vector<Tap>> taps(static_cast<std::size_t>(dstSize));
-    const double scale = double(srcSize) / double(dstSize);
-    for (int i = 0; i < dstSize; ++i) {
-        auto& out = taps[std::size_t(i)];
-        if (scale > 1.0) {
-            // Shrinking: box filter, each source cell weighted by how much of it the destination cell covers.
-            const double begin = i * scale;
-            const double end = begin + scale;
-            for (int s = int(begin); s < srcSize && s < end; ++s) {
-                const double overlap = std::min(end, s + 1.0) - std::max(begin, double(s));
-                if (overlap > 0.0)
-                    out.push_back({s, float(overlap / scale)});
-            }
-        } else {
-            // Growing (or same size): bilinear between the two nearest source pixel centres.
-            const double centre = (i + 0.5) * scale - 0.5;
-            const int s0 = int(std::floor(centre));
-            const float f = float(centre - s0);
-            out.push_back({std::clamp(s0, 0, srcSize - 1), 1.0f - f});
-            out.push_back({std::clamp(s0 + 1, 0, srcSize - 1), f});
-        }
-    }
-    return taps;
+/// stb_image_resize's filter for one axis: its box (area weights; for a non-integer ratio the cell edges
+/// ramp over one source pixel) when the axis shrinks, its triangle (bilinear) when it grows.
+stbir_filter filterFor(int srcSize, int dstSize) {
+    return dstSize < srcSize ? STBIR_FILTER_BOX : STBIR_FILTER_TRIANGLE;
 }
 
 /// `text` shortened with "..." until it fits in maxWidth px.
@@ -160,27 +122,19 @@ void blit(Image8& dst, const Image8& src, int x, int y) {
 void blitScaled(Image8& dst, const Image8& src, int x, int y, int w, int h) {
     if (src.empty() || w <= 0 || h <= 0)
         return;
-    const auto xTaps = resampleTaps(src.width, w);
-    const auto yTaps = resampleTaps(src.height, h);
-    const auto& decode = srgbDecodeTable();
-    for (int j = std::max(0, -y); j < h && y + j < dst.height; ++j) {
-        for (int i = std::max(0, -x); i < w && x + i < dst.width; ++i) {
-            std::array<float, 4> sum{};
-            for (const Tap& ty : yTaps[std::size_t(j)]) {
-                for (const Tap& tx : xTaps[std::size_t(i)]) {
-                    const std::uint8_t* p = src.at(tx.index, ty.index);
-                    const float weight = ty.weight * tx.weight;
-                    for (std::size_t c = 0; c < 3; ++c)
-                        sum[c] += weight * decode[p[c]];
-                    sum[3] += weight * float(p[3]);
-                }
-            }
-            std::uint8_t* out = dst.at(x + i, y + j);
-            for (std::size_t c = 0; c < 3; ++c)
-                out[c] = encode8(sum[c]);
-            out[3] = std::uint8_t(std::lround(std::clamp(sum[3], 0.0f, 255.0f)));
-        }
+    if (w == src.width && h == src.height) {
+        blit(dst, src, x, y); // no resampling: every value exactly as it was
+        return;
     }
+    // sRGB colour space: stb decodes to linear light, filters and re-encodes. Alpha premultiplied as far as
+    // stb knows, so it does not weight the colour (a transparent pixel keeps its colour's share).
+    Image8 scaled(w, h);
+    const int ok =
+        stbir_resize(src.rgba.data(), src.width, src.height, 0, scaled.rgba.data(), w, h, 0, STBIR_TYPE_UINT8,
+                     4, 3, STBIR_FLAG_ALPHA_PREMULTIPLIED, STBIR_EDGE_CLAMP, STBIR_EDGE_CLAMP,
+                     filterFor(src.width, w), filterFor(src.height, h), STBIR_COLORSPACE_SRGB, nullptr);
+    PHOTOPIC_ASSERT(ok == 1); // fails only when its scratch memory cannot be allocated
+    blit(dst, scaled, x, y);
 }
 
 int textWidth(std::string_view text, int scale) {

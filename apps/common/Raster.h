@@ -35,9 +35,10 @@ void drawPolyline(Image8& dst, std::span<const Point2i> points, Rgba8 color, int
 /// Copies `src` with its top-left corner at (x, y).
 void blit(Image8& dst, const Image8& src, int x, int y);
 
-/// Draws `src` resized to w x h at (x, y). Each axis is box filtered (area weighted) when it shrinks and
-/// bilinear when it grows. Colour is averaged in linear light (sRGB decoded, then re-encoded), so fine bright
-/// detail such as city lights keeps its brightness; alpha is averaged as is and does not weight colour.
+/// Draws `src` resized to w x h at (x, y), by stb_image_resize. Each axis is box filtered (area weighted)
+/// when it shrinks and bilinear when it grows; at the same size `src` is copied as it is. Colour is averaged
+/// in linear light (sRGB decoded, then re-encoded), so fine bright detail such as city lights keeps its
+/// brightness; alpha is averaged as is and does not weight colour.
 void blitScaled(Image8& dst, const Image8& src, int x, int y, int w, int h);
 
 // ---------------------------------------------------------------------------------------------------------------

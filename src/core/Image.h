@@ -50,4 +50,26 @@ struct Image8 {
     }
 };
 
+/// 16-bit RGBA image (display-referred, sRGB-encoded, 0..65535), rows top to bottom: the display image at
+/// output.bitDepth 16.
+struct Image16 {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint16_t> rgba; ///< width * height * 4 samples
+
+    Image16() = default;
+    Image16(int w, int h, std::uint16_t fill = 0)
+        : width(w)
+        , height(h)
+        , rgba(std::size_t(w) * std::size_t(h) * 4, fill) {}
+
+    [[nodiscard]] bool empty() const { return width <= 0 || height <= 0; }
+    std::uint16_t* at(int x, int y) {
+        return rgba.data() + (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4;
+    }
+    [[nodiscard]] const std::uint16_t* at(int x, int y) const {
+        return rgba.data() + (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4;
+    }
+};
+
 } // namespace photopic

@@ -234,6 +234,7 @@ int bytesPerTexel(GLenum format) {
     case GL_RGBA32F:
         return 16;
     case GL_RGBA16F:
+    case GL_RGBA16:
         return 8;
     case GL_RG32F:
     case GL_DEPTH32F_STENCIL8:
@@ -275,6 +276,8 @@ std::string_view formatName(GLenum format) {
         return "R32UI";
     case GL_RGBA8:
         return "RGBA8";
+    case GL_RGBA16:
+        return "RGBA16";
     case GL_SRGB8_ALPHA8:
         return "SRGB8_ALPHA8";
     case GL_R11F_G11F_B10F:

@@ -69,4 +69,20 @@ void readTexture8(const Texture& texture, Image8& image) {
     flipRows(image.rgba, image.width, image.height);
 }
 
+Image16 readTexture16(const Texture& texture) {
+    Image16 image;
+    readTexture16(texture, image);
+    return image;
+}
+
+void readTexture16(const Texture& texture, Image16& image) {
+    image.width = texture.extent().width;
+    image.height = texture.extent().height;
+    image.rgba.resize(std::size_t(image.width) * std::size_t(image.height) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(texture.id(), 0, GL_RGBA, GL_UNSIGNED_SHORT,
+                      GLsizei(image.rgba.size() * sizeof(std::uint16_t)), image.rgba.data());
+    flipRows(image.rgba, image.width, image.height);
+}
+
 } // namespace photopic

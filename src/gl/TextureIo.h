@@ -19,9 +19,13 @@ ImageF readTextureF(const Texture& texture);
 std::vector<float> readDepthTexture(const Texture& texture);
 /// Blocking read of level 0 as 8-bit RGBA.
 Image8 readTexture8(const Texture& texture);
-/// readTextureF and readTexture8 into an image whose storage is kept when it already has the texture's size,
-/// so a sequence read back frame after frame allocates nothing after its first frame.
+/// Blocking read of level 0 as 16-bit RGBA (unorm: 65535 is 1.0). Of an RGBA16 texture, the stored values; of
+/// an RGBA8 one, each value times 257.
+Image16 readTexture16(const Texture& texture);
+/// readTextureF, readTexture8 and readTexture16 into an image whose storage is kept when it already has the
+/// texture's size, so a sequence read back frame after frame allocates nothing after its first frame.
 void readTextureF(const Texture& texture, ImageF& into);
 void readTexture8(const Texture& texture, Image8& into);
+void readTexture16(const Texture& texture, Image16& into);
 
 } // namespace photopic

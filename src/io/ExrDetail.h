@@ -1,20 +1,24 @@
 #pragma once
-// Internal to the io library: the pieces of ImageIO.cpp that ExrFrame.cpp shares (the checked reading of an
-// OpenEXR file from memory, colour reading with extra layers in the same pass, and the atomic writer). Not
-// part of the public API.
+// Internal to the io library: the pieces of ImageIO.cpp that ExrFrame.cpp and DisplayImageIO.cpp share (the
+// checked reading of an OpenEXR file from memory, colour reading with extra layers in the same pass, the
+// check of an image about to be written, and the atomic writer). Not part of the public API.
 
 #include "core/Image.h"
 #include "io/ImageIO.h"
 
 #include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
 #include <ImfIO.h>
 #include <ImfInputFile.h>
+#include <glm/mat3x3.hpp>
 
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace photopic::detail {
@@ -58,12 +62,38 @@ private:
 using ExrExtraSlices =
     std::function<void(Imf::FrameBuffer& frameBuffer, const Imath::Box2i& dataWindow, int width, int height)>;
 
-/// The colour of an OpenEXR file open over `bytes`, as readImage returns it, into `image` (its storage kept
+/// The matrix taking RGB in the primaries and white of the header's `chromaticities` attribute to linear
+/// Rec.709 with a D65 white (out = M * rgb; a Bradford adaptation when the whites differ), or nullopt when
+/// the attribute is absent or names Rec.709/D65 already (each xy within 1e-3). ExrColorSpace.cpp.
+[[nodiscard]] std::optional<glm::mat3> exrToRec709(const Imf::Header& header);
+
+/// Converts `image`'s RGB (alpha untouched) from the header's chromaticities to linear Rec.709 / D65 in
+/// place, and logs once per set of primaries (info, naming `path`); does nothing for Rec.709 / D65.
+void convertExrToRec709(const std::filesystem::path& path, const Imf::Header& header, ImageF& image);
+
+/// The colour of an OpenEXR file open over `bytes`, as readImage returns it (in linear Rec.709: other
+/// chromaticities are converted), into `image` (its storage kept
 /// when large enough), plus whatever `extra` adds, read in the same pass. Throws IoError naming `path`;
 /// OpenEXR's exceptions pass through (callers wrap them).
 void readExrColor(const std::filesystem::path& path, std::span<const unsigned char> bytes,
                   Imf::InputFile& file, ImageF& image, const ExrExtraSlices& extra = {},
                   const ImageReadLimits& limits = {});
+
+/// Throws IoError naming `path` unless `image` (ImageF, Image8 or Image16) can be written: not empty, its
+/// samples matching its size, within kDefaultMaxPixels.
+template <typename Image>
+void requirePixels(const std::filesystem::path& path, const Image& image) {
+    if (image.empty())
+        throw IoError(path, "cannot write an empty image (" + std::to_string(image.width) + "x" +
+                                std::to_string(image.height) + ")");
+    const std::size_t expected = std::size_t(image.width) * std::size_t(image.height) * 4;
+    if (image.rgba.size() != expected)
+        throw IoError(path, "image holds " + std::to_string(image.rgba.size()) + " values, expected " +
+                                std::to_string(expected) + " for " + std::to_string(image.width) + "x" +
+                                std::to_string(image.height) + " RGBA");
+    if (std::int64_t(image.width) * image.height > kDefaultMaxPixels)
+        throw IoError(path, "image is too large to write");
+}
 
 /// Writes `bytes` to a temporary in the destination folder, fsyncs it and renames it over `path`.
 void writeAtomically(const std::filesystem::path& path, std::span<const unsigned char> bytes);

@@ -693,20 +693,6 @@ void writeAtomically(const fs::path& path, std::span<const unsigned char> bytes)
     file.commit();
 }
 
-template <typename Image>
-void requirePixels(const fs::path& path, const Image& image) {
-    if (image.empty())
-        throw IoError(path, "cannot write an empty image (" + std::to_string(image.width) + "x" +
-                                std::to_string(image.height) + ")");
-    const std::size_t expected = std::size_t(image.width) * std::size_t(image.height) * 4;
-    if (image.rgba.size() != expected)
-        throw IoError(path, "image holds " + std::to_string(image.rgba.size()) + " values, expected " +
-                                std::to_string(expected) + " for " + std::to_string(image.width) + "x" +
-                                std::to_string(image.height) + " RGBA");
-    if (std::int64_t(image.width) * image.height > kDefaultMaxPixels)
-        throw IoError(path, "image is too large to write");
-}
-
 } // namespace
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -738,6 +724,7 @@ void detail::readExrColor(const fs::path& path, std::span<const unsigned char> b
     const bool hasRgb = has("R") || has("G") || has("B");
     if (!hasRgb && has("Y") && (has("RY") || has("BY"))) {
         image = readExrLuminanceChroma(path, bytes, width, height);
+        detail::convertExrToRec709(path, header, image);
         if (extra) { // RgbaInputFile reads colour only: the extra layers take a second pass
             Imf::FrameBuffer frameBuffer;
             extra(frameBuffer, dataWindow, width, height);
@@ -783,6 +770,7 @@ void detail::readExrColor(const fs::path& path, std::span<const unsigned char> b
         for (std::size_t i = 0; i < image.pixelCount(); ++i)
             image.rgba[i * 4 + 1] = image.rgba[i * 4 + 2] = image.rgba[i * 4];
     }
+    detail::convertExrToRec709(path, header, image);
 }
 
 void detail::writeAtomically(const fs::path& path, std::span<const unsigned char> bytes) {
@@ -959,13 +947,13 @@ void writePng(const fs::path& path, const Image8& image) {
 }
 
 void PngWriter::write(const fs::path& path, const Image8& image) {
-    requirePixels(path, image);
+    detail::requirePixels(path, image);
     const std::size_t size = encodePng(path, image, mRgb, mEncoded);
     writeAtomically(path, {mEncoded.bytes.get(), size});
 }
 
 void writeExr(const fs::path& path, const ImageF& image) {
-    requirePixels(path, image);
+    detail::requirePixels(path, image);
     const std::string bytes = encodeExr(path, image);
     writeAtomically(path, std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
 }

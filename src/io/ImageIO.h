@@ -1,6 +1,7 @@
 #pragma once
 // Image files in and out: OpenEXR, Radiance RGBE (.hdr) and PNG. Readers dispatch on the file's first bytes,
-// not on its name; writers are atomic (a reader never sees a half-written file).
+// not on its name; writers are atomic (a reader never sees a half-written file). Display images as 16-bit
+// PNG, TIFF and JPEG: io/DisplayImageIO.h.
 
 #include "core/Image.h"
 
@@ -35,7 +36,9 @@ struct ImageReadLimits {
 ///   the first part. Missing colour channels read 0 and a missing A reads 1; a luminance-only file (Y) is
 ///   copied to R, G and B, and luminance/chroma (Y, RY, BY) is converted to RGB. Returns the pixels of the
 ///   *data window*, its top-left corner at (0, 0); the display window is ignored. Values are kept as stored
-///   (negative, huge, NaN).
+///   (negative, huge, NaN), except that RGB whose `chromaticities` attribute names primaries or a white
+///   other than Rec.709 / D65 is converted to linear Rec.709 (a Bradford adaptation when the white differs;
+///   logged once per set of primaries).
 /// - Radiance RGBE, "-Y <h> +X <w>" orientation, flat or RLE scanlines; linear values, EXPOSURE lines
 /// ignored.
 /// - PNG, 8 or 16 bit, grey/RGB/palette, with or without alpha: colour decoded by the exact sRGB EOTF, alpha
@@ -124,6 +127,9 @@ public:
     void write(std::string_view text); ///< throws IoError (the temporary is then removed)
     void commit();                     ///< throws IoError (the temporary is then removed)
     [[nodiscard]] const std::filesystem::path& path() const { return mPath; }
+    /// Where the file is written until commit() (empty for a stream output): for a program that writes the
+    /// file itself (ffmpeg), after which commit() flushes it to disk and renames it over path().
+    [[nodiscard]] const std::filesystem::path& temporaryPath() const { return mTemporary; }
 
 private:
     void fail(const std::string& problem);

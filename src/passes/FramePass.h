@@ -45,7 +45,7 @@ enum class Resource : std::uint8_t {
     AmbientOcclusion, ///< lighting stage: visibility for indirect light
     ContactShadows,   ///< lighting stage: visibility for the sun
     DebugColor,       ///< a scene-value debug view (replaces the display image)
-    DisplayColor,     ///< RGBA8 display-referred image
+    DisplayColor,     ///< RGBA8 display-referred image (RGBA16 at output.bitDepth 16)
     /// lighting stage: the contact-shadow march's steps, when the contact-shadows-steps debug view shows them
     ContactShadowSteps,
     DofCoc,       ///< R16F: depth of field's signed circle of confusion in pixels (< 0 near, > 0 far)

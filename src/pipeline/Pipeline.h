@@ -107,9 +107,10 @@ public:
     /// inputs). Valid until the next call.
     const LightingOutputs& renderLighting(const FrameInputs& inputs, const FrameTime& time);
 
-    /// Runs one frame's post stage; returns the display image (RGBA8 holding sRGB-encoded values), valid
-    /// until the next call. Bad inputs never crash it: a null or empty colour returns a black 1x1 image and
-    /// other bad inputs are ignored for the frame; both are reported in status().inputErrors and logged once.
+    /// Runs one frame's post stage; returns the display image (sRGB-encoded values in RGBA8, or RGBA16 at
+    /// output.bitDepth 16), valid until the next call. Bad inputs never crash it: a null or empty colour
+    /// returns a black 1x1 image and other bad inputs are ignored for the frame; both are reported in
+    /// status().inputErrors and logged once.
     const Texture& execute(const FrameInputs& inputs, const FrameTime& time);
     /// The last frame's exposed scene-referred image just before tone mapping (RGBA32F), rendered on demand;
     /// when the frame showed a debug view of data (contact-shadows, contact-shadows-steps), its raw values.

@@ -126,6 +126,17 @@ TEST(Settings, OutOfRangeNamesRange) {
     EXPECT_NE(formatSettingsIssues(issues).find("[-20, 20]"), std::string::npos);
 }
 
+TEST(Settings, OutputBitDepthIsEightOrSixteen) {
+    Settings s;
+    EXPECT_EQ(s.output.bitDepth, 8);
+    EXPECT_TRUE(readSettingsJson(R"({"postEffects": {"output": {"bitDepth": 16}}})", s).empty());
+    EXPECT_EQ(s.output.bitDepth, 16);
+    EXPECT_TRUE(hasIssue(readSettingsJson(R"({"postEffects": {"output": {"bitDepth": 12}}})", s),
+                         SettingsIssueCode::Constraint, "postEffects.output.bitDepth"));
+    EXPECT_TRUE(hasIssue(readSettingsJson(R"({"postEffects": {"output": {"bitDepth": 32}}})", s),
+                         SettingsIssueCode::OutOfRange, "postEffects.output.bitDepth"));
+}
+
 TEST(Settings, BadEnumListsAllowedNames) {
     Settings s;
     const auto issues = readSettingsJson(R"({"postEffects": {"tonemapping": {"mode": "filmic"}}})", s);

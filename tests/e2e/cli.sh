@@ -39,7 +39,7 @@ expect 2 "out-of-range exposure" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/ba
 check "range named" contains "[-20, 20]"
 expect 2 "unknown key" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/bad.png" --set tonemapping.gamma=2
 check "unknown key named" contains "postEffects.tonemapping.gamma"
-expect 2 "unsupported output extension" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/out.jpg"
+expect 2 "unsupported output extension" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/out.bmp"
 check "no output for bad settings" test ! -e "$S/bad.png"
 expect 2 "output folder that does not exist" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/missing/dir/out.png"
 check "no partial output" test ! -e "$S/missing/dir/out.png"

@@ -55,10 +55,9 @@ bool isInputView(DebugView view) {
 } // namespace
 
 DebugViewPass::DebugViewPass()
-    : mSceneProgram(makeComputeProgram("passes/debug/debug_view.comp.glsl", bindingDefines()))
-    , mInputProgram(makeComputeProgram("passes/debug/debug_inputs.comp.glsl", bindingDefines()))
-    , mInputRawProgram(
-          makeComputeProgram("passes/debug/debug_inputs.comp.glsl", bindingDefines({{"RAW", "1"}})))
+    : mSceneProgram("passes/debug/debug_view.comp.glsl", {})
+    , mInputProgram("passes/debug/debug_inputs.comp.glsl", {})
+    , mInputRawProgram("passes/debug/debug_inputs.comp.glsl", {{"RAW", "1"}})
     , mSceneParameters("debug scene view parameters")
     , mInputParameters("debug input view parameters") {}
 
@@ -90,20 +89,36 @@ std::span<const ResourceUse> DebugViewPass::uses() const {
     }
 }
 
+void DebugViewPass::configure(const Settings& settings) {
+    mView = settings.debug.view;
+    if (!isSceneView(mView)) {
+        return;
+    }
+    const int bitDepth = settings.output.bitDepth;
+    if (!isInputView(mView)) {
+        mSceneProgram.prepare(bitDepth);
+    } else {
+        (isDataView(mView) ? mInputRawProgram : mInputProgram).prepare(bitDepth);
+    }
+}
+
 void DebugViewPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const int bitDepth = ctx.settings.output.bitDepth;
+    const GLenum format = displayFormat(bitDepth);
     PooledTexture& out =
-        resources.pool().acquire({.extent = ctx.extent, .format = GL_RGBA8, .debugName = "debug view"});
+        resources.pool().acquire({.extent = ctx.extent, .format = format, .debugName = "debug view"});
     const Extent e = ctx.extent;
     const bool raw = isDataView(mView);
-    // One read of the source and an RGBA8 write, plus the RGBA32F copy of a data view's values.
-    ScopedGpuTimer timer(ctx.timers, "debug view", double(e.width) * e.height * (raw ? 36 : 12));
+    // One read of the source and a display write, plus the RGBA32F copy of a data view's values.
+    const double bytes = (raw ? 32 : 8) + bytesPerTexel(format);
+    ScopedGpuTimer timer(ctx.timers, "debug view", double(e.width) * e.height * bytes);
     mRaw = nullptr;
     if (isInputView(mView)) {
-        bindInputView(ctx, resources, raw);
+        bindInputView(ctx, resources, raw, bitDepth);
     } else {
-        bindSceneView(ctx, resources);
+        bindSceneView(ctx, resources, bitDepth);
     }
-    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
     if (raw) {
         // The same values unclamped: what an EXR of the view holds (sceneReferred()).
         PooledTexture& values = resources.pool().acquire(
@@ -116,7 +131,7 @@ void DebugViewPass::execute(FrameContext& ctx, FrameResources& resources) {
     resources.bind(Resource::DebugColor, out.texture());
 }
 
-void DebugViewPass::bindSceneView(const FrameContext& ctx, const FrameResources& resources) {
+void DebugViewPass::bindSceneView(const FrameContext& ctx, const FrameResources& resources, int bitDepth) {
     const AutoExposureSettings& ae = ctx.settings.autoExposure;
     const Texture* scene = resources.texture(Resource::SceneColor);
     const Texture* bloom = resources.texture(Resource::Bloom);
@@ -128,7 +143,7 @@ void DebugViewPass::bindSceneView(const FrameContext& ctx, const FrameResources&
         } catch (...) { // logging must not take the frame down
         }
     }
-    const Program& p = mSceneProgram;
+    const Program& p = mSceneProgram.at(bitDepth);
     mSceneParameters.update({.view = int(mView),
                              .hasBloom = bloom ? 1 : 0,
                              .hasMask = mask ? 1 : 0,
@@ -148,7 +163,8 @@ void DebugViewPass::bindSceneView(const FrameContext& ctx, const FrameResources&
     glBindTextureUnit(2, bloom ? bloom->id() : scene->id());
 }
 
-void DebugViewPass::bindInputView(const FrameContext& ctx, const FrameResources& resources, bool raw) {
+void DebugViewPass::bindInputView(const FrameContext& ctx, const FrameResources& resources, bool raw,
+                                  int bitDepth) {
     const Resource source = mView == DebugView::Depth                ? Resource::LinearDepth
                             : mView == DebugView::Normals            ? Resource::Normals
                             : mView == DebugView::Motion             ? Resource::Motion
@@ -159,7 +175,7 @@ void DebugViewPass::bindInputView(const FrameContext& ctx, const FrameResources&
                             : mView == DebugView::VelocityTiles      ? Resource::VelocityTiles
                             : mView == DebugView::VolumetricLight    ? Resource::VolumetricLight
                                                                      : Resource::TaaDebug;
-    const Program& p = raw ? mInputRawProgram : mInputProgram;
+    const Program& p = (raw ? mInputRawProgram : mInputProgram).at(bitDepth);
     const Camera* camera = ctx.inputs.camera;
     mInputParameters.update({.view = int(mView),
                              .octahedral = ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 1 : 0,
@@ -172,7 +188,7 @@ void DebugViewPass::bindInputView(const FrameContext& ctx, const FrameResources&
 }
 
 HistogramOverlayPass::HistogramOverlayPass()
-    : mProgram(makeComputeProgram("passes/debug/debug_histogram.comp.glsl", bindingDefines()))
+    : mProgram("passes/debug/debug_histogram.comp.glsl", {})
     , mParameters("histogram overlay parameters") {}
 
 std::span<const ResourceUse> HistogramOverlayPass::uses() const {
@@ -183,18 +199,27 @@ std::span<const ResourceUse> HistogramOverlayPass::uses() const {
     return kUses;
 }
 
+void HistogramOverlayPass::configure(const Settings& settings) {
+    if (settings.debug.view == DebugView::Histogram) {
+        mProgram.prepare(settings.output.bitDepth);
+    }
+}
+
 void HistogramOverlayPass::execute(FrameContext& ctx, FrameResources& resources) {
-    PooledTexture& out = resources.pool().acquire(
-        {.extent = ctx.extent, .format = GL_RGBA8, .debugName = "histogram overlay"});
+    const int bitDepth = ctx.settings.output.bitDepth;
+    const GLenum format = displayFormat(bitDepth);
+    PooledTexture& out =
+        resources.pool().acquire({.extent = ctx.extent, .format = format, .debugName = "histogram overlay"});
     const Extent e = ctx.extent;
     const AutoExposureSettings& ae = ctx.settings.autoExposure;
-    // The display image read and written once (RGBA8); the histogram is 1 KB.
-    ScopedGpuTimer timer(ctx.timers, "histogram overlay", double(e.width) * e.height * 8);
+    // The display image read and written once; the histogram is 1 KB.
+    ScopedGpuTimer timer(ctx.timers, "histogram overlay",
+                         double(e.width) * e.height * 2 * bytesPerTexel(format));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
                      resources.buffer(Resource::ExposureState)->id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingHistogram,
                      resources.buffer(Resource::Histogram)->id());
-    const Program& p = mProgram;
+    const Program& p = mProgram.at(bitDepth);
     const int width = std::min(kPanelMaxWidth, std::max(e.width - 2 * kPanelMargin, 1));
     const int height = std::min(kPanelMaxHeight, std::max(e.height / 3, 1));
     mParameters.update({.panel = {float(kPanelMargin), float(kPanelMargin), float(width), float(height)},
@@ -204,7 +229,7 @@ void HistogramOverlayPass::execute(FrameContext& ctx, FrameResources& resources)
     mParameters.bind(kBindingParameters);
     p.use();
     glBindTextureUnit(0, resources.texture(Resource::DisplayColor)->id());
-    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
     dispatchPixels(e);
     imageWriteBarrier();
     resources.bind(Resource::DisplayColor, out.texture());

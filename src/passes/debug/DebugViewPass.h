@@ -5,6 +5,7 @@
 // image, drawn from the GPU histogram buffer, by HistogramOverlayPass.
 
 #include "core/Settings.h"
+#include "passes/DisplayProgram.h"
 #include "passes/FramePass.h"
 
 #include <cstddef>
@@ -64,7 +65,8 @@ public:
     [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
         return isSceneView(ctx.settings.debug.view);
     }
-    void configure(const Settings& settings) override { mView = settings.debug.view; }
+    /// Takes the view and builds the programs for output.bitDepth; throws GlError with the log.
+    void configure(const Settings& settings) override;
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
     /// The last run's values as they are (RGBA32F) for a view of data (contact shadows), else nullptr:
@@ -78,13 +80,13 @@ public:
 
 private:
     /// Bind the scene views' program and inputs (the dispatch follows).
-    void bindSceneView(const FrameContext& ctx, const FrameResources& resources);
+    void bindSceneView(const FrameContext& ctx, const FrameResources& resources, int bitDepth);
     /// Bind the input views' program (`raw`: the variant that also writes image unit 1) and inputs.
-    void bindInputView(const FrameContext& ctx, const FrameResources& resources, bool raw);
+    void bindInputView(const FrameContext& ctx, const FrameResources& resources, bool raw, int bitDepth);
 
-    Program mSceneProgram;
-    Program mInputProgram;
-    Program mInputRawProgram; ///< also writes the unclamped values (data views' EXR)
+    DisplayProgram mSceneProgram;
+    DisplayProgram mInputProgram;
+    DisplayProgram mInputRawProgram; ///< also writes the unclamped values (data views' EXR)
     ParameterBlock<DebugSceneViewParameters> mSceneParameters;
     ParameterBlock<DebugInputViewParameters> mInputParameters;
     DebugView mView = DebugView::None;
@@ -99,10 +101,12 @@ public:
     [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
         return ctx.settings.debug.view == DebugView::Histogram;
     }
+    /// Builds the program for output.bitDepth ahead of the first frame; throws GlError with the log.
+    void configure(const Settings& settings) override;
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
 private:
-    Program mProgram;
+    DisplayProgram mProgram;
     ParameterBlock<HistogramOverlayParameters> mParameters;
 };
 

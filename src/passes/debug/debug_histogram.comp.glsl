@@ -5,6 +5,7 @@
 // maps to the key value (green) and the one the current exposure maps to it (red). Binning as in
 // core/Metering.h.
 // A compute pass (8x8 groups, one pixel each, image store), like every full-screen pass.
+#include "passes/common/display_format.h.glsl"
 #include "passes/common/exposure.h.glsl"
 #include "passes/metering/metering.h.glsl"
 #include "passes/metering/metering_buffers.h.glsl"
@@ -12,7 +13,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uDisplay;
-layout(binding = 0, rgba8) uniform writeonly image2D uOutput;
+layout(binding = 0, DISPLAY_FORMAT) uniform writeonly image2D uOutput;
 
 // Mirrors photopic::HistogramOverlayParameters (passes/debug/DebugViewPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform HistogramOverlayParameters {

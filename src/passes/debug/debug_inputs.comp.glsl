@@ -2,12 +2,13 @@
 // motion vectors, as the pipeline sees them after decoding, and the lighting stage's contact shadows.
 // A compute pass (8x8 groups, one pixel each, image store); with RAW the same values also go, unclamped, to an
 // RGBA32F image (what an EXR of a data view holds).
+#include "passes/common/display_format.h.glsl"
 #include "passes/common/inputs.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uInput;
-layout(binding = 0, rgba8) uniform writeonly image2D uOutput;
+layout(binding = 0, DISPLAY_FORMAT) uniform writeonly image2D uOutput;
 #ifdef RAW
 layout(binding = 1, rgba32f) uniform writeonly image2D uRaw;
 #endif

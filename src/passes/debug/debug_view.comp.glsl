@@ -5,6 +5,7 @@
 // the metering weights.
 // A compute pass (8x8 groups, one pixel each, image store), like every full-screen pass.
 #include "passes/common/color.h.glsl"
+#include "passes/common/display_format.h.glsl"
 #include "passes/common/exposure.h.glsl"
 #include "passes/common/sanitize.h.glsl"
 #include "passes/metering/metering.h.glsl"
@@ -12,7 +13,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uScene;
-layout(binding = 0, rgba8) uniform writeonly image2D uOutput;
+layout(binding = 0, DISPLAY_FORMAT) uniform writeonly image2D uOutput;
 layout(binding = 1) uniform sampler2D uMask;
 layout(binding = 2) uniform sampler2D uBloom;
 

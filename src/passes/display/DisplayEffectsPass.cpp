@@ -5,7 +5,7 @@
 namespace photopic {
 
 DisplayEffectsPass::DisplayEffectsPass()
-    : mProgram(makeComputeProgram("passes/display/display_effects.comp.glsl", bindingDefines()))
+    : mProgram("passes/display/display_effects.comp.glsl", {})
     , mParameters("display effects parameters")
     , mBlack({.extent = {1, 1}, .format = GL_RGBA16F, .debugName = "black texel"}) {
     const float black[4] = {0, 0, 0, 1};
@@ -27,15 +27,21 @@ bool DisplayEffectsPass::enabled(const FrameContext& ctx) const {
     return flare || (ctx.tier.grain && s.grain.enabled) || s.vignette.enabled || s.dazzle.enabled;
 }
 
+void DisplayEffectsPass::configure(const Settings& settings) {
+    mProgram.prepare(settings.output.bitDepth);
+}
+
 void DisplayEffectsPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Texture& display = *resources.texture(Resource::DisplayColor);
     const Texture* flare = resources.texture(Resource::LensFlare);
     const Texture* glare = resources.texture(Resource::Bloom);
+    const int bitDepth = ctx.settings.output.bitDepth;
+    const GLenum format = displayFormat(bitDepth);
     PooledTexture& out = resources.pool().acquire(
-        {.extent = ctx.extent, .format = GL_RGBA8, .debugName = "display effects output"});
+        {.extent = ctx.extent, .format = format, .debugName = "display effects output"});
     const Settings& s = ctx.settings;
     const Extent e = ctx.extent;
-    double bytes = double(e.width) * e.height * 8.0;
+    double bytes = double(e.width) * e.height * 2.0 * bytesPerTexel(format);
     for (const Texture* t : {flare, glare}) {
         if (t) {
             bytes += double(t->extent().width) * t->extent().height * bytesPerTexel(t->format());
@@ -58,13 +64,13 @@ void DisplayEffectsPass::execute(FrameContext& ctx, FrameResources& resources) {
          .grainIntensity = s.grain.intensity,
          .frame = std::uint32_t(ctx.time.frameIndex)});
     mParameters.bind(kBindingParameters);
-    mProgram.use();
+    mProgram.at(bitDepth).use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
                      resources.buffer(Resource::ExposureState)->id());
     glBindTextureUnit(0, display.id());
     glBindTextureUnit(1, flare ? flare->id() : mBlack.id());
     glBindTextureUnit(2, glare ? glare->id() : mBlack.id());
-    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
     dispatchPixels(e);
     imageWriteBarrier();
     resources.bind(Resource::DisplayColor, out.texture());

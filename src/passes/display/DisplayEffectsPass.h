@@ -1,8 +1,9 @@
 #pragma once
 // Display-domain effects in one pass (after tone mapping; fused because full-resolution traffic is the cost):
-// chromatic aberration, lens flare composite, dazzle, vignette and grain on the tone-mapped RGBA8 image, one
-// read and one write.
+// chromatic aberration, lens flare composite, dazzle, vignette and grain on the tone-mapped display image,
+// one read and one write.
 
+#include "passes/DisplayProgram.h"
 #include "passes/FramePass.h"
 
 #include <cstddef>
@@ -40,10 +41,12 @@ public:
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
     /// Any of its effects is on (the lens flare counts when its own pass can run).
     [[nodiscard]] bool enabled(const FrameContext& ctx) const override;
+    /// Builds the program for output.bitDepth ahead of the first frame; throws GlError with the log.
+    void configure(const Settings& settings) override;
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
 private:
-    Program mProgram;
+    DisplayProgram mProgram;
     ParameterBlock<DisplayEffectsParameters> mParameters;
     Texture mBlack; ///< bound where an optional input is absent, so every sampler has a complete texture
 };

@@ -13,13 +13,14 @@
 //    weighted 4 y (1 - y) so it is strongest in the mid-tones and leaves black and white clean.
 // A compute pass (8x8 groups, one pixel each, image store), like every full-screen pass.
 #include "passes/common/color.h.glsl"
+#include "passes/common/display_format.h.glsl"
 #include "passes/common/exposure.h.glsl"
 #include "passes/common/noise.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uDisplay; // RGBA8, sRGB-encoded
-layout(binding = 0, rgba8) uniform writeonly image2D uOutput;
+layout(binding = 0) uniform sampler2D uDisplay; // RGBA8 or RGBA16, sRGB-encoded
+layout(binding = 0, DISPLAY_FORMAT) uniform writeonly image2D uOutput;
 layout(binding = 1) uniform sampler2D uFlareTex;  // exposed HDR flare, or a black texel
 layout(binding = 2) uniform sampler2D uGlareTex; // exposed HDR bloom, or a black texel
 // Mirrors photopic::DisplayEffectsParameters (passes/display/DisplayEffectsPass.h), std140.

@@ -10,29 +10,35 @@ constexpr ResourceUse kUses[] = {{Resource::DisplayColor, Access::Read},
 } // namespace
 
 FxaaPass::FxaaPass()
-    : mProgram(makeComputeProgram("passes/fxaa/fxaa.comp.glsl", bindingDefines()))
+    : mProgram("passes/fxaa/fxaa.comp.glsl", {})
     , mParameters("fxaa parameters") {}
 
 std::span<const ResourceUse> FxaaPass::uses() const {
     return kUses;
 }
 
+void FxaaPass::configure(const Settings& settings) {
+    mProgram.prepare(settings.output.bitDepth);
+}
+
 void FxaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Texture& display = *resources.texture(Resource::DisplayColor);
+    const int bitDepth = ctx.settings.output.bitDepth;
+    const GLenum format = displayFormat(bitDepth);
     PooledTexture& out =
-        resources.pool().acquire({.extent = ctx.extent, .format = GL_RGBA8, .debugName = "fxaa output"});
+        resources.pool().acquire({.extent = ctx.extent, .format = format, .debugName = "fxaa output"});
     const Extent e = ctx.extent;
     const FxaaSettings& s = ctx.settings.fxaa;
-    // One RGBA8 read (the 3x3 and the searches hit the cache) and one RGBA8 write.
-    ScopedGpuTimer timer(ctx.timers, "fxaa", double(e.width) * e.height * 8.0);
+    // One display read (the 3x3 and the searches hit the cache) and one display write.
+    ScopedGpuTimer timer(ctx.timers, "fxaa", double(e.width) * e.height * 2.0 * bytesPerTexel(format));
     mParameters.update({.texel = {1.0f / float(e.width), 1.0f / float(e.height)},
                         .subpix = s.subpix,
                         .edgeThreshold = s.edgeThreshold,
                         .edgeThresholdMin = s.edgeThresholdMin});
     mParameters.bind(kBindingParameters);
-    mProgram.use();
+    mProgram.at(bitDepth).use();
     glBindTextureUnit(0, display.id());
-    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
     glDispatchCompute(GLuint((e.width + 7) / 8), GLuint((e.height + 7) / 8), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);

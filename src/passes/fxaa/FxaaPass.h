@@ -1,7 +1,8 @@
 #pragma once
-// FXAA 3.11 (quality path) on the display-referred RGBA8 image, after tone mapping: anti-aliasing judges
-// edges by perceived contrast, which display-referred values carry.
+// FXAA 3.11 (quality path) on the display-referred image (RGBA8 or RGBA16), after tone mapping: anti-aliasing
+// judges edges by perceived contrast, which display-referred values carry.
 
+#include "passes/DisplayProgram.h"
 #include "passes/FramePass.h"
 
 #include <cstddef>
@@ -28,10 +29,12 @@ public:
     [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
         return ctx.tier.fxaa && ctx.settings.antiAliasing() == AntiAliasing::Fxaa;
     }
+    /// Builds the program for output.bitDepth ahead of the first frame; throws GlError with the log.
+    void configure(const Settings& settings) override;
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
 private:
-    Program mProgram;
+    DisplayProgram mProgram;
     ParameterBlock<FxaaParameters> mParameters;
 };
 

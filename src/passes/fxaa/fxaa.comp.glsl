@@ -13,11 +13,12 @@
 // groups, one pixel each, image store): on GPUs whose raster units are a small part of the chip it runs
 // at the memory's pace where a full-screen triangle does not.
 #include "passes/common/color.h.glsl"
+#include "passes/common/display_format.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uInput;
-layout(binding = 0, rgba8) uniform writeonly image2D uOutput;
+layout(binding = 0, DISPLAY_FORMAT) uniform writeonly image2D uOutput;
 // Mirrors photopic::FxaaParameters (passes/fxaa/FxaaPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform FxaaParameters {
     vec2 uTexel; // 1 / size

@@ -13,8 +13,12 @@ constexpr ResourceUse kHdrUses[] = {{Resource::SceneColor, Access::Read},
                                     {Resource::ExposureState, Access::Read},
                                     {Resource::SceneColor, Access::Write}};
 
+ShaderDefines domainVariant(SmaaPass::Domain domain) {
+    return domain == SmaaPass::Domain::Hdr ? ShaderDefines{{"SMAA_HDR", "1"}} : ShaderDefines{};
+}
+
 ShaderDefines domainDefines(SmaaPass::Domain domain) {
-    return domain == SmaaPass::Domain::Hdr ? bindingDefines({{"SMAA_HDR", "1"}}) : bindingDefines();
+    return bindingDefines(domainVariant(domain));
 }
 
 GLuint groups(int size) {
@@ -41,7 +45,7 @@ SmaaPass::SmaaPass(Domain domain)
     : mDomain(domain)
     , mEdges(makeComputeProgram("passes/smaa/smaa_edges.comp.glsl", domainDefines(domain)))
     , mWeights(makeComputeProgram("passes/smaa/smaa_weights.comp.glsl", domainDefines(domain)))
-    , mBlend(makeComputeProgram("passes/smaa/smaa_blend.comp.glsl", domainDefines(domain)))
+    , mBlend("passes/smaa/smaa_blend.comp.glsl", domainVariant(domain))
     , mParameters("smaa parameters") {
     const smaa::AreaTables& areas = smaa::areaTables();
     mAreaOrtho = makeTable(smaa::kOrthoSize, smaa::kOrthoSize, GL_RG8, GL_RG, GL_UNSIGNED_BYTE,
@@ -57,14 +61,21 @@ std::span<const ResourceUse> SmaaPass::uses() const {
                                       : std::span<const ResourceUse>(kHdrUses);
 }
 
+void SmaaPass::configure(const Settings& settings) {
+    if (mDomain == Domain::Display) {
+        mBlend.prepare(settings.output.bitDepth);
+    }
+}
+
 void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Extent e = ctx.extent;
     const double pixels = double(e.width) * e.height;
     const bool hdr = mDomain == Domain::Hdr;
     const smaa::Preset preset = smaa::preset(int(ctx.settings.smaa.quality));
     const Resource colorResource = hdr ? Resource::SceneColor : Resource::DisplayColor;
-    const GLenum colorFormat = hdr ? GL_RGBA16F : GL_RGBA8;
-    const double colorBytes = hdr ? 8.0 : 4.0;
+    const int bitDepth = hdr ? 8 : ctx.settings.output.bitDepth;
+    const GLenum colorFormat = hdr ? GL_RGBA16F : displayFormat(bitDepth);
+    const double colorBytes = bytesPerTexel(colorFormat);
     const Texture& color = *resources.texture(colorResource);
     // The weights step fetches two edge pixels at once through bilinear filtering.
     const Texture& edges =
@@ -114,7 +125,7 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     {
         // Colour and weights in (the neighbours hit the cache), colour out.
         ScopedGpuTimer timer(ctx.timers, prefix + "blend", pixels * (2.0 * colorBytes + 4.0));
-        mBlend.use();
+        mBlend.at(bitDepth).use();
         glBindTextureUnit(0, color.id());
         glBindTextureUnit(1, weights.id());
         glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, colorFormat);

@@ -12,6 +12,7 @@
 //    uses), sqrt(l E / (1 + l E)), so the thresholds mean what they mean after tone mapping; the blend mixes
 //    scene light, as a supersampled render would.
 
+#include "passes/DisplayProgram.h"
 #include "passes/FramePass.h"
 
 #include <cstdint>
@@ -48,6 +49,8 @@ public:
         }
         return aa == AntiAliasing::Smaa || (aa == AntiAliasing::TaaSmaa && !ctx.hdr);
     }
+    /// Display domain: builds the blend program for output.bitDepth ahead of the first frame; throws GlError.
+    void configure(const Settings& settings) override;
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
     /// The tables as the GPU holds them (tests compare them with the CPU generator).
@@ -59,7 +62,7 @@ private:
     Domain mDomain;
     Program mEdges;
     Program mWeights;
-    Program mBlend;
+    DisplayProgram mBlend; ///< the HDR domain only ever uses its 8-bit build (which stores RGBA16F)
     Texture mAreaOrtho;
     Texture mAreaDiag;
     Texture mSearch;

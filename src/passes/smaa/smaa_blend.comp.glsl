@@ -5,6 +5,7 @@
 // linear values (the reference reads its input as sRGB for the same reason) and encoded again; in the HDR
 // placement (SMAA_HDR) the input is linear scene light already and the output stays RGBA16F.
 #include "passes/common/color.h.glsl"
+#include "passes/common/display_format.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -15,7 +16,7 @@ layout(binding = 0, rgba16f) uniform writeonly image2D uOutput;
 vec3 toLinear(vec3 c) { return c; }
 vec3 fromLinear(vec3 c) { return c; }
 #else
-layout(binding = 0, rgba8) uniform writeonly image2D uOutput;
+layout(binding = 0, DISPLAY_FORMAT) uniform writeonly image2D uOutput;
 vec3 toLinear(vec3 c) { return srgbDecode(c); }
 vec3 fromLinear(vec3 c) { return srgbEncode(c); }
 #endif

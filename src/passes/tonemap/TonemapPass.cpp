@@ -2,6 +2,7 @@
 
 #include "core/ColorGrading.h"
 #include "passes/Bindings.h"
+#include "passes/DisplayProgram.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -25,13 +26,19 @@ std::span<const ResourceUse> TonemapPass::uses() const {
     return kUses;
 }
 
-const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene) {
-    // The scene-referred output stops before the curve: one program serves every mode.
+const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene,
+                                    bool display16) {
+    // The scene-referred output stops before the curve: one program serves every mode and depth.
     const int curve = scene ? 0 : int(mode);
-    const int key = curve * 16 + (glow ? 8 : 0) + (bloom ? 4 : 0) + (grade ? 2 : 0) + (scene ? 1 : 0);
+    display16 = display16 && !scene;
+    const int key = (display16 ? 256 : 0) + curve * 16 + (glow ? 8 : 0) + (bloom ? 4 : 0) + (grade ? 2 : 0) +
+                    (scene ? 1 : 0);
     auto it = mPrograms.find(key);
     if (it == mPrograms.end()) {
         ShaderDefines defines{{"TONEMAP_MODE", std::to_string(curve)}};
+        if (display16) {
+            defines.emplace_back("DISPLAY_16", "1");
+        }
         if (bloom) {
             defines.emplace_back("BLOOM", "1");
         }
@@ -52,20 +59,25 @@ const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool
 void TonemapPass::configure(const Settings& settings) {
     const ToneMappingSettings& tonemapping = settings.tonemapping;
     const ColorGradingSettings& grading = settings.colorGrading;
+    const bool display16 = settings.output.bitDepth == 16;
     if (legacyGlow(effectiveTier(mCaps, settings.quality), settings)) {
-        variant(tonemapping.mode, false, true, grading.enabled, false);
+        variant(tonemapping.mode, false, true, grading.enabled, false, display16);
         return;
     }
     for (const bool bloom : {false, true}) {
-        variant(tonemapping.mode, bloom, false, grading.enabled, false);
+        variant(tonemapping.mode, bloom, false, grading.enabled, false, display16);
     }
 }
 
 void TonemapPass::dispatch(const Program& program, const Inputs& in, const Texture& target) {
     const Extent extent = target.extent();
+    // The dither hides 8-bit steps (1/255 apart). At 16 bits a step is 1/257 of that, far below what a
+    // display or an eye resolves, so there is no banding to hide; noise scaled to that step would only make
+    // the file compress worse, and without it a 16-bit image is the same from frame to frame.
+    const bool dither = in.output->dither && in.output->bitDepth == 8;
     TonemapParameters parameters{.whitePoint = in.tonemapping->whitePoint,
                                  .agxLook = int(in.tonemapping->agxLook),
-                                 .dither = in.output->dither ? 1 : 0,
+                                 .dither = dither ? 1 : 0,
                                  .frame = std::uint32_t(in.frameIndex)};
     if (in.bloom) {
         parameters.bloomAdditive = in.bloomSettings->mode == BloomMode::Threshold ? 1 : 0;
@@ -120,17 +132,20 @@ void TonemapPass::execute(FrameContext& ctx, FrameResources& resources) {
                     .grading = &ctx.settings.colorGrading,
                     .frameIndex = ctx.time.frameIndex,
                     .timers = ctx.timers};
-    PooledTexture& out =
-        resources.pool().acquire({.extent = ctx.extent, .format = GL_RGBA8, .debugName = "display"});
+    const int bitDepth = ctx.settings.output.bitDepth;
+    PooledTexture& out = resources.pool().acquire(
+        {.extent = ctx.extent, .format = displayFormat(bitDepth), .debugName = "display"});
     const Extent e = ctx.extent;
-    double bytes = double(e.width) * e.height * (bytesPerTexel(in.scene->format()) + 4);
+    double bytes = double(e.width) * e.height *
+                   (bytesPerTexel(in.scene->format()) + bytesPerTexel(out.texture().format()));
     if (in.bloom) {
         bytes +=
             double(in.bloom->extent().width) * in.bloom->extent().height * bytesPerTexel(in.bloom->format());
     }
     ScopedGpuTimer timer(in.timers, "composite + grade + tonemap", bytes);
     const bool grade = in.grading && in.grading->enabled;
-    dispatch(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, false), in, out.texture());
+    dispatch(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, false, bitDepth == 16), in,
+             out.texture());
     resources.bind(Resource::DisplayColor, out.texture());
 }
 
@@ -141,7 +156,7 @@ const Texture& TonemapPass::renderScene(const Inputs& in) {
     }
     DebugGroup group("scene-referred output");
     const bool grade = in.grading && in.grading->enabled;
-    dispatch(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, true), in, mScene);
+    dispatch(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, true, false), in, mScene);
     return mScene;
 }
 

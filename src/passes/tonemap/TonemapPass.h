@@ -40,7 +40,8 @@ static_assert(offsetof(TonemapParameters, frame) == 12 && offsetof(TonemapParame
               offsetof(TonemapParameters, lift) == 112 && offsetof(TonemapParameters, invGamma) == 128 &&
               offsetof(TonemapParameters, gain) == 144);
 
-/// The uber pass: exposure, bloom composite, HDR grading, tone curve, sRGB, dither -> RGBA8 display image;
+/// The uber pass: exposure, bloom composite, HDR grading, tone curve, sRGB, dither -> RGBA8 display image
+/// (RGBA16 at output.bitDepth 16);
 /// or, as `renderScene`, the composited and graded scene-referred image just before the curve (RGBA32F) for
 /// EXR output.
 class TonemapPass final : public FramePass {
@@ -70,13 +71,14 @@ public:
     const Texture& renderScene(const Inputs& in);
 
 private:
-    /// One dispatch of `program` over `target` (RGBA8 display, or RGBA32F scene-referred output).
+    /// One dispatch of `program` over `target` (RGBA8 or RGBA16 display, or RGBA32F scene-referred output).
     void dispatch(const Program& program, const Inputs& in, const Texture& target);
-    /// One program per (curve, bloom, grading, scene output): the curve and the switches are #defines, not
+    /// One program per (curve, bloom, grading, scene output, display depth): the curve and the switches are
+    /// #defines, not
     /// uniforms. Mesa llvmpipe executes every case of a switch on a uniform under a SIMD mask, so a runtime
     /// curve switch cost all eleven curves per pixel (1920x1080, --sync wall time: 280 ms against 49 ms for
     /// a fixed curve); on a GPU the branch is uniform but registers are allocated for the costliest case.
-    const Program& variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene);
+    const Program& variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene, bool display16);
 
     std::map<int, Program> mPrograms; ///< by variant key (see variant())
     ParameterBlock<TonemapParameters> mParameters;

@@ -6,10 +6,12 @@
 // (passes/tonemap/tonecurves.h.glsl mirrors core/ToneCurves.cpp), encodes sRGB, dithers by +-1 LSB (TPDF).
 // With OUTPUT_SCENE defined it stops before the curve and writes the graded scene-referred value (EXR output).
 // Variants are #defines, never uniform branches (TonemapPass.h: llvmpipe runs every case of a uniform switch):
-// TONEMAP_MODE (static_cast<int>(ToneMapper)), BLOOM, GLOW (the legacy tier's glow), GRADE, OUTPUT_SCENE.
-// A compute pass (8x8 groups, one pixel each, image store into RGBA8, or RGBA32F for OUTPUT_SCENE): on GPUs
-// whose raster units are a small part of the chip a full-screen triangle runs far below the memory's pace.
+// TONEMAP_MODE (static_cast<int>(ToneMapper)), BLOOM, GLOW (the legacy tier's glow), GRADE, OUTPUT_SCENE,
+// DISPLAY_16 (RGBA16 display storage).
+// A compute pass (8x8 groups, one pixel each, image store into RGBA8 or RGBA16, or RGBA32F for OUTPUT_SCENE):
+// on GPUs whose raster units are a small part of the chip a full-screen triangle runs far below the memory's pace.
 #include "passes/common/color.h.glsl"
+#include "passes/common/display_format.h.glsl"
 #include "passes/common/exposure.h.glsl"
 #include "passes/common/noise.h.glsl"
 #include "passes/common/sanitize.h.glsl"
@@ -21,7 +23,7 @@ layout(binding = 0) uniform sampler2D uScene;
 #ifdef OUTPUT_SCENE
 layout(binding = 0, rgba32f) uniform writeonly image2D uOutput;
 #else
-layout(binding = 0, rgba8) uniform writeonly image2D uOutput;
+layout(binding = 0, DISPLAY_FORMAT) uniform writeonly image2D uOutput;
 #endif
 #ifdef BLOOM
 layout(binding = 1) uniform sampler2D uBloom;

@@ -1,0 +1,151 @@
+// output.bitDepth 16: the display domain (tone mapping and every pass after it) stores RGBA16, so a smooth
+// ramp comes back with far more than 256 levels, and the same picture as the 8-bit path within its
+// quantisation and dither.
+
+#include "GlTest.h"
+
+#include "gl/StateScope.h"
+#include "gl/TextureIo.h"
+#include "pipeline/Pipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace photopic::test {
+
+namespace {
+
+/// 64x48 pixels, each a different grey in raster order from 0 to 1: 3072 levels in.
+ImageF greyRamp() {
+    ImageF image(64, 48);
+    const float last = float(image.pixelCount() - 1);
+    for (std::size_t i = 0; i < image.pixelCount(); ++i) {
+        const float v = float(i) / last;
+        image.rgba[i * 4 + 0] = v;
+        image.rgba[i * 4 + 1] = v;
+        image.rgba[i * 4 + 2] = v;
+        image.rgba[i * 4 + 3] = 1.0f;
+    }
+    return image;
+}
+
+struct Rendered {
+    Image8 display8;
+    Image16 display16;
+};
+
+/// The ramp through a pipeline at 8 and at 16 bits, everything else as `settings` says.
+Rendered renderBoth(Settings settings) {
+    settings.tonemapping.mode = ToneMapper::Linear; // display = the input: levels in, levels out
+    settings.bloom.enabled = false;
+    const ImageF input = greyRamp();
+    Rendered out;
+    for (const int bits : {8, 16}) {
+        settings.output.bitDepth = bits;
+        Pipeline pipeline({.settings = settings});
+        const GlStateScope hostState;
+        const Texture texture = makeTexture(input, "ramp");
+        const Texture& display = pipeline.execute({.color = &texture}, {});
+        EXPECT_EQ(display.format(), GLenum(bits == 16 ? GL_RGBA16 : GL_RGBA8));
+        if (bits == 16) {
+            out.display16 = readTexture16(display);
+        } else {
+            out.display8 = readTexture8(display);
+        }
+    }
+    return out;
+}
+
+std::size_t distinctRedLevels(const Image16& image) {
+    std::set<std::uint16_t> levels;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+        levels.insert(image.rgba[i]);
+    }
+    return levels.size();
+}
+
+/// Largest and mean |16-bit - 8-bit| over RGB, in 8-bit code values.
+std::pair<double, double> difference(const Rendered& r) {
+    double largest = 0.0;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < r.display8.rgba.size(); ++i) {
+        if (i % 4 == 3) {
+            continue;
+        }
+        const double d = std::abs(double(r.display16.rgba[i]) / 65535.0 - double(r.display8.rgba[i]) / 255.0);
+        largest = std::max(largest, d * 255.0);
+        sum += d * 255.0;
+    }
+    return {largest, sum / (double(r.display8.rgba.size()) * 0.75)};
+}
+
+} // namespace
+
+TEST_F(GlTest, SixteenBitDisplayHasMoreThan256LevelsAndMatchesEightBit) {
+    const Rendered r = renderBoth(Settings{}); // the 8-bit side dithered, as by default
+    ASSERT_EQ(r.display16.width, 64);
+    ASSERT_EQ(r.display16.height, 48);
+    // 3072 greys in; the sRGB encode spreads them over the code values, merging a few in the highlights.
+    EXPECT_GT(distinctRedLevels(r.display16), 2000u);
+    const auto [largest, mean] = difference(r);
+    // The 8-bit value is the 16-bit one rounded (half a code value) after a TPDF dither of up to one code
+    // value either way: 1.5 at most, 1/255 of rounding plus the dither's tolerance.
+    EXPECT_LE(largest, 1.5 + 1e-3);
+    EXPECT_LT(mean, 0.75);
+}
+
+TEST_F(GlTest, SixteenBitDisplayIsNotDithered) {
+    Settings settings;
+    settings.output.dither = true;
+    const Rendered r = renderBoth(settings);
+    // Without a dither the ramp is monotonic in raster order: noise of even one 16-bit step would break it
+    // somewhere over 3072 pixels.
+    int reversals = 0;
+    for (std::size_t i = 4; i < r.display16.rgba.size(); i += 4) {
+        reversals += r.display16.rgba[i] < r.display16.rgba[i - 4];
+    }
+    EXPECT_EQ(reversals, 0);
+}
+
+TEST_F(GlTest, EveryDisplayPassKeepsSixteenBits) {
+    struct Case {
+        std::string name;
+        Settings settings;
+    };
+    std::vector<Case> cases(4);
+    cases[0].name = "fxaa";
+    cases[0].settings.aa.mode = AntiAliasing::Fxaa;
+    cases[1].name = "smaa";
+    cases[1].settings.aa.mode = AntiAliasing::Smaa;
+    cases[2].name = "vignette";
+    cases[2].settings.vignette.enabled = true;
+    cases[3].name = "histogram overlay";
+    cases[3].settings.debug.view = DebugView::Histogram;
+    for (Case& c : cases) {
+        c.settings.output.dither = false;
+        const Rendered r = renderBoth(c.settings);
+        // Each pass reads and writes RGBA16: a pass left at RGBA8 would cut the ramp to at most 256 levels.
+        EXPECT_GT(distinctRedLevels(r.display16), 1000u) << c.name;
+        // Undithered, the 8-bit image is rounded twice, half a code value each time: where the tone map
+        // stores the display image and where the pass stores its result (of an input already rounded).
+        EXPECT_LE(difference(r).first, 1.5 + 1e-3) << c.name;
+    }
+}
+
+TEST_F(GlTest, SixteenBitSceneDebugViewIsSixteenBits) {
+    Settings settings;
+    settings.debug.view = DebugView::Luma;
+    settings.output.bitDepth = 16;
+    Pipeline pipeline({.settings = settings});
+    const GlStateScope hostState;
+    const Texture texture = makeTexture(greyRamp(), "ramp");
+    const Texture& display = pipeline.execute({.color = &texture}, {});
+    EXPECT_EQ(display.format(), GLenum(GL_RGBA16));
+    EXPECT_GT(distinctRedLevels(readTexture16(display)), 1000u); // luma as grey: the ramp again
+}
+
+} // namespace photopic::test
