@@ -68,10 +68,23 @@ std::string telemetryCsv(const std::vector<ExposureTelemetry>& rows, float dt,
 
 namespace fs = std::filesystem;
 
+Settings presetLook(const std::string& name) {
+    std::optional<Settings> look = Settings::preset(name);
+    if (!look) {
+        throw InputError("--preset: " + unknownPresetMessage(name));
+    }
+    return *look;
+}
+
 Settings resolveSettings(const SettingsSources& sources, Settings base) {
     Settings settings = std::move(base);
+    if (!sources.preset.empty()) {
+        settings.applyLook(presetLook(sources.preset));
+    }
     if (!sources.file.empty()) {
-        settings = loadSettingsFile(sources.file, std::move(settings));
+        // The command line's preset wins over the file's; the file's other keys still land on top of it.
+        settings = loadSettingsFile(sources.file, std::move(settings),
+                                    sources.preset.empty() ? DocumentPreset::Apply : DocumentPreset::Ignore);
     }
     if (!sources.tonemap.empty()) {
         applySettingsOverride(settings, "tonemapping.mode=" + sources.tonemap);
@@ -515,7 +528,8 @@ int runImage(const ImageOptions& options) {
     if (options.output.empty()) {
         throw InputError("image: an output is required (-o FILE, FOLDER/, PATTERN or -), or --info");
     }
-    const Settings settings = resolveSettings(options.settings);
+    // Photographs get the stills look unless --preset or the settings file names another.
+    const Settings settings = resolveSettings(options.settings, Settings::stills());
     std::FILE* const console = consoleFor(options);
     // Every output is checked before any work; a run that fails takes back what it wrote, the frames it
     // had already written included.
@@ -587,13 +601,17 @@ int runImage(const ImageOptions& options) {
     return kOk;
 }
 
-int runSettingsDefaults() {
-    std::fputs(settingsToJson(Settings{}).c_str(), stdout);
+int runSettingsDefaults(const std::string& preset) {
+    std::fputs(settingsToJson(preset.empty() ? Settings{} : presetLook(preset)).c_str(), stdout);
     return kOk;
 }
 
-int runSettingsCheck(const fs::path& file) {
-    const Settings settings = loadSettingsFile(file); // throws SettingsError listing every issue -> exit 2
+int runSettingsCheck(const fs::path& file, const std::string& preset) {
+    // Throws SettingsError listing every issue (an unknown "preset" among them) -> exit 2.
+    SettingsSources sources;
+    sources.preset = preset;
+    sources.file = file;
+    const Settings settings = resolveSettings(sources);
     (void)settings;
     std::printf("%s: valid\n", file.string().c_str());
     return kOk;

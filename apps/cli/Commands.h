@@ -21,8 +21,10 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-/// Settings from `base`, then --settings FILE over it, then the shorthand flags, then each --set in order.
+/// Settings from `base` with the preset's look (--preset NAME, else the file's "preset", else the command's
+/// own), then --settings FILE's other keys over it, then the shorthand flags, then each --set in order.
 struct SettingsSources {
+    std::string preset; ///< --preset NAME (presetNames()); empty: the file's, else none
     std::filesystem::path file;
     std::string tonemap;
     std::optional<float> exposure;
@@ -94,10 +96,15 @@ int runScene(const SceneOptions& options);
 /// GL and capability report; with settings, also the quality tier and the path frames would take.
 int runInfo(bool forceLdr, const SettingsSources& settings);
 int runImage(const ImageOptions& options);
-int runSettingsDefaults();
-int runSettingsCheck(const std::filesystem::path& file);
+/// The look of preset `name` (presetNames()); throws InputError listing the presets when there is none.
+Settings presetLook(const std::string& name);
+/// `photopic settings --defaults`: every field of the defaults with preset `preset`'s look (none: empty).
+int runSettingsDefaults(const std::string& preset);
+/// `photopic settings --check FILE`: with `preset`, the file over that preset's look, as --preset reads it.
+int runSettingsCheck(const std::filesystem::path& file, const std::string& preset);
+/// `demo --images`: every HDR image in `dataDir` through three tone curves, with `look`'s look.
 int runDemo(const std::filesystem::path& dataDir, const std::filesystem::path& outDir,
-            std::int64_t maxPixels = kDefaultMaxPixels);
+            std::int64_t maxPixels = kDefaultMaxPixels, const Settings& look = {});
 
 /// Reads an input image, as bad input (InputError, exit 2) when it cannot be.
 ImageF readInput(const std::filesystem::path& path, std::int64_t maxPixels);

@@ -117,7 +117,10 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
 
     HeadlessContext context;
     TabletopScene scene;
-    const Settings settings = scene.defaultSettings(); // subject metering, the eye-lag defaults
+    Settings settings = scene.defaultSettings(); // subject metering, the eye-lag defaults
+    if (!options.preset.empty()) {
+        settings.applyLook(presetLook(options.preset));
+    }
     const AutoExposureSettings& ae = settings.autoExposure;
     Pipeline pipeline({.settings = settings, .keepTelemetryHistory = true});
     scene.resize({options.width, options.height});
