@@ -455,11 +455,31 @@ std::unique_ptr<Pipeline> makeImagePipeline(const PipelineCreateInfo& createInfo
     }
 }
 
+/// The OpenColorIO display/view transform when --ocio-* asks for it, its config and names checked before
+/// any output exists. It makes display images, so every output must be one (PNG).
+std::optional<OcioDisplay> ocioDisplayFor(const ImageOptions& options) {
+    if (!options.ocio.requested()) {
+        return std::nullopt;
+    }
+    if (lowerExtension(options.output) == ".exr" || options.format == "exr") {
+        throw InputError(fmt::format("output {}: --ocio-display/--ocio-view make the display image (PNG); "
+                                     "an EXR output holds the scene-referred image, which they do not change",
+                                     options.output.string()));
+    }
+    OcioDisplay ocio(options.ocio);
+    logInfo("display image: {}", ocio.description());
+    return ocio;
+}
+
 /// Reads the frame's result back into `image`: the scene-referred image for an .exr `out`, else the display
-/// image.
-void readBack(Pipeline& pipeline, const Texture& display, const fs::path& out, FrameImage& image) {
+/// image (with `ocio`, its transform of the scene-referred image).
+void readBack(Pipeline& pipeline, const Texture& display, const fs::path& out, const OcioDisplay* ocio,
+              FrameImage& image) {
     if (lowerExtension(out) == ".exr") {
         readTextureF(pipeline.sceneReferred(), image.scene);
+    } else if (ocio != nullptr) {
+        readTextureF(pipeline.sceneReferred(), image.scene);
+        image.display = ocio->apply(image.scene);
     } else {
         readTexture8(display, image.display);
     }
@@ -530,6 +550,7 @@ int runImage(const ImageOptions& options) {
     }
     // Photographs get the stills look unless --preset or the settings file names another.
     const Settings settings = resolveSettings(options.settings, Settings::stills());
+    const std::optional<OcioDisplay> ocio = ocioDisplayFor(options);
     std::FILE* const console = consoleFor(options);
     // Every output is checked before any work; a run that fails takes back what it wrote, the frames it
     // had already written included.
@@ -582,7 +603,7 @@ int runImage(const ImageOptions& options) {
         const Texture& display = pipeline->execute(frameInputs, time);
         const fs::path& out = outPaths[i];
         FrameImage image = writer.storage();
-        readBack(*pipeline, display, out, image);
+        readBack(*pipeline, display, out, ocio ? &*ocio : nullptr, image);
         if (telemetry) {
             telemetry->take(*pipeline, i, i + 1 == inputs.size());
         }

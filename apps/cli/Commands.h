@@ -2,6 +2,8 @@
 // The photopic CLI's commands. Each returns the process exit code: 0 ok, 2 bad usage or input, 1 other
 // failure.
 
+#include "OcioDisplay.h"
+
 #include "core/Settings.h"
 #include "io/ImageIO.h"
 #include "pipeline/Pipeline.h"
@@ -54,6 +56,9 @@ struct ImageOptions {
     std::string jitter =
         "attribute"; ///< attribute: the EXR `jitter` attribute when present; halton: Photopic's
     std::int64_t maxPixels = kDefaultMaxPixels; ///< larger inputs are refused before they are decoded
+    /// --ocio-config/--ocio-display/--ocio-view: the display image from an OpenColorIO display/view transform
+    /// of the scene-referred image instead of Photopic's tone curve and sRGB output.
+    OcioOptions ocio;
     /// Frames between decode and write at once, [1, 16]: 1 runs each frame's decode, GPU work and write one
     /// after another; more decode one frame ahead and write up to N - 2 (at least one) behind on other
     /// threads. 0: defaultFramesInFlight().

@@ -64,6 +64,18 @@ void addSettingsOptions(CLI::App* cmd, SettingsSources& s, std::string_view pres
         ->take_first();
 }
 
+void addOcioOptions(CLI::App* cmd, OcioOptions& o) {
+    const std::string meaning =
+        ": the display image is the OpenColorIO display/view transform of the scene-referred image (after "
+        "exposure, bloom and grading, taken as the config's scene_linear role), in place of --tonemap and "
+        "the sRGB output; PNG outputs only";
+    cmd->add_option("--ocio-display", o.display,
+                    "OpenColorIO display (default: the config's default)" + meaning);
+    cmd->add_option("--ocio-view", o.view,
+                    "OpenColorIO view of the display (default: the display's default)");
+    cmd->add_option("--ocio-config", o.config, "OpenColorIO config file (default: $OCIO)");
+}
+
 void addMaxPixelsOption(CLI::App* cmd, std::int64_t& maxPixels) {
     cmd->add_option("--max-pixels", maxPixels,
                     "refuse input images with more pixels than this, before decoding them (memory bound)")
@@ -167,6 +179,7 @@ void addImageCommand(CLI::App& app, Cli& c) {
                      "(Photopic's Halton(2,3) from index 1, as Pipeline::beginFrame hands it out)")
         ->check(CLI::IsMember({"attribute", "halton"}));
     addSettingsOptions(c.image, c.imageOptions.settings, "stills");
+    addOcioOptions(c.image, c.imageOptions.ocio);
     addMaxPixelsOption(c.image, c.imageOptions.maxPixels);
     c.image
         ->add_option(
@@ -183,7 +196,9 @@ void addImageCommand(CLI::App& app, Cli& c) {
         "  photopic image f*.exr -o dir/ --fps 24 --telemetry t.csv --set autoExposure.enabled=true\n"
         "  photopic image shot/f%04d.exr --frames 1001-1100 -o out/f%04d.png -n\n"
         "  photopic image in.exr -o - | display -\n"
-        "  photopic image in.exr -o view.png --debug histogram");
+        "  photopic image in.exr -o view.png --debug histogram\n"
+        "  photopic image in.exr -o out.png --ocio-config config.ocio --ocio-display sRGB --ocio-view "
+        "Standard");
 }
 
 void addSettingsCommand(CLI::App& app, Cli& c) {
