@@ -60,7 +60,7 @@ struct Settings {
 
     /// Named looks (`--preset NAME`, a settings file's "preset"). A look is bloom, lens flare, vignette,
     /// grain, dazzle and colour grading; the rest (exposure, metering, anti-aliasing, the 3D effects) belongs
-    /// to the host or the scene and keeps its defaults.
+    /// to the host or the scene, and applyLook() leaves it as it was.
     /// stills: photographs (`photopic image`'s default): a tight bloom of what is far past white only.
     [[nodiscard]] static Settings stills();
     /// realtime: the defaults, the look of games and the built-in scenes: a soft glow over the whole image.
