@@ -66,7 +66,8 @@ void writeJsonAtomically(const fs::path& path, const nlohmann::json& doc) {
 /// `--set canvas.key=value` into the canvas scene's settings; any other key is an error (this bench shades
 /// the canvas and runs no post-processing).
 CanvasSceneSettings canvasBenchSettings(const SettingsSources& sources) {
-    if (!sources.file.empty() || !sources.tonemap.empty() || sources.exposure || !sources.debugView.empty()) {
+    if (!sources.file.empty() || !sources.preset.empty() || !sources.tonemap.empty() || sources.exposure ||
+        !sources.debugView.empty()) {
         throw InputError(
             "bench --scene canvas times the canvas shading only: post-processing settings do not "
             "apply (use --set canvas.KEY=VALUE)");

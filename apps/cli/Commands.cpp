@@ -68,10 +68,23 @@ std::string telemetryCsv(const std::vector<ExposureTelemetry>& rows, float dt,
 
 namespace fs = std::filesystem;
 
+Settings presetLook(const std::string& name) {
+    std::optional<Settings> look = Settings::preset(name);
+    if (!look) {
+        throw InputError("--preset: " + unknownPresetMessage(name));
+    }
+    return *look;
+}
+
 Settings resolveSettings(const SettingsSources& sources, Settings base) {
     Settings settings = std::move(base);
+    if (!sources.preset.empty()) {
+        settings.applyLook(presetLook(sources.preset));
+    }
     if (!sources.file.empty()) {
-        settings = loadSettingsFile(sources.file, std::move(settings));
+        // The command line's preset wins over the file's; the file's other keys still land on top of it.
+        settings = loadSettingsFile(sources.file, std::move(settings),
+                                    sources.preset.empty() ? DocumentPreset::Apply : DocumentPreset::Ignore);
     }
     if (!sources.tonemap.empty()) {
         applySettingsOverride(settings, "tonemapping.mode=" + sources.tonemap);
@@ -455,12 +468,35 @@ std::unique_ptr<Pipeline> makeImagePipeline(const PipelineCreateInfo& createInfo
     }
 }
 
+/// The OpenColorIO display/view transform when --ocio-* asks for it, its config and names checked before
+/// any output exists. It makes display images, so every output must be one (PNG).
+std::optional<OcioDisplay> ocioDisplayFor(const ImageOptions& options) {
+    if (!options.ocio.requested()) {
+        return std::nullopt;
+    }
+    if (lowerExtension(options.output) == ".exr" || options.format == "exr") {
+        throw InputError(fmt::format("output {}: --ocio-display/--ocio-view make the display image (PNG); "
+                                     "an EXR output holds the scene-referred image, which they do not change",
+                                     options.output.string()));
+    }
+    OcioDisplay ocio(options.ocio);
+    logInfo("display image: {}", ocio.description());
+    return ocio;
+}
+
 /// Reads the frame's result back into `image`: the scene-referred image for an .exr `out`, else the display
-/// image at `bitDepth` bits.
+/// image at `bitDepth` bits (with `ocio`, its transform of the scene-referred image).
 void readBack(Pipeline& pipeline, const Texture& display, const fs::path& out, int bitDepth,
-              FrameImage& image) {
+              const OcioDisplay* ocio, FrameImage& image) {
     if (lowerExtension(out) == ".exr") {
         readTextureF(pipeline.sceneReferred(), image.scene);
+    } else if (ocio != nullptr) {
+        readTextureF(pipeline.sceneReferred(), image.scene);
+        if (bitDepth == 16) {
+            image.display16 = ocio->apply16(image.scene);
+        } else {
+            image.display = ocio->apply(image.scene);
+        }
     } else if (bitDepth == 16) {
         readTexture16(display, image.display16);
     } else {
@@ -468,9 +504,10 @@ void readBack(Pipeline& pipeline, const Texture& display, const fs::path& out, i
     }
 }
 
-/// The run's settings with --bit-depth applied over them.
+/// The run's settings (the stills look under the preset, file and overrides) with --bit-depth over them.
 Settings imageSettings(const ImageOptions& options) {
-    Settings settings = resolveSettings(options.settings);
+    // Photographs get the stills look unless --preset or the settings file names another.
+    Settings settings = resolveSettings(options.settings, Settings::stills());
     if (options.bitDepth) {
         settings.output.bitDepth = *options.bitDepth;
     }
@@ -541,6 +578,7 @@ int runImage(const ImageOptions& options) {
         throw InputError("image: an output is required (-o FILE, FOLDER/, PATTERN or -), or --info");
     }
     const Settings settings = imageSettings(options);
+    const std::optional<OcioDisplay> ocio = ocioDisplayFor(options);
     std::FILE* const console = consoleFor(options);
     // Every output is checked before any work; a run that fails takes back what it wrote, the frames it
     // had already written included.
@@ -596,7 +634,7 @@ int runImage(const ImageOptions& options) {
         const Texture& display = pipeline->execute(frameInputs, time);
         const fs::path& out = outPaths[i];
         FrameImage image = writer.storage();
-        readBack(*pipeline, display, out, settings.output.bitDepth, image);
+        readBack(*pipeline, display, out, settings.output.bitDepth, ocio ? &*ocio : nullptr, image);
         if (telemetry) {
             telemetry->take(*pipeline, i, i + 1 == inputs.size());
         }
@@ -615,13 +653,17 @@ int runImage(const ImageOptions& options) {
     return kOk;
 }
 
-int runSettingsDefaults() {
-    std::fputs(settingsToJson(Settings{}).c_str(), stdout);
+int runSettingsDefaults(const std::string& preset) {
+    std::fputs(settingsToJson(preset.empty() ? Settings{} : presetLook(preset)).c_str(), stdout);
     return kOk;
 }
 
-int runSettingsCheck(const fs::path& file) {
-    const Settings settings = loadSettingsFile(file); // throws SettingsError listing every issue -> exit 2
+int runSettingsCheck(const fs::path& file, const std::string& preset) {
+    // Throws SettingsError listing every issue (an unknown "preset" among them) -> exit 2.
+    SettingsSources sources;
+    sources.preset = preset;
+    sources.file = file;
+    const Settings settings = resolveSettings(sources);
     (void)settings;
     std::printf("%s: valid\n", file.string().c_str());
     return kOk;

@@ -2,6 +2,8 @@
 // The photopic CLI's commands. Each returns the process exit code: 0 ok, 2 bad usage or input, 1 other
 // failure.
 
+#include "OcioDisplay.h"
+
 #include "core/Settings.h"
 #include "io/DisplayImageIO.h"
 #include "io/ImageIO.h"
@@ -23,8 +25,10 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-/// Settings from `base`, then --settings FILE over it, then the shorthand flags, then each --set in order.
+/// Settings from `base` with the preset's look (--preset NAME, else the file's "preset", else the command's
+/// own), then --settings FILE's other keys over it, then the shorthand flags, then each --set in order.
 struct SettingsSources {
+    std::string preset; ///< --preset NAME (presetNames()); empty: the file's, else none
     std::filesystem::path file;
     std::string tonemap;
     std::optional<float> exposure;
@@ -59,6 +63,9 @@ struct ImageOptions {
     std::string jitter =
         "attribute"; ///< attribute: the EXR `jitter` attribute when present; halton: Photopic's
     std::int64_t maxPixels = kDefaultMaxPixels; ///< larger inputs are refused before they are decoded
+    /// --ocio-config/--ocio-display/--ocio-view: the display image from an OpenColorIO display/view transform
+    /// of the scene-referred image instead of Photopic's tone curve and sRGB output.
+    OcioOptions ocio;
     /// Frames between decode and write at once, [1, 16]: 1 runs each frame's decode, GPU work and write one
     /// after another; more decode one frame ahead and write up to N - 2 (at least one) behind on other
     /// threads. 0: defaultFramesInFlight().
@@ -103,10 +110,15 @@ int runScene(const SceneOptions& options);
 /// GL and capability report; with settings, also the quality tier and the path frames would take.
 int runInfo(bool forceLdr, const SettingsSources& settings);
 int runImage(const ImageOptions& options);
-int runSettingsDefaults();
-int runSettingsCheck(const std::filesystem::path& file);
+/// The look of preset `name` (presetNames()); throws InputError listing the presets when there is none.
+Settings presetLook(const std::string& name);
+/// `photopic settings --defaults`: every field of the defaults with preset `preset`'s look (none: empty).
+int runSettingsDefaults(const std::string& preset);
+/// `photopic settings --check FILE`: with `preset`, the file over that preset's look, as --preset reads it.
+int runSettingsCheck(const std::filesystem::path& file, const std::string& preset);
+/// `demo --images`: every HDR image in `dataDir` through three tone curves, with `look`'s look.
 int runDemo(const std::filesystem::path& dataDir, const std::filesystem::path& outDir,
-            std::int64_t maxPixels = kDefaultMaxPixels);
+            std::int64_t maxPixels = kDefaultMaxPixels, const Settings& look = {});
 
 /// Throws InputError (exit 2) naming the first of `outputs` whose format cannot hold `bitDepth` bits per
 /// channel (a JPEG at 16), before any work; `source` names where the depth came from ("--bit-depth").

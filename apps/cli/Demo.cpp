@@ -22,7 +22,7 @@ namespace photopic::cli {
 
 namespace fs = std::filesystem;
 
-int runDemo(const fs::path& dataDir, const fs::path& outDir, std::int64_t maxPixels) {
+int runDemo(const fs::path& dataDir, const fs::path& outDir, std::int64_t maxPixels, const Settings& look) {
     if (!fs::is_directory(dataDir)) {
         throw InputError(fmt::format("data folder {} does not exist (pass --data DIR)", dataDir.string()));
     }
@@ -56,7 +56,7 @@ int runDemo(const fs::path& dataDir, const fs::path& outDir, std::int64_t maxPix
         const float mean = meterAverage(image);
         const float ev = mean > 0 ? std::log2(0.18f / mean) : 0.0f;
         for (ToneMapper curve : curves) {
-            Settings settings;
+            Settings settings = look;
             settings.tonemapping.mode = curve;
             settings.tonemapping.exposure = std::clamp(ev, -20.0f, 20.0f);
             pipeline.setSettings(settings);

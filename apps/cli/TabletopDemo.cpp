@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 
 namespace photopic::cli {
 
@@ -104,6 +105,8 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     if (options.width < 16 || options.height < 16 || options.fps <= 0.0f || options.seconds <= 0.0f) {
         throw InputError("demo: --size must be at least 16x16, --fps and --seconds positive");
     }
+    const std::optional<Settings> look =
+        options.preset.empty() ? std::nullopt : std::optional<Settings>(presetLook(options.preset));
     // Every output is checked before the first frame; a run that fails takes back what it wrote.
     RunOutputs outputs;
     outputs.makeFolder(options.output);
@@ -117,7 +120,10 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
 
     HeadlessContext context;
     TabletopScene scene;
-    const Settings settings = scene.defaultSettings(); // subject metering, the eye-lag defaults
+    Settings settings = scene.defaultSettings(); // subject metering, the eye-lag defaults
+    if (look) {
+        settings.applyLook(*look);
+    }
     const AutoExposureSettings& ae = settings.autoExposure;
     Pipeline pipeline({.settings = settings, .keepTelemetryHistory = true});
     scene.resize({options.width, options.height});

@@ -3,11 +3,12 @@
 // pipeline with `subject` metering -- the pipeline probes the tokens and exposure follows the light under the
 // player -- then telemetry -> plot, key frames, an MP4 when ffmpeg is there, and a summary per transition.
 
-#include "core/Image.h"
 #include "common/TransitionAnalysis.h"
+#include "core/Image.h"
 
 #include <cstddef>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace photopic::cli {
@@ -30,6 +31,7 @@ struct TabletopWalkOptions {
     float seconds = 22.0f; ///< the walk crosses out at ~4 s and back in at ~12 s
     int frameEvery = 1;    ///< write every Nth frame as PNG (the MP4 then runs at fps / N)
     bool video = true;     ///< encode demo.mp4 when the ffmpeg command is present
+    std::string preset;    ///< --preset NAME: that look over the scene's settings; empty: the scene's own
 };
 
 /// Renders the walk through the pipeline (subject metering on the GPU): frame_NNNN.png, telemetry.csv,

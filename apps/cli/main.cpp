@@ -38,8 +38,23 @@ std::string joined(const Names& names) {
     return out;
 }
 
-void addSettingsOptions(CLI::App* cmd, SettingsSources& s) {
-    cmd->add_option("--settings", s.file, "settings JSON file ({\"version\": 1, \"postEffects\": {...}})")
+/// --preset's help: the presets and what each is for, then where a command's own default comes from.
+std::string presetHelp(std::string_view commandDefault) {
+    return "look: " + joined(presetNames()) +
+           " (stills: photographs, a tight bloom of what is far past white only; realtime: games and the "
+           "built-in scenes, a soft glow over the whole image; neutral: no bloom, display effects or "
+           "grading, for measuring). Default: " +
+           std::string(commandDefault);
+}
+
+void addSettingsOptions(CLI::App* cmd, SettingsSources& s, std::string_view presetDefault) {
+    cmd->add_option("--preset", s.preset,
+                    presetHelp("the settings file's \"preset\", else " + std::string(presetDefault)) +
+                        ". Order: the preset, then the settings file's keys, then "
+                        "--tonemap, --exposure, --debug and each --set");
+    cmd->add_option("--settings", s.file,
+                    "settings JSON file ({\"version\": 1, \"preset\": NAME, \"postEffects\": {...}}, "
+                    "every key optional)")
         ->check(CLI::ExistingFile);
     cmd->add_option("--tonemap", s.tonemap,
                     "tone curve: " + joined(toneMapperNames()) + " (same as --set tonemapping.mode=NAME)");
@@ -50,6 +65,18 @@ void addSettingsOptions(CLI::App* cmd, SettingsSources& s) {
                         "; views of 3D inputs need them (same as --set debug.view=NAME)");
     cmd->add_option("--set", s.overrides, "override one setting: path=value, e.g. tonemapping.mode=agx")
         ->take_first();
+}
+
+void addOcioOptions(CLI::App* cmd, OcioOptions& o) {
+    const std::string meaning =
+        ": the display image is the OpenColorIO display/view transform of the scene-referred image (after "
+        "exposure, bloom and grading, taken as the config's scene_linear role), in place of --tonemap and "
+        "the sRGB output; PNG outputs only";
+    cmd->add_option("--ocio-display", o.display,
+                    "OpenColorIO display (default: the config's default)" + meaning);
+    cmd->add_option("--ocio-view", o.view,
+                    "OpenColorIO view of the display (default: the display's default)");
+    cmd->add_option("--ocio-config", o.config, "OpenColorIO config file (default: $OCIO)");
 }
 
 void addMaxPixelsOption(CLI::App* cmd, std::int64_t& maxPixels) {
@@ -69,6 +96,7 @@ struct Cli {
     CLI::App* settings = nullptr;
     bool defaults = false;
     std::filesystem::path checkFile;
+    std::string settingsPreset;
     CLI::App* scene = nullptr;
     SceneOptions sceneOptions;
     bool listScenes = false;
@@ -87,7 +115,7 @@ struct Cli {
 void addInfoCommand(CLI::App& app, Cli& c) {
     c.info = app.add_subcommand("info", "GL vendor, renderer, version, and whether the HDR or LDR path runs");
     c.info->add_flag("--force-ldr", c.forceLdr, "report as if the LDR path were forced");
-    addSettingsOptions(c.info, c.infoSettings);
+    addSettingsOptions(c.info, c.infoSettings, "the defaults (realtime)");
     c.info->footer("Examples:\n"
                    "  photopic info\n"
                    "  photopic info --force-ldr\n"
@@ -171,7 +199,8 @@ void addImageCommand(CLI::App& app, Cli& c) {
                      "EXR `jitter` attribute, pixels, x right, y down; none when absent) or halton "
                      "(Photopic's Halton(2,3) from index 1, as Pipeline::beginFrame hands it out)")
         ->check(CLI::IsMember({"attribute", "halton"}));
-    addSettingsOptions(c.image, c.imageOptions.settings);
+    addSettingsOptions(c.image, c.imageOptions.settings, "stills");
+    addOcioOptions(c.image, c.imageOptions.ocio);
     addMaxPixelsOption(c.image, c.imageOptions.maxPixels);
     c.image
         ->add_option(
@@ -184,12 +213,15 @@ void addImageCommand(CLI::App& app, Cli& c) {
     c.image->footer(
         "Examples:\n"
         "  photopic image in.exr -o out.png --tonemap agx --exposure -1.5\n"
+        "  photopic image in.exr -o out.png --preset realtime    the scenes' soft glow instead of stills\n"
         "  photopic image f*.exr -o dir/ --fps 24 --telemetry t.csv --set autoExposure.enabled=true\n"
         "  photopic image shot/f%04d.exr --frames 1001-1100 -o out/f%04d.png -n\n"
         "  photopic image in.exr -o out.tif --bit-depth 16\n"
         "  photopic image in.exr -o out.jpg --jpeg-quality 90\n"
         "  photopic image in.exr -o - | display -\n"
-        "  photopic image in.exr -o view.png --debug histogram");
+        "  photopic image in.exr -o view.png --debug histogram\n"
+        "  photopic image in.exr -o out.png --ocio-config config.ocio --ocio-display sRGB --ocio-view "
+        "Standard");
 }
 
 void addSettingsCommand(CLI::App& app, Cli& c) {
@@ -197,9 +229,13 @@ void addSettingsCommand(CLI::App& app, Cli& c) {
     auto* defaultsFlag = c.settings->add_flag("--defaults", c.defaults, "print the full default JSON");
     auto* checkOption = c.settings->add_option("--check", c.checkFile, "validate FILE and list every issue");
     defaultsFlag->excludes(checkOption);
-    c.settings->require_option(1);
+    c.settings->add_option("--preset", c.settingsPreset,
+                           "with --defaults: the defaults with this look (" + joined(presetNames()) +
+                               "); with --check: the file over this look, as --preset reads it");
+    c.settings->require_option(1, 2);
     c.settings->footer("Examples:\n"
                        "  photopic settings --defaults > mine.json\n"
+                       "  photopic settings --defaults --preset stills   what photopic image starts from\n"
                        "  photopic settings --check mine.json");
 }
 
@@ -237,7 +273,7 @@ void addSceneCommand(CLI::App& app, Cli& c) {
                             ", or all) for the frames instead of rendering");
     c.scene->add_option("--start", c.sceneOptions.start, "first frame index (--truth)")
         ->check(CLI::Range(0, 10000000));
-    addSettingsOptions(c.scene, c.sceneOptions.settings);
+    addSettingsOptions(c.scene, c.sceneOptions.settings, "the scene's own look (realtime)");
     c.scene->footer("Examples:\n"
                     "  photopic scene --list\n"
                     "  photopic scene canvas -o out/canvas --frames 60 --size 960x540 --motion "
@@ -265,6 +301,7 @@ void addDemoCommand(CLI::App& app, Cli& c) {
     c.demo->add_option("--data", c.demoData,
                        "folder of HDR images for --images (default: $PHOTOPIC_DATA_DIR, else the installed "
                        "share/photopic/data, else the checkout's data/)");
+    c.demo->add_option("--preset", c.walk.preset, presetHelp("realtime (the tabletop scene's look)"));
     addMaxPixelsOption(c.demo, c.demoMaxPixels);
     c.demo->footer("Examples:\n"
                    "  photopic demo                                  the walk at 320x180 into out/demo\n"
@@ -294,7 +331,7 @@ void addBenchCommand(CLI::App& app, Cli& c) {
     c.bench->add_option("--scene", c.benchOptions.scene,
                         "canvas (the only one): time the canvas scene's tiled and full-screen shading paths "
                         "instead (--set canvas.KEY=VALUE, e.g. canvas.occupancy=0.3, the default)");
-    addSettingsOptions(c.bench, c.benchOptions.settings);
+    addSettingsOptions(c.bench, c.benchOptions.settings, "the defaults (realtime)");
     addMaxPixelsOption(c.bench, c.benchOptions.maxPixels);
     c.bench->footer("Examples:\n"
                     "  photopic bench --size 1920x1080 --frames 100\n"
@@ -311,7 +348,11 @@ int runCommand(Cli& c) {
         return runImage(c.imageOptions);
     }
     if (*c.settings) {
-        return c.defaults ? runSettingsDefaults() : runSettingsCheck(c.checkFile);
+        if (!c.defaults && c.checkFile.empty()) {
+            throw InputError("settings: --defaults or --check FILE is required");
+        }
+        return c.defaults ? runSettingsDefaults(c.settingsPreset)
+                          : runSettingsCheck(c.checkFile, c.settingsPreset);
     }
     if (*c.scene) {
         if (c.listScenes) {
@@ -330,7 +371,8 @@ int runCommand(Cli& c) {
     }
     if (*c.demo) {
         if (c.demoImages) {
-            return runDemo(findDataDir(c.demoData), c.walk.output, c.demoMaxPixels);
+            const Settings look = c.walk.preset.empty() ? Settings{} : presetLook(c.walk.preset);
+            return runDemo(findDataDir(c.demoData), c.walk.output, c.demoMaxPixels, look);
         }
         const Extent size = parseSize(c.demoSize);
         c.walk.width = size.width;

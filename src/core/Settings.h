@@ -22,7 +22,14 @@
 #include "core/settings/ToneMappingSettings.h"
 #include "core/settings/VolumetricLightSettings.h"
 
+#include <optional>
+#include <span>
+#include <string_view>
+
 namespace photopic {
+
+/// Names of the presets, in the order `--help` lists them: stills, realtime, neutral.
+[[nodiscard]] std::span<const std::string_view> presetNames();
 
 struct Settings {
     ToneMappingSettings tonemapping;
@@ -50,6 +57,20 @@ struct Settings {
     MotionBlurSettings motionBlur;
     OutlineSettings outline;
     VolumetricLightSettings volumetricLight;
+
+    /// Named looks (`--preset NAME`, a settings file's "preset"). A look is bloom, lens flare, vignette,
+    /// grain, dazzle and colour grading; the rest (exposure, metering, anti-aliasing, the 3D effects) belongs
+    /// to the host or the scene, and applyLook() leaves it as it was.
+    /// stills: photographs (`photopic image`'s default): a tight bloom of what is far past white only.
+    [[nodiscard]] static Settings stills();
+    /// realtime: the defaults, the look of games and the built-in scenes: a soft glow over the whole image.
+    [[nodiscard]] static Settings realtime();
+    /// neutral: no bloom, no display effects, no grading: exposure and the tone curve alone, for measuring.
+    [[nodiscard]] static Settings neutral();
+    /// The preset called `name`; nullopt when there is none (presetNames() lists them).
+    [[nodiscard]] static std::optional<Settings> preset(std::string_view name);
+    /// Takes `look`'s look (the fields above) and keeps everything else.
+    void applyLook(const Settings& look);
 
     /// The anti-aliasing the frame uses: aa.mode, or FXAA / TAA when their older switches are on and aa.mode
     /// is none.

@@ -31,6 +31,26 @@ struct BloomSettings {
         0.85f;        ///< [0, 1], default 0.85: share each level hands to the wider ones (spread, roundness)
     int mipCount = 0; ///< [0, 10], default 0 = the quality tier's count: levels of the chain below half size
 
+    /// The real-time look: the defaults above, a glow over the whole image that games and the built-in
+    /// scenes are tuned for.
+    [[nodiscard]] static BloomSettings realtime() { return {}; }
+
+    /// A gentle look for still photographs: only what lies three stops past display white (8) blooms, into a
+    /// tight halo (two levels below half size, each handing on half). Energy-conserving bloom mixes a little
+    /// of the whole frame's blur into every pixel, so the sun in data/blender_sunrise.exr lifts 13% of the
+    /// frame by more than 2 code values; with these settings 0.1% (tests/e2e/veil.sh), while the pixels
+    /// beside the sun still brighten.
+    [[nodiscard]] static BloomSettings stills() {
+        BloomSettings s;
+        s.mode = BloomMode::Threshold;
+        s.threshold = 8.0f;
+        s.knee = 0.5f;
+        s.intensity = 0.8f;
+        s.radius = 0.5f;
+        s.mipCount = 2;
+        return s;
+    }
+
     template <class V>
     void visit(V& v) {
         v.field("enabled", enabled);

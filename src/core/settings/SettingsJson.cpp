@@ -50,7 +50,31 @@ std::string escapeInvalidUtf8(std::string_view text) {
     return out + std::string(text);
 }
 
-std::vector<SettingsIssue> readDocument(const json& doc, Settings& settings) {
+/// The document's "preset", laid over `settings` when `use` says so. False when it is not a preset's name.
+bool readPreset(const json& doc, Settings& settings, DocumentPreset use, std::vector<SettingsIssue>& issues) {
+    const auto p = doc.find("preset");
+    if (p == doc.end()) {
+        return true;
+    }
+    if (!p->is_string()) {
+        issues.push_back(
+            {SettingsIssueCode::WrongType, "preset",
+             fmt::format("expected a preset name ({}), got {}", joinNames(presetNames()), shown(*p))});
+        return false;
+    }
+    const std::optional<Settings> look = Settings::preset(p->get<std::string>());
+    if (!look) {
+        issues.push_back({SettingsIssueCode::BadEnum, "preset", unknownPresetMessage(p->get<std::string>())});
+        return false;
+    }
+    if (use == DocumentPreset::Apply) {
+        settings.applyLook(*look);
+    }
+    return true;
+}
+
+std::vector<SettingsIssue> readDocument(const json& doc, Settings& settings,
+                                        DocumentPreset preset = DocumentPreset::Apply) {
     std::vector<SettingsIssue> issues;
     if (!doc.is_object()) {
         issues.push_back({SettingsIssueCode::WrongType, "", "the document must be a JSON object"});
@@ -66,9 +90,14 @@ std::vector<SettingsIssue> readDocument(const json& doc, Settings& settings) {
         }
     }
     for (const auto& [key, value] : doc.items()) {
-        if (key != "version" && key != "postEffects") {
-            issues.push_back({SettingsIssueCode::UnknownKey, key, "known keys: version, postEffects"});
+        if (key != "version" && key != "preset" && key != "postEffects") {
+            issues.push_back(
+                {SettingsIssueCode::UnknownKey, key, "known keys: version, preset, postEffects"});
         }
+    }
+    // The preset first, so that the document's own keys land on top of it.
+    if (!readPreset(doc, settings, preset, issues)) {
+        return issues;
     }
     const auto post = doc.find("postEffects");
     if (post == doc.end()) {
@@ -154,14 +183,19 @@ std::optional<std::size_t> invalidUtf8Offset(std::string_view text) {
     return std::nullopt;
 }
 
-std::vector<SettingsIssue> readSettingsJson(std::string_view text, Settings& settings) {
+std::string unknownPresetMessage(std::string_view name) {
+    return fmt::format("unknown preset '{}' (known presets: {})", name, joinNames(presetNames()));
+}
+
+std::vector<SettingsIssue> readSettingsJson(std::string_view text, Settings& settings,
+                                            DocumentPreset preset) {
     // nlohmann's exceptions all derive from json::exception: a parse error, but also out_of_range.406 for a
     // number beyond double range (1e400). One catch of the base keeps every one of them inside the issues.
     try {
         const json doc = json::parse(text);
         // Read into a copy so a document with issues leaves `settings` exactly as it was.
         Settings candidate = settings;
-        auto issues = readDocument(doc, candidate);
+        auto issues = readDocument(doc, candidate, preset);
         if (issues.empty()) {
             settings = std::move(candidate);
         }
@@ -171,7 +205,7 @@ std::vector<SettingsIssue> readSettingsJson(std::string_view text, Settings& set
     }
 }
 
-Settings loadSettingsFile(const std::filesystem::path& file, Settings base) {
+Settings loadSettingsFile(const std::filesystem::path& file, Settings base, DocumentPreset preset) {
     std::error_code ec;
     if (!std::filesystem::exists(file, ec)) {
         throw SettingsError(file.string(), {{SettingsIssueCode::MissingFile, "",
@@ -186,7 +220,7 @@ Settings loadSettingsFile(const std::filesystem::path& file, Settings base) {
     }
     std::stringstream ss;
     ss << in.rdbuf();
-    auto issues = readSettingsJson(ss.str(), base);
+    auto issues = readSettingsJson(ss.str(), base, preset);
     if (!issues.empty()) {
         throw SettingsError(file.string(), std::move(issues));
     }

@@ -29,14 +29,25 @@ private:
     std::vector<SettingsIssue> mIssues;
 };
 
+/// What a document's top-level "preset" (a name from presetNames()) does: Apply takes that preset's look
+/// first, then the document's other keys over it; Ignore checks the name only, for a caller whose own
+/// preset (the command line's) wins.
+enum class DocumentPreset { Apply, Ignore };
+
 /// Reads JSON text over `settings` (keys that are absent keep their current values). Returns the issues
 /// found; fields with issues are left unchanged. Never throws for any text: JSON the parser rejects (bad
 /// syntax, bad UTF-8, a number beyond double range) is a ParseError issue.
-std::vector<SettingsIssue> readSettingsJson(std::string_view text, Settings& settings);
+std::vector<SettingsIssue> readSettingsJson(std::string_view text, Settings& settings,
+                                            DocumentPreset preset = DocumentPreset::Apply);
 
 /// Loads a file over `base` (the defaults unless given); throws SettingsError naming the file and every
 /// issue.
-Settings loadSettingsFile(const std::filesystem::path& file, Settings base = {});
+Settings loadSettingsFile(const std::filesystem::path& file, Settings base = {},
+                          DocumentPreset preset = DocumentPreset::Apply);
+
+/// "unknown preset 'NAME' (known presets: stills, realtime, neutral)": what a bad `--preset` or "preset"
+/// says.
+std::string unknownPresetMessage(std::string_view name);
 
 /// Full JSON of every field (what `photopic settings --defaults` prints). Save then load is lossless.
 std::string settingsToJson(const Settings& settings);
