@@ -323,6 +323,15 @@ std::unique_ptr<Scene> makeViewerScene(const ViewerOptions& options, const Split
     }
     applySceneOverrides(*scene, overrides.scene);
     settings = scene->defaultSettings();
+    if (!options.preset.empty()) {
+        const std::optional<Settings> look = Settings::preset(options.preset);
+        if (!look) {
+            throw InputError(unknownPresetMessage(options.preset));
+        }
+        settings.applyLook(*look);
+    } else if (!options.files.empty()) {
+        settings.applyLook(Settings::stills()); // photographs: the look `photopic image` gives them
+    }
     if (!options.settingsFile.empty()) {
         settings = loadSettingsFile(options.settingsFile, std::move(settings));
     }

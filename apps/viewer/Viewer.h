@@ -33,6 +33,9 @@ struct ViewerOptions {
     std::vector<std::filesystem::path> files;
     bool sizeGiven = false; ///< --size was named; otherwise a file sets the window's size
     std::filesystem::path settingsFile;
+    /// --preset: the look over the scene's defaults; empty: stills for files (as `photopic image`), the
+    /// scene's own look for a scene.
+    std::string preset;
     std::vector<std::string> overrides; ///< "key=value"; "SCENE.key=value" goes to the scene
     int width = 1280;
     int height = 720;

@@ -4,6 +4,7 @@
 #include "Viewer.h"
 
 #include "common/Verbosity.h"
+#include "core/settings/JsonVisitors.h"
 #include "core/settings/SettingsJson.h"
 #include "gl/Gl.h"
 
@@ -45,6 +46,9 @@ int main(int argc, char** argv) {
             ->capture_default_str();
     app.add_option("--settings", options.settingsFile, "settings JSON applied over the scene's defaults")
         ->check(CLI::ExistingFile);
+    app.add_option("--preset", options.preset,
+                   "look: " + photopic::settings_json::joinNames(photopic::presetNames()) +
+                       " (default: stills for files, the scene's own for a scene)");
     app.add_option("--set", options.overrides, "override key=value (SCENE.key=value for the scene's own)");
     app.add_option("--size", size, "render and initial window size WIDTHxHEIGHT")->capture_default_str();
     app.add_option("--frames", options.frames, "run N frames, then exit")->check(CLI::Range(1, 1000000));

@@ -58,13 +58,11 @@ expect 1 "no display exits 1" -- env -u DISPLAY -u WAYLAND_DISPLAY "$VIEW" --fra
 check "says it needs a display" contains "needs a display"
 
 # An image file through the live pipeline: the window takes the image's size, and where no panel covers it
-# the screenshot is the image `photopic image` writes with the same settings (the viewer's defaults, the
-# realtime look; `photopic image` defaults to stills).
+# the screenshot is the image `photopic image` writes with the same settings (both give files the stills look).
 DESK="$(dirname "$0")/../../data/Desk.exr"
 expect 0 "views an EXR file" -- "$VIEW" "$DESK" --frames 3 --fixed-dt 0.0333 --screenshot "$S/desk_view.png"
 check "names the file and takes its size" contains "Desk.exr at 644x874"
-expect 0 "the same file through photopic image" -- "$PHOTOPIC" image "$DESK" -o "$S/desk_cli.png" \
-    --preset realtime
+expect 0 "the same file through photopic image" -- "$PHOTOPIC" image "$DESK" -o "$S/desk_cli.png"
 check "right of the panels the window shows the pipeline's image (mean |diff| <= 2/255)" python3 - \
     "$S/desk_view.png" "$S/desk_cli.png" <<'PY'
 import struct, sys, zlib
@@ -98,6 +96,11 @@ mean = sum(diffs) / len(diffs)
 print("mean |diff|", mean)
 sys.exit(0 if mean <= 2.0 else 1)
 PY
+expect 0 "--preset realtime on a file" -- "$VIEW" "$DESK" --preset realtime --frames 2 --fixed-dt 0.0333 \
+    --screenshot "$S/desk_realtime.png"
+check "... changes the look (the realtime bloom veils the window)" bash -c "! cmp -s '$S/desk_view.png' '$S/desk_realtime.png'"
+expect 2 "an unknown preset exits 2" -- "$VIEW" "$DESK" --preset glossy --frames 1
+check "names it and lists the presets" contains "unknown preset 'glossy'"
 expect 2 "a missing file exits 2 before any window" -- "$VIEW" "$S/nosuch.exr" --frames 1
 check "names the missing file" contains "nosuch.exr"
 expect 2 "a file and --scene together exit 2" -- "$VIEW" "$DESK" --scene testbed --frames 1
