@@ -227,8 +227,9 @@ class PHOTOPIC_API PostProcessor {
 public:
     /// How to create a PostProcessor.
     struct CreateInfo {
-        /// Settings as JSON ({"version": 1, "postEffects": {...}}, what `photopic settings --defaults`
-        /// prints). Empty: the defaults.
+        /// Settings as JSON ({"version": 1, "preset": "stills", "postEffects": {...}}, what `photopic
+        /// settings --defaults` prints). A preset (stills, realtime, neutral) sets the look first and the
+        /// document's own keys land over it. Empty: the defaults (the realtime look).
         std::string settingsJson;
         bool forceLdr = false; ///< take the 8-bit LDR path whatever the GPU can do
     };

@@ -241,6 +241,16 @@ TEST_F(PublicApi, SettingsErrorsNameTheKeyAndChangeNothing) {
     post.setSetting("tonemapping.mode=agx");
     EXPECT_NE(post.settingsJson().find("\"agx\""), std::string::npos);
     EXPECT_THROW(PostProcessor({.settingsJson = "{not json"}), Error);
+
+    post.setSettingsJson(R"({"version": 1, "preset": "neutral"})");
+    EXPECT_NE(post.settingsJson().find("\"bloom\": {\n      \"enabled\": false"), std::string::npos)
+        << "the neutral preset turns bloom off";
+    try {
+        post.setSettingsJson(R"({"version": 1, "preset": "glossy"})");
+        ADD_FAILURE() << "an unknown preset was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("glossy"), std::string::npos) << e.what();
+    }
 }
 
 TEST_F(PublicApi, JitterFollowsTheTemporalSettingsAndMovesTheProjection) {
