@@ -469,15 +469,16 @@ std::unique_ptr<Pipeline> makeImagePipeline(const PipelineCreateInfo& createInfo
 }
 
 /// The OpenColorIO display/view transform when --ocio-* asks for it, its config and names checked before
-/// any output exists. It makes display images, so every output must be one (PNG).
+/// any output exists. It makes display images, so every output must be one (PNG, TIFF, JPEG).
 std::optional<OcioDisplay> ocioDisplayFor(const ImageOptions& options) {
     if (!options.ocio.requested()) {
         return std::nullopt;
     }
     if (lowerExtension(options.output) == ".exr" || options.format == "exr") {
-        throw InputError(fmt::format("output {}: --ocio-display/--ocio-view make the display image (PNG); "
-                                     "an EXR output holds the scene-referred image, which they do not change",
-                                     options.output.string()));
+        throw InputError(
+            fmt::format("output {}: --ocio-display/--ocio-view make the display image (PNG, TIFF, JPEG); "
+                        "an EXR output holds the scene-referred image, which they do not change",
+                        options.output.string()));
     }
     OcioDisplay ocio(options.ocio);
     logInfo("display image: {}", ocio.description());

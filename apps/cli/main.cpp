@@ -71,7 +71,9 @@ void addOcioOptions(CLI::App* cmd, OcioOptions& o) {
     const std::string meaning =
         ": the display image is the OpenColorIO display/view transform of the scene-referred image (after "
         "exposure, bloom and grading, taken as the config's scene_linear role), in place of --tonemap and "
-        "the sRGB output; PNG outputs only";
+        "the sRGB output; display outputs only (PNG, TIFF, JPEG), and the display-domain effects (FXAA, "
+        "SMAA, "
+        "grain, vignette, overlays) do not apply to it";
     cmd->add_option("--ocio-display", o.display,
                     "OpenColorIO display (default: the config's default)" + meaning);
     cmd->add_option("--ocio-view", o.view,

@@ -28,6 +28,8 @@ check "OCIO replaces the tone curve (the images differ)" differ own.png ocio.png
 expect 0 "OCIO at 16 bits" -- "$PHOTOPIC" image "$IN" -o ocio16.png --bit-depth 16 \
     --ocio-config "$CONFIGS/srgb.ocio" --ocio-display sRGB --ocio-view Standard
 check "a 16-bit PNG (IHDR bit depth)" [ "$(od -An -tu1 -j24 -N1 ocio16.png | tr -d ' ')" = 16 ]
+expect 0 "OCIO into a TIFF" -- "$PHOTOPIC" image "$IN" -o ocio.tif --ocio-config "$CONFIGS/srgb.ocio"
+check "a TIFF (little-endian magic)" [ "$(od -An -tx1 -N4 ocio.tif | tr -d ' ')" = 49492a00 ]
 
 expect 0 "config from \$OCIO, default view" -- env OCIO="$CONFIGS/srgb.ocio" "$PHOTOPIC" image "$IN" \
     -o env.png --ocio-display sRGB
@@ -54,6 +56,6 @@ echo "not: [ yaml" >broken.ocio
 expect 2 "unparsable config" -- "$PHOTOPIC" image "$IN" -o bad6.png --ocio-config broken.ocio
 check "names the file" contains "broken.ocio cannot be used"
 expect 2 "EXR output with OCIO" -- "$PHOTOPIC" image "$IN" -o bad7.exr --ocio-config "$CONFIGS/srgb.ocio"
-check "says OCIO makes the display image" contains "make the display image (PNG)"
+check "says OCIO makes the display image" contains "make the display image (PNG, TIFF, JPEG)"
 check "no output from a failed run" bash -c '! ls bad*.png bad*.exr 2>/dev/null | grep -q .'
 finish
