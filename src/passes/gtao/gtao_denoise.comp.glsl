@@ -46,7 +46,7 @@ void main() {
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, rawSize))) {
                 continue;
             }
-            ivec2 source = min(q * uScale, full - 1);
+            ivec2 source = aoSourcePixel(q, full);
             float sz = texelFetch(uLinearDepth, source, 0).r;
             if (isinf(sz) || !(sz > 0.0)) {
                 continue;
@@ -57,7 +57,9 @@ void main() {
             // A crease (a wall meeting the ground) lies in both faces' tangent planes; the normals tell the
             // faces apart, whose occlusion differs.
             float facing = pow(max(dot(normalAt(source), normal), 0.0), 4.0);
-            vec2 d = vec2(source - p) / float(uScale);
+            // The Gaussian is in full-resolution pixels: at half resolution it spans the same area of the
+            // image, not twice as much.
+            vec2 d = vec2(source - p);
             float w = exp(-0.5 * dot(d, d) / 2.25 - plane * plane - reach * reach) * facing;
             sum += w * texelFetch(uRaw, q, 0).r;
             weights += w;

@@ -93,7 +93,7 @@ void main() {
         return;
     }
     ivec2 full = ivec2(uFullSize);
-    ivec2 p = min(q * uScale, full - 1);
+    ivec2 p = aoSourcePixel(q, full);
     float z = texelFetch(uLinearDepth, p, 0).r;
     if (isinf(z) || !(z > 0.0)) {
         imageStore(uRaw, q, vec4(1.0));
