@@ -11,6 +11,11 @@ layout(binding = 0, r16f) uniform writeonly image2D uRaw;
 
 const float kPi = 3.14159265358979;
 const float kHalfPi = 1.57079632679490;
+// The thickness heuristic of Jimenez et al. 2016: a sample within the radius but below the horizon found so
+// far pulls the horizon this far towards itself. Depth has no thickness, so a thin pole or wire in front of
+// the point reads as a wall; the ground seen past it, below the horizon it set, says otherwise. Partial,
+// because past the top of a solid box the samples fall below its horizon as well.
+const float kThickness = 0.3;
 
 // Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of Duty: Advanced
 // Warfare"), shifted per frame so a temporal filter sees other slice angles each frame.
@@ -167,7 +172,8 @@ void main() {
                 }
                 vec3 sampleNormal = viewNormalAt(texel);
                 if (dist <= uRadius) {
-                    best = max(best, dot(delta / dist, viewVec));
+                    float c = dot(delta / dist, viewVec);
+                    best = c > best ? c : mix(best, c, kThickness);
                 }
                 vec3 point;
                 float c = planeHorizon(hit, sampleNormal, origin, axis, sideVec, viewVec, point);
