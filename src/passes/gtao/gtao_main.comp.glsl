@@ -35,8 +35,8 @@ vec3 viewNormalAt(ivec2 p) {
 // the sample: a sample sits up to half a texel off the slice, and on a plane seen edge-on (the ground far
 // away) a line through it, parallel to the slice, passes beside the centre and reads as a steep horizon on
 // the wrong side of the centre's own tangent plane. Returns the highest cosine to the view vector of the
-// trace's part within the radius on this side, or -1, and that part's end point (view space) in `point`.
-// Only planes the centre point lies in front of count (a surface behind the point cannot reach it).
+// trace's part within the radius on this side, or -1, and where that part meets the radius (view space) in
+// `point`. Only planes the centre point lies in front of count (a surface behind the point cannot reach it).
 float planeHorizon(vec3 hit, vec3 sampleNormal, vec3 origin, vec3 axis, vec3 sideVec, vec3 viewVec,
                    out vec3 point) {
     point = vec3(0.0);
