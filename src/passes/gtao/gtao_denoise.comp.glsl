@@ -1,5 +1,5 @@
-// GTAO's spatial denoiser: a 5 x 5 (AO texels) Gaussian, weighted by how far each neighbour's surface lies from
-// the centre's tangent plane, how far it lies from the centre point and how its normal turns away, so
+// GTAO's spatial denoiser: a 5 x 5 (AO texels) Gaussian, weighted by how far each neighbour's surface lies
+// from the centre's tangent plane, how far it lies from the centre point and how its normal turns away, so
 // occlusion does not bleed across depth discontinuities (no halos) and the half-resolution result is
 // upsampled along surfaces. Sky pixels are 1.
 #include "passes/gtao/gtao_common.h.glsl"
