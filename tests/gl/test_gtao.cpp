@@ -114,13 +114,12 @@ AoFigures measure(const ImageF& gtao, const ImageF& truth, const ImageF& depth, 
 
 // Still camera (path time 0.3 s): the lighting stage's visibility against the ray tracer's `ao` (16 x 16
 // cosine-weighted rays, the same radius). Over the occluded pixels (reference < 0.95): mean absolute error
-// <= 0.08 and bias within +-0.03. The halo figure (mean on the background side of silhouettes, 3 px band,
-// wanted
-// >= 0.97) is printed, not asserted: it measures 0.889 where the reference itself has 0.932 over the same
-// band (the band takes in occluded ground at the feet of objects), and thin poles and fence wires
-// over-occlude (depth has no thickness); both are open work, with the half-resolution bias. Over the band's
-// pixels the reference sees unoccluded (>= 0.97) GTAO has 0.946: a grey rim above the large sphere's
-// silhouette.
+// <= 0.08 and bias within +-0.03 (measured 0.048 and +0.010). No halo: over the clear band, GTAO's mean
+// visibility >= 0.97 (measured 0.979). The clear band is the background side of silhouettes (a surface pixel
+// with, within 3 px, a surface nearer by more than the radius) where the ray-traced visibility is >= 0.97:
+// nothing occludes there, so darkening is a halo. The whole band is printed too (GTAO 0.920, the reference
+// itself 0.932: the band takes in occluded ground at the feet of objects, so no bound near 1 holds for it).
+// Half resolution stays within 0.02 of full resolution's error (measured 0.062).
 TEST_F(GlTest, GtaoMatchesTheRayTracedAmbientOcclusion) {
     auto scene = stillScene(0.3f);
     const testbed::TruthOptions options = scene->truthOptions({.dt = kDt, .frameIndex = 0});
@@ -134,8 +133,8 @@ TEST_F(GlTest, GtaoMatchesTheRayTracedAmbientOcclusion) {
     std::printf("gtao full (high, radius 1): MAE %.4f, bias %+.4f over %ld occluded px; halo band mean %.4f "
                 "(reference %.4f) over %ld px\n",
                 f.mae, f.bias, f.occluded, f.halo, f.haloTruth, f.band);
-    std::printf("gtao full: band pixels the reference sees unoccluded: mean %.4f over %ld px\n", f.clearHalo,
-                f.clearBand);
+    std::printf("gtao full: clear band (background side, reference >= 0.97): mean %.4f over %ld px\n",
+                f.clearHalo, f.clearBand);
 
     Pipeline half({.settings = aoSettings(AoResolution::Half)});
     const AoFigures h = measure(gtaoVisibility(*scene, half, 0), truth, depth, options.aoRadius);
@@ -144,8 +143,11 @@ TEST_F(GlTest, GtaoMatchesTheRayTracedAmbientOcclusion) {
 
     EXPECT_GT(f.occluded, 100);
     EXPECT_GT(f.band, 20);
+    EXPECT_GT(f.clearBand, 500);
     EXPECT_LE(f.mae, 0.08);
     EXPECT_LE(std::abs(f.bias), 0.03);
+    EXPECT_GE(f.clearHalo, 0.97);
+    EXPECT_LE(std::abs(h.mae - f.mae), 0.02);
 }
 
 // A slow orbit (the camera path at a tenth of its speed): the mean per-pixel change of visibility between

@@ -70,8 +70,8 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
     const glm::ivec2 tier = slicesAndSteps(s.quality);
     const double rawTexels = double(rawExtent.width) * rawExtent.height;
     const double fullTexels = double(e.width) * e.height;
-    // Horizon search: depth per step (2 sides) plus the centre's depth and normal; denoise: 25 depths and raw
-    // values per pixel (mostly cache hits).
+    // Horizon search: depth per step (2 sides) plus the centre's depth and normal; denoise: 25 depths,
+    // normals and raw values per pixel (mostly cache hits).
     const double bytes =
         rawTexels * (4.0 * 2.0 * tier.x * tier.y + 4.0 + 8.0 + 2.0) + fullTexels * (4 + 8 + 4 + 2);
     ScopedGpuTimer timer(ctx.timers, "gtao", bytes);

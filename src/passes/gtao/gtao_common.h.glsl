@@ -30,4 +30,13 @@ vec3 viewPositionAt(vec2 window, float z) {
     return mix(a.xyz, b.xyz, t);
 }
 
+// The full-resolution pixel an AO texel is computed at. At half resolution the pixel within the 2 x 2 block
+// alternates between neighbouring texels (x with the texel's row, y with its column), so every
+// full-resolution row and column is sampled by every second texel: a one-pixel contact strip (the ground
+// at the foot of a wall seen at a grazing angle) is not skipped whole when it falls on odd rows.
+ivec2 aoSourcePixel(ivec2 q, ivec2 full) {
+    ivec2 offset = uScale == 2 ? ivec2(q.y & 1, q.x & 1) : ivec2(0);
+    return min(q * uScale + offset, full - 1);
+}
+
 #endif

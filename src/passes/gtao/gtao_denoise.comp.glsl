@@ -1,6 +1,7 @@
-// GTAO's spatial denoiser: a 5 x 5 (AO texels) Gaussian weighted by how far each neighbour's surface lies from
-// the centre's tangent plane, so occlusion does not bleed across depth discontinuities (no halos) and the
-// half-resolution result is upsampled along surfaces. Sky pixels are 1.
+// GTAO's spatial denoiser: a 5 x 5 (AO texels) Gaussian, weighted by how far each neighbour's surface lies
+// from the centre's tangent plane, how far it lies from the centre point and how its normal turns away, so
+// occlusion does not bleed across depth discontinuities (no halos) and the half-resolution result is
+// upsampled along surfaces. Sky pixels are 1.
 #include "passes/gtao/gtao_common.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -9,6 +10,16 @@ layout(binding = 0) uniform sampler2D uLinearDepth;
 layout(binding = 1) uniform sampler2D uNormals;
 layout(binding = 2) uniform sampler2D uRaw;
 layout(binding = 0, r16f) uniform writeonly image2D uVisibility;
+
+// Neighbours farther from the centre point than this fraction of the radius weigh exp(-1) less, and so on:
+// visibility changes over the radius. A plane seen at a grazing angle steps by a radius or more from one
+// pixel row to the next, and without this the ground in front of a wall's foot took the wall's occlusion.
+const float kReach = 0.5;
+
+vec3 normalAt(ivec2 p) {
+    vec4 t = texelFetch(uNormals, p, 0);
+    return normalize(uOctahedral != 0 ? octahedralDecode(t.rg) : t.xyz);
+}
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -21,8 +32,7 @@ void main() {
         imageStore(uVisibility, p, vec4(1.0));
         return;
     }
-    vec4 t = texelFetch(uNormals, p, 0);
-    vec3 normal = normalize(uOctahedral != 0 ? octahedralDecode(t.rg) : t.xyz);
+    vec3 normal = normalAt(p);
     vec3 position = viewPositionAt(vec2(p) + 0.5, z);
     ivec2 rawSize = textureSize(uRaw, 0);
     ivec2 centre = p / uScale;
@@ -36,15 +46,21 @@ void main() {
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, rawSize))) {
                 continue;
             }
-            ivec2 source = min(q * uScale, full - 1);
+            ivec2 source = aoSourcePixel(q, full);
             float sz = texelFetch(uLinearDepth, source, 0).r;
             if (isinf(sz) || !(sz > 0.0)) {
                 continue;
             }
             vec3 offset = viewPositionAt(vec2(source) + 0.5, sz) - position;
             float plane = abs(dot(offset, normal)) / tolerance;
-            vec2 d = vec2(source - p) / float(uScale);
-            float w = exp(-0.5 * dot(d, d) / 2.25) * exp(-plane * plane);
+            float reach = length(offset) / (kReach * uRadius);
+            // A crease (a wall meeting the ground) lies in both faces' tangent planes; the normals tell the
+            // faces apart, whose occlusion differs.
+            float facing = pow(max(dot(normalAt(source), normal), 0.0), 4.0);
+            // The Gaussian is in full-resolution pixels: at half resolution it spans the same area of the
+            // image, not twice as much.
+            vec2 d = vec2(source - p);
+            float w = exp(-0.5 * dot(d, d) / 2.25 - plane * plane - reach * reach) * facing;
             sum += w * texelFetch(uRaw, q, 0).r;
             weights += w;
         }

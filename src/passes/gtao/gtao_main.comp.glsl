@@ -11,6 +11,11 @@ layout(binding = 0, r16f) uniform writeonly image2D uRaw;
 
 const float kPi = 3.14159265358979;
 const float kHalfPi = 1.57079632679490;
+// The thickness heuristic of Jimenez et al. 2016: a sample within the radius but below the horizon found so
+// far pulls the horizon this far towards itself. Depth has no thickness, so a thin pole or wire in front of
+// the point reads as a wall; the ground seen past it, below the horizon it set, says otherwise. Partial,
+// because past the top of a solid box the samples fall below its horizon as well.
+const float kThickness = 0.3;
 
 // Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of Duty: Advanced
 // Warfare"), shifted per frame so a temporal filter sees other slice angles each frame.
@@ -26,37 +31,64 @@ vec3 viewNormalAt(ivec2 p) {
 
 // A sample's surface continued along its tangent plane within the slice: the surface may cross the radius
 // between two samples (a plane seen at a grazing angle, whose part within the radius is narrower than a
-// pixel: the ground at the foot of a wall). Returns the highest cosine to the view vector of that line's part
-// within the radius on this side, or -1. Only planes the centre point lies in front of count (a surface
-// behind the point cannot reach it). Known error: a plane is continued past its surface's edge (a box's face
-// beyond the box), which over-occludes near edges.
-float planeHorizon(vec3 hit, vec3 sampleNormal, vec3 origin, vec3 axis, vec3 sideVec, vec3 viewVec) {
+// pixel: the ground at the foot of a wall). The plane is cut with the slice plane itself, not followed from
+// the sample: a sample sits up to half a texel off the slice, and on a plane seen edge-on (the ground far
+// away) a line through it, parallel to the slice, passes beside the centre and reads as a steep horizon on
+// the wrong side of the centre's own tangent plane. Returns the highest cosine to the view vector of the
+// trace's part within the radius on this side, or -1, and where that part meets the radius (view space) in
+// `point`. Only planes the centre point lies in front of count (a surface behind the point cannot reach it).
+float planeHorizon(vec3 hit, vec3 sampleNormal, vec3 origin, vec3 axis, vec3 sideVec, vec3 viewVec,
+                   out vec3 point) {
+    point = vec3(0.0);
     if (dot(origin - hit, sampleNormal) < 0.0) {
         return -1.0;
     }
-    vec3 d = cross(axis, sampleNormal);
-    float len = length(d);
-    if (len < 1e-4) {
+    // The plane's trace on the slice plane: the points x (relative to origin) with dot(x, axis) = 0 and
+    // dot(x - o, sampleNormal) = 0; m is the normal projected into the slice plane.
+    vec3 o = hit - origin;
+    vec3 m = sampleNormal - axis * dot(sampleNormal, axis);
+    float m2 = dot(m, m);
+    if (m2 < 1e-8) {
         return -1.0;
     }
-    d /= len;
-    vec3 o = hit - origin;
-    float b = dot(o, d);
-    float disc = b * b - (dot(o, o) - uRadius * uRadius);
+    vec3 x0 = m * (dot(o, sampleNormal) / m2);
+    vec3 d = normalize(cross(axis, sampleNormal));
+    float disc = uRadius * uRadius - dot(x0, x0);
     if (disc <= 0.0) {
         return -1.0;
     }
-    float lo = -b - sqrt(disc);
-    float hi = -b + sqrt(disc);
     float best = -1.0;
     for (int k = 0; k < 2; ++k) {
-        vec3 p = o + (k == 0 ? lo : hi) * d;
-        float pl = length(p);
-        if (pl > 1e-6 && dot(p, sideVec) > 0.0) {
-            best = max(best, dot(p / pl, viewVec));
+        vec3 p = x0 + (k == 0 ? -1.0 : 1.0) * sqrt(disc) * d;
+        float c = dot(p, viewVec) / uRadius;
+        if (dot(p, sideVec) > 0.0 && c > best) {
+            best = c;
+            point = origin + p;
         }
     }
     return best;
+}
+
+// Whether the depth buffer allows a continued surface to reach `point` (view space): false where the visible
+// surface at its pixel lies behind the point by more than a twentieth of the radius (the continued surface
+// would hide it) or where the sky shows. A tangent plane continued past its surface's edge fails it (a
+// sphere's lower tangent plane, which rises in front of the sphere over the ground at its foot); the ground
+// continued to the foot of a wall passes (it lies on the ground the pixels there show).
+bool depthAgrees(vec3 point) {
+    vec4 clip = uProjection * vec4(point, 1.0);
+    if (!(clip.w > 0.0)) {
+        return true;
+    }
+    ivec2 texel = ivec2(floor((clip.xy / clip.w * 0.5 + 0.5) * uFullSize));
+    if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, ivec2(uFullSize)))) {
+        return true;
+    }
+    float z = texelFetch(uLinearDepth, texel, 0).r;
+    if (isinf(z) || !(z > 0.0)) {
+        return false;
+    }
+    vec3 visible = viewPositionAt(vec2(texel) + 0.5, z);
+    return dot(point - visible, viewNormalAt(texel)) <= 0.05 * uRadius;
 }
 
 void main() {
@@ -66,7 +98,7 @@ void main() {
         return;
     }
     ivec2 full = ivec2(uFullSize);
-    ivec2 p = min(q * uScale, full - 1);
+    ivec2 p = aoSourcePixel(q, full);
     float z = texelFetch(uLinearDepth, p, 0).r;
     if (isinf(z) || !(z > 0.0)) {
         imageStore(uRaw, q, vec4(1.0));
@@ -140,9 +172,14 @@ void main() {
                 }
                 vec3 sampleNormal = viewNormalAt(texel);
                 if (dist <= uRadius) {
-                    best = max(best, dot(delta / dist, viewVec));
+                    float c = dot(delta / dist, viewVec);
+                    best = c > best ? c : mix(best, c, kThickness);
                 }
-                best = max(best, planeHorizon(hit, sampleNormal, origin, axis, sideVec, viewVec));
+                vec3 point;
+                float c = planeHorizon(hit, sampleNormal, origin, axis, sideVec, viewVec, point);
+                if (c > best && depthAgrees(point)) {
+                    best = c;
+                }
             }
             if (side == 0) {
                 horizonCos0 = best;
