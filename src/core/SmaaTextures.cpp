@@ -147,8 +147,9 @@ Area diagonalArea(int startEnd, int endEnd, int left, int right) {
     // -> (1, 1) -> ... -> (d, d), its outer corners on y = x and its inner ones on y = x + 1. As for
     // orthogonal runs, the edges that go on at the ends say which way the silhouette bends (the paper's
     // diagonal patterns), and it is a line through step corners:
-    //  - start, an edge on along y (up from (0, 0)): the line leaves from (0, 0); on along x (left from
-    //    (0, 0)): from (0, 1), a flatter line; neither: from (-1, 0) or (0, 0), both possibilities blended;
+    //  - start, pixel 0 a full step (its -x side, down to (0, 0)): the line leaves from (0, 0); the outline
+    //    on along x left of (0, 1): from (0, 1), a flatter line; neither (pixel 0 a half step and the
+    //    outline turning away): from (-1, 0) or (0, 0), both possibilities blended;
     //  - end, on along x (right from (d, d)): the line arrives at (d, d); on along y (down from (d, d)): at
     //    (d, d + 1), a steeper line; neither: at (d - 1, d) or (d, d), blended;
     //  - both at one end: the two possibilities, each paired with one line; neither at both ends: the two

@@ -48,10 +48,12 @@ struct Area {
 /// Diagonal runs: the staircase whose pixels k = 0..d-1 sit at (k, k) with an edge on their -x and +y
 /// sides (d = left + right + 1, the pixel of interest is k = left). `plus` is the share of the +y
 /// neighbour (k, k + 1) on the staircase's side of the line, `minus` the share of the staircase pixel on
-/// the other side: the two pixels of the edge between them. Ends: bit 0, the outline goes on along x past
-/// the end (left of (0, 0), right of (d, d)); bit 1, along y (up from (0, 0), down from (d, d)); 0 also
-/// where the search ran out. The ends bend the cutting line through the steps' corners (the paper's
-/// diagonal patterns, see the .cpp); with neither at both ends it is 1/4 on each side.
+/// the other side: the two pixels of the edge between them. Start: bit 0, the outline goes on along x
+/// left of (0, 1); bit 1, pixel 0 has its -x side, down to (0, 0) (without it pixel 0 is a half step that
+/// closes the staircase, only its +y side on the outline). End: bit 0, on along x right of (d, d); bit 1,
+/// on along y down from (d, d). 0 also where the search ran out. The ends bend the cutting line through
+/// the steps' corners (the paper's diagonal patterns, see the .cpp); with neither at both ends it is 1/4
+/// on each side.
 [[nodiscard]] Area diagonalArea(int startEnd, int endEnd, int left, int right);
 
 /// RG8 tables, row-major from texel (0, 0).

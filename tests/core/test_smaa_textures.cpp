@@ -101,8 +101,8 @@ TEST(SmaaTextures, OrthogonalSymmetriesRangeAndTotals) {
 
 // Diagonals (the staircase (k, k), k = 0..d-1, outline (0, 0) -> (0, 1) -> (1, 1) -> ... -> (d, d)), worked
 // by hand:
-// - on along y at the start, along x at the end: the line through the outer corners, y = x; it halves
-//   every staircase pixel and misses the +y neighbours: (plus, minus) = (0, 1/2);
+// - pixel 0 a full step at the start, on along x at the end: the line through the outer corners, y = x;
+//   it halves every staircase pixel and misses the +y neighbours: (plus, minus) = (0, 1/2);
 // - on along x at the start, along y at the end: the inner corners, y = x + 1: (1/2, 0);
 // - neither at both ends: the blend of those two, (1/4, 1/4);
 // - on along x at both ends, d = 3: the line (0, 1) -> (3, 3), y = 1 + 2x/3, flatter than the staircase.

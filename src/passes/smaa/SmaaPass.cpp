@@ -102,7 +102,7 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     }
     const std::string prefix = hdr ? "smaa (hdr) " : "smaa ";
     {
-        // Five colour reads (cached) and one RG8 write per pixel.
+        // Up to ten colour reads per pixel (neighbours hit the cache) and one RG8 write.
         ScopedGpuTimer timer(ctx.timers, prefix + "edges", pixels * (colorBytes + 2.0));
         mEdges.use();
         glBindTextureUnit(0, color.id());

@@ -2,8 +2,8 @@
 // Antialiasing", sections 3.1-3.3; the morphological reconstruction of Jimenez et al. 2011, "Practical
 // Morphological Antialiasing", GPU Pro 2).
 // For the edge on a pixel's -y side (edges.g) and on its -x side (edges.r):
-//  1. diagonal patterns first (edges.g only): 45-degree staircases through the pixel, searched one pixel
-//     per step; when one is found its weights replace the orthogonal ones;
+//  1. diagonal patterns first (edges.g only): 45-degree staircases of four pixels or more through the
+//     pixel, searched one pixel per step; when one is found its weights replace the orthogonal ones;
 //  2. orthogonal searches both ways along the edge, two pixels per bilinear fetch of the edges texture,
 //     decoded by the search table (the fetch at 3/4 near pixel, 7/8 the run's row, so each channel's
 //     four bits land on distinct 32nds);
@@ -135,38 +135,54 @@ bool diagEdgeG(ivec2 q, ivec2 d, bool mirror) {
     return edgeG(q + (mirror ? ivec2(-d.x, d.y) : d));
 }
 
-// The staircase whose steps have edges on their -x and -y sides, going on along (1, -1), with this pixel q
-// one of the steps. With `mirror`, the same pattern in the image mirrored across q's column, i.e. steps
-// with edges on their +x and -y sides going on along (1, 1). Both weights belong to the edge on q's -y side
-// (its -y neighbour's share first in the table, so they swap), which the mirror leaves where it was: one
-// area table serves both directions.
+bool diagStep(ivec2 q, ivec2 d, bool mirror) {
+    return diagEdgeG(q, d, mirror) && diagEdgeR(q, d, mirror);
+}
+
+// The staircase whose steps have edges on their -x and -y sides, going on along (1, -1), through this
+// pixel q. With `mirror`, the same pattern in the image mirrored across q's column, i.e. steps with edges
+// on their +x and -y sides going on along (1, 1). Both weights belong to the edge on q's -y side (its -y
+// neighbour's share first in the table, so they swap), which the mirror leaves where it was: one area table
+// serves both directions.
+// The search follows the reference shader. At the (-1, 1) end a staircase may close with a half step, a
+// pixel with only its -y edge where the outline turns along x: q itself may be one (the search towards
+// (-1, 1) only starts from a q with its -x edge), and the search takes the pixel it stopped at when that
+// pixel has its -y edge. That end's continuations are read at the first pixel's (-x, -y) corner, on along
+// x, and down its own -x side; the other end's at the last step's (+x, -y) corner. The area table's
+// patterns are drawn from those lookups. Four pixels make a staircase: three are mostly a corner, which
+// the orthogonal patterns handle (with three, the testbed's edge error is 0.1 points of no AA's higher).
 vec2 diagonalWeights(ivec2 q, bool mirror) {
-    if (!diagEdgeR(q, ivec2(0), mirror)) {
-        return vec2(0.0);
-    }
     int fwd = 0;
-    while (fwd < uDiagSteps && diagEdgeG(q, ivec2(fwd + 1, -fwd - 1), mirror) &&
-           diagEdgeR(q, ivec2(fwd + 1, -fwd - 1), mirror)) {
+    while (fwd < uDiagSteps && diagStep(q, ivec2(fwd + 1, -fwd - 1), mirror)) {
         ++fwd;
     }
+    bool fwdOpen = fwd == uDiagSteps;
+    fwd = min(fwd, uDiagSteps - 1);
     int back = 0;
-    while (back < uDiagSteps && diagEdgeG(q, ivec2(-back - 1, back + 1), mirror) &&
-           diagEdgeR(q, ivec2(-back - 1, back + 1), mirror)) {
-        ++back;
+    bool backOpen = false;
+    if (diagEdgeR(q, ivec2(0), mirror)) {
+        while (back < uDiagSteps && diagStep(q, ivec2(-back - 1, back + 1), mirror)) {
+            ++back;
+        }
+        backOpen = back == uDiagSteps;
+        back = min(back, uDiagSteps - 1);
+        if (backOpen || diagEdgeG(q, ivec2(-back - 1, back + 1), mirror)) {
+            ++back; // the half step, or the search's last pixel where it ran out
+        }
     }
-    if (fwd + back < 2) {
-        return vec2(0.0); // one or two steps: a corner, which the orthogonal patterns handle
+    if (fwd + back < 3) {
+        return vec2(0.0);
     }
     // The ends' continuations (bit 0 along x, bit 1 along y); none where the search ran out, as the
     // reference drops the crossing edges of an end it did not find.
     ivec2 first = ivec2(-back, back);
     ivec2 last = ivec2(fwd, -fwd);
-    int e1 = back == uDiagSteps ? 0
-                                : int(diagEdgeG(q, first + ivec2(-1, 1), mirror)) |
-                                      (int(diagEdgeR(q, first + ivec2(0, 1), mirror)) << 1);
-    int e2 = fwd == uDiagSteps ? 0
-                               : int(diagEdgeG(q, last + ivec2(1, 0), mirror)) |
-                                     (int(diagEdgeR(q, last + ivec2(1, -1), mirror)) << 1);
+    int e1 = backOpen ? 0
+                      : int(diagEdgeG(q, first + ivec2(-1, 0), mirror)) |
+                            (int(diagEdgeR(q, first, mirror)) << 1);
+    int e2 = fwdOpen ? 0
+                     : int(diagEdgeG(q, last + ivec2(1, 0), mirror)) |
+                           (int(diagEdgeR(q, last + ivec2(1, -1), mirror)) << 1);
     ivec2 texel = ivec2(kDiagMax * e2 + min(fwd, kDiagMax - 1), kDiagMax * e1 + min(back, kDiagMax - 1));
     return texelFetch(uAreaDiag, texel, 0).gr;
 }
