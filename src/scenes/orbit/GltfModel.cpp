@@ -336,10 +336,15 @@ bool finite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-/// A unit vector; a zero-length (degenerate) one becomes +y, since a renderer needs some unit normal.
+/// A unit vector; a zero-length (degenerate) one becomes +y, since a renderer needs some unit normal. Scaled
+/// by its largest component first: squaring a component near the float range's ends underflows to a
+/// denormal or overflows, and the length computed from it is then wrong.
 glm::vec3 unitOrUp(const glm::vec3& v) {
-    const float length = glm::length(v);
-    return length > 0.0f && std::isfinite(length) ? v / length : glm::vec3(0.0f, 1.0f, 0.0f);
+    const float largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    if (!(largest > 0.0f) || !std::isfinite(largest)) {
+        return glm::vec3(0.0f, 1.0f, 0.0f);
+    }
+    return glm::normalize(v / largest);
 }
 
 /// A node's world transform, and what follows from it for normals and winding.
