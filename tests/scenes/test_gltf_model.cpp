@@ -4,7 +4,7 @@
 
 #include "scenes/orbit/GltfModel.h"
 
-#include "io/DataPath.h"
+#include "io/TestData.h"
 
 #include <glm/gtc/type_ptr.hpp>
 #include <gtest/gtest.h>
@@ -19,10 +19,6 @@
 #include <string>
 #include <vector>
 
-#ifndef PHOTOPIC_SOURCE_DIR
-#error "PHOTOPIC_SOURCE_DIR must name the repository root (the build defines it for tests)"
-#endif
-
 namespace photopic::orbit {
 
 namespace {
@@ -31,7 +27,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 fs::path badDir() {
-    return fs::path(PHOTOPIC_SOURCE_DIR) / "tests" / "data" / "gltf-bad";
+    return test::testInputDir() / "gltf-bad";
 }
 
 std::vector<std::uint8_t> readBytes(const fs::path& file) {
@@ -77,7 +73,7 @@ void expectUnitNormalsAndIndicesInRange(const Model& model) {
 }
 
 TEST(GltfModel, TwoCylinderEngineMatchesItsOwnJsonAndBuffer) {
-    const fs::path file = findDataDir() / "gltf" / "2CylinderEngine.glb";
+    const fs::path file = test::dataDir() / "gltf" / "2CylinderEngine.glb";
     const Model model = loadModel(file);
 
     // The expected figures, from the GLB's own chunks: the node tree's world matrices (this file uses
@@ -134,7 +130,7 @@ TEST(GltfModel, TwoCylinderEngineMatchesItsOwnJsonAndBuffer) {
 }
 
 TEST(GltfModel, BoxTexturedHasAnSrgbBaseColourAtThePngsSize) {
-    const fs::path dir = findDataDir() / "gltf" / "BoxTextured";
+    const fs::path dir = test::dataDir() / "gltf" / "BoxTextured";
     const Model model = loadModel(dir / "BoxTextured.gltf");
     EXPECT_EQ(model.triangleCount(), 12u);
     ASSERT_EQ(model.materials.size(), 1u);
@@ -207,13 +203,26 @@ protected:
     }
     void TearDown() override { fs::remove_all(mDir); }
 
+    /// Appends floats after the triangle (from byte 44) behind a new buffer view; returns the view's index.
+    int addFloats(const std::vector<float>& values) {
+        const std::size_t offset = 44 + mExtra.size() * 4;
+        mExtra.insert(mExtra.end(), values.begin(), values.end());
+        mGltf["bufferViews"].push_back(
+            {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * 4}});
+        mGltf["buffers"][0]["byteLength"] = 44 + mExtra.size() * 4;
+        return int(mGltf["bufferViews"].size()) - 1;
+    }
+
     fs::path write() const {
-        std::vector<std::uint8_t> bin(44, 0);
+        std::vector<std::uint8_t> bin(44 + mExtra.size() * 4, 0);
         std::memcpy(bin.data(), mPositions.data(), 36);
         const std::uint16_t indices[3] = {0, 1, 2};
         std::memcpy(bin.data() + 36, indices, 6);
+        if (!mExtra.empty()) {
+            std::memcpy(bin.data() + 44, mExtra.data(), mExtra.size() * 4);
+        }
         std::ofstream(mDir / "tri.bin", std::ios::binary)
-            .write(reinterpret_cast<const char*>(bin.data()), 44);
+            .write(reinterpret_cast<const char*>(bin.data()), std::streamsize(bin.size()));
         std::ofstream(mDir / "model.gltf") << mGltf.dump();
         return mDir / "model.gltf";
     }
@@ -221,6 +230,7 @@ protected:
     fs::path mDir;
     json mGltf;
     std::vector<float> mPositions{0, 0, 0, 1, 0, 0, 0, 1, 0};
+    std::vector<float> mExtra;
 };
 
 TEST_F(GltfHostile, TheUnbrokenTriangleLoadsWithAFlatNormal) {
@@ -239,6 +249,28 @@ TEST_F(GltfHostile, AMirroringNodeKeepsFrontFacesCounterClockwise) {
     const Primitive& p = model.meshes.at(0).primitives.at(0);
     EXPECT_FLOAT_EQ(p.vertices.at(0).normal.z, 1.0f);
     EXPECT_FLOAT_EQ(p.vertices.at(p.indices[1]).position.x, 0.0f); // the second and third corners swapped
+}
+
+TEST_F(GltfHostile, NormalsAndTangentsFollowAMirroringNode) {
+    // Normals near 1e-20 underflow when squared: they must still come out unit length.
+    const int normals = addFloats({0, 0, 1e-20f, 0, 0, 1e-20f, 0, 0, 1e-20f});
+    const int tangents = addFloats({1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1});
+    mGltf["accessors"].push_back(
+        {{"bufferView", normals}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+    mGltf["accessors"].push_back(
+        {{"bufferView", tangents}, {"componentType", 5126}, {"count", 3}, {"type", "VEC4"}});
+    mGltf["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 2;
+    mGltf["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] = 3;
+    mGltf["nodes"][0]["scale"] = {-1, 1, 1};
+    const Model model = loadModel(write());
+    const Primitive& p = model.meshes.at(0).primitives.at(0);
+    EXPECT_FALSE(p.flatNormals);
+    EXPECT_TRUE(p.hasTangents);
+    for (const Vertex& v : p.vertices) {
+        EXPECT_FLOAT_EQ(v.normal.z, 1.0f);
+        EXPECT_FLOAT_EQ(v.tangent.x, -1.0f);
+        EXPECT_FLOAT_EQ(v.tangent.w, -1.0f); // the bitangent flips with the mirror
+    }
 }
 
 TEST_F(GltfHostile, StripsAndFansAreTriangulated) {
