@@ -372,8 +372,8 @@ private:
     void checkIndex(int index, std::size_t count, const std::string& where, const char* what) const {
         if (index < 0 || std::size_t(index) >= count) {
             fail(ModelIssue::BadIndex, where,
-                 std::string(what) + " " + std::to_string(index) + " out of range (" + std::to_string(count) +
-                     ")");
+                 std::string(what) + " " + std::to_string(index) + " out of range (the file has " +
+                     std::to_string(count) + ")");
         }
     }
     void reserve(std::uint64_t vertices, std::uint64_t indices, std::uint64_t bytes,
@@ -387,6 +387,7 @@ private:
     void addInstance(int node, const Placement& placement, Model& model);
 
     AccessorView view(int accessor, const AccessorUse& use, const std::string& where) const;
+    void locate(const tinygltf::Accessor& a, AccessorView& v) const;
     std::vector<std::uint32_t> readIndices(const tinygltf::Primitive& p, std::size_t vertexCount,
                                            const std::string& where) const;
     Primitive buildPrimitive(const tinygltf::Primitive& p, const Placement& placement,
@@ -619,10 +620,14 @@ AccessorView Builder::view(int accessor, const AccessorUse& use, const std::stri
         fail(ModelIssue::BadAccessor, v.where, "count is 0");
     }
     v.components = use.type == TINYGLTF_TYPE_SCALAR ? 1 : use.type;
-    const std::uint64_t elementBytes = std::uint64_t(v.components) * componentBytes(v.kind);
-    if (a.bufferView < 0) {
-        return v; // all zeros
+    if (a.bufferView >= 0) {
+        locate(a, v);
     }
+    return v; // without a buffer view: all zeros
+}
+
+void Builder::locate(const tinygltf::Accessor& a, AccessorView& v) const {
+    const std::uint64_t elementBytes = std::uint64_t(v.components) * componentBytes(v.kind);
     checkIndex(a.bufferView, mGltf.bufferViews.size(), v.where + ".bufferView", "buffer view");
     const tinygltf::BufferView& bv = mGltf.bufferViews[std::size_t(a.bufferView)];
     const std::string viewWhere = path("bufferViews", std::size_t(a.bufferView));
@@ -648,7 +653,6 @@ AccessorView Builder::view(int accessor, const AccessorUse& use, const std::stri
                  viewWhere);
     }
     v.data = buffer.data() + bv.byteOffset + a.byteOffset;
-    return v;
 }
 
 std::vector<std::uint32_t> Builder::readIndices(const tinygltf::Primitive& p, std::size_t vertexCount,
