@@ -154,6 +154,21 @@ TEST(GltfModel, BoxTexturedHasAnSrgbBaseColourAtThePngsSize) {
     expectUnitNormalsAndIndicesInRange(model);
 }
 
+TEST(GltfModel, AMissingOrOversizedImageIsRejected) {
+    const fs::path source = test::dataDir() / "gltf" / "BoxTextured";
+    EXPECT_EQ(issueOf(source / "BoxTextured.gltf", nullptr, {.maxImageSide = 100}), ModelIssue::TooLarge);
+    EXPECT_EQ(issueOf(source / "BoxTextured.gltf", nullptr, {.maxBytes = 100000}), ModelIssue::TooLarge);
+    const fs::path dir = fs::temp_directory_path() / "photopic-gltf-missing-image";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    fs::copy_file(source / "BoxTextured.gltf", dir / "BoxTextured.gltf");
+    fs::copy_file(source / "BoxTextured0.bin", dir / "BoxTextured0.bin");
+    std::string message;
+    EXPECT_EQ(issueOf(dir / "BoxTextured.gltf", &message), ModelIssue::MissingFile);
+    EXPECT_NE(message.find("images[0].uri"), std::string::npos) << message;
+    fs::remove_all(dir);
+}
+
 struct BadSample {
     const char* file;
     ModelIssue issue;
