@@ -31,6 +31,9 @@ constexpr Target kTargets[] = {
     {"exr", photopic::fuzz::exrImage},          {"hdr", photopic::fuzz::hdrImage},
     {"png", photopic::fuzz::pngImage},
 #endif
+#ifdef PHOTOPIC_FUZZ_WITH_SCENES
+    {"gltf", photopic::fuzz::gltfModel},
+#endif
 };
 
 /// The reproducers, each with the target whose reader misbehaved on it.
