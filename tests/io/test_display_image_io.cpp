@@ -4,6 +4,8 @@
 
 #include "io/ImageIO.h"
 
+#include "common/TempFolder.h"
+
 #include <gtest/gtest.h>
 
 #include <png.h>
@@ -27,28 +29,6 @@ namespace photopic {
 namespace {
 
 namespace fs = std::filesystem;
-
-class TempFolder {
-public:
-    TempFolder() {
-        static int counter = 0;
-        mPath = fs::temp_directory_path() /
-                ("photopic-display-io-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-        fs::remove_all(mPath);
-        fs::create_directories(mPath);
-    }
-    ~TempFolder() {
-        std::error_code ignored;
-        fs::remove_all(mPath, ignored);
-    }
-    TempFolder(const TempFolder&) = delete;
-    TempFolder& operator=(const TempFolder&) = delete;
-    [[nodiscard]] fs::path operator/(const std::string& name) const { return mPath / name; }
-    [[nodiscard]] const fs::path& path() const { return mPath; }
-
-private:
-    fs::path mPath;
-};
 
 /// A 16-bit ramp whose every pixel differs: 64x48 values over [0, 65535], alpha opaque or varying.
 Image16 ramp16(bool alpha) {
@@ -185,7 +165,7 @@ TEST(DisplayImageIo, FormatComesFromTheExtensionInAnyCase) {
 }
 
 TEST(DisplayImageIo, Png16RoundTripsThroughLibpng) {
-    TempFolder folder;
+    test::TempFolder folder;
     for (const bool alpha : {false, true}) {
         const Image16 image = ramp16(alpha);
         const fs::path path = folder / (alpha ? "rgba.png" : "rgb.png");
@@ -197,7 +177,7 @@ TEST(DisplayImageIo, Png16RoundTripsThroughLibpng) {
 }
 
 TEST(DisplayImageIo, Png16ReadsBackThroughTheProjectsReader) {
-    TempFolder folder;
+    test::TempFolder folder;
     const Image16 image = ramp16(false);
     writePng16(folder / "ramp.png", image);
     const ImageF back = readImage(folder / "ramp.png");
@@ -210,7 +190,7 @@ TEST(DisplayImageIo, Png16ReadsBackThroughTheProjectsReader) {
 }
 
 TEST(DisplayImageIo, TiffRoundTripsAt8And16BitsThroughLibtiff) {
-    TempFolder folder;
+    test::TempFolder folder;
     for (const bool alpha : {false, true}) {
         const Image16 deep = ramp16(alpha);
         const fs::path path16 = folder / (alpha ? "rgba16.tif" : "rgb16.tif");
@@ -228,7 +208,7 @@ TEST(DisplayImageIo, TiffRoundTripsAt8And16BitsThroughLibtiff) {
 }
 
 TEST(DisplayImageIo, JpegDecodesWithStbImageToTheSizeWithSmallError) {
-    TempFolder folder;
+    test::TempFolder folder;
     const Image8 image = smooth8();
     writeJpeg(folder / "smooth.jpg", image, 95);
     int width = 0, height = 0, channels = 0;
@@ -257,7 +237,7 @@ TEST(DisplayImageIo, JpegDecodesWithStbImageToTheSizeWithSmallError) {
 }
 
 TEST(DisplayImageIo, BadWritesThrowNamingThePathAndLeaveNothing) {
-    TempFolder folder;
+    test::TempFolder folder;
     try {
         writeJpeg(folder / "q.jpg", smooth8(), 0);
         FAIL() << "quality 0 was accepted";

@@ -2,6 +2,8 @@
 
 #include "io/ImageIO.h"
 
+#include "common/TempFolder.h"
+
 #include <gtest/gtest.h>
 
 #include <ImfChannelList.h>
@@ -22,27 +24,6 @@ namespace photopic {
 namespace {
 
 namespace fs = std::filesystem;
-
-class TempFolder {
-public:
-    TempFolder() {
-        static int counter = 0;
-        mPath = fs::temp_directory_path() /
-                ("photopic-exrframe-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-        fs::remove_all(mPath);
-        fs::create_directories(mPath);
-    }
-    ~TempFolder() {
-        std::error_code ignored;
-        fs::remove_all(mPath, ignored);
-    }
-    TempFolder(const TempFolder&) = delete;
-    TempFolder& operator=(const TempFolder&) = delete;
-    [[nodiscard]] fs::path operator/(const std::string& name) const { return mPath / name; }
-
-private:
-    fs::path mPath;
-};
 
 constexpr int kWidth = 8;
 constexpr int kHeight = 6;
@@ -98,7 +79,7 @@ void expectMatNear(const glm::mat4& a, const glm::mat4& b, float tolerance) {
 }
 
 TEST(ExrFrame, RoundTripsEveryLayerAndAttribute) {
-    const TempFolder folder;
+    const test::TempFolder folder;
     const ExrFrame written = testFrame();
     writeExrFrame(folder / "frame.exr", written);
     const ExrFrame read = readExrFrame(folder / "frame.exr");
@@ -136,7 +117,7 @@ TEST(ExrFrame, RoundTripsEveryLayerAndAttribute) {
 }
 
 TEST(ExrFrame, ColorOnlyFileHasNoLayersOrCamera) {
-    const TempFolder folder;
+    const test::TempFolder folder;
     ImageF image(4, 3, 0.5f);
     writeExr(folder / "plain.exr", image);
     const ExrFrame frame = readExrFrame(folder / "plain.exr");
@@ -277,7 +258,7 @@ void expectIoError(const fs::path& path, const std::string& fragment) {
 }
 
 TEST(ExrFrame, IncompleteLayerIsAnErrorNamingTheFile) {
-    const TempFolder folder;
+    const test::TempFolder folder;
     writeRaw(folder / "n.exr", {"R", "G", "B", "N.X", "N.Y"});
     expectIoError(folder / "n.exr", "has N.X, N.Y but not N.Z");
     writeRaw(folder / "m.exr", {"R", "G", "B", "motion.Y"});
@@ -285,7 +266,7 @@ TEST(ExrFrame, IncompleteLayerIsAnErrorNamingTheFile) {
 }
 
 TEST(ExrFrame, AlternativeLayerNamesAreRead) {
-    const TempFolder folder;
+    const test::TempFolder folder;
     writeRaw(folder / "alt.exr", {"R", "G", "B", "depth.Z", "normal.X", "normal.Y", "normal.Z"});
     const ExrFrame frame = readExrFrame(folder / "alt.exr");
     EXPECT_EQ(frame.depth, std::vector<float>(4, 1.0f));
@@ -293,7 +274,7 @@ TEST(ExrFrame, AlternativeLayerNamesAreRead) {
 }
 
 TEST(ExrFrame, WrongTypedAttributeIsAnErrorNamingTheFile) {
-    const TempFolder folder;
+    const test::TempFolder folder;
     writeRaw(folder / "attr.exr", {"R", "G", "B"},
              [](Imf::Header& h) { h.insert("worldToNDC", Imf::FloatAttribute(2.0f)); });
     expectIoError(folder / "attr.exr", "attribute worldToNDC is of type float, expected m44f");
@@ -303,7 +284,7 @@ TEST(ExrFrame, WrongTypedAttributeIsAnErrorNamingTheFile) {
 }
 
 TEST(ExrFrame, NotAnExrIsAnError) {
-    const TempFolder folder;
+    const test::TempFolder folder;
     writePng(folder / "x.exr", Image8(2, 2));
     expectIoError(folder / "x.exr", "not an OpenEXR");
     expectIoError(folder / "missing.exr", "does not exist");
@@ -326,7 +307,7 @@ TEST(ExrFrame, BadCameraMatricesAreInvalidArguments) {
 }
 
 TEST(ExrFrame, WriteRejectsMismatchedLayers) {
-    const TempFolder folder;
+    const test::TempFolder folder;
     ExrFrame frame = testFrame();
     frame.depth.pop_back();
     EXPECT_THROW(writeExrFrame(folder / "bad.exr", frame), IoError);

@@ -2,6 +2,8 @@
 
 #include "TestData.h"
 
+#include "common/TempFolder.h"
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -20,39 +22,6 @@ namespace photopic {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// A fresh folder under the system temp folder, removed with everything in it at the end of the test.
-class TempDir {
-public:
-    TempDir() {
-        static int counter = 0;
-        mPath = fs::temp_directory_path() /
-                ("photopic-io-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-        fs::remove_all(mPath);
-        fs::create_directories(mPath);
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        fs::remove_all(mPath, ignored);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-
-    [[nodiscard]] const fs::path& path() const { return mPath; }
-    [[nodiscard]] fs::path operator/(const std::string& name) const { return mPath / name; }
-
-    /// Names of everything in the folder, sorted.
-    [[nodiscard]] std::vector<std::string> listing() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(mPath))
-            names.push_back(entry.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-
-private:
-    fs::path mPath;
-};
 
 std::string readFileBytes(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -177,7 +146,7 @@ TEST(SharedImages, DeskHdrClampsNegativesAndMatchesDeskExr) {
 // Round trips
 
 TEST(ImageIO, ExrRoundTripKeepsHalfPrecision) {
-    TempDir dir;
+    test::TempFolder dir;
     ImageF image(37, 23);
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {
@@ -208,7 +177,7 @@ TEST(ImageIO, ExrRoundTripKeepsHalfPrecision) {
 }
 
 TEST(ImageIO, ExrClampsBeyondHalfRange) {
-    TempDir dir;
+    test::TempFolder dir;
     ImageF image(2, 1);
     image.rgba = {1e6f, -1e6f, INFINITY, 1.0f, NAN, 65504.0f, 0.0f, 1.0f};
     writeExr(dir / "range.exr", image);
@@ -231,7 +200,7 @@ Image8 patternImage(int width, int height, bool opaque) {
 }
 
 TEST(ImageIO, PngRoundTripIsExact) {
-    TempDir dir;
+    test::TempFolder dir;
     for (const bool opaque : {false, true}) {
         const Image8 image = patternImage(41, 17, opaque);
         const fs::path path = dir / (opaque ? "rgb.png" : "rgba.png");
@@ -249,7 +218,7 @@ double srgbEotf(double v) {
 }
 
 TEST(ImageIO, PngDecodesToLinearWithExactSrgbEotf) {
-    TempDir dir;
+    test::TempFolder dir;
     Image8 image(256, 1);
     for (int x = 0; x < 256; ++x) {
         std::uint8_t* p = image.at(x, 0);
@@ -319,7 +288,7 @@ std::string makePng(int width, int height, int bitDepth, int colorType,
 }
 
 TEST(ImageIO, Png16BitDecodesAllSixteenBits) {
-    TempDir dir;
+    test::TempFolder dir;
     // 2x1 RGB, 16 bit: (0x8000, 0xffff, 0x0001) and (0x0000, 0x1234, 0xfedc)
     const std::string row = {char(0x80), 0, char(0xff), char(0xff), 0,          1,
                              0,          0, 0x12,       0x34,       char(0xfe), char(0xdc)};
@@ -335,7 +304,7 @@ TEST(ImageIO, Png16BitDecodesAllSixteenBits) {
 }
 
 TEST(ImageIO, GreyPngWithoutAlphaExpandsToRgbWithOpaqueAlpha) {
-    TempDir dir;
+    test::TempFolder dir;
     writeFileBytes(dir / "grey.png", makePng(3, 2, 8, 0, {std::string("\x00\x80\xff", 3), "\x40\x40\x40"}));
     const ImageF image = readImage(dir / "grey.png");
     ASSERT_EQ(image.width, 3);
@@ -352,7 +321,7 @@ TEST(ImageIO, GreyPngWithoutAlphaExpandsToRgbWithOpaqueAlpha) {
 }
 
 TEST(ImageIO, ReadDispatchesOnContentNotExtension) {
-    TempDir dir;
+    test::TempFolder dir;
     writePng(dir / "actually-a-png.exr", patternImage(5, 4, true));
     const ImageF image = readImage(dir / "actually-a-png.exr");
     EXPECT_EQ(image.width, 5);
@@ -360,7 +329,7 @@ TEST(ImageIO, ReadDispatchesOnContentNotExtension) {
 }
 
 TEST(ImageIO, WritingReplacesAnExistingFile) {
-    TempDir dir;
+    test::TempFolder dir;
     writePng(dir / "out.png", patternImage(8, 8, false));
     const Image8 second = patternImage(3, 2, true);
     writePng(dir / "out.png", second);
@@ -372,7 +341,7 @@ TEST(ImageIO, WritingReplacesAnExistingFile) {
 // Errors
 
 TEST(ImageIOErrors, TruncatedFilesAreRejected) {
-    TempDir dir;
+    test::TempFolder dir;
     for (const char* name : {"GoldenGate.exr", "Desk.exr", "blender_sunrise.exr", "Desk.hdr"}) {
         const std::string bytes = readFileBytes(test::dataDir() / name);
         ASSERT_GT(bytes.size(), 2000u) << name;
@@ -387,7 +356,7 @@ TEST(ImageIOErrors, TruncatedFilesAreRejected) {
 }
 
 TEST(ImageIOErrors, TruncatedPngIsRejected) {
-    TempDir dir;
+    test::TempFolder dir;
     writePng(dir / "whole.png", patternImage(64, 64, false));
     const std::string bytes = readFileBytes(dir / "whole.png");
     for (const std::size_t length : {std::size_t(30), bytes.size() / 2, bytes.size() - 1}) {
@@ -399,14 +368,14 @@ TEST(ImageIOErrors, TruncatedPngIsRejected) {
 }
 
 TEST(ImageIOErrors, TextFileNamedExrIsRejected) {
-    TempDir dir;
+    test::TempFolder dir;
     const fs::path path = dir / "notes.exr";
     writeFileBytes(path, "These are not the pixels you are looking for.\n");
     expectIoError([&] { (void)readImage(path); }, path, "not an OpenEXR");
 }
 
 TEST(ImageIOErrors, MissingEmptyAndFolderPathsAreRejected) {
-    TempDir dir;
+    test::TempFolder dir;
     expectIoError([&] { (void)readImage(dir / "nope.exr"); }, dir / "nope.exr", "does not exist");
     expectIoError([&] { (void)readPng8(dir / "nope.png"); }, dir / "nope.png", "does not exist");
     writeFileBytes(dir / "empty.hdr", "");
@@ -415,14 +384,14 @@ TEST(ImageIOErrors, MissingEmptyAndFolderPathsAreRejected) {
 }
 
 TEST(ImageIOErrors, ZeroSizeImageIsRejected) {
-    TempDir dir;
+    test::TempFolder dir;
     const fs::path path = dir / "zero.hdr";
     writeFileBytes(path, "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 0 +X 16\n");
     expectIoError([&] { (void)readImage(path); }, path, "no pixels");
 }
 
 TEST(ImageIOErrors, WritingIntoMissingFolderFailsAndCreatesNothing) {
-    TempDir dir;
+    test::TempFolder dir;
     const fs::path path = dir / "missing" / "out.png";
     expectIoError([&] { writePng(path, patternImage(4, 4, true)); }, path, "does not exist");
     expectIoError([&] { writeExr(dir / "missing" / "out.exr", ImageF(4, 4, 1.0f)); },
@@ -432,7 +401,7 @@ TEST(ImageIOErrors, WritingIntoMissingFolderFailsAndCreatesNothing) {
 }
 
 TEST(ImageIOErrors, FailedWriteLeavesNoTemporaryBehind) {
-    TempDir dir;
+    test::TempFolder dir;
     // The destination is an existing folder: the temporary is written, then the rename fails.
     fs::create_directory(dir / "taken.png");
     fs::create_directory(dir / "taken.exr");
@@ -443,7 +412,7 @@ TEST(ImageIOErrors, FailedWriteLeavesNoTemporaryBehind) {
 }
 
 TEST(ImageIOErrors, EmptyOrInconsistentImageIsNotWritten) {
-    TempDir dir;
+    test::TempFolder dir;
     expectIoError([&] { writePng(dir / "empty.png", Image8()); }, dir / "empty.png", "empty");
     ImageF inconsistent(4, 4);
     inconsistent.rgba.resize(10);
