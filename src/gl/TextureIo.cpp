@@ -5,14 +5,28 @@
 namespace photopic {
 
 namespace {
+/// Turns GL's bottom-up rows of `channels` values into top-down rows, in place.
 template <class T>
-void flipRows(std::vector<T>& data, int width, int height) {
-    const std::size_t row = std::size_t(width) * 4;
+void flipRows(std::vector<T>& data, int width, int height, int channels) {
+    const std::size_t row = std::size_t(width) * std::size_t(channels);
     for (int y = 0; y < height / 2; ++y) {
         std::swap_ranges(data.begin() + std::ptrdiff_t(std::size_t(y) * row),
                          data.begin() + std::ptrdiff_t(std::size_t(y + 1) * row),
                          data.begin() + std::ptrdiff_t(std::size_t(height - 1 - y) * row));
     }
+}
+
+/// Level 0 of `texture` as RGBA samples of GL type `type` into `image` (its storage kept when the size
+/// matches), rows top to bottom.
+template <class Image>
+void readRgba(const Texture& texture, GLenum type, Image& image) {
+    image.width = texture.extent().width;
+    image.height = texture.extent().height;
+    image.rgba.resize(std::size_t(image.width) * std::size_t(image.height) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(texture.id(), 0, GL_RGBA, type, GLsizei(image.rgba.size() * sizeof(image.rgba[0])),
+                      image.rgba.data());
+    flipRows(image.rgba, image.width, image.height, 4);
 }
 } // namespace
 
@@ -29,13 +43,7 @@ ImageF readTextureF(const Texture& texture) {
 }
 
 void readTextureF(const Texture& texture, ImageF& image) {
-    image.width = texture.extent().width;
-    image.height = texture.extent().height;
-    image.rgba.resize(image.pixelCount() * 4);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(image.rgba.size() * sizeof(float)),
-                      image.rgba.data());
-    flipRows(image.rgba, image.width, image.height);
+    readRgba(texture, GL_FLOAT, image);
 }
 
 std::vector<float> readDepthTexture(const Texture& texture) {
@@ -44,12 +52,7 @@ std::vector<float> readDepthTexture(const Texture& texture) {
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTextureImage(texture.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * sizeof(float)),
                       depth.data());
-    const auto row = std::size_t(e.width);
-    for (int y = 0; y < e.height / 2; ++y) {
-        std::swap_ranges(depth.begin() + std::ptrdiff_t(std::size_t(y) * row),
-                         depth.begin() + std::ptrdiff_t(std::size_t(y + 1) * row),
-                         depth.begin() + std::ptrdiff_t(std::size_t(e.height - 1 - y) * row));
-    }
+    flipRows(depth, e.width, e.height, 1);
     return depth;
 }
 
@@ -60,13 +63,7 @@ Image8 readTexture8(const Texture& texture) {
 }
 
 void readTexture8(const Texture& texture, Image8& image) {
-    image.width = texture.extent().width;
-    image.height = texture.extent().height;
-    image.rgba.resize(std::size_t(image.width) * std::size_t(image.height) * 4);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureImage(texture.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(image.rgba.size()),
-                      image.rgba.data());
-    flipRows(image.rgba, image.width, image.height);
+    readRgba(texture, GL_UNSIGNED_BYTE, image);
 }
 
 Image16 readTexture16(const Texture& texture) {
@@ -76,13 +73,7 @@ Image16 readTexture16(const Texture& texture) {
 }
 
 void readTexture16(const Texture& texture, Image16& image) {
-    image.width = texture.extent().width;
-    image.height = texture.extent().height;
-    image.rgba.resize(std::size_t(image.width) * std::size_t(image.height) * 4);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureImage(texture.id(), 0, GL_RGBA, GL_UNSIGNED_SHORT,
-                      GLsizei(image.rgba.size() * sizeof(std::uint16_t)), image.rgba.data());
-    flipRows(image.rgba, image.width, image.height);
+    readRgba(texture, GL_UNSIGNED_SHORT, image);
 }
 
 } // namespace photopic
