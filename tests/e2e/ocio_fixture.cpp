@@ -6,6 +6,7 @@
 // scaled to 255; printed: maxdiff and meandiff, the largest and the mean absolute difference from the PNG's
 // stored bytes in code values, over every colour channel of every pixel.
 
+#include "core/Color.h"
 #include "io/ImageIO.h"
 
 #include <algorithm>
@@ -16,8 +17,7 @@
 namespace {
 
 double srgbCodeValue(float linear) {
-    const double v = std::clamp(double(linear), 0.0, 1.0); // NaN is not expected from the pipeline
-    return 255.0 * (v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055);
+    return 255.0 * photopic::srgbEncode(linear); // clamps to [0, 1] first
 }
 
 int run(const char* scenePath, const char* displayPath) {

@@ -13,6 +13,7 @@
 //             bloom
 //   peak      the brightest input pixel (x, y) and its luminance
 
+#include "core/Color.h"
 #include "io/ImageIO.h"
 
 #include <algorithm>
@@ -27,14 +28,12 @@ using photopic::ImageF;
 constexpr double kRiseCodeValues = 2.0;
 
 double luminance(const float* c) {
-    return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+    return photopic::luma709({c[0], c[1], c[2]});
 }
 
 /// Linear luminance as an sRGB code value in [0, 255].
 double codeValue(double linear) {
-    const double v = std::clamp(linear, 0.0, 1.0);
-    const double encoded = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
-    return 255.0 * encoded;
+    return 255.0 * photopic::srgbEncode(float(linear));
 }
 
 int run(const char* onPath, const char* offPath, const char* inputPath) {

@@ -2,6 +2,8 @@
 // rather than the project's readers, so a writer and a reader cannot share a mistake.
 #include "io/DisplayImageIO.h"
 
+#include "core/Color.h"
+
 #include "io/ImageIO.h"
 
 #include "common/TempFolder.h"
@@ -184,8 +186,7 @@ TEST(DisplayImageIo, Png16ReadsBackThroughTheProjectsReader) {
     ASSERT_EQ(back.width, image.width);
     // readImage decodes sRGB to linear: re-encode one sample and compare with 16-bit precision.
     const float linear = back.at(5, 7)[0];
-    const float encoded =
-        linear <= 0.0031308f ? linear * 12.92f : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+    const float encoded = srgbEncode(linear);
     EXPECT_NEAR(encoded * 65535.0f, float(image.at(5, 7)[0]), 1.0f);
 }
 
