@@ -346,8 +346,9 @@ std::unique_ptr<Scene> makeViewerScene(const ViewerOptions& options, const Split
     return scene;
 }
 
-/// Letterboxes the display image into the window's default framebuffer. The blit source framebuffer is kept
-/// per display texture (the pipeline hands out a few pooled ones).
+/// Letterboxes the display image into the window's default framebuffer, through one framebuffer re-pointed at
+/// each frame's display texture (the pipeline hands out a few pooled ones, and a framebuffer kept per texture
+/// name would outlive a texture whose name GL then reuses).
 class Presenter {
 public:
     void present(const Texture& display, int fbw, int fbh) {
@@ -359,22 +360,18 @@ public:
         if (fbw <= 0 || fbh <= 0) {
             return;
         }
+        if (mSource.id() == 0) {
+            mSource = Framebuffer(display, 0, "photopic-view display");
+        } else {
+            mSource.attach(display, 0, "photopic-view display");
+        }
         const auto r = fitRect(display.extent(), fbw, fbh);
-        glBlitNamedFramebuffer(source(display).id(), 0, 0, 0, display.extent().width, display.extent().height,
-                               r[0], r[1], r[2], r[3], GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        glBlitNamedFramebuffer(mSource.id(), 0, 0, 0, display.extent().width, display.extent().height, r[0],
+                               r[1], r[2], r[3], GL_COLOR_BUFFER_BIT, GL_LINEAR);
     }
 
 private:
-    const Framebuffer& source(const Texture& display) {
-        for (const auto& [id, fbo] : mSources) {
-            if (id == display.id()) {
-                return fbo;
-            }
-        }
-        mSources.emplace_back(display.id(), Framebuffer(display, 0, "photopic-view display"));
-        return mSources.back().second;
-    }
-    std::vector<std::pair<GLuint, Framebuffer>> mSources;
+    Framebuffer mSource;
 };
 
 /// Keys that switch a setting live (when no widget has the keyboard): T toggles TAA.

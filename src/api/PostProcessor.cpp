@@ -202,9 +202,12 @@ struct PostProcessor::Impl {
                             framebuffer));
             return;
         }
-        if (readFramebufferOf != source.id()) {
+        // One framebuffer, re-pointed every call: the output texture changes from frame to frame (pooled),
+        // and a framebuffer cached by texture name would outlive a texture whose name GL then reuses.
+        if (readFramebuffer.id() == 0) {
             readFramebuffer = Framebuffer(source, 0, "photopic output (read)");
-            readFramebufferOf = source.id();
+        } else {
+            readFramebuffer.attach(source, 0, "photopic output (read)");
         }
         const Extent e = source.extent();
         const int w = width > 0 ? width : e.width;
@@ -222,28 +225,29 @@ struct PostProcessor::Impl {
             }
             return;
         }
-        if (targetFramebufferOf != host.id()) {
-            try {
+        try {
+            if (targetFramebuffer.id() == 0) {
                 targetFramebuffer = Framebuffer(host, 0, "photopic output (host texture)");
-            } catch (const GlError& e) {
-                errors.push_back(
-                    fmt::format("target: texture {} cannot be rendered to ({})", host.id(), e.what()));
-                targetFramebufferOf = 0;
-                return;
+            } else {
+                targetFramebuffer.attach(host, 0, "photopic output (host texture)");
             }
-            targetFramebufferOf = host.id();
+        } catch (const GlError& e) {
+            errors.push_back(
+                fmt::format("target: texture {} cannot be rendered to ({})", host.id(), e.what()));
+            return;
         }
         const Extent e = host.extent();
         blit(source, targetFramebuffer.id(), 0, 0, e.width, e.height);
+        // Let go of the host's texture: attached, it would live on after the host deletes it.
+        glNamedFramebufferTexture(targetFramebuffer.id(), GL_COLOR_ATTACHMENT0, 0, 0);
     }
 
     Pipeline pipeline;
     Texture color, depth, normals, motion, material, objectId;
     Camera camera;
     std::vector<Subject> subjects;
-    std::vector<std::string> errors; ///< the facade's own input errors for the last call
-    Framebuffer readFramebuffer, targetFramebuffer;
-    GLuint readFramebufferOf = 0, targetFramebufferOf = 0; ///< the texture each framebuffer was made for
+    std::vector<std::string> errors;                ///< the facade's own input errors for the last call
+    Framebuffer readFramebuffer, targetFramebuffer; ///< made on first use, re-pointed every call
 };
 
 PostProcessor::PostProcessor(const CreateInfo& info)

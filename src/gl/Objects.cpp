@@ -104,14 +104,18 @@ void Buffer::update(const void* data, std::size_t bytes, std::size_t offset) con
     glNamedBufferSubData(id(), GLintptr(offset), GLsizeiptr(bytes), data);
 }
 
-Framebuffer::Framebuffer(const Texture& color, int level, std::string_view debugName)
-    : mExtent(color.levelExtent(level)) {
+Framebuffer::Framebuffer(const Texture& color, int level, std::string_view debugName) {
     GLuint id = 0;
     glCreateFramebuffers(1, &id);
     mObject = GlObject<detail::FramebufferDeleter>(id);
-    glNamedFramebufferTexture(id, GL_COLOR_ATTACHMENT0, color.id(), level);
     label(GL_FRAMEBUFFER, id, debugName);
-    checkComplete(id, debugName, color.format());
+    attach(color, level, debugName);
+}
+
+void Framebuffer::attach(const Texture& color, int level, std::string_view debugName) {
+    mExtent = color.levelExtent(level);
+    glNamedFramebufferTexture(id(), GL_COLOR_ATTACHMENT0, color.id(), level);
+    checkComplete(id(), debugName, color.format());
 }
 
 Framebuffer::Framebuffer(const FramebufferCreateInfo& info) {

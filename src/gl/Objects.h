@@ -152,6 +152,10 @@ public:
     explicit Framebuffer(const FramebufferCreateInfo& info);
     [[nodiscard]] GLuint id() const { return mObject.id(); }
     [[nodiscard]] Extent extent() const { return mExtent; }
+    /// Makes `color` (level `level`) its one colour attachment in place of the one it had: a framebuffer kept
+    /// for textures that change from call to call, without making one per texture. Throws GlError naming
+    /// `debugName` when the result is incomplete.
+    void attach(const Texture& color, int level, std::string_view debugName);
     /// Binds it, sets the viewport to the attachment's size.
     void bind() const;
 
