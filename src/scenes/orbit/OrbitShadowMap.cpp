@@ -1,7 +1,5 @@
 #include "scenes/orbit/OrbitShadowMap.h"
 
-#include "gl/ShaderLibrary.h"
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
@@ -78,6 +76,12 @@ void setDepthDrawState() {
     glDisable(GL_SCISSOR_TEST);
 }
 
+ShaderDefines visibilityDefines() {
+    ShaderDefines defines = ShadowMap::shaderDefines();
+    defines.emplace_back("ORBIT_SHADOW_WORLD_OUT", "1");
+    return defines;
+}
+
 } // namespace
 
 const std::array<glm::vec2, kMaxShadowSamples>& shadowPoissonDisc() {
@@ -152,12 +156,17 @@ void ShadowCasterPass::setModel(const glm::mat4& model) const {
     glProgramUniformMatrix4fv(mProgram, kModelMatrixLocation, 1, GL_FALSE, &model[0][0]);
 }
 
+ShaderDefines ShadowMap::shaderDefines(GLuint unit, GLuint blockBinding) {
+    return {{"ORBIT_SHADOW_TEXTURE_UNIT", std::to_string(unit)},
+            {"ORBIT_SHADOW_BLOCK", std::to_string(blockBinding)}};
+}
+
 ShadowMap::ShadowMap()
     : mDepthProgram(makeGraphicsProgram("scenes/orbit/orbit_shadow_depth.vert.glsl",
                                         "scenes/orbit/orbit_shadow_depth.frag.glsl"))
     , mVisibilityProgram(makeGraphicsProgram("scenes/orbit/orbit_shadow_depth.vert.glsl",
                                              "scenes/orbit/orbit_shadow_visibility.frag.glsl",
-                                             {{"ORBIT_SHADOW_WORLD_OUT", "1"}}))
+                                             visibilityDefines()))
     , mBlock("orbit sun shadow") {}
 
 void ShadowMap::render(const RenderInfo& info) {

@@ -11,10 +11,12 @@
 
 #include "core/settings/Reflect.h"
 #include "gl/Objects.h"
+#include "gl/ShaderLibrary.h"
 
 #include <glm/glm.hpp>
 
 #include <array>
+#include <cstddef>
 #include <functional>
 
 namespace photopic::orbit {
@@ -112,6 +114,11 @@ public:
     static constexpr GLuint kDefaultTextureUnit = 7;
     static constexpr GLuint kDefaultBlockBinding = 7;
 
+    /// The defines that build orbit_shadow.h.glsl's bindings as `unit` and `blockBinding` (pass them to
+    /// makeGraphicsProgram for a program that includes it, and the same numbers to bind()).
+    [[nodiscard]] static ShaderDefines shaderDefines(GLuint unit = kDefaultTextureUnit,
+                                                     GLuint blockBinding = kDefaultBlockBinding);
+
     /// Needs a current GL 4.5 context (compiles the depth and visibility programs).
     ShadowMap();
 
@@ -153,6 +160,8 @@ public:
         glm::vec4 disc[kMaxShadowSamples / 2]; ///< the Poisson disc, two points per vec4
     };
     static_assert(sizeof(Block) == 64 + 6 * 16 + 16 * 16);
+    static_assert(offsetof(Block, toSun) == 96 && offsetof(Block, pcf) == 128 &&
+                  offsetof(Block, disc) == 160);
 
 private:
     Program mDepthProgram;

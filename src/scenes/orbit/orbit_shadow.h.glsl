@@ -2,20 +2,23 @@
 // block). Multiply the sun's direct light by sunShadowVisibility(); image-based and fill light are left alone.
 //
 // Bindings: the depth texture on texture unit ORBIT_SHADOW_TEXTURE_UNIT and the OrbitSunShadow block on
-// uniform-block binding ORBIT_SHADOW_BLOCK (both 7 unless the including shader defines them first), as
-// ShadowMap::bind(unit, block) binds them.
+// uniform-block binding ORBIT_SHADOW_BLOCK, both 7 unless the program is built with other values
+// (ShadowMap::shaderDefines(unit, block) gives the defines), as ShadowMap::bind(unit, block) binds them.
 //
 // Filtering: a rotated Poisson disc of `samples` taps of `softness` texels radius, each tap a hardware
 // 2x2 depth comparison (sampler2DShadow), i.e. percentage-closer filtering (Reeves, Salesin & Cook 1987).
-// The disc's rotation is a hash (Jarzynski & Olano 2020, "Hash functions for GPU rendering", pcg2d) of the
-// receiver's texel in a light-space grid fixed to the world, so it does not depend on the camera: a
-// surface point keeps its rotation, and its visibility, while the camera moves.
+// The disc's rotation is a hash (passes/common/noise.h.glsl) of the receiver's texel in a light-space grid
+// fixed to the world, so it does not depend on the camera or the frame: a surface point keeps its rotation,
+// and its visibility, while the camera moves.
 //
 // Bias (every term in scene units, set from texels on the CPU): the lookup point moves `normal` along the
 // surface normal; the reference depth moves towards the sun by `constant + slope tan(theta)` (theta the
-// angle between normal and sun, tan capped); and each tap's reference follows the receiver's plane (its
-// depth gradient in light space, from the normal: receiver-plane depth bias, Isidoro 2006), so the taps
-// away from the centre do not cut into a sloped surface.
+// angle between normal and sun, tan capped); and each tap's reference follows the receiver's plane, its
+// depth gradient in light space taken from the normal (receiver-plane depth bias: Isidoro, "Shadow mapping:
+// GPU-based tips and techniques", GDC 2006), so taps away from the centre do not cut into a sloped surface.
+// The normal, not screen derivatives, gives the gradient, so the result does not depend on the camera.
+
+#include "passes/common/noise.h.glsl"
 
 #ifndef ORBIT_SHADOW_TEXTURE_UNIT
 #define ORBIT_SHADOW_TEXTURE_UNIT 7
@@ -32,21 +35,10 @@ layout(std140, binding = ORBIT_SHADOW_BLOCK) uniform OrbitSunShadow {
     vec4 up;            // xyz: light y axis; w: 1 / depth range
     vec4 toSun;         // xyz: towards the sun; w: 1 enabled, 0 disabled
     vec4 bias;          // x: constant, y: normal, z: slope per tan; w: tan cap
-    vec4 pcf;        // x: radius (texels), y: taps, z: 1 / resolution, w: resolution
+    vec4 pcf;           // x: radius (texels), y: taps, z: 1 / resolution, w: resolution
     vec4 grid;          // xy: the map's lower-left texel in the world-fixed grid
     vec4 disc[16];      // Poisson disc, two points per vec4
 } uOrbitShadow;
-
-uvec2 orbitShadowPcg2d(uvec2 v) {
-    v = v * 1664525u + 1013904223u;
-    v.x += v.y * 1664525u;
-    v.y += v.x * 1664525u;
-    v = v ^ (v >> 16u);
-    v.x += v.y * 1664525u;
-    v.y += v.x * 1664525u;
-    v = v ^ (v >> 16u);
-    return v;
-}
 
 vec2 orbitShadowDiscPoint(int i) {
     vec4 pair = uOrbitShadow.disc[i >> 1];
@@ -73,8 +65,8 @@ float sunShadowVisibility(vec3 worldPos, vec3 worldNormal) {
     vec2 gradient = nxy / max(cosTheta, max(length(nxy) / tanCap, 1e-4)) * invRange;
 
     float resolution = uOrbitShadow.pcf.w;
-    uvec2 key = uvec2(ivec2(floor(s.xy * resolution + uOrbitShadow.grid.xy)));
-    float angle = float(orbitShadowPcg2d(key).x) * (6.2831853 / 4294967296.0);
+    ivec2 texel = ivec2(floor(s.xy * resolution + uOrbitShadow.grid.xy));
+    float angle = 6.2831853 * hashUniform(texel, 0u, 0u);
     mat2 rotation = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
 
     int taps = int(uOrbitShadow.pcf.y);
