@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -216,9 +217,9 @@ struct Frame {
     ImageF world;
 };
 
-class Camera {
+class CameraTarget {
 public:
-    Camera()
+    CameraTarget()
         : mVisibility({.extent = {kW, kH}, .format = GL_RGBA32F, .debugName = "shadow test visibility"})
         , mWorld({.extent = {kW, kH}, .format = GL_RGBA32F, .debugName = "shadow test world"})
         , mDepth({.extent = {kW, kH}, .format = GL_DEPTH_COMPONENT32F, .debugName = "shadow test depth"})
@@ -312,22 +313,34 @@ ShadowSettings testSettings(int resolution) {
     return s;
 }
 
+/// The GL side of the tests, made once a context is known to exist.
+struct Rig {
+    GlScene scene;
+    CameraTarget camera;
+    ShadowMap map;
+};
+
 class OrbitShadowTest : public GlTest {
 protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        if (!IsSkipped()) {
+            mRig = std::make_unique<Rig>();
+        }
+    }
+
     std::vector<Box> mBoxes = sceneBoxes();
-    GlScene mScene;
-    Camera mCamera;
-    ShadowMap mMap;
+    std::unique_ptr<Rig> mRig;
 
     void renderMap(glm::vec3 toSun, const ShadowSettings& settings, bool snap = true,
                    ShadowBounds bounds = sceneBounds()) {
-        mMap.render({.sunDirection = toSun,
-                     .bounds = bounds,
-                     .settings = &settings,
-                     .drawCasters = mScene.draws(mBoxes),
-                     .snap = snap});
+        mRig->map.render({.sunDirection = toSun,
+                          .bounds = bounds,
+                          .settings = &settings,
+                          .drawCasters = mRig->scene.draws(mBoxes),
+                          .snap = snap});
     }
-    Frame draw(const View& view) { return mCamera.draw(mMap, view, mScene.draws(mBoxes)); }
+    Frame draw(const View& view) { return mRig->camera.draw(mRig->map, view, mRig->scene.draws(mBoxes)); }
 };
 
 } // namespace
@@ -457,7 +470,7 @@ TEST_F(OrbitShadowTest, LitFacesHaveNoAcneAndTheImageAgreesWithTheTruth) {
     const ShadowSettings settings = testSettings(1024);
     const auto measure = [&](const Case& c, const ShadowSettings& s) {
         renderMap(c.toSun, s);
-        return agreement(classify(mBoxes, c.view, draw(c.view), mMap.projection(), 3.0f), faceNormal);
+        return agreement(classify(mBoxes, c.view, draw(c.view), mRig->map.projection(), 3.0f), faceNormal);
     };
     for (const Case& c : cases) {
         const Agreement a = measure(c, settings);
@@ -510,7 +523,7 @@ struct ContactGap {
 TEST_F(OrbitShadowTest, ShadowsTouchTheirCastersAtTheContact) {
     const auto measure = [&](glm::vec3 toSun, int object, const ShadowSettings& settings) {
         renderMap(toSun, settings);
-        const orbit::ShadowProjection& lp = mMap.projection();
+        const orbit::ShadowProjection& lp = mRig->map.projection();
         const glm::vec3 away = -glm::normalize(glm::vec3(toSun.x, 0.0f, toSun.z));
         const glm::vec3 side = glm::cross(away, glm::vec3(0, 1, 0));
         // The point where the shadow leaves the foot: the foot's centre moved out to its edge along `away`.
@@ -600,7 +613,7 @@ TEST_F(OrbitShadowTest, ShadowEdgesDoNotShimmer) {
     constexpr int kFrames = 8;
 
     ShadowMap previous;
-    const orbit::ShadowCasterDraws draws = mScene.draws(mBoxes);
+    const orbit::ShadowCasterDraws draws = mRig->scene.draws(mBoxes);
     Change orbitChange;
     std::vector<float> firstDepth;
     bool depthSame = true;
@@ -608,15 +621,16 @@ TEST_F(OrbitShadowTest, ShadowEdgesDoNotShimmer) {
         const float azimuth = glm::radians(160.0f + 0.5f * float(f));
         const View view{glm::vec3(4.5f * std::cos(azimuth), 2.4f, 4.5f * std::sin(azimuth)), {0, 0.2f, 0}};
         renderMap(toSun, settings);
-        const std::vector<float> depth = readDepthTexture(mMap.depth());
+        const std::vector<float> depth = readDepthTexture(mRig->map.depth());
         if (f == 0) {
             firstDepth = depth;
         } else {
             depthSame = depthSame && depth == firstDepth;
             const Frame now = draw(view);
-            const Frame before = mCamera.draw(previous, view, draws);
-            accumulate(orbitChange, edgePixels(classify(mBoxes, view, now, mMap.projection(), kEdge), kEdge),
-                       now, before);
+            const Frame before = mRig->camera.draw(previous, view, draws);
+            accumulate(orbitChange,
+                       edgePixels(classify(mBoxes, view, now, mRig->map.projection(), kEdge), kEdge), now,
+                       before);
         }
         previous.render(
             {.sunDirection = toSun, .bounds = sceneBounds(), .settings = &settings, .drawCasters = draws});
@@ -644,7 +658,7 @@ TEST_F(OrbitShadowTest, ShadowEdgesDoNotShimmer) {
             Frame now = draw(still);
             if (f == 0) {
                 // The casters and the camera are still: the same pixels are the edge pixels every frame.
-                edges = edgePixels(classify(mBoxes, still, now, mMap.projection(), kEdge), kEdge);
+                edges = edgePixels(classify(mBoxes, still, now, mRig->map.projection(), kEdge), kEdge);
             } else {
                 accumulate(change, edges, now, before);
             }

@@ -76,7 +76,7 @@ struct ShadowProjection {
     glm::vec3 right{1, 0, 0};       ///< light view's x axis in world
     glm::vec3 up{0, 1, 0};          ///< light view's y axis in world
     glm::vec3 toSun{0, 0, 1};       ///< unit, towards the sun (light view's z axis)
-    float texelSize = 0.0f;         ///< scene units per shadow texel (2 radius / resolution)
+    float texelSize = 0.0f;         ///< scene units per texel: 2 radius / (resolution - 2)
     float depthRange = 0.0f;        ///< scene units from the near to the far plane
     glm::vec2 gridOrigin{0.0f};     ///< the map's lower-left texel in the light's world-fixed texel grid
 };
