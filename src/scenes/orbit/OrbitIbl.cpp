@@ -150,6 +150,7 @@ Ibl::Ibl(const ImageF& equirect, const IblOptions& options)
         }
         imageWriteBarrier();
     }
+    glUseProgram(0);
     glBindTextureUnit(0, 0);
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
 

@@ -141,7 +141,9 @@ vec3 pbrIblDominantDirection(vec3 n, vec3 r, float roughness) {
     float alpha = roughness * roughness;
     float s = clamp(1.0 - alpha, 0.0, 1.0);
     float blend = s * (sqrt(s) + alpha);
-    return normalize(mix(n, r, blend));
+    vec3 d = mix(n, r, blend);
+    // A view from behind the surface (a normal map can give one) can cancel the two; never a NaN.
+    return dot(d, d) > 1e-12 ? normalize(d) : n;
 }
 
 // Image-based light reflected towards v: the split-sum specular (prefiltered radiance along the lobe's
