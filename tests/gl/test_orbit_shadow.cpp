@@ -13,6 +13,7 @@
 #include "GlTest.h"
 
 #include "gl/Objects.h"
+#include "gl/ShaderLibrary.h"
 #include "gl/TextureIo.h"
 #include "scenes/SceneSettings.h"
 #include "scenes/orbit/OrbitShadowMap.h"
@@ -747,6 +748,17 @@ TEST_F(OrbitShadowTest, SettingsTakeEffectAndStateIsRestored) {
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+    // A program deleted while it is current goes away when render() unbinds it: render() must not bind the
+    // dead name again (GL_INVALID_VALUE, which the fixture counts), and leaves no program bound instead.
+    {
+        const Program doomed = makeGraphicsProgram("scenes/orbit/orbit_shadow_depth.vert.glsl",
+                                                   "scenes/orbit/orbit_shadow_depth.frag.glsl");
+        doomed.use();
+    }
+    renderMap(toSun, hard);
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+    EXPECT_EQ(program, 0);
 }
 
 } // namespace photopic::test

@@ -37,10 +37,12 @@ public:
         mScissorTest = glIsEnabled(GL_SCISSOR_TEST);
     }
     ~SavedDrawState() {
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(mFramebuffer));
+        // A name that was deleted while bound goes away once it is unbound here; binding it again would
+        // be an error, so it comes back as 0, as if it had been unbound by its owner.
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, alive(mFramebuffer, glIsFramebuffer));
         glViewport(mViewport[0], mViewport[1], mViewport[2], mViewport[3]);
-        glUseProgram(GLuint(mProgram));
-        glBindVertexArray(GLuint(mVertexArray));
+        glUseProgram(alive(mProgram, glIsProgram));
+        glBindVertexArray(alive(mVertexArray, glIsVertexArray));
         glDepthFunc(GLenum(mDepthFunc));
         glDepthMask(mDepthMask);
         setCapability(GL_DEPTH_TEST, mDepthTest);
@@ -51,6 +53,10 @@ public:
     SavedDrawState& operator=(const SavedDrawState&) = delete;
 
 private:
+    template <class IsObject>
+    static GLuint alive(GLint name, IsObject isObject) {
+        return name != 0 && isObject(GLuint(name)) ? GLuint(name) : 0;
+    }
     static void setCapability(GLenum cap, GLboolean on) {
         if (on) {
             glEnable(cap);
