@@ -10,7 +10,10 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <memory>
+#include <string>
+#include <tuple>
 #include <vector>
 
 namespace photopic::test {
@@ -419,6 +422,275 @@ TEST_F(GlTest, MotionBlurMatchesTheShutterTruth) {
                         100.0 * rmseOverMean(resolved, areaShutter, moving));
             EXPECT_TRUE(std::isfinite(e));
         }
+    }
+}
+
+namespace {
+
+/// The pass on given inputs (linear depth, UV motion) at frame `frame` (the jitter's seed), exposed
+/// scene-referred.
+ImageF blurInputs(const ImageF& color, const ImageF& depth, const ImageF& motion, const Camera& camera,
+                  const Settings& settings, std::uint64_t frame) {
+    const Texture c = makeTexture(color, "color"), d = makeTexture(depth, "depth"),
+                  m = makeTexture(motion, "motion");
+    Pipeline pipeline({.settings = settings});
+    pipeline.beginFrame({.dt = kDt, .frameIndex = frame});
+    pipeline.execute(
+        {.color = &c, .depth = &d, .depthKind = DepthKind::LinearView, .motion = &m, .camera = &camera},
+        {.dt = kDt, .frameIndex = frame});
+    return readTextureF(pipeline.sceneReferred());
+}
+
+/// Per pixel, what its centre sees over the shutter: the surfaces (object ids, 0 the sky) before and after
+/// the frame's time other than the one it shows at that time, and how many instants see a surface point
+/// that is hidden or off screen at the frame's time (which no one-layer input holds).
+struct ShutterView {
+    std::uint32_t idNow = 0;
+    std::uint32_t other = 0; ///< an id seen over the shutter other than idNow (the last one found)
+    int earlyOther = 0;      ///< instants before the frame's time that see another id
+    int lateOther = 0;
+    int hidden = 0;
+};
+
+std::vector<ShutterView> shutterViews(const testbed::TruthOptions& o) {
+    using namespace testbed;
+    const int w = o.width, h = o.height, count = o.shutterTimes;
+    const auto ndc = [&](float x, float y) {
+        return glm::vec2(2.0f * x / float(w) - 1.0f, 1.0f - 2.0f * y / float(h));
+    };
+    const TruthInstant now = truthInstant(o, 0.0);
+    const glm::mat4 nowViewProjection = now.camera.viewProjection();
+    const glm::vec3 eye(glm::inverse(now.camera.view)[3]);
+    std::vector<ShutterView> views(std::size_t(w * h));
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            Hit hit;
+            const Ray ray = cameraRay(now.camera, ndc(float(x) + 0.5f, float(y) + 0.5f));
+            views[std::size_t(y * w + x)].idNow = intersectScene(now.primitives, ray, 0.0f, 2.0f * kFar, hit)
+                                                      ? now.primitives[std::size_t(hit.primitive)].id
+                                                      : 0u;
+        }
+    }
+    for (int i = 0; i < count; ++i) {
+        const double offset = ((double(i) + 0.5) / count - 0.5) * shutterSeconds(o);
+        const TruthInstant at = truthInstant(o, offset);
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
+                ShutterView& v = views[std::size_t(y * w + x)];
+                const Ray ray = cameraRay(at.camera, ndc(float(x) + 0.5f, float(y) + 0.5f));
+                Hit hit;
+                const bool found = intersectScene(at.primitives, ray, 0.0f, 2.0f * kFar, hit);
+                const std::uint32_t id = found ? at.primitives[std::size_t(hit.primitive)].id : 0u;
+                if (id != v.idNow) {
+                    v.other = id;
+                    (offset < 0.0 ? v.earlyOther : v.lateOther) += 1;
+                }
+                // Where that point is at the frame's time, and whether it is seen there.
+                glm::vec4 clip;
+                glm::vec3 world(0.0f);
+                if (found) {
+                    world = glm::vec3(now.primitives[std::size_t(hit.primitive)].toWorld *
+                                      glm::vec4(hit.objectPoint, 1.0f));
+                    clip = nowViewProjection * glm::vec4(world, 1.0f);
+                } else {
+                    clip = nowViewProjection * glm::vec4(ray.direction, 0.0f);
+                }
+                bool seen = false;
+                if (clip.w > 0.0f && std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w) {
+                    const Ray back = cameraRay(now.camera, glm::vec2(clip) / clip.w);
+                    Hit first;
+                    const bool any = intersectScene(now.primitives, back, 0.0f, 2.0f * kFar, first);
+                    seen = found ? any && first.primitive == hit.primitive &&
+                                       std::abs(first.t - glm::length(world - eye)) < 1e-3f * first.t + 1e-4f
+                                 : !any;
+                }
+                v.hidden += seen ? 0 : 1;
+            }
+        }
+    }
+    return views;
+}
+
+std::string pixelClass(const ShutterView& v) {
+    const auto name = [](std::uint32_t id) {
+        return id == testbed::ids::kMover     ? std::string("mover")
+               : id == testbed::ids::kSpinner ? "spinner"
+                                              : "";
+    };
+    const bool moved = v.earlyOther + v.lateOther > 0;
+    if (!name(v.idNow).empty()) {
+        if (!moved) {
+            return name(v.idNow) + " interior";
+        }
+        return name(v.idNow) + (v.earlyOther >= v.lateOther ? " leading edge" : " trailing edge");
+    }
+    if (moved && !name(v.other).empty()) {
+        return "background " + name(v.other) + (v.lateOther >= v.earlyOther ? " arrives" : " leaves");
+    }
+    return "other (camera motion)";
+}
+
+} // namespace
+
+// On demand (--gtest_also_run_disabled_tests): the motion blur's error against the shutter truth broken
+// down by pixel class and by cause, for docs/architecture.md. Each figure is RMSE over the truth's mean on
+// the pixels the motion changes; a class's figure is its share of that (the shares add in quadrature).
+TEST_F(GlTest, DISABLED_MotionBlurErrorBreakdown) {
+    constexpr int kW = 160, kH = 90;
+    struct Case {
+        const char* name;
+        std::initializer_list<std::string> overrides;
+    };
+    const Case cases[] = {
+        {"moving objects", {"cameraSpeed=0", "cameraStart=0", "objectStart=4.5", "objectSpeed=12"}},
+        {"pan", {"cameraStart=0.1", "cameraSpeed=3", "objectSpeed=0", "objectStart=1"}},
+        {"mover in the clear",
+         {"cameraSpeed=0", "objectStart=5.2", "objectSpeed=12", "fixedCamera=true", "eye=[0,0.9,-1.4]",
+          "target=[0,0.35,-4.4]"}},
+        {"mover out from behind the cube",
+         {"cameraSpeed=0", "objectStart=4.5", "objectSpeed=12", "fixedCamera=true", "eye=[1.4,0.9,-1.4]",
+          "target=[1.4,0.35,-4.4]"}},
+        {"spinner close",
+         {"cameraSpeed=0", "objectStart=4.5", "objectSpeed=12", "fixedCamera=true", "eye=[-0.8,1.0,3.8]",
+          "target=[-0.8,0.37,2.0]"}},
+    };
+    for (const Case& c : cases) {
+        auto scene = sceneWith(c.overrides, kW, kH);
+        const std::uint64_t last = 2;
+        testbed::TruthOptions o = scene->truthOptions({.dt = kDt, .frameIndex = last});
+        o.samples = 1;
+        o.shutterTimes = 64;
+        const Settings on = blurSettings(true);
+        const ImageF stillRaw = testbed::renderTruth(testbed::TruthKind::Color, o);
+        const ImageF depth = testbed::renderTruth(testbed::TruthKind::Depth, o);
+        const ImageF motion = testbed::renderTruth(testbed::TruthKind::Motion, o);
+        const ImageF shutter = throughPipeline(testbed::renderTruth(testbed::TruthKind::Shutter, o), on);
+        const ImageF still = throughPipeline(stillRaw, on);
+        const Camera camera = testbed::truthCamera(o);
+        // The velocity at the frame's time: the motion over 1% of a frame, scaled to a frame.
+        testbed::TruthOptions instant = o;
+        instant.times.prevObjects = o.times.objects - 0.01 * o.times.objectRate * kDt;
+        instant.times.prevCamera = o.times.camera - 0.01 * o.times.cameraRate * kDt;
+        ImageF velocity = testbed::renderTruth(testbed::TruthKind::Motion, instant);
+        for (float& v : velocity.rgba) {
+            v *= 100.0f;
+        }
+        const std::vector<ShutterView> views = shutterViews(o);
+        std::vector<bool> moving(std::size_t(kW * kH), false);
+        for (int i = 0; i < kW * kH; ++i) {
+            for (int ch = 0; ch < 3; ++ch) {
+                const float t = shutter.rgba[std::size_t(i) * 4 + ch];
+                moving[std::size_t(i)] =
+                    moving[std::size_t(i)] ||
+                    std::abs(t - still.rgba[std::size_t(i) * 4 + ch]) > 0.02f * (t + 0.05f);
+            }
+        }
+        double sum = 0.0, maxMotionError = 0.0;
+        long n = 0;
+        for (int i = 0; i < kW * kH; ++i) {
+            n += moving[std::size_t(i)] ? 1 : 0;
+            for (int ch = 0; ch < 3 && moving[std::size_t(i)]; ++ch) {
+                sum += shutter.rgba[std::size_t(i) * 4 + ch];
+            }
+        }
+        const double mean = sum / double(3 * n);
+        std::printf("== %s: %ld moving pixels, truth mean %.3f\n", c.name, n, mean);
+        {
+            // The rasteriser's motion against the ray tracer's (same definition: now minus one frame ago).
+            Pipeline pipeline({.settings = on});
+            ImageF rasterMotion;
+            for (std::uint64_t f = 0; f <= last; ++f) {
+                std::vector<double> telemetry;
+                const FrameTime time{.dt = kDt, .frameIndex = f};
+                const FrameInputs in = scene->render(time, pipeline, telemetry);
+                rasterMotion = readTextureF(*in.motion);
+                pipeline.execute(in, time);
+            }
+            double instantGap = 0.0;
+            for (int i = 0; i < kW * kH; ++i) {
+                const float* r = rasterMotion.at(i % kW, i / kW);
+                const std::size_t k = std::size_t(i) * 4;
+                maxMotionError = std::max(
+                    maxMotionError,
+                    double(std::hypot((r[0] - motion.rgba[k]) * kW, (r[1] - motion.rgba[k + 1]) * kH)));
+                instantGap += std::pow((velocity.rgba[k] - motion.rgba[k]) * kW, 2.0f) +
+                              std::pow((velocity.rgba[k + 1] - motion.rgba[k + 1]) * kH, 2.0f);
+            }
+            std::printf("  motion input: rasteriser against the ray tracer at most %.3f px/frame apart; "
+                        "backward difference against the velocity at the frame's time: RMS %.3f px/frame\n",
+                        maxMotionError, std::sqrt(instantGap / (kW * kH)));
+        }
+        const auto report = [&](const char* label, const ImageF& image) {
+            std::map<std::string, double> byClass;
+            double all = 0.0, hiddenShare = 0.0;
+            for (int i = 0; i < kW * kH; ++i) {
+                if (!moving[std::size_t(i)]) {
+                    continue;
+                }
+                double e = 0.0;
+                for (int ch = 0; ch < 3; ++ch) {
+                    const double d =
+                        double(image.rgba[std::size_t(i) * 4 + ch]) - shutter.rgba[std::size_t(i) * 4 + ch];
+                    e += d * d;
+                }
+                all += e;
+                byClass[pixelClass(views[std::size_t(i)])] += e;
+                hiddenShare += views[std::size_t(i)].hidden > 0 ? e : 0.0;
+            }
+            const auto share = [&](double e) { return 100.0 * std::sqrt(e / double(3 * n)) / mean; };
+            std::printf("  %-36s %5.1f%% | hidden at t %4.1f |", label, share(all), share(hiddenShare));
+            for (const auto& [name, e] : byClass) {
+                std::printf(" %s %.1f", name.c_str(), share(e));
+            }
+            std::printf("\n");
+        };
+        std::map<std::string, int> classCount;
+        long hiddenPixels = 0;
+        for (int i = 0; i < kW * kH; ++i) {
+            if (moving[std::size_t(i)]) {
+                ++classCount[pixelClass(views[std::size_t(i)])];
+                hiddenPixels += views[std::size_t(i)].hidden > 0 ? 1 : 0;
+            }
+        }
+        std::printf("  pixels:");
+        for (const auto& [name, count] : classCount) {
+            std::printf(" %s %d,", name.c_str(), count);
+        }
+        std::printf(" of them %ld see a surface hidden at the frame's time\n", hiddenPixels);
+
+        report("pass (rasterised inputs)", runScene(*scene, on, last));
+        report("unblurred", runScene(*scene, blurSettings(false), last));
+        report("pass (ray-traced inputs)", blurInputs(stillRaw, depth, motion, camera, on, last));
+        report("  velocity at the frame's time", blurInputs(stillRaw, depth, velocity, camera, on, last));
+        for (const auto& [label, sampleCount, tileSize] :
+             {std::tuple{"  64 samples", 64, 20}, std::tuple{"  tiles of 8 px", 15, 8}}) {
+            Settings s = on;
+            s.motionBlur.sampleCount = sampleCount;
+            s.motionBlur.tileSize = tileSize;
+            s.motionBlur.maxBlur = std::min(s.motionBlur.maxBlur, float(tileSize));
+            report(label, blurInputs(stillRaw, depth, motion, camera, s, last));
+        }
+        for (float angle : {150.0f, 210.0f}) {
+            Settings s = on;
+            s.motionBlur.shutterAngle = angle;
+            report(angle < 180.0f ? "  shutter 150 (truth 180)" : "  shutter 210 (truth 180)",
+                   blurInputs(stillRaw, depth, motion, camera, s, last));
+        }
+        {
+            ImageF mean16(kW, kH, 0.0f);
+            for (std::uint64_t f = 0; f < 16; ++f) {
+                const ImageF r = blurInputs(stillRaw, depth, motion, camera, on, 100 + f);
+                for (std::size_t k = 0; k < mean16.rgba.size(); ++k) {
+                    mean16.rgba[k] += r.rgba[k] / 16.0f;
+                }
+            }
+            report("  mean of 16 jitters", mean16);
+        }
+        report("one-layer reference", throughPipeline(singleLayerReference(o, stillRaw), on));
+        testbed::TruthOptions fine = o;
+        fine.shutterTimes = 1024;
+        report("truth with 1024 instants",
+               throughPipeline(testbed::renderTruth(testbed::TruthKind::Shutter, fine), on));
     }
 }
 
