@@ -131,9 +131,26 @@ struct SubjectLight {
     bool moving = false;       ///< it moved faster than the probe's threshold this frame
 };
 
+/// The sun's directional shadow map, for volumetric light's ray-marched in-scattering
+/// (`volumetricLight.mode` shadowmap, or auto, which marches whenever a map is given). Any directional
+/// shadow map fits: `worldToClip` takes a world point to the sun view's clip space (GL conventions: x, y, z
+/// in [-1, 1] inside the map; an orthographic projection, w = 1; another w is divided out), and `depth`
+/// holds at (u, v) = (x, y) * 0.5 + 0.5 the nearest caster's standard depth z * 0.5 + 0.5 (0 on the near
+/// plane, the sun's side; 1 on the far plane), as a depth pass with glDepthRange(0, 1) writes it. Points
+/// outside the map count as lit. The library reads the map with its own sampler (the texture's filtering and
+/// comparison state are not used or changed).
+struct SunShadow {
+    /// DEPTH_COMPONENT16/24/32/32F or DEPTH24_STENCIL8/DEPTH32F_STENCIL8, any size; 0: no map.
+    GlName depth = 0;
+    Matrix4 worldToClip = kIdentity; ///< world -> the sun view's clip space; finite and invertible
+    /// Linear Rec.709 illuminance of the sunlight arriving at the scene on a plane facing the sun (its
+    /// radiance times its solid angle), in the colour texture's units, >= 0: the light the air scatters.
+    std::array<float, 3> illuminance{1.0f, 1.0f, 1.0f};
+};
+
 /// What the host hands the library each frame. Textures are the host's, borrowed for the call: their size
 /// and format are read from GL. Everything but `color` is optional; an effect that needs a missing input is
-/// skipped and reported in Status::skipped. Every texture has colour's size.
+/// skipped and reported in Status::skipped. Every texture but `sunShadow.depth` has colour's size.
 struct Frame {
     GlName color = 0; ///< scene-referred linear Rec.709 colour, a float format (RGBA16F, R11F_G11F_B10F...)
     GlName depth = 0; ///< depth buffer or linear view depth
@@ -149,6 +166,8 @@ struct Frame {
     const HostCamera* camera = nullptr; ///< needed by the 3D effects
     /// World space, towards the sun: the direction contact shadows and volumetric light use.
     std::optional<std::array<float, 3>> sunDirection;
+    /// The sun's shadow map (with `sunDirection`): volumetric light marches it; `depth` 0: no map.
+    SunShadow sunShadow;
     std::span<const HostSubject> subjects; ///< this frame's subjects; read during the call, not kept
     /// Time comes from the host, never from a wall clock, so frames are deterministic.
     float dt = 1.0f / 60.0f;      ///< s since the previous frame

@@ -135,6 +135,7 @@ struct PostProcessor::Impl {
         motion = adopt(frame.motion, "motion");
         material = adopt(frame.material, "material");
         objectId = adopt(frame.objectId, "objectId");
+        sunShadow = adopt(frame.sunShadow.depth, "sunShadow.depth");
         subjects.clear();
         for (const HostSubject& s : frame.subjects) {
             subjects.push_back({.id = s.id,
@@ -161,6 +162,12 @@ struct PostProcessor::Impl {
         if (frame.sunDirection) {
             const auto& d = *frame.sunDirection;
             in.sunDirection = glm::vec3(d[0], d[1], d[2]);
+        }
+        if (sunShadow.valid()) {
+            const auto& e = frame.sunShadow.illuminance;
+            in.sunShadow = {.depth = &sunShadow,
+                            .worldToClip = toGlm(frame.sunShadow.worldToClip),
+                            .illuminance = glm::vec3(e[0], e[1], e[2])};
         }
         in.subjects = subjects;
         return in;
@@ -243,7 +250,7 @@ struct PostProcessor::Impl {
     }
 
     Pipeline pipeline;
-    Texture color, depth, normals, motion, material, objectId;
+    Texture color, depth, normals, motion, material, objectId, sunShadow;
     Camera camera;
     std::vector<Subject> subjects;
     std::vector<std::string> errors;                ///< the facade's own input errors for the last call

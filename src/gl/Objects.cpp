@@ -181,6 +181,21 @@ Sampler Sampler::nearest(std::string_view debugName) {
     return s;
 }
 
+Sampler Sampler::depthCompare(std::string_view debugName) {
+    Sampler s;
+    GLuint id = 0;
+    glCreateSamplers(1, &id);
+    s.mObject = GlObject<detail::SamplerDeleter>(id);
+    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    label(GL_SAMPLER, id, debugName);
+    return s;
+}
+
 Query::Query(GLenum target) {
     GLuint id = 0;
     glCreateQueries(target, 1, &id);

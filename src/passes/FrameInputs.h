@@ -27,6 +27,22 @@ enum class NormalEncoding {
     Octahedral, ///< RG16F/RG32F: octahedral encoding in [-1, 1]^2
 };
 
+/// A directional shadow map of the sun, for volumetric light's shadow-map march (docs/architecture.md,
+/// "Volumetric light"). Any host's directional shadow map fits: `worldToClip` takes a world point to the
+/// sun view's clip space (GL conventions: x, y, z in [-1, 1] inside the map, w = 1 for the orthographic
+/// projection a directional light uses; a w other than 1 is divided out), and `depth` holds at (u, v) =
+/// (x, y) * 0.5 + 0.5 the nearest caster's z * 0.5 + 0.5, standard [0, 1] depth (0 at the near plane, the
+/// sun's side, 1 at the far plane), as a GL depth pass with glDepthRange(0, 1) writes it. A point whose
+/// (u, v, depth) lies outside [0, 1]^3 counts as lit. Any size; the host's own sampler state is not used.
+struct SunShadowMap {
+    /// DEPTH_COMPONENT16/24/32/32F or DEPTH24_STENCIL8/DEPTH32F_STENCIL8 (its depth read). Null: no map.
+    const Texture* depth = nullptr;
+    glm::mat4 worldToClip{1.0f}; ///< world -> the sun view's clip space; finite, invertible
+    /// Linear Rec.709 illuminance of the sun's light arriving at the scene, on a plane facing it (its
+    /// radiance times its solid angle), in the colour input's units: what the medium scatters.
+    glm::vec3 illuminance{1.0f};
+};
+
 /// What the host hands the pipeline each frame. Textures are the host's: adopted, never owned. Everything
 /// but colour is optional; a pass that needs an input the frame lacks is skipped and reported in
 /// PipelineStatus::skipped. Every texture has colour's extent.
@@ -55,6 +71,9 @@ struct FrameInputs {
     /// subjects.fallback = center).
     std::span<const Subject> subjects{};
     glm::vec2 viewCentreWorld{0.0f}; ///< world position under the screen centre (the centre subject's)
+    /// The sun's shadow map (its own size, not colour's), with sunDirection: volumetric light's shadow-map
+    /// march. Absent (depth null): screen-space volumetric light only.
+    SunShadowMap sunShadow{};
 };
 
 /// Time comes from the caller, never from a wall clock: a frame renders the same whatever the machine's

@@ -54,6 +54,8 @@ std::string_view resourceName(Resource resource) noexcept {
         return "velocityTiles";
     case Resource::VolumetricLight:
         return "volumetricLight";
+    case Resource::SunShadowMap:
+        return "sunShadow";
     case Resource::DebugColor:
         return "debugColor";
     case Resource::DisplayColor:

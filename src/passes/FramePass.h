@@ -56,6 +56,7 @@ enum class Resource : std::uint8_t {
     VelocityTiles,
     /// RGBA16F: the light volumetric light added, when the volumetric-light debug view shows it
     VolumetricLight,
+    SunShadowMap, ///< host: the sun's shadow map (FrameInputs::sunShadow), valid
     Count
 };
 inline constexpr std::size_t kResourceCount = std::size_t(Resource::Count);

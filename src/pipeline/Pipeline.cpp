@@ -55,6 +55,36 @@ std::string textureProblem(const char* name, const Texture& t, Extent extent,
     return {};
 }
 
+/// Why the sun's shadow map cannot be used, or empty: a depth texture of any size, a finite invertible
+/// matrix, a finite non-negative illuminance.
+std::string sunShadowProblem(const SunShadowMap& shadow) {
+    const Texture& t = *shadow.depth;
+    if (!t.valid() || t.extent().empty()) {
+        return "sunShadow.depth: not a texture (id 0) or empty";
+    }
+    if (!oneOf(t.format(), {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
+                            GL_DEPTH_COMPONENT32F, GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8})) {
+        return fmt::format("sunShadow.depth: format {} is not a depth format", formatName(t.format()));
+    }
+    const glm::mat4& m = shadow.worldToClip;
+    bool finite = true;
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            finite = finite && std::isfinite(m[c][r]);
+        }
+    }
+    const float det = finite ? glm::determinant(m) : 0.0f;
+    if (!finite || !std::isfinite(det) || det == 0.0f) {
+        return "sunShadow.worldToClip: not a finite, invertible matrix";
+    }
+    const glm::vec3 e = shadow.illuminance;
+    if (!(std::isfinite(e.x) && std::isfinite(e.y) && std::isfinite(e.z)) || e.x < 0.0f || e.y < 0.0f ||
+        e.z < 0.0f) {
+        return "sunShadow.illuminance: not finite and non-negative";
+    }
+    return {};
+}
+
 } // namespace
 
 Pipeline::Pipeline(const PipelineCreateInfo& info)
@@ -178,6 +208,13 @@ bool Pipeline::bindInputs(const FrameInputs& in) {
             mResources.markPresent(Resource::SunDirection);
         } else {
             mInputErrors.emplace_back("sunDirection: not a finite, non-zero vector");
+        }
+    }
+    if (in.sunShadow.depth != nullptr) {
+        if (std::string problem = sunShadowProblem(in.sunShadow); problem.empty()) {
+            mResources.bind(Resource::SunShadowMap, *in.sunShadow.depth);
+        } else {
+            mInputErrors.push_back(std::move(problem));
         }
     }
     return true;

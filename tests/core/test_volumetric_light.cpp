@@ -28,6 +28,11 @@ TEST(VolumetricLightSettings, DefaultsAreOffWithTheDocumentedValues) {
     EXPECT_DOUBLE_EQ(v["weight"].get<double>(), 1.0);
     EXPECT_NEAR(v["exposure"].get<double>(), 0.005, 1e-9);
     EXPECT_EQ(v["samples"].get<int>(), 64);
+    EXPECT_EQ(v["mode"].get<std::string>(), "auto");
+    EXPECT_EQ(v["resolution"].get<std::string>(), "half");
+    EXPECT_NEAR(v["scattering"].get<double>(), 0.02, 1e-7);
+    EXPECT_NEAR(v["anisotropy"].get<double>(), 0.6, 1e-7);
+    EXPECT_DOUBLE_EQ(v["maxDistance"].get<double>(), 100.0);
 }
 
 TEST(VolumetricLightSettings, TheOlderFilesKeysLoad) {
@@ -65,6 +70,11 @@ TEST(VolumetricLightSettings, ErrorsAreNamedByJsonPath) {
         {R"({"decay": "slow"})", "postEffects.volumetricLight.decay", SettingsIssueCode::WrongType},
         {R"({"enabled": 1})", "postEffects.volumetricLight.enabled", SettingsIssueCode::WrongType},
         {R"({"numSamples": 64})", "postEffects.volumetricLight.numSamples", SettingsIssueCode::UnknownKey},
+        {R"({"mode": "raymarch"})", "postEffects.volumetricLight.mode", SettingsIssueCode::BadEnum},
+        {R"({"resolution": "full"})", "postEffects.volumetricLight.resolution", SettingsIssueCode::BadEnum},
+        {R"({"scattering": -0.1})", "postEffects.volumetricLight.scattering", SettingsIssueCode::OutOfRange},
+        {R"({"anisotropy": 1})", "postEffects.volumetricLight.anisotropy", SettingsIssueCode::OutOfRange},
+        {R"({"maxDistance": 0})", "postEffects.volumetricLight.maxDistance", SettingsIssueCode::OutOfRange},
     };
     for (const auto& c : cases) {
         const std::vector<SettingsIssue> issues = readVolumetric(c.body, s);

@@ -1,8 +1,10 @@
 #include "passes/volumetric/VolumetricLightPass.h"
 
+#include "core/Log.h"
 #include "core/VolumetricLight.h"
 #include "passes/Bindings.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace photopic {
@@ -14,10 +16,10 @@ GLuint groups(int size) {
 }
 
 constexpr ResourceUse kUses[] = {
-    {Resource::SceneColor, Access::Read},      {Resource::LinearDepth, Access::Read},
-    {Resource::Camera, Access::Read},          {Resource::SunDirection, Access::Read},
-    {Resource::Motion, Access::ReadOptional},  {Resource::SceneColor, Access::Write},
-    {Resource::VolumetricLight, Access::Write}};
+    {Resource::SceneColor, Access::Read},     {Resource::LinearDepth, Access::Read},
+    {Resource::Camera, Access::Read},         {Resource::SunDirection, Access::Read},
+    {Resource::Motion, Access::ReadOptional}, {Resource::SunShadowMap, Access::ReadOptional},
+    {Resource::SceneColor, Access::Write},    {Resource::VolumetricLight, Access::Write}};
 
 VolumetricLightParameters parametersFor(const FrameContext& ctx, Extent half, bool hasHistory, bool hasMotion,
                                         bool writeView) {
@@ -45,6 +47,35 @@ VolumetricLightParameters parametersFor(const FrameContext& ctx, Extent half, bo
     return p;
 }
 
+VolumetricShadowParameters shadowParametersFor(const FrameContext& ctx, Extent low, int factor,
+                                               bool hasHistory, bool writeView) {
+    const VolumetricLightSettings& s = ctx.settings.volumetricLight;
+    const Camera& camera = *ctx.inputs.camera;
+    const SunShadowMap& shadow = ctx.inputs.sunShadow;
+    VolumetricShadowParameters p{};
+    p.worldToShadowClip = shadow.worldToClip;
+    p.inverseView = glm::inverse(camera.view);
+    p.prevViewProjection = camera.prevViewProjection;
+    p.projection = glm::vec4(1.0f / camera.projection[0][0], 1.0f / camera.projection[1][1],
+                             camera.projection[2][0], camera.projection[2][1]);
+    p.light = glm::vec4(shadow.illuminance * s.decay, s.anisotropy);
+    p.toSun = glm::vec4(glm::normalize(*ctx.inputs.sunDirection), 0.0f);
+    p.lowSize = glm::vec2(float(low.width), float(low.height));
+    p.fullSize = glm::vec2(float(ctx.extent.width), float(ctx.extent.height));
+    p.extinction = s.density * s.scattering;
+    p.maxDistance = s.maxDistance;
+    p.historyWeight = VolumetricLightPass::kHistoryWeight;
+    const float far = camera.farPlane;
+    p.skyDepth = std::isinf(far) ? far : far * (1.0f - 1e-4f);
+    p.samples = s.samples;
+    p.frame = std::uint32_t(ctx.time.frameIndex % 1024u);
+    p.hasHistory = hasHistory ? 1 : 0;
+    p.writeView = writeView ? 1 : 0;
+    p.factor = factor;
+    p.intensity = s.intensity;
+    return p;
+}
+
 } // namespace
 
 VolumetricLightPass::VolumetricLightPass()
@@ -54,13 +85,132 @@ VolumetricLightPass::VolumetricLightPass()
     , mComposite(
           makeComputeProgram("passes/volumetric/volumetric_light_composite.comp.glsl", bindingDefines()))
     , mParameters("volumetric light parameters")
-    , mNoView({.extent = {1, 1}, .format = GL_RGBA16F, .debugName = "volumetric light view (unused)"}) {}
+    , mNoView({.extent = {1, 1}, .format = GL_RGBA16F, .debugName = "volumetric light view (unused)"})
+    , mShadowMarch(
+          makeComputeProgram("passes/volumetric/volumetric_shadow_march.comp.glsl", bindingDefines()))
+    , mShadowResolve(
+          makeComputeProgram("passes/volumetric/volumetric_shadow_resolve.comp.glsl", bindingDefines()))
+    , mShadowComposite(
+          makeComputeProgram("passes/volumetric/volumetric_shadow_composite.comp.glsl", bindingDefines()))
+    , mShadowParameters("volumetric light (shadow map) parameters")
+    , mShadowSampler(Sampler::depthCompare("volumetric light sun shadow map")) {}
 
 std::span<const ResourceUse> VolumetricLightPass::uses() const {
     return kUses;
 }
 
 void VolumetricLightPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const VolumetricLightMode mode = ctx.settings.volumetricLight.mode;
+    const Texture* shadowMap = resources.texture(Resource::SunShadowMap);
+    if (mode == VolumetricLightMode::ShadowMap && shadowMap == nullptr) {
+        warnOnce("volumetric-light-no-shadow-map",
+                 "volumetricLight.mode = shadowmap without a sun shadow map (FrameInputs::sunShadow): the "
+                 "screen-space rays run instead");
+    }
+    const bool march = marchesShadowMap(mode, shadowMap != nullptr);
+    if (march != mLastRanShadowMap) {
+        invalidateHistory(); // the other mode's history holds something else
+        mLastRanShadowMap = march;
+    }
+    if (march) {
+        executeShadowMap(ctx, resources, *shadowMap);
+    } else {
+        executeScreen(ctx, resources);
+    }
+}
+
+void VolumetricLightPass::executeShadowMap(FrameContext& ctx, FrameResources& resources,
+                                           const Texture& shadowMap) {
+    const Extent e = ctx.extent;
+    const int factor = ctx.settings.volumetricLight.resolution == VolumetricLightResolution::Quarter ? 4 : 2;
+    const Extent low{(e.width + factor - 1) / factor, (e.height + factor - 1) / factor};
+    mShadowLight.ensure(low, GL_RGBA16F, "volumetric light (shadow map)");
+    mShadowDepth.ensure(low, GL_R32F, "volumetric light (shadow map) depth");
+    const Texture& raw = resources.pool()
+                             .acquire({.extent = low,
+                                       .format = GL_RGBA16F,
+                                       .minFilter = GL_NEAREST,
+                                       .magFilter = GL_NEAREST,
+                                       .debugName = "volumetric light march (this frame)"})
+                             .texture();
+    const Texture& out =
+        resources.pool()
+            .acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with volumetric light"})
+            .texture();
+    const bool writeView = ctx.settings.debug.view == DebugView::VolumetricLight;
+    const Texture* view = nullptr;
+    if (writeView) {
+        view = &resources.pool()
+                    .acquire({.extent = e,
+                              .format = GL_RGBA16F,
+                              .minFilter = GL_NEAREST,
+                              .magFilter = GL_NEAREST,
+                              .debugName = "volumetric light view"})
+                    .texture();
+    }
+    const bool hasHistory =
+        mShadowLight.valid() && mShadowDepth.valid() && !ctx.resetHistory && !ctx.inputs.camera->cut;
+    mShadowParameters.update(shadowParametersFor(ctx, low, factor, hasHistory, writeView));
+    mShadowParameters.bind(kBindingParameters);
+
+    const Texture& scene = *resources.texture(Resource::SceneColor);
+    const Texture& depth = *resources.texture(Resource::LinearDepth);
+    const double full = double(e.width) * e.height;
+    const double lowTexels = double(low.width) * low.height;
+    const int samples = ctx.settings.volumetricLight.samples;
+    constexpr GLuint kShadowUnit = 7;
+    {
+        // One depth per texel, `samples` shadow-map lookups (a 2x2 comparison of 4-byte depths, mostly
+        // cached), the light and depth out.
+        ScopedGpuTimer timer(ctx.timers, "volumetric light march (shadow map)",
+                             lowTexels * (4.0 + samples * 16.0 + 8.0 + 4.0));
+        mShadowMarch.use();
+        glBindTextureUnit(1, depth.id());
+        glBindTextureUnit(kShadowUnit, shadowMap.id());
+        glBindSampler(kShadowUnit, mShadowSampler.id());
+        glBindImageTexture(0, raw.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        glBindImageTexture(1, mShadowDepth.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        glDispatchCompute(groups(low.width), groups(low.height), 1);
+        glBindSampler(kShadowUnit, 0);
+        glBindTextureUnit(kShadowUnit, 0);
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    {
+        // This frame's march and depths (a tile with its border), the history's light and depths, the output.
+        ScopedGpuTimer timer(ctx.timers, "volumetric light resolve (shadow map)",
+                             lowTexels * (8.0 + 4.0 + 4 * (8.0 + 4.0) + 8.0));
+        mShadowResolve.use();
+        const Texture& current = mShadowDepth.current();
+        glBindTextureUnit(3, raw.id());
+        glBindTextureUnit(4, mShadowLight.previous() ? mShadowLight.previous()->id() : raw.id());
+        glBindTextureUnit(5, current.id());
+        glBindTextureUnit(6, mShadowDepth.previous() ? mShadowDepth.previous()->id() : current.id());
+        glBindImageTexture(0, mShadowLight.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        glDispatchCompute(groups(low.width), groups(low.height), 1);
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    {
+        // The colour and depth in, the colour out, four texels of light and depth, the view when it is on.
+        ScopedGpuTimer timer(ctx.timers, "volumetric light composite (shadow map)",
+                             full * (8.0 + 4.0 + 8.0 + (writeView ? 8.0 : 0.0)) + lowTexels * 12.0);
+        mShadowComposite.use();
+        glBindTextureUnit(0, scene.id());
+        glBindTextureUnit(1, depth.id());
+        glBindTextureUnit(5, mShadowDepth.current().id());
+        glBindTextureUnit(6, mShadowLight.current().id());
+        glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        glBindImageTexture(1, view ? view->id() : mNoView.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        glDispatchCompute(groups(e.width), groups(e.height), 1);
+    }
+    mShadowLight.advance();
+    mShadowDepth.advance();
+    resources.bind(Resource::SceneColor, out);
+    if (view) {
+        resources.bind(Resource::VolumetricLight, *view);
+    }
+}
+
+void VolumetricLightPass::executeScreen(FrameContext& ctx, FrameResources& resources) {
     const Extent e = ctx.extent;
     const Extent half{(e.width + 1) / 2, (e.height + 1) / 2};
     mHistory.ensure(half, GL_RGBA16F, "volumetric light");

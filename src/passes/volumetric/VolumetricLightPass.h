@@ -5,6 +5,10 @@
 // holds a surface), the radial march from each half-resolution texel towards the sun, a temporal
 // accumulation of the dithered march (reprojected, clamped to this frame's neighbourhood), and the composite
 // at full resolution. The rays fade out as the sun leaves the screen (core/VolumetricLight.h).
+// With the host's sun shadow map (FrameInputs::sunShadow) and mode shadowmap or auto, three other dispatches
+// instead: single scattering ray-marched along the view rays at half or quarter resolution against the map,
+// its temporal accumulation reprojected by the camera's motion from depth, and a depth-aware upsample added
+// to the image at the same place in the frame.
 // docs/architecture.md ("Volumetric light") has the settings, the measured figures and the limits.
 
 #include "passes/FramePass.h"
@@ -40,22 +44,62 @@ static_assert(offsetof(VolumetricLightParameters, samples) == 40);
 static_assert(offsetof(VolumetricLightParameters, active) == 60);
 static_assert(offsetof(VolumetricLightParameters, skyDepth) == 64);
 
+/// std140 mirror of volumetric_shadow_common.h.glsl's parameter block (the shadow-map march's dispatches).
+struct VolumetricShadowParameters {
+    glm::mat4 worldToShadowClip{1.0f};            ///< world -> the sun view's clip space (the host's matrix)
+    glm::mat4 inverseView{1.0f};                  ///< view -> world
+    glm::mat4 prevViewProjection{1.0f};           ///< world -> last frame's clip space
+    glm::vec4 projection{1.0f, 1.0f, 0.0f, 0.0f}; ///< 1 / P00, 1 / P11, P20, P21
+    glm::vec4 light{0.0f};    ///< rgb: illuminance x albedo (decay); w: Henyey-Greenstein g
+    glm::vec4 toSun{0.0f};    ///< xyz: towards the sun, unit; w: unused
+    glm::vec2 lowSize{1.0f};  ///< texels of the march
+    glm::vec2 fullSize{1.0f}; ///< pixels
+    float extinction = 0.0f;  ///< per scene unit: density x scattering
+    float maxDistance = 100.0f;
+    float historyWeight = 0.9f;
+    float skyDepth = 0.0f;
+    std::int32_t samples = 64;
+    std::uint32_t frame = 0;
+    std::int32_t hasHistory = 0;
+    std::int32_t writeView = 0;
+    std::int32_t factor = 2; ///< pixels per march texel on each axis
+    float intensity = 1.0f;
+    float padding[2] = {};
+};
+static_assert(sizeof(VolumetricShadowParameters) == 304);
+static_assert(offsetof(VolumetricShadowParameters, lowSize) == 240);
+static_assert(offsetof(VolumetricShadowParameters, samples) == 272);
+static_assert(offsetof(VolumetricShadowParameters, intensity) == 292);
+
 class VolumetricLightPass final : public FramePass {
 public:
     VolumetricLightPass();
     [[nodiscard]] std::string_view name() const override { return "volumetric light"; }
-    /// sceneColor, linearDepth, camera, sunDirection, motion? -> sceneColor, volumetricLight (view)
+    /// sceneColor, linearDepth, camera, sunDirection, motion?, sunShadow? -> sceneColor, volumetricLight
+    /// (view)
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
     [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
         return ctx.hdr && ctx.settings.volumetricLight.enabled;
     }
-    void invalidateHistory() override { mHistory.invalidate(); }
+    void invalidateHistory() override {
+        mHistory.invalidate();
+        mShadowLight.invalidate();
+        mShadowDepth.invalidate();
+    }
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
     /// The history's weight against this frame's march, per frame (about 10 frames of accumulation).
     static constexpr float kHistoryWeight = 0.9f;
 
+    /// The mode that runs with or without a sun shadow map: shadowmap needs one (without it, screen runs).
+    [[nodiscard]] static bool marchesShadowMap(VolumetricLightMode mode, bool hasShadowMap) {
+        return hasShadowMap && mode != VolumetricLightMode::Screen;
+    }
+
 private:
+    void executeScreen(FrameContext& ctx, FrameResources& resources);
+    void executeShadowMap(FrameContext& ctx, FrameResources& resources, const Texture& shadowMap);
+
     Program mPrepare;
     Program mScatter;
     Program mResolve;
@@ -63,6 +107,15 @@ private:
     ParameterBlock<VolumetricLightParameters> mParameters;
     HistoryTexture mHistory; ///< the accumulated half-resolution light (before the final scale)
     Texture mNoView;         ///< bound to the view's image unit when no debug view asks for it
+    Program mShadowMarch;
+    Program mShadowResolve;
+    Program mShadowComposite;
+    ParameterBlock<VolumetricShadowParameters> mShadowParameters;
+    HistoryTexture mShadowLight; ///< the shadow-map march's accumulated light (before intensity)
+    HistoryTexture mShadowDepth; ///< the march texels' linear depths, this frame's and last frame's
+    Sampler mShadowSampler;      ///< linear, LEQUAL comparison, clamped: the host's map read as visibility
+    /// Whether the shadow-map march ran last frame (switching mode starts the other's history over).
+    bool mLastRanShadowMap = false;
 };
 
 } // namespace photopic

@@ -1,0 +1,82 @@
+// Shadow-map volumetric light, step 1: single scattering ray-marched along each view ray at half or quarter
+// resolution. From the camera to the surface (the sky's rays to maxDistance), `samples` steps of equal length;
+// each step's point is looked up in the sun's shadow map (a hardware depth comparison: visible or not), and
+// the step adds albedo x illuminance x phase x visibility x the light the medium removes over the step,
+// T(start) (1 - exp(-extinction x step)), so the sum over the steps integrates the transmittance exactly
+// (Hillaire 2015, "Physically Based and Unified Volumetric Rendering in Frostbite") and only the visibility
+// is sampled. The phase is Henyey-Greenstein's for the angle between the sun's light and the view ray, the
+// same along a ray for a directional sun. The steps start at an interleaved-gradient-noise offset (Jimenez
+// 2014) moved every frame along the golden-ratio sequence: the accumulation (step 2) averages the visibility
+// of a shaft's edge over the whole step. Writes this texel's linear depth too, for the reprojection and the
+// upsample.
+#include "passes/volumetric/volumetric_shadow_common.h.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 1) uniform sampler2D uDepth;             // R32F linear depth, full resolution, +inf: sky
+layout(binding = 7) uniform sampler2DShadow uShadowMap;   // the host's depth, compared LEQUAL
+layout(binding = 0, rgba16f) uniform writeonly image2D uOut;
+layout(binding = 1, r32f) uniform writeonly image2D uLowDepth;
+
+float interleavedGradientNoise(vec2 p) {
+    return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
+}
+
+// 1 where the sun's light reaches `p` (or `p` lies outside the map), 0 in a caster's shadow.
+float sunVisibility(vec3 p) {
+    vec4 clip = uWorldToShadowClip * vec4(p, 1.0);
+    if (!(clip.w > 0.0)) {
+        return 1.0;
+    }
+    vec3 s = clip.xyz / clip.w * 0.5 + 0.5;
+    if (any(lessThan(s, vec3(0.0))) || any(greaterThan(s, vec3(1.0)))) {
+        return 1.0;
+    }
+    // No depth bias: the points are in the air, not on a surface that could shadow itself. A bias would light
+    // the air just under every occluder (measured: 13 cm of it under the test's roof doubled the light in
+    // its shadow); without it only the last step in front of a lit surface can read its own texel.
+    return texture(uShadowMap, vec3(s.xy, s.z));
+}
+
+float henyeyGreenstein(float cosTheta, float g) {
+    float d = max(1.0 + g * g - 2.0 * g * cosTheta, 1e-6);
+    return (1.0 - g * g) / (4.0 * 3.14159265 * d * sqrt(d));
+}
+
+void main() {
+    ivec2 q = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = imageSize(uOut);
+    if (any(greaterThanEqual(q, size))) {
+        return;
+    }
+    vec2 uv = (vec2(q) + 0.5) / uLowSize;
+    ivec2 p = clamp(ivec2(uv * uFullSize), ivec2(0), ivec2(uFullSize) - 1);
+    float z = texelFetch(uDepth, p, 0).r;
+    if (!validDepth(z)) {
+        z = 0.0; // a broken depth: no march, and no surface the reprojection could match
+    }
+    imageStore(uLowDepth, q, vec4(z, 0.0, 0.0, 0.0));
+
+    vec3 ray = viewRay(uv);
+    float perDepth = length(ray); // scene units along the ray per unit of linear depth
+    vec3 sum = vec3(0.0);
+    if (z > 0.0 && perDepth > 0.0) {
+        float rayLength = isSky(z) ? uMaxDistance : min(z * perDepth, uMaxDistance);
+        vec3 dir = ray / perDepth;
+        float n = float(uSamples);
+        float stepLength = rayLength / n;
+        float offset = fract(interleavedGradientNoise(vec2(q)) + 0.61803399 * float(uFrame));
+        float stepLoss = 1.0 - exp(-uExtinction * stepLength); // the share of the light one step removes
+        float stepTransmittance = 1.0 - stepLoss;
+        float transmittance = 1.0;
+        float visible = 0.0;
+        vec3 origin = cameraPosition();
+        for (int i = 0; i < uSamples; ++i) {
+            visible += transmittance * sunVisibility(origin + dir * ((float(i) + offset) * stepLength));
+            transmittance *= stepTransmittance;
+        }
+        float phase = henyeyGreenstein(dot(dir, uToSun.xyz), uLight.w);
+        sum = sanitizeLight(uLight.rgb * (phase * stepLoss * visible));
+    }
+    imageStore(uOut, q, vec4(sum, 1.0));
+}
