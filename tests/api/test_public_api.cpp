@@ -222,6 +222,54 @@ TEST_F(PublicApi, BadNamesAreReportedNotFatal) {
     }
 }
 
+// The sun's shadow map through the public API: a depth texture of its own size with its matrix and
+// illuminance is taken (no input error) and, with volumetric light in auto mode, marched (the image differs
+// from the screen-space rays', which add nothing with the sun behind the camera); a colour texture in its
+// place is refused by name.
+TEST_F(PublicApi, TakesTheSunShadowMap) {
+    const GlName depth = makeTexture(GL_R32F);
+    const float five = 5.0f;
+    glClearTexImage(depth, 0, GL_RED, GL_FLOAT, &five);
+    const GlName map = makeTexture(GL_DEPTH_COMPONENT32F, 64, 64);
+    const float half = 0.5f;
+    glClearTexImage(map, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &half);
+    HostCamera camera;
+    const float f = 1.0f / std::tan(0.5f * camera.verticalFov), n = camera.nearPlane, far = camera.farPlane;
+    camera.projection = {
+        f * float(kH) / float(kW), 0, 0, 0, 0, f, 0, 0, 0, 0, (far + n) / (n - far), -1, 0, 0,
+        2 * far * n / (n - far),   0};
+    camera.prevViewProjection = camera.projection;
+    Frame withMap = frame();
+    withMap.depth = depth;
+    withMap.depthEncoding = DepthEncoding::LinearView;
+    withMap.camera = &camera;
+    withMap.sunDirection = std::array<float, 3>{0.0f, 0.0f, 1.0f};
+    withMap.sunShadow = {.depth = map,
+                         .worldToClip = {0.1f, 0, 0, 0, 0, 0.1f, 0, 0, 0, 0, 0.1f, 0, 0, 0, 0, 1},
+                         .illuminance = {50.0f, 50.0f, 50.0f}};
+    const auto run = [&](const char* mode, const Frame& f) {
+        PostProcessor post({.settingsJson = std::string(R"({"version": 1, "postEffects": {
+            "autoExposure": {"enabled": false}, "output": {"dither": false}, "aa": {"mode": "fxaa"},
+            "volumetricLight": {"enabled": true, "mode": ")") +
+                                            mode + R"("}}})"});
+        const std::vector<std::uint8_t> bytes = readBytes(post.execute(f));
+        return std::make_pair(bytes, post.status().inputErrors);
+    };
+    const auto [marched, marchedErrors] = run("auto", withMap);
+    const auto [screen, screenErrors] = run("screen", withMap);
+    EXPECT_TRUE(marchedErrors.empty());
+    EXPECT_TRUE(screenErrors.empty());
+    EXPECT_NE(marched, screen);
+    Frame colourMap = withMap;
+    colourMap.sunShadow.depth = hdr;
+    const auto [refused, refusedErrors] = run("auto", colourMap);
+    ASSERT_EQ(refusedErrors.size(), 1u);
+    EXPECT_NE(refusedErrors.front().find("sunShadow.depth"), std::string::npos) << refusedErrors.front();
+    EXPECT_EQ(refused, screen);
+    glDeleteTextures(1, &depth);
+    glDeleteTextures(1, &map);
+}
+
 TEST_F(PublicApi, SettingsErrorsNameTheKeyAndChangeNothing) {
     PostProcessor post({.settingsJson = kSettings});
     const std::string before = post.settingsJson();
