@@ -400,6 +400,60 @@ TEST_F(GlTest, VolumetricShadowHoldsStillOnASlowPan) {
     }
 }
 
+// The history is rejected where the depth changed and dropped on a cut: after 12 frames under the roof the
+// roof is taken away (the camera still). Where the depth changed (the roof became sky) with no unchanged
+// pixel within 6 px, the light is what a fresh history gives at the same frame: nothing of the roof's
+// shadowed light stays behind; where it did not change (the floor) the history carries on. A cut to the
+// roof again gives the fresh history's frame everywhere.
+TEST_F(GlTest, VolumetricShadowRejectsTheHistoryOnDepthChangeAndCut) {
+    Camera camera = cameraLooking(0.0f, 0.0f);
+    Host roofed;
+    Host open(Scene{.roof = false});
+    const ImageF depthRoofed = depthOf(roofed.scene(), camera), depthOpen = depthOf(open.scene(), camera);
+    Pipeline pipeline({.settings = shadowSettings()});
+    Pipeline fresh({.settings = shadowSettings()});
+    for (std::uint64_t i = 0; i < 12; ++i) {
+        roofed.render(pipeline, camera, i);
+    }
+    const ImageF after = open.render(pipeline, camera, 12);
+    const ImageF first = open.render(fresh, camera, 12);
+    const auto changed = [&](int x, int y) { return depthRoofed.at(x, y)[0] != depthOpen.at(x, y)[0]; };
+    double changedError = 0.0, changedSum = 0.0, keptDifference = 0.0, keptSum = 0.0;
+    int changedCount = 0;
+    for (int y = 6; y < kH - 6; ++y) {
+        for (int x = 6; x < kW - 6; ++x) {
+            bool all = true, none = true;
+            for (int dy = -6; dy <= 6; ++dy) {
+                for (int dx = -6; dx <= 6; ++dx) {
+                    all = all && changed(x + dx, y + dy);
+                    none = none && !changed(x + dx, y + dy);
+                }
+            }
+            const double a = luma(after.at(x, y)), f = luma(first.at(x, y));
+            if (all) {
+                changedError += std::abs(a - f);
+                changedSum += f;
+                ++changedCount;
+            } else if (none) {
+                keptDifference += std::abs(a - f);
+                keptSum += f;
+            }
+        }
+    }
+    ASSERT_GT(changedCount, 100);
+    std::printf("volumetric light (shadow map) after the roof went: %d pixels of changed depth differ from a "
+                "fresh history by %.5f of their light; unchanged pixels by %.4f\n",
+                changedCount, changedError / changedSum, keptDifference / keptSum);
+    EXPECT_LE(changedError / changedSum, 1e-3);
+    EXPECT_GT(keptDifference / keptSum, 0.01);
+
+    camera.cut = true;
+    const ImageF cut = roofed.render(pipeline, camera, 13);
+    fresh.reset();
+    const ImageF cutFresh = roofed.render(fresh, camera, 13);
+    EXPECT_EQ(cut.rgba, cutFresh.rgba);
+}
+
 // Without a shadow map, auto and shadowmap run the screen-space rays: the same image, bit for bit, as mode
 // screen; with one, auto marches the map (an image other than screen's, the same as shadowmap's).
 TEST_F(GlTest, VolumetricShadowFallsBackToTheScreenRaysWithoutAMap) {
