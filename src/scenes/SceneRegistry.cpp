@@ -4,6 +4,7 @@
 
 #include "scenes/canvas/CanvasScene.h"
 #include "scenes/gradient/GradientScene.h"
+#include "scenes/orbit/OrbitScene.h"
 #include "scenes/tabletop/TabletopScene.h"
 #include "scenes/testbed/TestbedScene.h"
 
@@ -26,6 +27,11 @@ const std::vector<SceneInfo>& builtInScenes() {
          "and a moving object; a pan, a dolly and a cut) with depth, normals, motion and the camera; --truth "
          "KIND writes its CPU ray-traced references",
          makeTestbedScene},
+        {"orbit",
+         "a spacecraft in orbit (PBR, image-based light, procedural planets and stars): the camera circles "
+         "the ship as it passes through the planet's shadow and back into the sun; --model FILE draws a "
+         "glTF model instead",
+         makeOrbitScene},
     };
     return kScenes;
 }

@@ -1,0 +1,211 @@
+#include "scenes/orbit/OrbitScene.h"
+
+#include "core/Log.h"
+#include "io/DataPath.h"
+#include "io/ImageIO.h"
+#include "scenes/SceneSettings.h"
+#include "scenes/orbit/OrbitShip.h"
+#include "scenes/orbit/OrbitWorld.h"
+
+#include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace photopic {
+
+namespace {
+
+/// The built-in ship's bounding radius; a glTF model is scaled to the same size.
+constexpr float kShipRadius = 14.0f;
+
+/// The image-based light's stand-in when no HDRI can be read: a dim sky of space with the bright planet
+/// below (the direction of the Earth), as radiance on an equirectangular grid.
+ImageF proceduralSky() {
+    ImageF sky(64, 32);
+    const glm::vec3 toEarth = glm::normalize(orbit::kEarth.centre);
+    const float cosEarth = std::cos(std::asin(orbit::kEarth.radius / glm::length(orbit::kEarth.centre)));
+    for (int y = 0; y < sky.height; ++y) {
+        for (int x = 0; x < sky.width; ++x) {
+            const glm::vec3 d = equirectDirection(
+                {(float(x) + 0.5f) / float(sky.width), (float(y) + 0.5f) / float(sky.height)});
+            const glm::vec3 c = glm::dot(d, toEarth) > cosEarth ? glm::vec3(0.30f, 0.38f, 0.55f)
+                                                                : glm::vec3(0.01f, 0.012f, 0.02f);
+            float* p = sky.at(x, y);
+            p[0] = c.r;
+            p[1] = c.g;
+            p[2] = c.b;
+            p[3] = 1.0f;
+        }
+    }
+    return sky;
+}
+
+} // namespace
+
+OrbitScene::OrbitScene() = default;
+
+Settings OrbitScene::defaultSettings() const {
+    Settings s;
+    s.tonemapping.mode = ToneMapper::Neutral;
+    if (mSettings.post == OrbitPost::Raw) {
+        s.autoExposure.enabled = false;
+        s.tonemapping.exposure = std::log2(mSettings.exp);
+        s.bloom.enabled = false;
+        s.lensFlare.enabled = false;
+    } else {
+        s.autoExposure.enabled = true;
+        s.autoExposure.compensationEV = std::log2(mSettings.exp);
+        // Space is mostly black: meter a spot on the ship, which the camera keeps at the image centre, not
+        // the frame, whose empty sky would drag exposure up by several stops.
+        s.autoExposure.metering = MeteringMode::Spot;
+        s.autoExposure.spot.radius = 0.04f;
+        s.autoExposure.spot.taps = 13;
+        s.autoExposure.minEV = -6.0f;
+        s.autoExposure.maxEV = 4.0f;
+        // Bloom of what is well past white only (the sun's disc, glints), as a glow of light in the HDR
+        // domain: the energy-conserving mix would spread the sun's disc, 2000x white, over the frame.
+        s.bloom = BloomSettings::stills();
+        s.bloom.threshold = 4.0f;
+        s.bloom.intensity = 0.1f;
+    }
+    return s;
+}
+
+std::vector<SettingsIssue> OrbitScene::applyOverride(std::string_view assignment) {
+    return applySceneOverride(mSettings, name(), assignment);
+}
+
+std::string OrbitScene::settingsJson() const {
+    return sceneSettingsJson(mSettings);
+}
+
+void OrbitScene::loadModel() {
+    orbit::Model model;
+    if (mSettings.model.empty()) {
+        model = orbit::buildShip();
+    } else {
+        try {
+            model = orbit::loadModel(mSettings.model);
+        } catch (const orbit::ModelError& e) {
+            throw SceneInputError(std::string("--model: ") + e.what());
+        }
+    }
+    // Centre the model on the origin and scale it to the ship's size, so the camera path frames it.
+    const glm::vec3 centre = 0.5f * (model.bounds.min + model.bounds.max);
+    const float radius = 0.5f * glm::length(model.bounds.max - model.bounds.min);
+    const float scale = mSettings.model.empty() || radius <= 0.0f ? 1.0f : kShipRadius / radius;
+    mShipRadius = mSettings.model.empty() ? radius : kShipRadius;
+    const glm::mat4 placement =
+        glm::scale(glm::mat4(1.0f), glm::vec3(scale)) *
+        glm::translate(glm::mat4(1.0f), mSettings.model.empty() ? glm::vec3(0.0f) : -centre);
+    mRenderer.setModel(model, placement);
+    mLoadedModel = mSettings.model;
+}
+
+void OrbitScene::loadEnvironment() {
+    mLoadedEnv = mSettings.env;
+    std::filesystem::path path = mSettings.env;
+    try {
+        if (path.empty()) {
+            path = findDataDir() / "blender_sunrise.exr";
+        }
+        mRenderer.setEnvironment(projectEquirectSh9(readImage(path)));
+        return;
+    } catch (const std::exception& e) {
+        warnOnce("orbit.env", fmt::format("orbit: the environment {} cannot be used ({}); the image-based "
+                                          "light falls back to a procedural sky",
+                                          path.string(), e.what()));
+    }
+    mRenderer.setEnvironment(projectEquirectSh9(proceduralSky()));
+}
+
+void OrbitScene::resize(Extent extent) {
+    mExtent = extent;
+    mRenderer.resize(extent);
+    if (mLoadedModel != mSettings.model) {
+        loadModel();
+    }
+    if (mLoadedEnv != mSettings.env) {
+        loadEnvironment();
+    }
+}
+
+std::vector<std::string> OrbitScene::telemetryColumns() const {
+    return {"script_s", "sun_visibility"};
+}
+
+double OrbitScene::scriptTime(const FrameTime& time) const {
+    return double(mSettings.start) + double(mSettings.speed) * double(time.frameIndex) * double(time.dt);
+}
+
+orbit::OrbitLights OrbitScene::lightsAt(double seconds) const {
+    const bool raw = mSettings.post == OrbitPost::Raw;
+    orbit::OrbitLights l;
+    l.sunDirection = orbit::sunDirectionAt(seconds);
+    l.sun = mSettings.sun;
+    l.ambient = mSettings.amb;
+    l.hemi = mSettings.hemi;
+    l.ibl = mSettings.ibl;
+    l.atmosphere = raw ? 0.0f : mSettings.atmosphere;
+    l.glow = raw ? 0.0f : mSettings.glow;
+    l.nebula = mSettings.nebula;
+    l.time = seconds;
+    return l;
+}
+
+FrameInputs OrbitScene::render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) {
+    if (mLoadedModel != mSettings.model || mLoadedEnv != mSettings.env) {
+        resize(mExtent); // settings changed since the last resize (an interactive host)
+    }
+    const double t = scriptTime(time);
+    const double dtScript = double(mSettings.speed) * double(time.dt);
+    const double prev = time.frameIndex == 0 ? t : t - dtScript;
+    mCamera = orbit::orbitCamera(t, prev, mShipRadius, mExtent.width, mExtent.height);
+    mCamera.cut = time.frameIndex == 0;
+
+    const glm::vec2 jitter = pipeline.beginFrame(time, &mCamera);
+    orbit::OrbitRenderer::DrawInfo draw{.camera = &mCamera,
+                                        .jitter = jitter,
+                                        .shipTransform = orbit::shipTransform(t),
+                                        .prevShipTransform = orbit::shipTransform(prev),
+                                        .lights = lightsAt(t)};
+    mRenderer.draw(draw);
+    FrameInputs inputs{.color = &mRenderer.color(),
+                       .depth = &mRenderer.depth(),
+                       .depthKind = DepthKind::Standard,
+                       .normals = &mRenderer.normals(),
+                       .normalEncoding = NormalEncoding::ViewXyz,
+                       .motion = &mRenderer.motion(),
+                       .camera = &mCamera,
+                       .sunDirection = draw.lights.sunDirection,
+                       .objectId = &mRenderer.objectId(),
+                       .material = &mRenderer.material()};
+    const LightingOutputs& lighting = pipeline.renderLighting(inputs, time);
+    draw.ambientOcclusion = lighting.ambientOcclusion;
+    draw.ambientOcclusionPower = lighting.ambientOcclusionPower;
+    draw.contactShadows = lighting.contactShadows;
+    if (lighting.ambientOcclusion != nullptr || lighting.contactShadows != nullptr) {
+        mRenderer.draw(draw);
+    }
+    // Supersampling: each further sub-frame with its own jitter, folded into the pipeline's mean in linear
+    // light; depth, normals and motion are the last sub-frame's.
+    const int subframes = pipeline.subframeCount();
+    if (subframes > 1) {
+        pipeline.accumulateSubframe(mRenderer.color(), 0);
+        for (int i = 1; i < subframes; ++i) {
+            draw.jitter = pipeline.subframeJitter(i);
+            mRenderer.draw(draw);
+            pipeline.accumulateSubframe(mRenderer.color(), i);
+        }
+        inputs.color = &pipeline.subframeMean();
+    }
+    telemetry = {t, double(orbit::sunVisibility(orbit::kEarth, glm::vec3(0.0f), draw.lights.sunDirection))};
+    return inputs;
+}
+
+std::unique_ptr<Scene> makeOrbitScene() {
+    return std::make_unique<OrbitScene>();
+}
+
+} // namespace photopic
