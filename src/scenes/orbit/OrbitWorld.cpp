@@ -44,8 +44,10 @@ glm::mat4 shipTransform(double seconds) {
 }
 
 glm::vec3 cameraEyeAt(double seconds, float shipRadius) {
-    // One slow turn around the ship over the script, rising and falling a little, closing in as it goes.
-    const double yaw = 3.7 + 2.0 * 3.14159265358979323846 * seconds / 20.0;
+    // Three quarters of a turn around the ship over the script, rising and falling a little, closing in as
+    // it goes: it starts with the sun behind the camera (the ship lit from the front) and ends looking
+    // past the ship towards the sun as it comes out of the planet's shadow.
+    const double yaw = 4.17 - 0.425 * seconds;
     const double pitch = 0.22 + 0.12 * std::sin(seconds * 0.5);
     const float distance = shipRadius * float(1.75 - 0.03 * std::min(seconds, kScriptSeconds));
     return distance * glm::vec3(float(std::cos(pitch) * std::sin(yaw)), float(std::sin(pitch)),
