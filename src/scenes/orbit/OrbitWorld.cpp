@@ -40,16 +40,35 @@ float sunVisibility(const Planet& planet, glm::vec3 point, glm::vec3 sunDirectio
 }
 
 glm::mat4 shipTransform(double seconds) {
-    return glm::rotate(glm::mat4(1.0f), float(kShipSpin * seconds), glm::vec3(0.0f, 0.0f, 1.0f));
+    // The ship's long axis (model z) stands along the normal of the plane the sun moves in, so the sun
+    // always lights the hull's side, never only an end; the solar arrays (model x) stay along world x.
+    const glm::vec3 toEarth = glm::normalize(kEarth.centre);
+    const glm::vec3 x(1.0f, 0.0f, 0.0f);
+    const glm::vec3 z = glm::normalize(glm::cross(toEarth, -x));
+    const glm::mat4 orientation(glm::vec4(x, 0.0f), glm::vec4(glm::cross(z, x), 0.0f), glm::vec4(z, 0.0f),
+                                glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    return orientation *
+           glm::rotate(glm::mat4(1.0f), float(kShipSpin * seconds), glm::vec3(0.0f, 0.0f, 1.0f));
 }
 
 glm::vec3 cameraEyeAt(double seconds, float shipRadius) {
-    // Three quarters of a turn around the ship over the script, rising and falling a little, closing in as
-    // it goes: it starts with the sun behind the camera (the ship lit from the front) and ends looking
-    // past the ship towards the sun as it comes out of the planet's shadow.
-    const double yaw = 4.17 - 0.425 * seconds;
-    const double pitch = 0.22 + 0.12 * std::sin(seconds * 0.5);
-    const float distance = shipRadius * float(1.75 - 0.03 * std::min(seconds, kScriptSeconds));
+    // The camera follows the sun round the ship, 1 rad off it in yaw, so the ship is seen lit from the front
+    // three-quarters as it goes into the planet's shadow and out again; from 8.6 s it swings round to look
+    // past the ship towards the sun, 0.35 rad off it (the sun's disc in the frame, the ship rim-lit).
+    // Yaw is measured from +z towards +x; the sun's yaw is unwrapped about the planet's direction (-z), which
+    // it crosses during the eclipse.
+    const double t = std::clamp(seconds, 0.0, kScriptSeconds);
+    const glm::vec3 sun = sunDirectionAt(t);
+    const double sunYaw = std::atan2(-double(sun.x), -double(sun.z)) + 3.14159265358979323846;
+    const double s = std::clamp((t - 8.6) / 2.6, 0.0, 1.0);
+    const double swing = s * s * (3.0 - 2.0 * s);
+    const double yaw = sunYaw + 1.0 + swing * (3.14159265358979323846 - 1.35);
+    // Elevation follows the sun's too (it stays 17 to 32 degrees below the horizon): a little above it while
+    // the camera is on the sun's side, mirrored above the ship when it looks towards the sun.
+    const double sunPitch = std::asin(std::clamp(double(sun.y), -1.0, 1.0));
+    const double pitch =
+        (1.0 - swing) * (sunPitch + 0.2) + swing * (-sunPitch - 0.1) + 0.05 * std::sin(t * 0.5);
+    const float distance = shipRadius * float(1.75 - 0.03 * t);
     return distance * glm::vec3(float(std::cos(pitch) * std::sin(yaw)), float(std::sin(pitch)),
                                 float(std::cos(pitch) * std::cos(yaw)));
 }

@@ -46,7 +46,7 @@ inline constexpr unsigned kFirstShip = 1;
 /// 1 unoccluded, 0 in the umbra, a smooth penumbra whose width grows with the distance to the planet.
 [[nodiscard]] float sunVisibility(const Planet& planet, glm::vec3 point, glm::vec3 sunDirection);
 
-/// The ship's model matrix at script time `seconds` (its spin about z).
+/// The ship's model matrix at script time `seconds`: a fixed orientation, then its spin about its long axis.
 [[nodiscard]] glm::mat4 shipTransform(double seconds);
 
 /// The orbiting camera's eye at script time `seconds` around a ship of bounding radius `shipRadius`.
