@@ -11,6 +11,7 @@
 #include "gl/ShaderLibrary.h"
 #include "gl/TextureIo.h"
 #include "scenes/SceneSettings.h"
+#include "scenes/orbit/OrbitIbl.h"
 #include "scenes/orbit/OrbitRenderer.h"
 #include "scenes/orbit/OrbitScene.h"
 #include "scenes/orbit/OrbitShip.h"
@@ -52,7 +53,8 @@ bool isShip(std::uint32_t id) {
 /// An orbit scene at a still script time with the given --set assignments.
 std::unique_ptr<OrbitScene> makeScene(float start, std::initializer_list<const char*> overrides) {
     auto scene = std::make_unique<OrbitScene>();
-    std::vector<std::string> all = {"start=" + std::to_string(start), "speed=0"};
+    // A small environment cube keeps each scene's image-based-light build short; the light is the same kind.
+    std::vector<std::string> all = {"start=" + std::to_string(start), "speed=0", "iblSize=32"};
     all.insert(all.end(), overrides.begin(), overrides.end());
     applySceneOverrides(*scene, all);
     scene->resize({kWidth, kHeight});
@@ -337,7 +339,7 @@ TEST_F(GlTest, OrbitMotionVectorsFollowTheCameraAndTheShipsOwnSpin) {
     // A moving script (speed 1) at frame 10: each ship pixel's motion must equal the reprojection of its
     // surface point through the previous ship transform and camera.
     auto scene = std::make_unique<OrbitScene>();
-    applySceneOverrides(*scene, std::vector<std::string>{"speed=20"});
+    applySceneOverrides(*scene, std::vector<std::string>{"speed=20", "iblSize=32"});
     scene->resize({kWidth, kHeight});
     Pipeline pipeline({.settings = scene->defaultSettings()});
     std::vector<double> telemetry;
@@ -393,7 +395,7 @@ TEST_F(GlTest, OrbitShadersCompileWithoutWarnings) {
                    {GL_FRAGMENT_SHADER, "scenes/orbit/orbit_mesh.frag.glsl"},
                    {GL_FRAGMENT_SHADER, "scenes/orbit/orbit_background.frag.glsl"}};
     for (const auto& s : shaders) {
-        const std::string source = preprocessShader(s.name);
+        const std::string source = preprocessShader(s.name, orbit::iblShaderDefines());
         const GLuint shader = glCreateShader(s.stage);
         const char* text = source.c_str();
         glShaderSource(shader, 1, &text, nullptr);

@@ -32,11 +32,9 @@ struct GpuFrame {
     glm::vec4 planetFx;
     glm::ivec4 flags;
     glm::vec4 aoPower;
-    glm::vec4 sh[9];
 };
-static_assert(sizeof(GpuFrame) == 6 * 64 + 13 * 16 + 9 * 16);
-static_assert(offsetof(GpuFrame, viewport) == 384 && offsetof(GpuFrame, flags) == 560 &&
-              offsetof(GpuFrame, sh) == 592);
+static_assert(sizeof(GpuFrame) == 6 * 64 + 13 * 16);
+static_assert(offsetof(GpuFrame, viewport) == 384 && offsetof(GpuFrame, flags) == 560);
 
 /// std140 mirror of orbit_draw.h.glsl's OrbitDraw.
 struct GpuDraw {
@@ -64,10 +62,10 @@ photopic::Texture onePixel(GLenum format, const std::uint8_t rgba[4], std::strin
 } // namespace
 
 OrbitRenderer::OrbitRenderer()
-    : mMeshProgram(
-          makeGraphicsProgram("scenes/orbit/orbit_mesh.vert.glsl", "scenes/orbit/orbit_mesh.frag.glsl"))
+    : mMeshProgram(makeGraphicsProgram("scenes/orbit/orbit_mesh.vert.glsl",
+                                       "scenes/orbit/orbit_mesh.frag.glsl", iblShaderDefines()))
     , mBackground(makeGraphicsProgram("passes/common/fullscreen.vert.glsl",
-                                      "scenes/orbit/orbit_background.frag.glsl"))
+                                      "scenes/orbit/orbit_background.frag.glsl", iblShaderDefines()))
     , mEmptyVao(VertexArray::create("orbit background"))
     , mFrame({.size = sizeof(GpuFrame), .debugName = "orbit frame"})
     , mDraw({.size = sizeof(GpuDraw), .debugName = "orbit draw"}) {
@@ -106,6 +104,10 @@ void OrbitRenderer::setModel(const Model& model, const glm::mat4& placement) {
     mPlacement = placement;
 }
 
+void OrbitRenderer::setEnvironment(const ImageF& equirect, const IblOptions& options) {
+    mIbl = std::make_unique<Ibl>(equirect, options);
+}
+
 void OrbitRenderer::draw(const DrawInfo& info) {
     const Camera& camera = *info.camera;
     const Extent e = mColor.extent();
@@ -132,9 +134,6 @@ void OrbitRenderer::draw(const DrawInfo& info) {
     f.planetFx = {lights.atmosphere, lights.glow, float(lights.time), lights.nebula};
     f.flags = {info.ambientOcclusion != nullptr ? 1 : 0, info.contactShadows != nullptr ? 1 : 0, 0, 0};
     f.aoPower = glm::vec4(info.ambientOcclusionPower, 0.0f, 0.0f, 0.0f);
-    for (int i = 0; i < 9; ++i) {
-        f.sh[i] = glm::vec4(mSh.c[std::size_t(i)], 0.0f);
-    }
     mFrame.update(&f, sizeof(f));
 
     DebugGroup group("orbit scene");
@@ -149,6 +148,11 @@ void OrbitRenderer::draw(const DrawInfo& info) {
     const float far = 1.0f;
     glClearNamedFramebufferfv(mTargets.id(), GL_DEPTH, 0, &far);
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, mFrame.id());
+    if (mIbl) {
+        // Stored, never accumulated: the same value always gives the same frame.
+        mIbl->setIntensity(info.lights.ibl);
+        mIbl->bind();
+    }
     glDisable(GL_BLEND);
 
     // Space and the planets everywhere, writing their depth; the ship over them with the depth test.
@@ -196,8 +200,9 @@ void OrbitRenderer::drawMeshes(const DrawInfo& info) {
         g.emissiveFactor = glm::vec4(m.emissiveFactor, m.alphaMode == AlphaMode::Mask ? m.alphaCutoff : 0.0f);
         g.surface = {m.metallicFactor, m.roughnessFactor, m.normalTexture >= 0 ? m.normalScale : 0.0f,
                      m.occlusionTexture >= 0 ? m.occlusionStrength : 0.0f};
-        // The intensity is applied to the stored baseline each frame, never folded into it.
-        g.env = {mIblBaselines[std::size_t(d.material)] * info.lights.ibl,
+        // The material's stored baseline; the global intensity is OrbitIblBlock's. Neither is ever folded
+        // into the other.
+        g.env = {mIbl ? mIblBaselines[std::size_t(d.material)] : 0.0f,
                  float(ids::kFirstShip + unsigned(d.instance)), m.doubleSided ? 1.0f : 0.0f, 0.0f};
         mDraw.update(&g, sizeof(g));
         bind(0, m.baseColorTexture, mWhiteSrgb);

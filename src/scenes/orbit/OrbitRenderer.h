@@ -7,8 +7,9 @@
 // 0 for space) and the material (RGBA16F: F0, roughness).
 
 #include "core/Camera.h"
-#include "core/Ibl.h"
+#include "core/Image.h"
 #include "gl/Objects.h"
+#include "scenes/orbit/OrbitIbl.h"
 #include "scenes/orbit/OrbitMeshes.h"
 
 #include <glm/glm.hpp>
@@ -40,8 +41,10 @@ public:
     /// Uploads `model` (the ship or a glTF file) and places it: world = placement * model position.
     /// Every material's image-based-light baseline starts at 1.
     void setModel(const Model& model, const glm::mat4& placement);
-    /// The environment's radiance as nine SH coefficients: the image-based light at ibl = 1.
-    void setEnvironment(const Sh9& sh) { mSh = sh; }
+    /// Builds the image-based light (OrbitIbl.h: prefiltered specular cube, SH9 irradiance, split-sum
+    /// table) from an equirectangular HDR environment. Until it is called there is no image-based light.
+    void setEnvironment(const ImageF& equirect, const IblOptions& options = {});
+    [[nodiscard]] const Ibl* ibl() const { return mIbl.get(); }
 
     struct DrawInfo {
         const Camera* camera = nullptr; ///< unjittered projection
@@ -78,7 +81,7 @@ private:
     std::unique_ptr<OrbitMeshes> mMeshes;
     std::vector<float> mIblBaselines;
     glm::mat4 mPlacement{1.0f};
-    Sh9 mSh{};
+    std::unique_ptr<Ibl> mIbl;
     // 1x1 stand-ins for absent material textures: white colour (sRGB), white data, flat normal.
     photopic::Texture mWhiteSrgb;
     photopic::Texture mWhiteLinear;

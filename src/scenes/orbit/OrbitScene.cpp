@@ -1,15 +1,12 @@
 #include "scenes/orbit/OrbitScene.h"
 
-#include "core/Log.h"
-#include "io/DataPath.h"
-#include "io/ImageIO.h"
 #include "scenes/SceneSettings.h"
 #include "scenes/orbit/OrbitShip.h"
 #include "scenes/orbit/OrbitWorld.h"
 
-#include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace photopic {
@@ -18,28 +15,6 @@ namespace {
 
 /// The built-in ship's bounding radius; a glTF model is scaled to the same size.
 constexpr float kShipRadius = 14.0f;
-
-/// The image-based light's stand-in when no HDRI can be read: a dim sky of space with the bright planet
-/// below (the direction of the Earth), as radiance on an equirectangular grid.
-ImageF proceduralSky() {
-    ImageF sky(64, 32);
-    const glm::vec3 toEarth = glm::normalize(orbit::kEarth.centre);
-    const float cosEarth = std::cos(std::asin(orbit::kEarth.radius / glm::length(orbit::kEarth.centre)));
-    for (int y = 0; y < sky.height; ++y) {
-        for (int x = 0; x < sky.width; ++x) {
-            const glm::vec3 d = equirectDirection(
-                {(float(x) + 0.5f) / float(sky.width), (float(y) + 0.5f) / float(sky.height)});
-            const glm::vec3 c = glm::dot(d, toEarth) > cosEarth ? glm::vec3(0.30f, 0.38f, 0.55f)
-                                                                : glm::vec3(0.01f, 0.012f, 0.02f);
-            float* p = sky.at(x, y);
-            p[0] = c.r;
-            p[1] = c.g;
-            p[2] = c.b;
-            p[3] = 1.0f;
-        }
-    }
-    return sky;
-}
 
 } // namespace
 
@@ -105,19 +80,14 @@ void OrbitScene::loadModel() {
 
 void OrbitScene::loadEnvironment() {
     mLoadedEnv = mSettings.env;
-    std::filesystem::path path = mSettings.env;
-    try {
-        if (path.empty()) {
-            path = findDataDir() / "blender_sunrise.exr";
-        }
-        mRenderer.setEnvironment(projectEquirectSh9(readImage(path)));
-        return;
-    } catch (const std::exception& e) {
-        warnOnce("orbit.env", fmt::format("orbit: the environment {} cannot be used ({}); the image-based "
-                                          "light falls back to a procedural sky",
-                                          path.string(), e.what()));
-    }
-    mRenderer.setEnvironment(projectEquirectSh9(proceduralSky()));
+    mLoadedIblSize = mSettings.iblSize;
+    // A missing or unreadable file logs one warning and falls back to a procedural sky (OrbitIbl.h).
+    const std::filesystem::path path =
+        mSettings.env.empty() ? orbit::Ibl::defaultEnvironmentPath() : std::filesystem::path(mSettings.env);
+    orbit::IblOptions options;
+    options.faceSize = mSettings.iblSize;
+    options.specularLevels = std::min(options.specularLevels, int(std::log2(double(mSettings.iblSize))) + 1);
+    mRenderer.setEnvironment(orbit::Ibl::loadEnvironmentOrFallback(path), options);
 }
 
 void OrbitScene::resize(Extent extent) {
@@ -126,7 +96,7 @@ void OrbitScene::resize(Extent extent) {
     if (mLoadedModel != mSettings.model) {
         loadModel();
     }
-    if (mLoadedEnv != mSettings.env) {
+    if (mLoadedEnv != mSettings.env || mLoadedIblSize != mSettings.iblSize) {
         loadEnvironment();
     }
 }
@@ -155,7 +125,8 @@ orbit::OrbitLights OrbitScene::lightsAt(double seconds) const {
 }
 
 FrameInputs OrbitScene::render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) {
-    if (mLoadedModel != mSettings.model || mLoadedEnv != mSettings.env) {
+    if (mLoadedModel != mSettings.model || mLoadedEnv != mSettings.env ||
+        mLoadedIblSize != mSettings.iblSize) {
         resize(mExtent); // settings changed since the last resize (an interactive host)
     }
     const double t = scriptTime(time);

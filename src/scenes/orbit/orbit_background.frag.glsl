@@ -1,8 +1,8 @@
 // The orbit scene's full-screen background pass: each pixel's camera ray hits a planet (ray-cast exactly:
 // depth through gl_FragDepth, normal, id, motion of the surface point) or sees space: stars, nebula, the
 // sun's disc and the planets' limb glow, with the motion of a direction at infinity.
+#include "orbit_pbr.h.glsl"
 #include "orbit_frame.h.glsl"
-#include "orbit_lighting.h.glsl"
 #include "orbit_space.h.glsl"
 
 layout(location = 0) in vec2 vUv;

@@ -6,5 +6,5 @@ layout(std140, binding = 1) uniform OrbitDraw {
     vec4 uBaseColorFactor; // linear RGBA
     vec4 uEmissiveFactor;  // rgb linear, w: alpha cutoff (0: opaque)
     vec4 uSurface;         // metallic, roughness, normal scale (0: no normal map), occlusion strength
-    vec4 uEnv;             // x: IBL intensity (the material's baseline x ibl), y: object id, z: double-sided
+    vec4 uEnv;             // x: the material's IBL baseline (0: no IBL), y: object id, z: double-sided
 };

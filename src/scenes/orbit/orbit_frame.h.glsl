@@ -1,7 +1,6 @@
-// The orbit scene's per-frame block (OrbitRenderer.cpp's GpuFrame) and the per-draw block of the mesh
-// shaders (GpuDraw), plus the helpers every orbit shader shares.
+// The orbit scene's per-frame block (OrbitRenderer.cpp's GpuFrame) and the helpers every orbit shader
+// shares. Included after orbit_pbr.h.glsl (ORBIT_PI).
 
-#define ORBIT_PI 3.14159265358979
 
 layout(std140, binding = 0) uniform OrbitFrame {
     mat4 uView;
@@ -23,7 +22,6 @@ layout(std140, binding = 0) uniform OrbitFrame {
     vec4 uPlanetFx;       // x: atmosphere strength, y: glow strength, z: script time (s), w: nebula strength
     ivec4 uFlags;         // x: ambient occlusion texture, y: contact-shadow texture, z, w: 0
     vec4 uAoPower;        // x: the exponent on the ambient visibility
-    vec4 uSh[9];          // rgb: the environment's radiance projected on the nine SH functions (IBL)
 };
 
 // World-space ray through a window position (GL origin bottom-left) with the jittered projection.

@@ -1,11 +1,12 @@
 // The orbit scene's material shader: glTF metallic-roughness with base-colour, metal-rough, normal,
 // occlusion and emissive textures (colour textures are GL_SRGB8_ALPHA8, decoded by the sampler; data
-// textures linear), lit by the sun (its illuminance, the planet's occlusion of the disc and the lighting
-// stage's contact shadows: direct light only), the amb and hemi fills and the image-based light (the
-// material's occlusion and the lighting stage's ambient occlusion: indirect light only).
+// textures linear), shaded by orbit_pbr.h.glsl: the sun (its illuminance, the planet's occlusion of the
+// disc and the lighting stage's contact shadows: direct light only), the amb and hemi fills and the
+// image-based light (the material's occlusion and the lighting stage's ambient occlusion: indirect light
+// only; uEnv.x, the material's stored baseline, times the global intensity in OrbitIblBlock).
+#include "orbit_pbr.h.glsl"
 #include "orbit_frame.h.glsl"
 #include "orbit_draw.h.glsl"
-#include "orbit_lighting.h.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -60,10 +61,6 @@ void main() {
     }
     vec3 n = shadingNormal(ng);
     vec3 v = normalize(uCameraPos.xyz - vWorld);
-    vec3 l = uSunDirection.xyz;
-    vec3 diffuseColor = base.rgb * (1.0 - metallic);
-    vec3 f0 = mix(vec3(0.04), base.rgb, metallic);
-
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     float sunVisibility = orbitSunVisibility(uEarth, vWorld) * orbitSunVisibility(uMars, vWorld);
     if (uFlags.y != 0) {
@@ -73,13 +70,14 @@ void main() {
     if (uFlags.x != 0) {
         indirectVisibility *= pow(texelFetch(uAmbientOcclusion, pixel, 0).r, uAoPower.x);
     }
-    vec3 direct = orbitDirect(n, v, l, diffuseColor, f0, roughness) * uSunIlluminance.rgb * sunVisibility;
+    PbrMaterial material = PbrMaterial(base.rgb, metallic, roughness, indirectVisibility, emissive);
+    vec3 direct = pbrDirect(material, n, v, uSunDirection.xyz, uSunIlluminance.rgb * sunVisibility);
     float up = 0.5 + 0.5 * dot(n, uHemiUp.xyz);
-    vec3 fill = diffuseColor * (uAmbient.rgb + mix(uHemiGround.rgb, uHemiSky.rgb, up)) / ORBIT_PI;
-    vec3 ibl = uEnv.x * orbitIbl(n, v, diffuseColor, f0, roughness);
-    oColor = vec4(direct + (fill + ibl) * indirectVisibility + emissive, 1.0);
+    vec3 fill = pbrDiffuseColor(material) * (uAmbient.rgb + mix(uHemiGround.rgb, uHemiSky.rgb, up)) / ORBIT_PI;
+    vec3 ibl = uEnv.x * pbrIbl(material, n, v);
+    oColor = vec4(direct + fill * indirectVisibility + ibl + emissive, 1.0);
     oNormal = vec4(normalize(mat3(uView) * n), 0.0);
     oMotion = 0.5 * (vClipNow.xy / vClipNow.w - vClipBefore.xy / vClipBefore.w);
     oObjectId = uint(uEnv.y);
-    oMaterial = vec4(f0, roughness);
+    oMaterial = vec4(pbrSpecularF0(material), roughness);
 }

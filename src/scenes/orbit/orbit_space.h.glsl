@@ -132,7 +132,7 @@ vec3 orbitEarth(vec3 n, vec3 v) {
         vec3 h = normalize(v + l);
         float a = 0.25 * 0.25;
         float NdotV = max(dot(n, v), 1e-3);
-        float spec = orbitGgx(max(dot(n, h), 0.0), a) * orbitSmithVisibility(NdotV, NdotL, a) *
+        float spec = pbrGgxDistribution(dot(n, h), a) * pbrSmithVisibility(NdotV, NdotL, a) *
                      (0.02 + 0.98 * pow(1.0 - max(dot(v, h), 0.0), 5.0));
         surface += e * spec * NdotL * (1.0 - land);
     }
