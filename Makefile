@@ -16,6 +16,7 @@ build: deps
 
 demo: build
 	build/release/photopic demo -o out/demo
+	build/release/photopic demo --scene orbit -o out/demo-orbit
 
 test: build
 	@scripts/check-standalone.sh
