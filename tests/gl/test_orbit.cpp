@@ -243,6 +243,28 @@ TEST_F(GlTest, OrbitHasHdrValuesPastEightAndShowsEveryExposureBand) {
                                      std::to_string(found[2]) + "," + std::to_string(found[3]));
 }
 
+TEST_F(GlTest, OrbitLumaViewIsTheGreyOfTheExposedLuma) {
+    auto scene = makeScene(2.0f, {"post=\"raw\""});
+    Settings s = scene->defaultSettings();
+    s.debug.view = DebugView::Luma;
+    s.output.dither = false;
+    const Frame f = renderFrame(*scene, 0, &s);
+    long coloured = 0;
+    long worse = 0;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            const std::uint8_t* p = f.display.at(x, y);
+            coloured += p[0] != p[1] || p[1] != p[2];
+            // Raw calibration exposes at 1: the grey is sRGB(min(luma, 1)), no tone curve.
+            const float* in = f.color.at(x, y);
+            const float luma = std::clamp(luma709({in[0], in[1], in[2]}), 0.0f, 1.0f);
+            worse += std::abs(int(p[0]) - int(std::lround(srgbEncode(luma) * 255.0f))) > 1;
+        }
+    }
+    EXPECT_EQ(coloured, 0) << "pixels that are not grey";
+    EXPECT_EQ(worse, 0) << "pixels off sRGB(luma) by more than one code value";
+}
+
 TEST_F(GlTest, OrbitToneMapsExactlyOnce) {
     // Raw calibration at exp 1: no bloom, no auto exposure. The display image must be the CPU tone curve
     // applied once to the scene's colour (within one code value, as the 2D chain's test holds).
