@@ -74,21 +74,17 @@ Image8 contactSheet(const fs::path& folder, std::size_t written, int every,
 
 } // namespace
 
-int runOrbitDemo(const OrbitDemoOptions& options) {
-    const auto begin = std::chrono::steady_clock::now();
-    if (options.width < 16 || options.height < 16 || options.fps <= 0.0f || options.seconds <= 0.0f) {
-        throw InputError("demo: --size must be at least 16x16, --fps and --seconds positive");
-    }
-    RunOutputs outputs;
-    outputs.makeFolder(options.output);
-    const fs::path plotPath = options.output / "exposure_plot.png";
-    const fs::path sheetPath = options.output / "contact_sheet.png";
-    const fs::path videoPath = options.output / "demo.mp4";
-    for (const fs::path& path : {framePath(options.output, 0), plotPath, sheetPath, videoPath}) {
-        RunOutputs::requireFile(path);
-    }
-    outputs.sequence([&](std::size_t i) { return framePath(options.output, i); });
+namespace {
 
+/// What the frame loop leaves for the summary files.
+struct OrbitRun {
+    std::vector<OrbitSample> samples;
+    std::size_t written = 0; ///< frame PNGs
+    int frames = 0;
+};
+
+/// Renders every frame through the pipeline, writes every `every`th as PNG and the telemetry CSV.
+OrbitRun renderOrbit(const OrbitDemoOptions& options, RunOutputs& outputs) {
     HeadlessContext context;
     OrbitScene scene;
     Settings settings = scene.defaultSettings();
@@ -99,45 +95,81 @@ int runOrbitDemo(const OrbitDemoOptions& options) {
     scene.resize({options.width, options.height});
 
     const float dt = 1.0f / options.fps;
-    const int frames = std::max(1, int(std::lround(options.seconds * options.fps)));
+    OrbitRun run;
+    run.frames = std::max(1, int(std::lround(options.seconds * options.fps)));
     const int every = std::max(1, options.frameEvery);
     const fs::path telemetryPath = options.output / "telemetry.csv";
     TelemetryCsv telemetry(telemetryPath, dt, scene.telemetryColumns());
-    std::vector<OrbitSample> samples;
-    samples.reserve(std::size_t(frames));
+    run.samples.reserve(std::size_t(run.frames));
     // The scene's columns: script_s, sun_visibility.
     const auto addSample = [&](const ExposureTelemetry& t, const std::vector<double>& values) {
-        samples.push_back({float(t.frame) * dt, t.frameLuminance, t.targetLog2, t.appliedLog2,
-                           values.size() > 1 ? float(values[1]) : 1.0f});
+        run.samples.push_back({float(t.frame) * dt, t.frameLuminance, t.targetLog2, t.appliedLog2,
+                               values.size() > 1 ? float(values[1]) : 1.0f});
     };
-    std::size_t written = 0;
-    Progress progress("demo --scene orbit", std::size_t(frames));
-    for (int i = 0; i < frames; ++i) {
+    Progress progress("demo --scene orbit", std::size_t(run.frames));
+    for (int i = 0; i < run.frames; ++i) {
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
         std::vector<double> values;
         const FrameInputs frame = scene.render(time, pipeline, values);
         const Texture& display = pipeline.execute(frame, time);
         if (i % every == 0) {
-            writePng(framePath(options.output, written++), readTexture8(display));
+            writePng(framePath(options.output, run.written++), readTexture8(display));
             outputs.wroteSequenceItem();
         }
         telemetry.sceneValues(std::uint64_t(i), std::move(values));
-        telemetry.take(pipeline, std::uint64_t(i), i + 1 == frames, addSample);
+        telemetry.take(pipeline, std::uint64_t(i), i + 1 == run.frames, addSample);
         progress.advance();
     }
-    const auto rendered = std::chrono::steady_clock::now();
-    telemetry.commit(std::uint64_t(frames), pipeline.droppedTelemetry());
+    telemetry.commit(std::uint64_t(run.frames), pipeline.droppedTelemetry());
     outputs.wrote(telemetryPath);
-    writePng(plotPath, plotOrbit(samples));
+    return run;
+}
+
+void printSummary(const OrbitDemoOptions& options, const OrbitRun& run, const std::string& video) {
+    std::printf("orbit: %d frames at %dx%d, %.3g fps, auto exposure -> %s\n", run.frames, options.width,
+                options.height, double(options.fps), options.output.string().c_str());
+    std::printf("  files: %zu frame PNGs, telemetry.csv, exposure_plot.png, contact_sheet.png, %s\n",
+                run.written, video.c_str());
+    if (!run.samples.empty()) {
+        const auto [low, high] = std::minmax_element(
+            run.samples.begin(), run.samples.end(),
+            [](const OrbitSample& a, const OrbitSample& b) { return a.appliedLog2 < b.appliedLog2; });
+        std::printf("  exposure: %+.2f EV (t=%.1f s) .. %+.2f EV (t=%.1f s)\n", double(low->appliedLog2),
+                    double(low->timeS), double(high->appliedLog2), double(high->timeS));
+    }
+}
+
+} // namespace
+
+int runOrbitDemo(const OrbitDemoOptions& options) {
+    const auto begin = std::chrono::steady_clock::now();
+    if (options.width < 16 || options.height < 16 || options.fps <= 0.0f || options.seconds <= 0.0f) {
+        throw InputError("demo: --size must be at least 16x16, --fps and --seconds positive");
+    }
+    // Every output is checked before the first frame; a run that fails takes back what it wrote.
+    RunOutputs outputs;
+    outputs.makeFolder(options.output);
+    const fs::path plotPath = options.output / "exposure_plot.png";
+    const fs::path sheetPath = options.output / "contact_sheet.png";
+    const fs::path videoPath = options.output / "demo.mp4";
+    for (const fs::path& path : {framePath(options.output, 0), plotPath, sheetPath, videoPath}) {
+        RunOutputs::requireFile(path);
+    }
+    outputs.sequence([&](std::size_t i) { return framePath(options.output, i); });
+
+    const OrbitRun run = renderOrbit(options, outputs);
+    const auto rendered = std::chrono::steady_clock::now();
+    writePng(plotPath, plotOrbit(run.samples));
     outputs.wrote(plotPath);
-    writePng(sheetPath, contactSheet(options.output, written, every, samples));
-    outputs.wrote(sheetPath);
+    if (!run.samples.empty() && run.written > 0) {
+        writePng(sheetPath,
+                 contactSheet(options.output, run.written, std::max(1, options.frameEvery), run.samples));
+        outputs.wrote(sheetPath);
+    }
     std::string video = "demo.mp4 skipped (--no-video)";
     if (options.video) {
-        progress.note(fmt::format("encoding {} with ffmpeg", videoPath.filename().string()));
-        const VideoResult result =
-            encodeFrameSequence(options.output, double(options.fps) / double(every), videoPath);
-        progress.clear();
+        const VideoResult result = encodeFrameSequence(
+            options.output, double(options.fps) / double(std::max(1, options.frameEvery)), videoPath);
         if (result.written) {
             outputs.wrote(videoPath);
         }
@@ -145,19 +177,7 @@ int runOrbitDemo(const OrbitDemoOptions& options) {
     }
     outputs.commit();
     const auto end = std::chrono::steady_clock::now();
-
-    const auto [darkest, brightest] =
-        std::minmax_element(samples.begin(), samples.end(), [](const OrbitSample& a, const OrbitSample& b) {
-            return a.appliedLog2 < b.appliedLog2;
-        });
-    std::printf("orbit: %d frames at %dx%d, %.3g fps, auto exposure -> %s\n", frames, options.width,
-                options.height, double(options.fps), options.output.string().c_str());
-    std::printf("  files: %zu frame PNGs, telemetry.csv, exposure_plot.png, contact_sheet.png, %s\n", written,
-                video.c_str());
-    if (!samples.empty()) {
-        std::printf("  exposure: %+.2f EV (t=%.1f s) .. %+.2f EV (t=%.1f s)\n", double(darkest->appliedLog2),
-                    double(darkest->timeS), double(brightest->appliedLog2), double(brightest->timeS));
-    }
+    printSummary(options, run, video);
     std::printf("  time: %.1f s rendering, %.1f s in all\n",
                 std::chrono::duration<double>(rendered - begin).count(),
                 std::chrono::duration<double>(end - begin).count());

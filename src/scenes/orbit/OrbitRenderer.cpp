@@ -59,6 +59,35 @@ photopic::Texture onePixel(GLenum format, const std::uint8_t rgba[4], std::strin
     return t;
 }
 
+/// The frame block of a draw on a target of extent `e`.
+GpuFrame frameBlock(const OrbitRenderer::DrawInfo& info, Extent e) {
+    const Camera& camera = *info.camera;
+    const OrbitLights& lights = info.lights;
+
+    GpuFrame f{};
+    f.view = camera.view;
+    f.invView = glm::inverse(camera.view);
+    f.projection = jitteredProjection(camera.projection, info.jitter, e.width, e.height);
+    f.viewProjection = f.projection * camera.view;
+    f.currViewProj = camera.viewProjection();
+    f.prevViewProj = camera.prevViewProjection;
+    f.viewport = {float(e.width), float(e.height), 1.0f / float(e.width), 1.0f / float(e.height)};
+    f.cameraPos = glm::vec4(glm::vec3(f.invView[3]), camera.verticalFov / float(e.height));
+    f.sunDirection = glm::vec4(glm::normalize(lights.sunDirection), std::cos(kSunAngularRadius));
+    f.sunIlluminance = glm::vec4(glm::vec3(lights.sun),
+                                 1.0f / (std::numbers::pi_v<float> * kSunAngularRadius * kSunAngularRadius));
+    f.ambient = glm::vec4(glm::vec3(lights.ambient), 0.0f);
+    f.hemiSky = glm::vec4(lights.hemi * kHemiSky, 0.0f);
+    f.hemiGround = glm::vec4(lights.hemi * kHemiGround, 0.0f);
+    f.hemiUp = glm::vec4(-glm::normalize(kEarth.centre), 0.0f);
+    f.earth = glm::vec4(kEarth.centre, kEarth.radius);
+    f.mars = glm::vec4(kMars.centre, kMars.radius);
+    f.planetFx = {lights.atmosphere, lights.glow, float(lights.time), lights.nebula};
+    f.flags = {info.ambientOcclusion != nullptr ? 1 : 0, info.contactShadows != nullptr ? 1 : 0, 0, 0};
+    f.aoPower = glm::vec4(info.ambientOcclusionPower, 0.0f, 0.0f, 0.0f);
+    return f;
+}
+
 } // namespace
 
 OrbitRenderer::OrbitRenderer()
@@ -109,31 +138,7 @@ void OrbitRenderer::setEnvironment(const ImageF& equirect, const IblOptions& opt
 }
 
 void OrbitRenderer::draw(const DrawInfo& info) {
-    const Camera& camera = *info.camera;
-    const Extent e = mColor.extent();
-    const OrbitLights& lights = info.lights;
-
-    GpuFrame f{};
-    f.view = camera.view;
-    f.invView = glm::inverse(camera.view);
-    f.projection = jitteredProjection(camera.projection, info.jitter, e.width, e.height);
-    f.viewProjection = f.projection * camera.view;
-    f.currViewProj = camera.viewProjection();
-    f.prevViewProj = camera.prevViewProjection;
-    f.viewport = {float(e.width), float(e.height), 1.0f / float(e.width), 1.0f / float(e.height)};
-    f.cameraPos = glm::vec4(glm::vec3(f.invView[3]), camera.verticalFov / float(e.height));
-    f.sunDirection = glm::vec4(glm::normalize(lights.sunDirection), std::cos(kSunAngularRadius));
-    f.sunIlluminance = glm::vec4(glm::vec3(lights.sun),
-                                 1.0f / (std::numbers::pi_v<float> * kSunAngularRadius * kSunAngularRadius));
-    f.ambient = glm::vec4(glm::vec3(lights.ambient), 0.0f);
-    f.hemiSky = glm::vec4(lights.hemi * kHemiSky, 0.0f);
-    f.hemiGround = glm::vec4(lights.hemi * kHemiGround, 0.0f);
-    f.hemiUp = glm::vec4(-glm::normalize(kEarth.centre), 0.0f);
-    f.earth = glm::vec4(kEarth.centre, kEarth.radius);
-    f.mars = glm::vec4(kMars.centre, kMars.radius);
-    f.planetFx = {lights.atmosphere, lights.glow, float(lights.time), lights.nebula};
-    f.flags = {info.ambientOcclusion != nullptr ? 1 : 0, info.contactShadows != nullptr ? 1 : 0, 0, 0};
-    f.aoPower = glm::vec4(info.ambientOcclusionPower, 0.0f, 0.0f, 0.0f);
+    const GpuFrame f = frameBlock(info, mColor.extent());
     mFrame.update(&f, sizeof(f));
 
     DebugGroup group("orbit scene");

@@ -280,75 +280,77 @@ void addInstance(Model& m, std::string name, Primitive prim) {
     m.meshes.push_back(std::move(inst));
 }
 
-} // namespace
+/// The ship's materials, in ShipPart order, with their procedural textures.
+struct ShipMaterials {
+    Material hull, foil, solar, truss, bell, ring, lights;
+};
 
-Model buildShip() {
-    Model m;
-    const int hullColourTex = addTexture(m, hullColour(), true);
-    const int hullNormalTex = addTexture(m, hullNormal(), false);
-    const int hullOrmTex = addTexture(m, hullOrm(), false);
-    const int foilNormalTex = addTexture(m, foilNormal(), false);
-    const int solarTex = addTexture(m, solarColour(), true);
-    const int lightsTex = addTexture(m, lightsEmissive(), true);
+ShipMaterials shipMaterials(Model& m) {
+    ShipMaterials s;
+    s.hull = {.name = "hull panels", .metallicFactor = 1.0f, .roughnessFactor = 1.0f};
+    s.hull.baseColorTexture = addTexture(m, hullColour(), true);
+    s.hull.normalTexture = addTexture(m, hullNormal(), false);
+    s.hull.metallicRoughnessTexture = addTexture(m, hullOrm(), false);
+    s.hull.occlusionTexture = s.hull.metallicRoughnessTexture; // R of the same data texture
+    s.foil = {.name = "gold MLI foil",
+              .baseColorFactor = {1.0f, 0.77f, 0.34f, 1.0f},
+              .metallicFactor = 1.0f,
+              .roughnessFactor = 0.3f};
+    s.foil.normalTexture = addTexture(m, foilNormal(), false);
+    s.solar = {.name = "solar cells", .metallicFactor = 0.0f, .roughnessFactor = 0.18f, .doubleSided = true};
+    s.solar.baseColorTexture = addTexture(m, solarColour(), true);
+    s.truss = {.name = "truss",
+               .baseColorFactor = {0.55f, 0.55f, 0.56f, 1.0f},
+               .metallicFactor = 0.8f,
+               .roughnessFactor = 0.45f};
+    s.bell = {.name = "engine bell",
+              .baseColorFactor = {0.30f, 0.28f, 0.27f, 1.0f},
+              .metallicFactor = 1.0f,
+              .roughnessFactor = 0.42f,
+              .doubleSided = true};
+    s.ring = {.name = "docking ring",
+              .baseColorFactor = {0.91f, 0.92f, 0.92f, 1.0f},
+              .metallicFactor = 1.0f,
+              .roughnessFactor = 0.16f};
+    s.lights = {.name = "window lights",
+                .baseColorFactor = {0.02f, 0.02f, 0.02f, 1.0f},
+                .metallicFactor = 0.0f,
+                .roughnessFactor = 0.5f,
+                .emissiveFactor = {6.0f, 6.0f, 6.0f}};
+    s.lights.emissiveTexture = addTexture(m, lightsEmissive(), true);
+    return s;
+}
 
-    Material hull{.name = "hull panels", .metallicFactor = 1.0f, .roughnessFactor = 1.0f};
-    hull.baseColorTexture = hullColourTex;
-    hull.normalTexture = hullNormalTex;
-    hull.metallicRoughnessTexture = hullOrmTex;
-    hull.occlusionTexture = hullOrmTex;
-    Material foil{.name = "gold MLI foil",
-                  .baseColorFactor = {1.0f, 0.77f, 0.34f, 1.0f},
-                  .metallicFactor = 1.0f,
-                  .roughnessFactor = 0.3f};
-    foil.normalTexture = foilNormalTex;
-    Material solar{.name = "solar cells", .metallicFactor = 0.0f, .roughnessFactor = 0.18f};
-    solar.baseColorTexture = solarTex;
-    solar.doubleSided = true;
-    Material truss{.name = "truss",
-                   .baseColorFactor = {0.55f, 0.55f, 0.56f, 1.0f},
-                   .metallicFactor = 0.8f,
-                   .roughnessFactor = 0.45f};
-    Material bell{.name = "engine bell",
-                  .baseColorFactor = {0.30f, 0.28f, 0.27f, 1.0f},
-                  .metallicFactor = 1.0f,
-                  .roughnessFactor = 0.42f,
-                  .doubleSided = true};
-    Material ring{.name = "docking ring",
-                  .baseColorFactor = {0.91f, 0.92f, 0.92f, 1.0f},
-                  .metallicFactor = 1.0f,
-                  .roughnessFactor = 0.16f};
-    Material lights{.name = "window lights",
-                    .baseColorFactor = {0.02f, 0.02f, 0.02f, 1.0f},
-                    .metallicFactor = 0.0f,
-                    .roughnessFactor = 0.5f,
-                    .emissiveFactor = {6.0f, 6.0f, 6.0f}};
-    lights.emissiveTexture = lightsTex;
-
+/// The hull (a cylinder with a rounded nose) and the foil-wrapped service module behind it. Profiles run
+/// counter-clockwise in the (r, z) plane (out along the bottom, up the side, in across the top) so that the
+/// revolved normals point out of the solid.
+void addHullAndFoil(Model& m, const ShipMaterials& s) {
     Primitive p;
-    p.material = addMaterial(m, hull);
-    // Profiles run counter-clockwise in the (r, z) plane (out along the bottom, up the side, in across the
-    // top) so that the revolved normals point out of the solid.
+    p.material = addMaterial(m, s.hull);
     lathe(p, {{0.0f, -2.0f}, {1.4f, -2.0f}}, 32, 8.0f, 0.25f);
     lathe(p, {{1.4f, -2.0f}, {1.4f, 3.6f}}, 32, 8.0f, 0.25f);
     lathe(p, {{1.4f, 3.6f}, {1.0f, 4.0f}, {0.0f, 4.0f}}, 32, 8.0f, 0.25f);
     addInstance(m, "hull", std::move(p));
 
     p = {};
-    p.material = addMaterial(m, foil);
+    p.material = addMaterial(m, s.foil);
     lathe(p, {{0.0f, -5.0f}, {1.6f, -5.0f}}, 32, 6.0f, 0.6f);
     lathe(p, {{1.6f, -5.0f}, {1.6f, -2.0f}}, 32, 6.0f, 0.6f);
     lathe(p, {{1.6f, -2.0f}, {0.0f, -2.0f}}, 32, 6.0f, 0.6f);
     addInstance(m, "MLI foil", std::move(p));
+}
 
-    p = {};
-    p.material = addMaterial(m, solar);
+/// Two solar arrays on booms, their frames and cross members as rods 2 to 6 cm thick.
+void addArraysAndTruss(Model& m, const ShipMaterials& s) {
+    Primitive p;
+    p.material = addMaterial(m, s.solar);
     for (const float side : {-1.0f, 1.0f}) {
         box(p, glm::vec3(side * 8.0f, 0.0f, -3.5f), glm::vec3(5.0f, 0.03f, 1.3f), 0.5f);
     }
     addInstance(m, "solar arrays", std::move(p));
 
     p = {};
-    p.material = addMaterial(m, truss);
+    p.material = addMaterial(m, s.truss);
     for (const float side : {-1.0f, 1.0f}) {
         rod(p, glm::vec3(side * 1.5f, 0.0f, -3.5f), glm::vec3(side * 13.0f, 0.0f, -3.5f), 0.06f);
         for (const float edge : {-1.33f, 1.33f}) {
@@ -361,9 +363,12 @@ Model buildShip() {
         }
     }
     addInstance(m, "truss", std::move(p));
+}
 
-    p = {};
-    p.material = addMaterial(m, bell);
+/// Three engine bells (open, seen inside and out), the docking ring and tunnel, two strips of windows.
+void addBellsRingAndLights(Model& m, const ShipMaterials& s) {
+    Primitive p;
+    p.material = addMaterial(m, s.bell);
     const std::vector<RZ> bellProfile = {{0.62f, -7.0f}, {0.42f, -6.2f}, {0.28f, -5.4f}, {0.25f, -5.0f}};
     for (const glm::vec3 at : {glm::vec3(0.0f), glm::vec3(0.9f, 0.0f, 0.0f), glm::vec3(-0.9f, 0.0f, 0.0f)}) {
         lathe(p, bellProfile, 24, 4.0f, 1.0f, at);
@@ -371,17 +376,27 @@ Model buildShip() {
     addInstance(m, "engine bells", std::move(p));
 
     p = {};
-    p.material = addMaterial(m, ring);
+    p.material = addMaterial(m, s.ring);
     lathe(p, circleProfile(0.85f, 4.15f, 0.12f, 12), 32, 8.0f, 2.0f);
     lathe(p, {{0.6f, 4.0f}, {0.6f, 4.35f}}, 32, 8.0f, 2.0f);
     lathe(p, {{0.6f, 4.35f}, {0.0f, 4.35f}}, 32, 8.0f, 2.0f);
     addInstance(m, "docking ring", std::move(p));
 
     p = {};
-    p.material = addMaterial(m, lights);
+    p.material = addMaterial(m, s.lights);
     box(p, glm::vec3(0.0f, 1.41f, 1.5f), glm::vec3(0.25f, 0.02f, 1.0f), 0.5f);
     box(p, glm::vec3(0.0f, -1.41f, 1.5f), glm::vec3(0.25f, 0.02f, 1.0f), 0.5f);
     addInstance(m, "window lights", std::move(p));
+}
+
+} // namespace
+
+Model buildShip() {
+    Model m;
+    const ShipMaterials materials = shipMaterials(m);
+    addHullAndFoil(m, materials);
+    addArraysAndTruss(m, materials);
+    addBellsRingAndLights(m, materials);
     return m;
 }
 
