@@ -14,6 +14,7 @@
 #include "scenes/orbit/OrbitIbl.h"
 #include "scenes/orbit/OrbitRenderer.h"
 #include "scenes/orbit/OrbitScene.h"
+#include "scenes/orbit/OrbitShadowMap.h"
 #include "scenes/orbit/OrbitShip.h"
 #include "scenes/orbit/OrbitWorld.h"
 
@@ -357,6 +358,37 @@ TEST_F(GlTest, OrbitSmaaAndSsaaRunWithoutDegradation) {
     }
 }
 
+TEST_F(GlTest, OrbitShipShadowMapDarkensTheSunOnly) {
+    // With the sun on, the ship shadows parts of itself; with only the fills and the IBL, the shadow map
+    // changes nothing at all.
+    // At 11 s the camera looks across the ship towards the sun: the hull's and arrays' shadows are in view.
+    const auto render = [](const char* sun, const char* shadow) {
+        auto scene = makeScene(11.0f, {"post=\"raw\"", sun, shadow});
+        return renderFrame(*scene);
+    };
+    const Frame lit = render("sun=3", "shadow.enabled=true");
+    const Frame unshadowed = render("sun=3", "shadow.enabled=false");
+    long darker = 0;
+    long brighter = 0;
+    for (std::size_t i = 0; i < lit.ids.size(); ++i) {
+        if (!isShip(lit.ids[i])) {
+            continue;
+        }
+        const float* a = lit.color.rgba.data() + 4 * i;
+        const float* b = unshadowed.color.rgba.data() + 4 * i;
+        const float ya = luma709({a[0], a[1], a[2]});
+        const float yb = luma709({b[0], b[1], b[2]});
+        darker += ya < 0.8f * yb ? 1 : 0;
+        brighter += ya > yb * 1.001f + 1e-4f ? 1 : 0;
+    }
+    RecordProperty("shadowedShipPixels", std::to_string(darker));
+    EXPECT_GT(darker, 20) << "ship pixels the ship's own shadow darkens";
+    EXPECT_EQ(brighter, 0) << "a shadow never adds light";
+    const Frame fillOnly = render("sun=0", "shadow.enabled=true");
+    const Frame fillOnlyOff = render("sun=0", "shadow.enabled=false");
+    EXPECT_EQ(fillOnly.color.rgba, fillOnlyOff.color.rgba) << "fills and IBL are not shadowed by the map";
+}
+
 TEST_F(GlTest, OrbitMotionVectorsFollowTheCameraAndTheShipsOwnSpin) {
     // A moving script (speed 1) at frame 10: each ship pixel's motion must equal the reprojection of its
     // surface point through the previous ship transform and camera.
@@ -417,7 +449,8 @@ TEST_F(GlTest, OrbitShadersCompileWithoutWarnings) {
                    {GL_FRAGMENT_SHADER, "scenes/orbit/orbit_mesh.frag.glsl"},
                    {GL_FRAGMENT_SHADER, "scenes/orbit/orbit_background.frag.glsl"}};
     for (const auto& s : shaders) {
-        const std::string source = preprocessShader(s.name, orbit::iblShaderDefines());
+        const std::string source =
+            preprocessShader(s.name, orbit::iblShaderDefines(orbit::ShadowMap::shaderDefines()));
         const GLuint shader = glCreateShader(s.stage);
         const char* text = source.c_str();
         glShaderSource(shader, 1, &text, nullptr);

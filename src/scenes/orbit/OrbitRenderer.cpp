@@ -83,7 +83,8 @@ GpuFrame frameBlock(const OrbitRenderer::DrawInfo& info, Extent e) {
     f.earth = glm::vec4(kEarth.centre, kEarth.radius);
     f.mars = glm::vec4(kMars.centre, kMars.radius);
     f.planetFx = {lights.atmosphere, lights.glow, float(lights.time), lights.nebula};
-    f.flags = {info.ambientOcclusion != nullptr ? 1 : 0, info.contactShadows != nullptr ? 1 : 0, 0, 0};
+    f.flags = {info.ambientOcclusion != nullptr ? 1 : 0, info.contactShadows != nullptr ? 1 : 0,
+               info.shadow != nullptr ? 1 : 0, 0};
     f.aoPower = glm::vec4(info.ambientOcclusionPower, 0.0f, 0.0f, 0.0f);
     return f;
 }
@@ -92,7 +93,8 @@ GpuFrame frameBlock(const OrbitRenderer::DrawInfo& info, Extent e) {
 
 OrbitRenderer::OrbitRenderer()
     : mMeshProgram(makeGraphicsProgram("scenes/orbit/orbit_mesh.vert.glsl",
-                                       "scenes/orbit/orbit_mesh.frag.glsl", iblShaderDefines()))
+                                       "scenes/orbit/orbit_mesh.frag.glsl",
+                                       iblShaderDefines(ShadowMap::shaderDefines())))
     , mBackground(makeGraphicsProgram("passes/common/fullscreen.vert.glsl",
                                       "scenes/orbit/orbit_background.frag.glsl", iblShaderDefines()))
     , mEmptyVao(VertexArray::create("orbit background"))
@@ -131,13 +133,60 @@ void OrbitRenderer::setModel(const Model& model, const glm::mat4& placement) {
     mMeshes = std::make_unique<OrbitMeshes>(model);
     mIblBaselines.assign(model.materials.size(), 1.0f);
     mPlacement = placement;
+    mModelBounds = ShadowBounds::aroundBox(model.bounds.min, model.bounds.max);
+    mPlacementScale = glm::length(glm::vec3(placement[0]));
+    mShadowValid = false;
 }
 
 void OrbitRenderer::setEnvironment(const ImageF& equirect, const IblOptions& options) {
     mIbl = std::make_unique<Ibl>(equirect, options);
 }
 
+namespace {
+
+bool sameShadowSettings(const ShadowSettings& a, const ShadowSettings& b) {
+    return a.enabled == b.enabled && a.resolution == b.resolution && a.constantBias == b.constantBias &&
+           a.normalBias == b.normalBias && a.slopeBias == b.slopeBias && a.softness == b.softness &&
+           a.samples == b.samples;
+}
+
+} // namespace
+
+void OrbitRenderer::drawCasters(const ShadowCasterPass& pass, const glm::mat4& model) const {
+    glBindVertexArray(mMeshes->vertexArray().id());
+    pass.setModel(model);
+    for (const MeshDraw& d : mMeshes->draws()) {
+        glDrawElementsBaseVertex(
+            GL_TRIANGLES, GLsizei(d.indexCount), GL_UNSIGNED_INT,
+            reinterpret_cast<const void*>(std::uintptr_t(d.firstIndex) * sizeof(std::uint32_t)),
+            d.baseVertex);
+    }
+}
+
+void OrbitRenderer::renderShadowMap(const DrawInfo& info) {
+    const glm::mat4 model = info.shipTransform * mPlacement;
+    if (mShadowValid && mShadowSun == info.lights.sunDirection && mShadowModel == model &&
+        sameShadowSettings(mShadowSettings, *info.shadow)) {
+        return;
+    }
+    // The sphere around the model's own bounds keeps its radius as the ship turns, so the map's texel size
+    // stays fixed (texel snapping needs that).
+    const ShadowBounds bounds{glm::vec3(model * glm::vec4(mModelBounds.center, 1.0f)),
+                              mModelBounds.radius * mPlacementScale};
+    mShadowMap.render({.sunDirection = info.lights.sunDirection,
+                       .bounds = bounds,
+                       .settings = info.shadow,
+                       .drawCasters = [&](const ShadowCasterPass& pass) { drawCasters(pass, model); }});
+    mShadowValid = true;
+    mShadowSun = info.lights.sunDirection;
+    mShadowModel = model;
+    mShadowSettings = *info.shadow;
+}
+
 void OrbitRenderer::draw(const DrawInfo& info) {
+    if (mMeshes && info.shadow != nullptr) {
+        renderShadowMap(info);
+    }
     const GpuFrame f = frameBlock(info, mColor.extent());
     mFrame.update(&f, sizeof(f));
 
@@ -187,6 +236,7 @@ void OrbitRenderer::drawMeshes(const DrawInfo& info) {
     glBindTextureUnit(5, info.ambientOcclusion != nullptr ? info.ambientOcclusion->id() : mWhiteLinear.id());
     glBindTextureUnit(6, info.contactShadows != nullptr ? info.contactShadows->id() : mWhiteLinear.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, 1, mDraw.id());
+    mShadowMap.bind();
     mMeshProgram.use();
     glBindVertexArray(mMeshes->vertexArray().id());
     glFrontFace(GL_CCW);

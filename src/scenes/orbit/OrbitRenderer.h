@@ -11,6 +11,7 @@
 #include "gl/Objects.h"
 #include "scenes/orbit/OrbitIbl.h"
 #include "scenes/orbit/OrbitMeshes.h"
+#include "scenes/orbit/OrbitShadowMap.h"
 
 #include <glm/glm.hpp>
 
@@ -55,6 +56,8 @@ public:
         const photopic::Texture* ambientOcclusion = nullptr; ///< R visibility; multiplies indirect light only
         float ambientOcclusionPower = 1.0f;
         const photopic::Texture* contactShadows = nullptr; ///< R visibility; multiplies the sun only
+        /// The ship's sun shadow map (multiplies the sun only); null: no shadow map
+        const ShadowSettings* shadow = nullptr;
     };
     void draw(const DrawInfo& info);
 
@@ -72,6 +75,10 @@ public:
 
 private:
     void drawMeshes(const DrawInfo& info);
+    /// Renders the ship's shadow map when the sun, the ship's placement or the settings changed since the
+    /// last frame (sub-frames and the lighting stage's second draw reuse it).
+    void renderShadowMap(const DrawInfo& info);
+    void drawCasters(const ShadowCasterPass& pass, const glm::mat4& model) const;
 
     Program mMeshProgram;
     Program mBackground;
@@ -81,6 +88,13 @@ private:
     std::unique_ptr<OrbitMeshes> mMeshes;
     std::vector<float> mIblBaselines;
     glm::mat4 mPlacement{1.0f};
+    ShadowBounds mModelBounds;    ///< the model's bounding sphere before placement
+    float mPlacementScale = 1.0f; ///< the placement's uniform scale
+    ShadowMap mShadowMap;
+    bool mShadowValid = false; ///< the map holds the state below
+    glm::vec3 mShadowSun{0.0f};
+    glm::mat4 mShadowModel{0.0f};
+    ShadowSettings mShadowSettings;
     std::unique_ptr<Ibl> mIbl;
     // 1x1 stand-ins for absent material textures: white colour (sRGB), white data, flat normal.
     photopic::Texture mWhiteSrgb;

@@ -140,7 +140,8 @@ FrameInputs OrbitScene::render(const FrameTime& time, Pipeline& pipeline, std::v
                                         .jitter = jitter,
                                         .shipTransform = orbit::shipTransform(t),
                                         .prevShipTransform = orbit::shipTransform(prev),
-                                        .lights = lightsAt(t)};
+                                        .lights = lightsAt(t),
+                                        .shadow = &mSettings.shadow};
     mRenderer.draw(draw);
     FrameInputs inputs{.color = &mRenderer.color(),
                        .depth = &mRenderer.depth(),

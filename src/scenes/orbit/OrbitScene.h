@@ -7,6 +7,7 @@
 
 #include "scenes/Scene.h"
 #include "scenes/orbit/OrbitRenderer.h"
+#include "scenes/orbit/OrbitShadowMap.h"
 
 #include <array>
 #include <memory>
@@ -50,6 +51,8 @@ struct OrbitSceneSettings {
     /// texels, a power of two in [16, 2048], default 128: the environment cube's face (the image-based
     /// light's detail and build time, about 0.5 s at 128 on a 2-core software renderer)
     int iblSize = 128;
+    /// the ship's sun shadow map (OrbitShadowMap.h): on by default, 2048 texels, biases and PCF in texels
+    orbit::ShadowSettings shadow;
 
     template <class V>
     void visit(V& v) {
@@ -68,6 +71,7 @@ struct OrbitSceneSettings {
         v.field("env", env);
         v.field("iblSize", iblSize, Range{16, 2048});
         v.require((iblSize & (iblSize - 1)) == 0, "iblSize", "must be a power of two");
+        v.object("shadow", shadow);
     }
 };
 

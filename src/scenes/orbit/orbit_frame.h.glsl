@@ -20,7 +20,7 @@ layout(std140, binding = 0) uniform OrbitFrame {
     vec4 uEarth;          // xyz centre, w radius
     vec4 uMars;           // xyz centre, w radius
     vec4 uPlanetFx;       // x: atmosphere strength, y: glow strength, z: script time (s), w: nebula strength
-    ivec4 uFlags;         // x: ambient occlusion texture, y: contact-shadow texture, z, w: 0
+    ivec4 uFlags;         // x: ambient occlusion texture, y: contact-shadow texture, z: shadow map, w: 0
     vec4 uAoPower;        // x: the exponent on the ambient visibility
 };
 

@@ -1,12 +1,14 @@
 // The orbit scene's material shader: glTF metallic-roughness with base-colour, metal-rough, normal,
 // occlusion and emissive textures (colour textures are GL_SRGB8_ALPHA8, decoded by the sampler; data
 // textures linear), shaded by orbit_pbr.h.glsl: the sun (its illuminance, the planet's occlusion of the
-// disc and the lighting stage's contact shadows: direct light only), the amb and hemi fills and the
-// image-based light (the material's occlusion and the lighting stage's ambient occlusion: indirect light
-// only; uEnv.x, the material's stored baseline, times the global intensity in OrbitIblBlock).
+// disc, the ship's shadow map and the lighting stage's contact shadows: direct light only), the amb and
+// hemi fills and the image-based light (the material's occlusion and the lighting stage's ambient
+// occlusion: indirect light only; uEnv.x, the material's stored baseline, times the global intensity in
+// OrbitIblBlock).
 #include "orbit_pbr.h.glsl"
 #include "orbit_frame.h.glsl"
 #include "orbit_draw.h.glsl"
+#include "orbit_shadow.h.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -65,6 +67,9 @@ void main() {
     float sunVisibility = orbitSunVisibility(uEarth, vWorld) * orbitSunVisibility(uMars, vWorld);
     if (uFlags.y != 0) {
         sunVisibility *= texelFetch(uContactShadows, pixel, 0).r;
+    }
+    if (uFlags.z != 0) {
+        sunVisibility *= sunShadowVisibility(vWorld, ng);
     }
     float indirectVisibility = occlusion;
     if (uFlags.x != 0) {
