@@ -5,6 +5,7 @@
 // normals, motion and its camera. The caller hands them to Pipeline::execute as they are.
 
 #include "core/Settings.h"
+#include "core/settings/SettingsDescriber.h"
 #include "gl/Objects.h"
 #include "pipeline/Pipeline.h"
 
@@ -60,6 +61,10 @@ struct SceneInfo {
     std::string name;
     std::string description;
     std::function<std::unique_ptr<Scene>()> make;
+    /// The scene's own settings for the settings reference (docs/settings.md), keys "NAME.key": usually
+    /// describeSceneSettings<ItsSettingsStruct> (scenes/SceneSettings.h). A plain function, not a Scene
+    /// method, so the reference is built without a GL context.
+    std::vector<SettingDoc> (*describeSettings)(std::string_view sceneName) = nullptr;
 };
 
 /// Every built-in scene (scenes/SceneRegistry.cpp lists them).
