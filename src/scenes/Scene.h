@@ -8,6 +8,7 @@
 #include "core/settings/SettingsDescriber.h"
 #include "gl/Objects.h"
 #include "pipeline/Pipeline.h"
+#include "scenes/InteractiveCamera.h"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -55,6 +56,11 @@ public:
     /// 3D scene's beginFrame and lighting stage), writes one value per telemetry column into `telemetry`, and
     /// returns the frame's inputs for Pipeline::execute (textures and camera valid until the next call).
     virtual FrameInputs render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) = 0;
+
+    /// The camera an interactive host steers (photopic-view: drag to orbit, wheel to zoom), or nullptr when
+    /// the scene has none (2D scenes, scripted cameras). Valid for the scene's lifetime; a change shows from
+    /// the next render().
+    [[nodiscard]] virtual InteractiveCamera* interactiveCamera() { return nullptr; }
 };
 
 struct SceneInfo {

@@ -61,7 +61,9 @@ struct TestbedSceneSettings {
     }
 };
 
-class TestbedScene final : public Scene {
+/// Its camera follows the scripted path; as an InteractiveCamera (photopic-view's drag and wheel) the first
+/// move holds the path's current view as a still camera (fixedCamera, eye, target) and then orbits that.
+class TestbedScene final : public Scene, private InteractiveCamera {
 public:
     /// Needs a current GL 4.5 context (compiles the scene's shaders).
     TestbedScene();
@@ -77,6 +79,8 @@ public:
     /// that hands back ambient occlusion or sun visibility, shades again with them.
     FrameInputs render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) override;
 
+    [[nodiscard]] InteractiveCamera* interactiveCamera() override { return this; }
+
     [[nodiscard]] const TestbedSceneSettings& settings() const { return mSettings; }
     /// The camera's and objects' times of frame `time` under the settings.
     [[nodiscard]] testbed::FrameTimes frameTimes(const FrameTime& time) const;
@@ -86,7 +90,14 @@ public:
     [[nodiscard]] Lens lens() const;
 
 private:
+    void orbit(float yaw, float pitch) override;
+    void zoom(float factor) override;
+    /// The still camera the next move starts from: the fixed one, else the path's view of the last frame.
+    [[nodiscard]] OrbitView currentView() const;
+    void holdView(const OrbitView& view);
+
     TestbedSceneSettings mSettings;
+    double mLastCameraTime = -1.0; ///< path time of the last rendered frame; < 0 before the first
     testbed::TestbedRenderer mRenderer;
     Camera mCamera;
     Extent mExtent;
