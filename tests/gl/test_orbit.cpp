@@ -441,6 +441,26 @@ TEST_F(GlTest, OrbitMotionVectorsFollowTheCameraAndTheShipsOwnSpin) {
     EXPECT_LT(worst, 0.05) << "pixels: motion against the reprojection";
 }
 
+TEST_F(GlTest, OrbitViewerDragHoldsTheScriptedViewAndOrbitsTheShip) {
+    auto scene = makeScene(3.0f, {});
+    Pipeline pipeline({.settings = scene->defaultSettings()});
+    std::vector<double> telemetry;
+    const FrameInputs before = scene->render({.dt = kDt, .frameIndex = 0}, pipeline, telemetry);
+    const glm::vec3 scripted = glm::vec3(glm::inverse(before.camera->view)[3]);
+    pipeline.execute(before, {.dt = kDt, .frameIndex = 0});
+    ASSERT_NE(scene->interactiveCamera(), nullptr);
+    scene->interactiveCamera()->orbit(0.5f, 0.0f);
+    scene->interactiveCamera()->zoom(0.5f);
+    EXPECT_TRUE(scene->settings().fixedCamera);
+    EXPECT_NEAR(glm::length(scene->settings().eye), 0.5f * glm::length(scripted), 1e-3f)
+        << "zoomed in by half";
+    EXPECT_NEAR(scene->settings().eye.y, 0.5f * scripted.y, 1e-3f) << "a turn about +y keeps the height";
+    const FrameInputs after = scene->render({.dt = kDt, .frameIndex = 1}, pipeline, telemetry);
+    const glm::vec3 eye = glm::vec3(glm::inverse(after.camera->view)[3]);
+    EXPECT_LT(glm::length(eye - scene->settings().eye), 1e-3f) << "the next frame is seen from the held eye";
+    pipeline.execute(after, {.dt = kDt, .frameIndex = 1});
+}
+
 TEST_F(GlTest, OrbitShadersCompileWithoutWarnings) {
     const struct {
         GLenum stage;

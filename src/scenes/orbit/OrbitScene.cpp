@@ -132,8 +132,11 @@ FrameInputs OrbitScene::render(const FrameTime& time, Pipeline& pipeline, std::v
     const double t = scriptTime(time);
     const double dtScript = double(mSettings.speed) * double(time.dt);
     const double prev = time.frameIndex == 0 ? t : t - dtScript;
-    mCamera = orbit::orbitCamera(t, prev, mShipRadius, mExtent.width, mExtent.height);
+    mCamera = mSettings.fixedCamera
+                  ? orbit::orbitCameraFrom(mSettings.eye, mSettings.eye, mExtent.width, mExtent.height)
+                  : orbit::orbitCamera(t, prev, mShipRadius, mExtent.width, mExtent.height);
     mCamera.cut = time.frameIndex == 0;
+    mLastScriptTime = t;
 
     const glm::vec2 jitter = pipeline.beginFrame(time, &mCamera);
     orbit::OrbitRenderer::DrawInfo draw{.camera = &mCamera,
@@ -174,6 +177,33 @@ FrameInputs OrbitScene::render(const FrameTime& time, Pipeline& pipeline, std::v
     }
     telemetry = {t, double(orbit::sunVisibility(orbit::kEarth, glm::vec3(0.0f), draw.lights.sunDirection))};
     return inputs;
+}
+
+OrbitView OrbitScene::currentView() const {
+    OrbitView view;
+    view.eye = mSettings.fixedCamera ? mSettings.eye : orbit::cameraEyeAt(mLastScriptTime, mShipRadius);
+    view.target = glm::vec3(0.0f);
+    view.minDistance = 0.5f * mShipRadius;
+    view.maxDistance = 600.0f;
+    return view;
+}
+
+void OrbitScene::holdView(const OrbitView& view) {
+    // Within the settings' range, so the held view saves and loads back as it is.
+    mSettings.fixedCamera = true;
+    mSettings.eye = glm::clamp(view.eye, glm::vec3(-1000.0f), glm::vec3(1000.0f));
+}
+
+void OrbitScene::orbit(float yaw, float pitch) {
+    OrbitView view = currentView();
+    view.orbit(yaw, pitch);
+    holdView(view);
+}
+
+void OrbitScene::zoom(float factor) {
+    OrbitView view = currentView();
+    view.zoom(factor);
+    holdView(view);
 }
 
 std::unique_ptr<Scene> makeOrbitScene() {

@@ -5,6 +5,7 @@
 // passes into the planet's shadow and out into the sun again (OrbitWorld.h), so exposure adapts in 3D.
 // `--set orbit.model=FILE` (the CLI's --model) draws a glTF model in the ship's place.
 
+#include "scenes/InteractiveCamera.h"
 #include "scenes/Scene.h"
 #include "scenes/orbit/OrbitRenderer.h"
 #include "scenes/orbit/OrbitShadowMap.h"
@@ -53,29 +54,48 @@ struct OrbitSceneSettings {
     int iblSize = 128;
     /// the ship's sun shadow map (OrbitShadowMap.h): on by default, 2048 texels, biases and PCF in texels
     orbit::ShadowSettings shadow;
+    /// default false: the scripted camera; true: a still camera at `eye` looking at the ship (the viewer's
+    /// drag and wheel set both)
+    bool fixedCamera = false;
+    glm::vec3 eye{0.0f, 8.0f, 30.0f}; ///< m, each in [-1000, 1000], not 0: the still camera's position
 
     template <class V>
     void visit(V& v) {
-        v.field("post", post, orbitPostNames());
-        v.field("exp", exp, Range{1.0 / 64.0, 64});
-        v.field("sun", sun, Range{0, 1000});
-        v.field("amb", amb, Range{0, 100});
-        v.field("hemi", hemi, Range{0, 100});
-        v.field("ibl", ibl, Range{0, 100});
-        v.field("atmosphere", atmosphere, Range{0, 4});
-        v.field("glow", glow, Range{0, 4});
-        v.field("nebula", nebula, Range{0, 100});
-        v.field("start", start, Range{0, 1000});
-        v.field("speed", speed, Range{0, 100});
-        v.field("model", model);
-        v.field("env", env);
-        v.field("iblSize", iblSize, Range{16, 2048});
+        v.field("post", post, orbitPostNames(),
+                "full: the scene's look; raw: calibration (no bloom, lens flare, glow or atmosphere; manual "
+                "exposure exp)");
+        v.field("exp", exp, Range{1.0 / 64.0, 64},
+                "exposure multiplier: raw, the manual exposure; full, log2(exp) EV of compensation");
+        v.field("sun", sun, Range{0, 1000}, "scene-linear illuminance of the sun at normal incidence");
+        v.field("amb", amb, Range{0, 100}, "irradiance of the uniform fill (diffuse / pi)");
+        v.field("hemi", hemi, Range{0, 100},
+                "irradiance of the hemisphere fill: earthshine from the planet's side");
+        v.field("ibl", ibl, Range{0, 100},
+                "image-based-light intensity (every material's stored baseline times it)");
+        v.field("atmosphere", atmosphere, Range{0, 4},
+                "the planets' rim on their discs (1: its bounded maximum)");
+        v.field("glow", glow, Range{0, 4},
+                "the planets' limb glow outside their discs (1: its bounded maximum)");
+        v.field("nebula", nebula, Range{0, 100}, "the background nebula's brightness (never the IBL)");
+        v.field("start", start, Range{0, 1000}, "s: script time of frame 0 (the eclipse is ~4.3 to 8.4 s)");
+        v.field("speed", speed, Range{0, 100}, "script seconds per second (0: a still frame)");
+        v.field("model", model, "glTF 2.0 file (.gltf, .glb) drawn in place of the built-in ship (--model)");
+        v.field(
+            "env", env,
+            "equirectangular HDR image for the image-based light (--env); empty: data/blender_sunrise.exr");
+        v.field("iblSize", iblSize, Range{16, 2048}, "texels, a power of two: the environment cube's face");
         v.require((iblSize & (iblSize - 1)) == 0, "iblSize", "must be a power of two");
         v.object("shadow", shadow);
+        v.field("fixedCamera", fixedCamera,
+                "true: a still camera at eye looking at the ship; false: the script's");
+        v.field("eye", eye, Range{-1000, 1000}, "m: the still camera's position");
+        v.require(glm::length(eye) > 0.0f, "eye", "must not be the ship's centre");
     }
 };
 
-class OrbitScene final : public Scene {
+/// Its camera follows the script; as an InteractiveCamera (photopic-view's drag and wheel) the first move
+/// holds the script's current eye as a still camera (fixedCamera, eye) and then orbits the ship from there.
+class OrbitScene final : public Scene, private InteractiveCamera {
 public:
     /// Needs a current GL 4.5 context (compiles the scene's shaders).
     OrbitScene();
@@ -91,6 +111,7 @@ public:
     /// script_s (script time), sun_visibility (the planet's occlusion of the sun at the ship, 0..1).
     [[nodiscard]] std::vector<std::string> telemetryColumns() const override;
     FrameInputs render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) override;
+    [[nodiscard]] InteractiveCamera* interactiveCamera() override { return this; }
 
     [[nodiscard]] const OrbitSceneSettings& settings() const { return mSettings; }
     [[nodiscard]] const orbit::OrbitRenderer& renderer() const { return mRenderer; }
@@ -101,6 +122,11 @@ private:
     void loadModel();
     void loadEnvironment();
     [[nodiscard]] orbit::OrbitLights lightsAt(double seconds) const;
+    void orbit(float yaw, float pitch) override;
+    void zoom(float factor) override;
+    /// The eye the camera has now: the still one, or the script's at the last rendered frame.
+    [[nodiscard]] OrbitView currentView() const;
+    void holdView(const OrbitView& view);
 
     OrbitSceneSettings mSettings;
     orbit::OrbitRenderer mRenderer;
@@ -110,6 +136,7 @@ private:
     std::string mLoadedEnv = "\x01";
     int mLoadedIblSize = 0;
     float mShipRadius = 1.0f;
+    double mLastScriptTime = 0.0;
 };
 
 std::unique_ptr<Scene> makeOrbitScene();

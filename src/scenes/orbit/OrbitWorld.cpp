@@ -73,19 +73,24 @@ glm::vec3 cameraEyeAt(double seconds, float shipRadius) {
                                 float(std::cos(pitch) * std::cos(yaw)));
 }
 
-Camera orbitCamera(double seconds, double prevSeconds, float shipRadius, int width, int height) {
-    const auto viewAt = [&](double t) {
-        return glm::lookAt(cameraEyeAt(t, shipRadius), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+Camera orbitCameraFrom(glm::vec3 eye, glm::vec3 prevEye, int width, int height) {
+    const auto viewFrom = [](glm::vec3 e) {
+        return glm::lookAt(e, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
     };
     Camera c;
     c.nearPlane = kNear;
     c.farPlane = kFar;
     c.verticalFov = kVerticalFov;
-    c.view = viewAt(seconds);
+    c.view = viewFrom(eye);
     c.projection = perspectiveProjection(kVerticalFov, float(width) / float(height), kNear, kFar);
-    c.prevViewProjection = c.projection * viewAt(prevSeconds);
-    c.lens.focusDistance = glm::length(cameraEyeAt(seconds, shipRadius));
+    c.prevViewProjection = c.projection * viewFrom(prevEye);
+    c.lens.focusDistance = glm::length(eye);
     return c;
+}
+
+Camera orbitCamera(double seconds, double prevSeconds, float shipRadius, int width, int height) {
+    return orbitCameraFrom(cameraEyeAt(seconds, shipRadius), cameraEyeAt(prevSeconds, shipRadius), width,
+                           height);
 }
 
 } // namespace photopic::orbit

@@ -52,6 +52,10 @@ inline constexpr unsigned kFirstShip = 1;
 /// The orbiting camera's eye at script time `seconds` around a ship of bounding radius `shipRadius`.
 [[nodiscard]] glm::vec3 cameraEyeAt(double seconds, float shipRadius);
 
+/// A camera at `eye` (previous frame at `prevEye`) looking at the ship (the origin), y up, on a `width` x
+/// `height` target: unjittered projection, kNear/kFar.
+[[nodiscard]] Camera orbitCameraFrom(glm::vec3 eye, glm::vec3 prevEye, int width, int height);
+
 /// The camera of script time `seconds` (previous frame at `prevSeconds`; equal times: a still camera) on a
 /// `width` x `height` target: unjittered projection, kNear/kFar.
 [[nodiscard]] Camera orbitCamera(double seconds, double prevSeconds, float shipRadius, int width, int height);
