@@ -86,6 +86,8 @@ struct SceneOptions {
     std::string canvasColor;    ///< --canvas FILE: canvas scene only, = --set canvas.colour=FILE
     std::string canvasMaterial; ///< --material FILE: canvas scene only, = --set canvas.material=FILE
     std::string motion;         ///< --motion FILE.csv: canvas scene only, = --set canvas.motion=FILE
+    std::string model;          ///< --model FILE: orbit scene only, = --set orbit.model=FILE
+    std::string env;            ///< --env FILE: orbit scene only, = --set orbit.env=FILE
     std::string truth;          ///< --truth KIND|all: testbed scene only, write ray-traced references instead
     int start = 0;              ///< --start N: the first frame index (--truth)
     int every = 1;              ///< write every Nth frame (frame_0000 is frame 0, frame_0001 frame N, ...)

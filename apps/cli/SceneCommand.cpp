@@ -222,21 +222,25 @@ int runScene(const SceneOptions& options) {
         throw InputError(e.what());
     }
 
-    // The canvas scene's file flags are shorthands for its settings, applied before the --set overrides.
+    // The canvas and orbit scenes' file flags are shorthands for their settings, applied before the --set
+    // overrides.
     std::vector<std::string> overrides;
-    for (const auto& [flag, key, value] : {std::tuple{"--canvas", "colour", options.canvasColor},
-                                           std::tuple{"--material", "material", options.canvasMaterial},
-                                           std::tuple{"--motion", "motion", options.motion}}) {
+    for (const auto& [flag, owner, key, value] :
+         {std::tuple{"--canvas", "canvas", "colour", options.canvasColor},
+          std::tuple{"--material", "canvas", "material", options.canvasMaterial},
+          std::tuple{"--motion", "canvas", "motion", options.motion},
+          std::tuple{"--model", "orbit", "model", options.model},
+          std::tuple{"--env", "orbit", "env", options.env}}) {
         if (!value.empty()) {
-            if (scene->name() != "canvas") {
+            if (scene->name() != owner) {
                 throw InputError(
-                    fmt::format("{} is an option of the canvas scene, not of '{}'", flag, scene->name()));
+                    fmt::format("{} is an option of the {} scene, not of '{}'", flag, owner, scene->name()));
             }
             // A JSON string must be UTF-8; a file name need not be. Say so rather than let dump() throw.
             if (const auto bad = invalidUtf8Offset(value)) {
                 throw InputError(fmt::format("{}: the file name is not valid UTF-8 (byte {})", flag, *bad));
             }
-            overrides.push_back(fmt::format("canvas.{}={}", key, nlohmann::json(value).dump()));
+            overrides.push_back(fmt::format("{}.{}={}", owner, key, nlohmann::json(value).dump()));
         }
     }
     overrides.insert(overrides.end(), options.settings.overrides.begin(), options.settings.overrides.end());

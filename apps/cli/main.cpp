@@ -2,7 +2,9 @@
 
 #include "Bench.h"
 #include "Commands.h"
+#include "OrbitDemo.h"
 #include "Progress.h"
+#include "SettingsReference.h"
 #include "TabletopDemo.h"
 
 #include "common/Verbosity.h"
@@ -97,6 +99,7 @@ struct Cli {
     ImageOptions imageOptions;
     CLI::App* settings = nullptr;
     bool defaults = false;
+    bool markdown = false;
     std::filesystem::path checkFile;
     std::string settingsPreset;
     CLI::App* scene = nullptr;
@@ -104,7 +107,9 @@ struct Cli {
     bool listScenes = false;
     CLI::App* demo = nullptr;
     TabletopWalkOptions walk;
-    std::filesystem::path demoData; // empty: findDataDir() looks it up
+    std::string demoScene = "tabletop";
+    std::optional<float> demoSeconds; // unset: the chosen scene's own length
+    std::filesystem::path demoData;   // empty: findDataDir() looks it up
     std::string demoSize = "320x180";
     bool noVideo = false;
     bool demoImages = false;
@@ -227,10 +232,16 @@ void addImageCommand(CLI::App& app, Cli& c) {
 }
 
 void addSettingsCommand(CLI::App& app, Cli& c) {
-    c.settings = app.add_subcommand("settings", "print the default settings or check a settings file");
+    c.settings = app.add_subcommand(
+        "settings", "print the default settings, check a settings file or print the settings reference");
     auto* defaultsFlag = c.settings->add_flag("--defaults", c.defaults, "print the full default JSON");
     auto* checkOption = c.settings->add_option("--check", c.checkFile, "validate FILE and list every issue");
+    auto* markdownFlag = c.settings->add_flag(
+        "--markdown", c.markdown,
+        "print the reference of every setting (key, type, default, range, meaning) as Markdown: "
+        "docs/settings.md");
     defaultsFlag->excludes(checkOption);
+    markdownFlag->excludes(defaultsFlag, checkOption);
     c.settings->add_option("--preset", c.settingsPreset,
                            "with --defaults: the defaults with this look (" + joined(presetNames()) +
                                "); with --check: the file over this look, as --preset reads it");
@@ -238,7 +249,8 @@ void addSettingsCommand(CLI::App& app, Cli& c) {
     c.settings->footer("Examples:\n"
                        "  photopic settings --defaults > mine.json\n"
                        "  photopic settings --defaults --preset stills   what photopic image starts from\n"
-                       "  photopic settings --check mine.json");
+                       "  photopic settings --check mine.json\n"
+                       "  photopic settings --markdown > docs/settings.md");
 }
 
 void addSceneCommand(CLI::App& app, Cli& c) {
@@ -269,6 +281,12 @@ void addSceneCommand(CLI::App& app, Cli& c) {
     c.scene->add_option("--motion", c.sceneOptions.motion,
                         "canvas scene: device motion CSV, header time_s,pitch,roll,yaw: seconds, then "
                         "radians (examples/canvas-motion/tilt.csv)");
+    c.scene->add_option("--model", c.sceneOptions.model,
+                        "orbit scene: a glTF 2.0 model (.gltf or .glb) in place of the ship (= --set "
+                        "orbit.model=FILE)");
+    c.scene->add_option("--env", c.sceneOptions.env,
+                        "orbit scene: an equirectangular HDR image (.exr, .hdr) for the image-based light "
+                        "(= --set orbit.env=FILE)");
     c.scene->add_option("--truth", c.sceneOptions.truth,
                         "testbed scene: write the CPU ray tracer's KIND (" +
                             joined(testbed::allTruthKinds() | std::views::transform(testbed::truthKindName)) +
@@ -280,7 +298,9 @@ void addSceneCommand(CLI::App& app, Cli& c) {
                     "  photopic scene --list\n"
                     "  photopic scene canvas -o out/canvas --frames 60 --size 960x540 --motion "
                     "examples/canvas-motion/tilt.csv\n"
-                    "  photopic scene testbed -o out/testbed --frames 48 --tonemap agx --debug normals");
+                    "  photopic scene testbed -o out/testbed --frames 48 --tonemap agx --debug normals\n"
+                    "  photopic scene orbit -o out/orbit --model data/gltf/2CylinderEngine.glb --set "
+                    "orbit.post=raw");
 }
 
 void addDemoCommand(CLI::App& app, Cli& c) {
@@ -291,8 +311,13 @@ void addDemoCommand(CLI::App& app, Cli& c) {
     c.demo->add_option("--fps", c.walk.fps, "frame rate")
         ->check(CLI::Range(1.0f, 240.0f))
         ->capture_default_str();
-    c.demo->add_option("--seconds", c.walk.seconds, "length of the walk")
-        ->check(CLI::Range(0.1f, 600.0f))
+    c.demo->add_option("--seconds", c.demoSeconds, "length (default: the walk 22, orbit 12)")
+        ->check(CLI::Range(0.1f, 600.0f));
+    c.demo
+        ->add_option("--scene", c.demoScene,
+                     "tabletop (default): the walk; orbit: the spacecraft's pass through the planet's "
+                     "shadow")
+        ->check(CLI::IsMember({"tabletop", "orbit"}))
         ->capture_default_str();
     c.demo->add_option("--every", c.walk.frameEvery, "write every Nth frame as PNG")
         ->check(CLI::Range(1, 1000))
@@ -308,6 +333,7 @@ void addDemoCommand(CLI::App& app, Cli& c) {
     c.demo->footer("Examples:\n"
                    "  photopic demo                                  the walk at 320x180 into out/demo\n"
                    "  photopic demo --size 960x540 --fps 60 -o out/big\n"
+                   "  photopic demo --scene orbit                    the orbit pass into out/demo-orbit\n"
                    "  photopic demo --images --data data/            the contact sheet of every HDR image");
 }
 
@@ -350,8 +376,15 @@ int runCommand(Cli& c) {
         return runImage(c.imageOptions);
     }
     if (*c.settings) {
+        if (c.markdown) {
+            if (!c.settingsPreset.empty()) {
+                throw InputError("settings: --markdown lists every preset; --preset does not apply");
+            }
+            std::fputs(settingsReferenceMarkdown().c_str(), stdout);
+            return kOk;
+        }
         if (!c.defaults && c.checkFile.empty()) {
-            throw InputError("settings: --defaults or --check FILE is required");
+            throw InputError("settings: --defaults, --check FILE or --markdown is required");
         }
         return c.defaults ? runSettingsDefaults(c.settingsPreset)
                           : runSettingsCheck(c.checkFile, c.settingsPreset);
@@ -377,6 +410,21 @@ int runCommand(Cli& c) {
             return runDemo(findDataDir(c.demoData), c.walk.output, c.demoMaxPixels, look);
         }
         const Extent size = parseSize(c.demoSize);
+        if (c.demoScene == "orbit") {
+            OrbitDemoOptions orbit;
+            if (c.demo->count("--output") > 0) {
+                orbit.output = c.walk.output;
+            }
+            orbit.width = size.width;
+            orbit.height = size.height;
+            orbit.fps = c.walk.fps;
+            orbit.seconds = c.demoSeconds.value_or(orbit.seconds);
+            orbit.frameEvery = c.walk.frameEvery;
+            orbit.video = !c.noVideo;
+            orbit.preset = c.walk.preset;
+            return runOrbitDemo(orbit);
+        }
+        c.walk.seconds = c.demoSeconds.value_or(c.walk.seconds);
         c.walk.width = size.width;
         c.walk.height = size.height;
         c.walk.video = !c.noVideo;

@@ -42,13 +42,16 @@ struct ShadowSettings {
 
     template <class V>
     void visit(V& v) {
-        v.field("enabled", enabled);
-        v.field("resolution", resolution, Range{256, 8192});
-        v.field("constantBias", constantBias, Range{0, 16});
-        v.field("normalBias", normalBias, Range{0, 16});
-        v.field("slopeBias", slopeBias, Range{0, 16});
-        v.field("softness", softness, Range{0, 16});
-        v.field("samples", samples, Range{1, 32});
+        v.field("enabled", enabled, "the ship's sun shadow map; off: the sun reaches every surface");
+        v.field("resolution", resolution, Range{256, 8192},
+                "texels per side of the square map, a power of two");
+        v.field("constantBias", constantBias, Range{0, 16}, "shadow texels: depth bias towards the sun");
+        v.field("normalBias", normalBias, Range{0, 16},
+                "shadow texels: the lookup point moves this far along the surface normal");
+        v.field("slopeBias", slopeBias, Range{0, 16},
+                "shadow texels per unit of tan(angle between normal and sun): depth bias on steep surfaces");
+        v.field("softness", softness, Range{0, 16}, "shadow texels: radius of the Poisson disc of PCF taps");
+        v.field("samples", samples, Range{1, 32}, "PCF taps (the first N of a fixed best-candidate disc)");
         v.require((resolution & (resolution - 1)) == 0, "resolution", "must be a power of two");
     }
 };

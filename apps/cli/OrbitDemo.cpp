@@ -1,0 +1,187 @@
+#include "OrbitDemo.h"
+
+#include "Commands.h"
+#include "Outputs.h"
+#include "Progress.h"
+#include "TelemetryCsv.h"
+#include "Video.h"
+
+#include "common/Raster.h"
+#include "gl/Context.h"
+#include "gl/TextureIo.h"
+#include "io/ImageIO.h"
+#include "scenes/orbit/OrbitScene.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace photopic::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct OrbitSample {
+    float timeS = 0.0f;
+    float measuredLuma = 0.0f;
+    float targetLog2 = 0.0f;
+    float appliedLog2 = 0.0f;
+    float sunVisibility = 1.0f;
+};
+
+fs::path framePath(const fs::path& folder, std::size_t index) {
+    return folder / fmt::format("frame_{:04d}.png", index);
+}
+
+Image8 plotOrbit(const std::vector<OrbitSample>& samples) {
+    PlotSeries luma{"metered luma (log2)", {120, 120, 120, 255}, {}, {}};
+    PlotSeries target{"target EV", {30, 110, 220, 255}, {}, {}};
+    PlotSeries applied{"applied EV", {220, 60, 30, 255}, {}, {}};
+    PlotSeries sun{"sun visible at the ship (0..1)", {220, 180, 30, 255}, {}, {}};
+    for (const OrbitSample& s : samples) {
+        for (PlotSeries* p : {&luma, &target, &applied, &sun}) {
+            p->x.push_back(s.timeS);
+        }
+        luma.y.push_back(s.measuredLuma > 0.0f ? std::log2(s.measuredLuma)
+                                               : std::numeric_limits<float>::quiet_NaN());
+        target.y.push_back(s.targetLog2);
+        applied.y.push_back(s.appliedLog2);
+        sun.y.push_back(s.sunVisibility);
+    }
+    return plotLines({luma, target, applied, sun}, 960, 420,
+                     "Orbit: into the planet's shadow and out into the sun, auto exposure", "time (s)");
+}
+
+/// Six written frames spread over the run, read back from their PNGs.
+Image8 contactSheet(const fs::path& folder, std::size_t written, int every,
+                    const std::vector<OrbitSample>& samples) {
+    std::vector<std::pair<std::string, Image8>> tiles;
+    constexpr std::size_t kTiles = 6;
+    for (std::size_t k = 0; k < kTiles; ++k) {
+        const std::size_t w = written <= 1 ? 0 : k * (written - 1) / (kTiles - 1);
+        const OrbitSample& s = samples[std::min(w * std::size_t(every), samples.size() - 1)];
+        tiles.emplace_back(
+            fmt::format("t={:.1f}s sun {:.0f}% {:+.2f} EV", s.timeS, 100.0f * s.sunVisibility, s.appliedLog2),
+            readPng8(framePath(folder, w)));
+    }
+    return makeContactSheet(tiles, 3, 320);
+}
+
+} // namespace
+
+namespace {
+
+/// What the frame loop leaves for the summary files.
+struct OrbitRun {
+    std::vector<OrbitSample> samples;
+    std::size_t written = 0; ///< frame PNGs
+    int frames = 0;
+};
+
+/// Renders every frame through the pipeline, writes every `every`th as PNG and the telemetry CSV.
+OrbitRun renderOrbit(const OrbitDemoOptions& options, RunOutputs& outputs) {
+    HeadlessContext context;
+    OrbitScene scene;
+    Settings settings = scene.defaultSettings();
+    if (!options.preset.empty()) {
+        settings.applyLook(presetLook(options.preset));
+    }
+    Pipeline pipeline({.settings = settings, .keepTelemetryHistory = true});
+    scene.resize({options.width, options.height});
+
+    const float dt = 1.0f / options.fps;
+    OrbitRun run;
+    run.frames = std::max(1, int(std::lround(options.seconds * options.fps)));
+    const int every = std::max(1, options.frameEvery);
+    const fs::path telemetryPath = options.output / "telemetry.csv";
+    TelemetryCsv telemetry(telemetryPath, dt, scene.telemetryColumns());
+    run.samples.reserve(std::size_t(run.frames));
+    // The scene's columns: script_s, sun_visibility.
+    const auto addSample = [&](const ExposureTelemetry& t, const std::vector<double>& values) {
+        run.samples.push_back({float(t.frame) * dt, t.frameLuminance, t.targetLog2, t.appliedLog2,
+                               values.size() > 1 ? float(values[1]) : 1.0f});
+    };
+    Progress progress("demo --scene orbit", std::size_t(run.frames));
+    for (int i = 0; i < run.frames; ++i) {
+        const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
+        std::vector<double> values;
+        const FrameInputs frame = scene.render(time, pipeline, values);
+        const Texture& display = pipeline.execute(frame, time);
+        if (i % every == 0) {
+            writePng(framePath(options.output, run.written++), readTexture8(display));
+            outputs.wroteSequenceItem();
+        }
+        telemetry.sceneValues(std::uint64_t(i), std::move(values));
+        telemetry.take(pipeline, std::uint64_t(i), i + 1 == run.frames, addSample);
+        progress.advance();
+    }
+    telemetry.commit(std::uint64_t(run.frames), pipeline.droppedTelemetry());
+    outputs.wrote(telemetryPath);
+    return run;
+}
+
+void printSummary(const OrbitDemoOptions& options, const OrbitRun& run, const std::string& video) {
+    std::printf("orbit: %d frames at %dx%d, %.3g fps, auto exposure -> %s\n", run.frames, options.width,
+                options.height, double(options.fps), options.output.string().c_str());
+    std::printf("  files: %zu frame PNGs, telemetry.csv, exposure_plot.png, contact_sheet.png, %s\n",
+                run.written, video.c_str());
+    if (!run.samples.empty()) {
+        const auto [low, high] = std::minmax_element(
+            run.samples.begin(), run.samples.end(),
+            [](const OrbitSample& a, const OrbitSample& b) { return a.appliedLog2 < b.appliedLog2; });
+        std::printf("  exposure: %+.2f EV (t=%.1f s) .. %+.2f EV (t=%.1f s)\n", double(low->appliedLog2),
+                    double(low->timeS), double(high->appliedLog2), double(high->timeS));
+    }
+}
+
+} // namespace
+
+int runOrbitDemo(const OrbitDemoOptions& options) {
+    const auto begin = std::chrono::steady_clock::now();
+    if (options.width < 16 || options.height < 16 || options.fps <= 0.0f || options.seconds <= 0.0f) {
+        throw InputError("demo: --size must be at least 16x16, --fps and --seconds positive");
+    }
+    // Every output is checked before the first frame; a run that fails takes back what it wrote.
+    RunOutputs outputs;
+    outputs.makeFolder(options.output);
+    const fs::path plotPath = options.output / "exposure_plot.png";
+    const fs::path sheetPath = options.output / "contact_sheet.png";
+    const fs::path videoPath = options.output / "demo.mp4";
+    for (const fs::path& path : {framePath(options.output, 0), plotPath, sheetPath, videoPath}) {
+        RunOutputs::requireFile(path);
+    }
+    outputs.sequence([&](std::size_t i) { return framePath(options.output, i); });
+
+    const OrbitRun run = renderOrbit(options, outputs);
+    const auto rendered = std::chrono::steady_clock::now();
+    writePng(plotPath, plotOrbit(run.samples));
+    outputs.wrote(plotPath);
+    if (!run.samples.empty() && run.written > 0) {
+        writePng(sheetPath,
+                 contactSheet(options.output, run.written, std::max(1, options.frameEvery), run.samples));
+        outputs.wrote(sheetPath);
+    }
+    std::string video = "demo.mp4 skipped (--no-video)";
+    if (options.video) {
+        const VideoResult result = encodeFrameSequence(
+            options.output, double(options.fps) / double(std::max(1, options.frameEvery)), videoPath);
+        if (result.written) {
+            outputs.wrote(videoPath);
+        }
+        video = result.note;
+    }
+    outputs.commit();
+    const auto end = std::chrono::steady_clock::now();
+    printSummary(options, run, video);
+    std::printf("  time: %.1f s rendering, %.1f s in all\n",
+                std::chrono::duration<double>(rendered - begin).count(),
+                std::chrono::duration<double>(end - begin).count());
+    return kOk;
+}
+
+} // namespace photopic::cli
