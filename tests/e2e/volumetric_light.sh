@@ -2,9 +2,11 @@
 # Volumetric light as the CLI shows it: the testbed looking up at the sun through the poles renders with it,
 # the `volumetric-light` debug view written to EXR holds the raw light added, brightest at the sun and falling
 # in bands away from it; with the sun off screen it is exactly 0; `photopic image` applies it to the scene's
-# EXR (depth, camera and its sunDirection attribute); the bench lists the pass; the settings' errors too.
+# EXR (depth, camera and its sunDirection attribute); the bench lists the pass's dispatches, the screen mode's
+# and (with the bench's synthetic sun shadow map, mode auto) the shadow-map mode's; the settings' errors too.
 source "$(dirname "$0")/lib.bash"
 S="$SCRATCH"
+lacks() { ! contains "$1"; }
 FIXTURE="${PHOTOPIC_VOLUMETRIC_LIGHT_FIXTURE:?the test sets PHOTOPIC_VOLUMETRIC_LIGHT_FIXTURE to the fixture program}"
 # Still frames of the second shot (path time 1.5 s: a low camera looking up at the sun through the poles), so
 # the accumulation settles over the frames rendered.
@@ -55,11 +57,24 @@ check "reports what is missing" contains "pass 'volumetric light' skipped: the f
 expect 0 "the testbed with volumetric light" -- "$PHOTOPIC" scene testbed -o "$S/png" --frames 2 --size 96x54 \
     "${ON[@]}" "${SUN[@]}"
 check "PNG written" test -s "$S/png/frame_0001.png"
-expect 0 "bench with volumetric light" -- "$PHOTOPIC" bench --size 64x36 --frames 2 "${ON[@]}"
+expect 0 "bench with volumetric light (screen mode)" -- "$PHOTOPIC" bench --size 64x36 --frames 2 "${ON[@]}" \
+    --set volumetricLight.mode=screen
 for pass in "volumetric light source" "volumetric light march" "volumetric light resolve" \
     "volumetric light composite"; do
     check "bench lists '$pass'" contains "$pass"
 done
+check "no shadow-map dispatch in screen mode" lacks "(shadow map)"
+# The bench hands over a synthetic sun shadow map, so mode auto (the default) marches it.
+expect 0 "bench with volumetric light (auto: the shadow map)" -- "$PHOTOPIC" bench --size 64x36 --frames 2 \
+    "${ON[@]}"
+for pass in "volumetric light march (shadow map)" "volumetric light resolve (shadow map)" \
+    "volumetric light composite (shadow map)"; do
+    check "bench lists '$pass'" contains "$pass"
+done
+check "no screen-mode source with a shadow map" lacks "volumetric light source"
+expect 2 "a mode out of the list names the key" -- "$PHOTOPIC" scene testbed -o "$S/bad3" --frames 1 \
+    --size 32x18 --set volumetricLight.mode=raymarch
+check "the key is named" contains "volumetricLight.mode"
 
 expect 2 "a decay out of range names the key" -- "$PHOTOPIC" scene testbed -o "$S/bad" --frames 1 \
     --size 32x18 --set volumetricLight.decay=1.5
