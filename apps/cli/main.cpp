@@ -3,6 +3,7 @@
 #include "Bench.h"
 #include "Commands.h"
 #include "Progress.h"
+#include "SettingsReference.h"
 #include "TabletopDemo.h"
 
 #include "common/Verbosity.h"
@@ -97,6 +98,7 @@ struct Cli {
     ImageOptions imageOptions;
     CLI::App* settings = nullptr;
     bool defaults = false;
+    bool markdown = false;
     std::filesystem::path checkFile;
     std::string settingsPreset;
     CLI::App* scene = nullptr;
@@ -227,10 +229,16 @@ void addImageCommand(CLI::App& app, Cli& c) {
 }
 
 void addSettingsCommand(CLI::App& app, Cli& c) {
-    c.settings = app.add_subcommand("settings", "print the default settings or check a settings file");
+    c.settings = app.add_subcommand(
+        "settings", "print the default settings, check a settings file or print the settings reference");
     auto* defaultsFlag = c.settings->add_flag("--defaults", c.defaults, "print the full default JSON");
     auto* checkOption = c.settings->add_option("--check", c.checkFile, "validate FILE and list every issue");
+    auto* markdownFlag = c.settings->add_flag(
+        "--markdown", c.markdown,
+        "print the reference of every setting (key, type, default, range, meaning) as Markdown: "
+        "docs/settings.md");
     defaultsFlag->excludes(checkOption);
+    markdownFlag->excludes(defaultsFlag, checkOption);
     c.settings->add_option("--preset", c.settingsPreset,
                            "with --defaults: the defaults with this look (" + joined(presetNames()) +
                                "); with --check: the file over this look, as --preset reads it");
@@ -238,7 +246,8 @@ void addSettingsCommand(CLI::App& app, Cli& c) {
     c.settings->footer("Examples:\n"
                        "  photopic settings --defaults > mine.json\n"
                        "  photopic settings --defaults --preset stills   what photopic image starts from\n"
-                       "  photopic settings --check mine.json");
+                       "  photopic settings --check mine.json\n"
+                       "  photopic settings --markdown > docs/settings.md");
 }
 
 void addSceneCommand(CLI::App& app, Cli& c) {
@@ -350,8 +359,15 @@ int runCommand(Cli& c) {
         return runImage(c.imageOptions);
     }
     if (*c.settings) {
+        if (c.markdown) {
+            if (!c.settingsPreset.empty()) {
+                throw InputError("settings: --markdown lists every preset; --preset does not apply");
+            }
+            std::fputs(settingsReferenceMarkdown().c_str(), stdout);
+            return kOk;
+        }
         if (!c.defaults && c.checkFile.empty()) {
-            throw InputError("settings: --defaults or --check FILE is required");
+            throw InputError("settings: --defaults, --check FILE or --markdown is required");
         }
         return c.defaults ? runSettingsDefaults(c.settingsPreset)
                           : runSettingsCheck(c.checkFile, c.settingsPreset);

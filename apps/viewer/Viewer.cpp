@@ -2,6 +2,7 @@
 
 #include "FileScene.h"
 #include "SettingsEditor.h"
+#include "ViewerKeys.h"
 
 #include "core/settings/SettingsJson.h"
 #include "gl/Gl.h"
@@ -23,6 +24,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace photopic::viewer {
@@ -37,6 +39,9 @@ constexpr float kMinDt = 1.0f / 1000.0f;
 std::string gGlfwError;
 /// Paths dropped on the window since the last frame (GLFW calls back from glfwPollEvents, on this thread).
 std::vector<std::string> gDropped;
+/// Bound keys pressed since the last frame, by their viewerKeys() names, and wheel steps (same thread).
+std::vector<std::string> gPressed;
+double gScroll = 0.0;
 
 void onGlfwError(int code, const char* text) {
     gGlfwError = fmt::format("GLFW error 0x{:x}: {}", code, text ? text : "");
@@ -87,7 +92,10 @@ struct UiState {
     std::vector<std::string> problems; ///< why `edited` is not applied yet
     std::string message;               ///< last Save / Reset result
     float dt = 0.0f;
-    bool taaKeyDown = false; ///< T was down last frame (a press toggles once)
+    bool dragging = false; ///< the left button went down outside the panels and is still down
+    double cursorX = 0.0;  ///< window coordinates of the cursor last frame, while dragging
+    double cursorY = 0.0;
+    std::size_t scripted = 0; ///< --press events used so far
 };
 
 void row(const char* name, const std::string& value) {
@@ -195,6 +203,18 @@ void saveSettings(const Settings& settings, const std::filesystem::path& path, U
     }
 }
 
+/// Applies `ui.edited` to the pipeline when it has no problems (as an edit in the panels does).
+void applyEdited(Pipeline& pipeline, UiState& ui) {
+    ui.problems = settingsProblems(ui.edited);
+    if (ui.problems.empty()) {
+        try {
+            pipeline.setSettings(ui.edited);
+        } catch (const std::exception& e) {
+            ui.problems.emplace_back(e.what());
+        }
+    }
+}
+
 void drawPanels(Pipeline& pipeline, const ViewerOptions& options, UiState& ui) {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(300, ImGui::GetIO().DisplaySize.y - 16), ImGuiCond_FirstUseEver);
@@ -226,15 +246,13 @@ void drawPanels(Pipeline& pipeline, const ViewerOptions& options, UiState& ui) {
     if (!ui.message.empty()) {
         ImGui::TextWrapped("%s", ui.message.c_str());
     }
-    if (changed) {
-        ui.problems = settingsProblems(ui.edited);
-        if (ui.problems.empty()) {
-            try {
-                pipeline.setSettings(ui.edited); // a set-up boundary: e.g. an unreadable mask file
-            } catch (const std::exception& e) {
-                ui.problems.emplace_back(e.what());
-            }
+    if (ImGui::CollapsingHeader("Keys")) {
+        for (const KeyBinding& k : viewerKeys()) {
+            row(std::string(k.key).c_str(), std::string(k.action));
         }
+    }
+    if (changed) {
+        applyEdited(pipeline, ui); // a set-up boundary: e.g. an unreadable mask file
     }
     for (const std::string& p : ui.problems) {
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "not applied: %s", p.c_str());
@@ -374,26 +392,112 @@ private:
     Framebuffer mSource;
 };
 
-/// Keys that switch a setting live (when no widget has the keyboard): T toggles TAA.
-void handleKeys(GLFWwindow* window, Pipeline& pipeline, UiState& ui) {
-    const bool down = glfwGetKey(window, GLFW_KEY_T) == GLFW_PRESS;
-    const bool pressed = down && !ui.taaKeyDown;
-    ui.taaKeyDown = down;
-    if (!pressed || ImGui::GetIO().WantCaptureKeyboard) {
-        return;
+/// The viewerKeys() name of a GLFW key; empty for keys the viewer does not bind.
+std::string keyName(int key) {
+    if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9) {
+        return std::string(1, char('0' + (key - GLFW_KEY_0)));
     }
-    const bool taa = ui.edited.antiAliasing() == AntiAliasing::Taa;
-    ui.edited.aa.mode = taa ? AntiAliasing::None : AntiAliasing::Taa;
-    ui.edited.taa.enabled = false;
-    pipeline.setSettings(ui.edited);
-    ui.message = taa ? "TAA off (T)" : "TAA on (T)";
+    if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z) {
+        return std::string(1, char('A' + (key - GLFW_KEY_A)));
+    }
+    return key == GLFW_KEY_F12 ? "F12" : "";
 }
 
-void drawUi(GLFWwindow* window, Pipeline& pipeline, const ViewerOptions& options, UiState& ui) {
+/// Installed before ImGui's own callbacks, which then call these after theirs.
+void installInputCallbacks(GLFWwindow* window) {
+    glfwSetKeyCallback(window, [](GLFWwindow*, int key, int, int action, int) {
+        if (action == GLFW_PRESS) {
+            if (std::string name = keyName(key); !name.empty()) {
+                gPressed.push_back(std::move(name));
+            }
+        }
+    });
+    glfwSetScrollCallback(window, [](GLFWwindow*, double, double dy) { gScroll += dy; });
+}
+
+void report(UiState& ui, std::string message) {
+    std::printf("photopic-view: %s\n", message.c_str());
+    std::fflush(stdout);
+    ui.message = std::move(message);
+}
+
+/// One key press: a toggle of the live settings, or F12's save.
+void pressKey(const std::string& key, Pipeline& pipeline, const ViewerOptions& options, UiState& ui) {
+    if (key == "F12") {
+        saveSettings(pipeline.settings(), options.save, ui);
+        report(ui, ui.message + " (F12)");
+        return;
+    }
+    if (std::optional<std::string> done = applyToggleKey(key, ui.edited)) {
+        applyEdited(pipeline, ui);
+        report(ui, *done);
+    }
+}
+
+void orbitCamera(Scene& scene, double dx, double dy) {
+    if (InteractiveCamera* camera = scene.interactiveCamera()) {
+        // Dragging right turns the scene with the cursor: the eye moves to its left.
+        camera->orbit(float(-dx) * kOrbitRadiansPerPixel, float(dy) * kOrbitRadiansPerPixel);
+    }
+}
+
+void zoomCamera(Scene& scene, double steps) {
+    if (InteractiveCamera* camera = scene.interactiveCamera(); camera && steps != 0.0) {
+        camera->zoom(std::pow(kZoomPerWheelStep, float(steps))); // wheel away from the user: closer
+    }
+}
+
+/// --press: one scripted event per frame from frame 1, through the same paths as the keyboard and mouse.
+void scriptedInput(const FrameTime& time, Scene& scene, Pipeline& pipeline, const ViewerOptions& options,
+                   UiState& ui) {
+    if (time.frameIndex == 0 || ui.scripted >= options.press.size()) {
+        return;
+    }
+    const ScriptedEvent& e = options.press[ui.scripted++];
+    if (e.kind == ScriptedEvent::Kind::Key) {
+        pressKey(e.key, pipeline, options, ui);
+    } else if (e.kind == ScriptedEvent::Kind::Drag) {
+        orbitCamera(scene, e.x, e.y);
+    } else {
+        zoomCamera(scene, e.x);
+    }
+}
+
+/// Keys and mouse since the last frame, unless a panel has the keyboard (typing) or the pointer.
+void handleInput(GLFWwindow* window, Scene& scene, Pipeline& pipeline, const ViewerOptions& options,
+                 UiState& ui) {
+    const ImGuiIO& io = ImGui::GetIO();
+    std::vector<std::string> keys = std::exchange(gPressed, {});
+    if (!io.WantCaptureKeyboard) {
+        for (const std::string& key : keys) {
+            pressKey(key, pipeline, options, ui);
+        }
+    }
+    const double scroll = std::exchange(gScroll, 0.0);
+    if (!io.WantCaptureMouse) {
+        zoomCamera(scene, scroll);
+    }
+    const bool down = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    double x = 0.0, y = 0.0;
+    glfwGetCursorPos(window, &x, &y);
+    if (down && !ui.dragging && !io.WantCaptureMouse) {
+        ui.dragging = true;
+    } else if (down && ui.dragging) {
+        orbitCamera(scene, x - ui.cursorX, y - ui.cursorY);
+    } else if (!down) {
+        ui.dragging = false;
+    }
+    ui.cursorX = x;
+    ui.cursorY = y;
+}
+
+void drawUi(GLFWwindow* window, Scene& scene, Pipeline& pipeline, const ViewerOptions& options, UiState& ui,
+            const FrameTime& time) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    handleKeys(window, pipeline, ui);
+    handleInput(window, scene, pipeline, options, ui);
+    scriptedInput(time, scene, pipeline, options, ui);
     drawPanels(pipeline, options, ui);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -422,6 +526,7 @@ int run(const ViewerOptions& givenOptions) {
     glfwSetDropCallback(window.get(), [](GLFWwindow*, int count, const char** paths) {
         gDropped.assign(paths, paths + std::max(count, 0));
     });
+    installInputCallbacks(window.get());
     // From here on the window's context is current: the pipeline runs in the host's context.
     Settings settings;
     std::unique_ptr<Scene> scene = makeViewerScene(options, overrides, settings, std::move(files));
@@ -461,7 +566,7 @@ int run(const ViewerOptions& givenOptions) {
         int fbw = 0, fbh = 0;
         glfwGetFramebufferSize(window.get(), &fbw, &fbh);
         presenter.present(display, fbw, fbh);
-        drawUi(window.get(), pipeline, options, ui);
+        drawUi(window.get(), *scene, pipeline, options, ui, time);
 
         const bool lastFrame = options.frames > 0 && frame + 1 >= std::uint64_t(options.frames);
         if (lastFrame && !options.screenshot.empty()) {

@@ -3,6 +3,8 @@
 // every setting live, the Dynamic Exposure controls (adaptation bounds and timing) and a read-only
 // debug readout of the selected subject.
 
+#include "ViewerKeys.h"
+
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -43,7 +45,8 @@ struct ViewerOptions {
     std::optional<float> fixedDt;     ///< seconds per frame; unset: the measured frame delta, clamped
     std::filesystem::path screenshot; ///< with frames: the last window frame as PNG
     std::filesystem::path save = "photopic_view.json";
-    bool saveGiven = false; ///< --save was named: with --frames, save on exit
+    bool saveGiven = false;           ///< --save was named: with --frames, save on exit
+    std::vector<ScriptedEvent> press; ///< --press: one event per frame from frame 1
 };
 
 /// Opens the window and runs until it is closed (or `frames` have run). Throws InputError, DisplayError,

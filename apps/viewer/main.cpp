@@ -9,6 +9,7 @@
 #include "gl/Gl.h"
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
 #include <cstdio>
 
@@ -25,6 +26,15 @@ void parseSize(const std::string& text, ViewerOptions& options) {
     options.height = size->height;
 }
 
+/// The key map for --help, from the same list the viewer's Keys panel shows.
+std::string keysHelp() {
+    std::string out = "Keys (when no panel has the keyboard) and mouse (outside the panels):\n";
+    for (const KeyBinding& k : viewerKeys()) {
+        out += fmt::format("  {:<6} {}\n", k.key, k.action);
+    }
+    return out;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -34,7 +44,9 @@ int main(int argc, char** argv) {
     app.footer("Examples:\n"
                "  photopic-view data/Desk.exr                  one image; drop other files on the window\n"
                "  photopic-view shot_*.exr                     a sequence, played with adaptation\n"
-               "  photopic-view --scene testbed --set aa.mode=taa");
+               "  photopic-view --scene testbed --set aa.mode=taa\n"
+               "\n" +
+               keysHelp());
     app.set_version_flag("--version", std::string("photopic-view ") + PHOTOPIC_VERSION);
     ViewerOptions options;
     std::string size = "1280x720";
@@ -59,6 +71,11 @@ int main(int argc, char** argv) {
             ->capture_default_str();
     auto* shotOption =
         app.add_option("--screenshot", options.screenshot, "with --frames: the last window frame as PNG");
+    std::vector<std::string> press;
+    app.add_option("--press", press,
+                   "scripted input, one event per frame from frame 1: keys (B, X, F12, ...), drag:DX:DY "
+                   "(pixels), wheel:STEPS")
+        ->delimiter(',');
     photopic::Verbosity verbosity;
     photopic::addVerbosityOptions(app, verbosity);
     try {
@@ -82,6 +99,13 @@ int main(int argc, char** argv) {
 
     try {
         parseSize(size, options);
+        for (const std::string& item : press) {
+            try {
+                options.press.push_back(parseScriptedEvent(item));
+            } catch (const std::invalid_argument& e) {
+                throw InputError(e.what());
+            }
+        }
         return run(options);
     } catch (const InputError& e) {
         std::fprintf(stderr, "photopic-view: %s\n", e.what());

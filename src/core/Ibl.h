@@ -24,6 +24,7 @@
 //   Y2-1 = 1.092548 yz, Y20 = 0.315392 (3 z^2 - 1), Y21 = 1.092548 xz, Y22 = 0.546274 (x^2 - y^2). Irradiance
 //   needs no preferred axis: the cosine convolution acts on each band alone.
 
+#include "core/Brdf.h"
 #include "core/Image.h"
 
 #include <glm/glm.hpp>
@@ -87,6 +88,56 @@ struct SplitSumLut {
 /// grazing column (samples reflected below the horizon are lost there); 4096 samples by 0.0016 and 0.016.
 /// 128 x 128 x 1024 takes about 1 s on one core (optimised build), so tests use smaller tables.
 [[nodiscard]] SplitSumLut splitSumLut(int size, int sampleCount);
+
+// --- The diffuse lobe's Fresnel weight ---
+
+/// The cosine-weighted mean of Schlick's weight over the hemisphere of light directions for a view at
+/// n.v = NdotV: W = integral of (1 - v.h)^5 (n.l) / pi dl with h = normalize(v + l). The diffuse lobe of
+/// brdf(), (1 - F) c / pi with 1 - F = (1 - F0) (1 - w), reflects c (1 - F0) (1 - W) of a uniform
+/// environment, so W is what image-based lighting multiplies its diffuse term by. It depends on n.v alone
+/// (not on roughness). Estimated with sampleCount cosine-distributed Hammersley directions; NdotV is clamped
+/// to [1e-4, 1]. W is 8e-5 at normal incidence, 0.011 at n.v = 0.3 and 0.024 at n.v = 0.05.
+[[nodiscard]] float diffuseSchlickWeight(float NdotV, int sampleCount) noexcept;
+
+// --- Monte-Carlo reference of the BRDF under an environment ---
+
+/// An equirectangular environment as a piecewise-constant radiance (each texel constant over its patch of
+/// the sphere) with a sampler of directions in proportion to max(r, g, b) times the texel's solid angle:
+/// the reference the GPU's prefiltered lighting is measured against.
+class EnvironmentDistribution {
+public:
+    /// Throws std::invalid_argument for an empty image. Negative and non-finite texels count as 0.
+    explicit EnvironmentDistribution(const ImageF& environment);
+
+    /// Radiance arriving from unit direction d (the texel that d falls in, no filtering).
+    [[nodiscard]] glm::vec3 radiance(glm::vec3 d) const noexcept;
+    /// A direction drawn from xi in [0, 1)^2: xi.x picks the texel by the cumulative table and places the
+    /// direction across its longitudes, xi.y across its band of cos theta. Returns (direction, pdf) with the
+    /// density per steradian; pdf 0 when the whole environment is black.
+    [[nodiscard]] glm::vec4 sample(glm::vec2 xi) const noexcept;
+    /// Density per steradian with which sample() returns direction d.
+    [[nodiscard]] float pdf(glm::vec3 d) const noexcept;
+
+private:
+    [[nodiscard]] std::size_t texelOf(glm::vec3 d) const noexcept;
+
+    int mWidth = 0;
+    int mHeight = 0;
+    std::vector<glm::vec3> mRadiance;   ///< row-major, rows top to bottom
+    std::vector<double> mCdf;           ///< inclusive running sum of the texel weights, last = 1
+    std::vector<float> mBandSolidAngle; ///< solid angle of one texel of each row
+    double mTotal = 0.0;                ///< sum of max(r, g, b) x solid angle
+};
+
+/// Radiance reflected towards v by a surface with normal n and the metallic-roughness BRDF (brdf()) lit by
+/// the environment: integral of brdf(n, v, l) L(l) (n.l) dl, estimated by multiple importance sampling with
+/// the balance heuristic over three strategies of samplesPerStrategy directions each: the environment's
+/// own distribution (finds the sun), GGX reflection (the specular lobe) and cosine (the diffuse lobe). The
+/// points are Hammersley sets shifted by a random rotation (Cranley-Patterson) drawn from `seed`, so the
+/// estimate is deterministic for a seed. Zero when n.v <= 0.
+[[nodiscard]] glm::vec3 integrateEnvironmentBrdf(const EnvironmentDistribution& environment, glm::vec3 n,
+                                                 glm::vec3 v, const PbrMaterial& material,
+                                                 int samplesPerStrategy, std::uint32_t seed) noexcept;
 
 // --- Equirectangular environments ---
 

@@ -36,7 +36,7 @@ struct Settings {
     OutputSettings output;
     AutoExposureSettings autoExposure;
     DebugSettings debug;
-    Quality quality = Quality::High; ///< tier: ultra, high, medium, low, legacy (LDR path), default high
+    Quality quality = Quality::High;
     BloomSettings bloom;
     ColorGradingSettings colorGrading;
     FxaaSettings fxaa;
@@ -90,7 +90,7 @@ struct Settings {
         v.object("output", output);
         v.object("autoExposure", autoExposure);
         v.object("debug", debug);
-        v.field("quality", quality, qualityNames());
+        v.field("quality", quality, qualityNames(), "tier of every effect's cost; legacy is the LDR path");
         v.object("bloom", bloom);
         v.object("colorGrading", colorGrading);
         v.object("fxaa", fxaa);

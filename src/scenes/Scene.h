@@ -5,8 +5,10 @@
 // normals, motion and its camera. The caller hands them to Pipeline::execute as they are.
 
 #include "core/Settings.h"
+#include "core/settings/SettingsDescriber.h"
 #include "gl/Objects.h"
 #include "pipeline/Pipeline.h"
+#include "scenes/InteractiveCamera.h"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -54,12 +56,21 @@ public:
     /// 3D scene's beginFrame and lighting stage), writes one value per telemetry column into `telemetry`, and
     /// returns the frame's inputs for Pipeline::execute (textures and camera valid until the next call).
     virtual FrameInputs render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) = 0;
+
+    /// The camera an interactive host steers (photopic-view: drag to orbit, wheel to zoom), or nullptr when
+    /// the scene has none (2D scenes, scripted cameras). Valid for the scene's lifetime; a change shows from
+    /// the next render().
+    [[nodiscard]] virtual InteractiveCamera* interactiveCamera() { return nullptr; }
 };
 
 struct SceneInfo {
     std::string name;
     std::string description;
     std::function<std::unique_ptr<Scene>()> make;
+    /// The scene's own settings for the settings reference (docs/settings.md), keys "NAME.key": usually
+    /// describeSceneSettings<ItsSettingsStruct> (scenes/SceneSettings.h). A plain function, not a Scene
+    /// method, so the reference is built without a GL context.
+    std::vector<SettingDoc> (*describeSettings)(std::string_view sceneName) = nullptr;
 };
 
 /// Every built-in scene (scenes/SceneRegistry.cpp lists them).

@@ -2,6 +2,8 @@
 
 #include "core/settings/SettingsJson.h"
 
+#include "scenes/SceneSettings.h"
+
 #include "scenes/canvas/CanvasScene.h"
 #include "scenes/gradient/GradientScene.h"
 #include "scenes/tabletop/TabletopScene.h"
@@ -15,17 +17,17 @@ const std::vector<SceneInfo>& builtInScenes() {
     // Scenes are listed here explicitly: self-registration from static objects is dropped by static linking.
     static const std::vector<SceneInfo> kScenes = {
         {"gradient", "a drifting HDR gradient with a bright sun disc (smoke test of the scene runner)",
-         makeGradientScene},
+         makeGradientScene, describeSceneSettings<GradientSceneSettings>},
         {"canvas", "a painted canvas lit by the device's tilt, glitter sparkle, tile-based shading",
-         makeCanvasScene},
+         makeCanvasScene, describeSceneSettings<CanvasSceneSettings>},
         {"tabletop", "a battle map: a player token walks from a torch-lit building into the sun and back",
-         makeTabletopScene},
+         makeTabletopScene, describeSceneSettings<TabletopSceneSettings>},
         {"testbed",
          "an analytic 3D scene (spheres, boxes, poles, a wire fence, a checker wall, a metal strip, a "
          "spinning "
          "and a moving object; a pan, a dolly and a cut) with depth, normals, motion and the camera; --truth "
          "KIND writes its CPU ray-traced references",
-         makeTestbedScene},
+         makeTestbedScene, describeSceneSettings<TestbedSceneSettings>},
     };
     return kScenes;
 }

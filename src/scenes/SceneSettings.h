@@ -3,6 +3,7 @@
 // visit(V&).
 
 #include "core/settings/JsonVisitors.h"
+#include "core/settings/SettingsDescriber.h"
 
 #include <string>
 #include <string_view>
@@ -26,6 +27,13 @@ std::vector<SettingsIssue> applySceneOverride(S& settings, std::string_view scen
         settings = std::move(candidate);
     }
     return issues;
+}
+
+/// The reference rows of a scene's settings struct (keys "NAME.key", defaults of a default-made struct): what
+/// a SceneInfo's describeSettings points at, so the reference needs no scene instance (no GL context).
+template <class S>
+std::vector<SettingDoc> describeSceneSettings(std::string_view sceneName) {
+    return describeSettings(S{}, sceneName);
 }
 
 template <class S>

@@ -50,6 +50,71 @@ check "saved settings written" test -s "$S/view.json"
 expect 0 "saved settings pass photopic settings --check" -- "$PHOTOPIC" settings --check "$S/view.json"
 check "saved settings keep the --set value" grep -q '"tauDarken": 0.5' "$S/view.json"
 
+# The key map and F12, through --press (the same path as a key press): each toggle is logged, F12 writes the
+# --save file, named in the log, and that file loads back as the same settings.
+expect 0 "keys B, X, 0, then F12" -- "$VIEW" --scene testbed --size 160x90 --frames 6 --fixed-dt 0.0333 \
+    --press B,X,0,F12 --save "$S/f12.json"
+check "B is logged" contains "bloom off (B)"
+check "X is logged" contains "auto exposure off (X)"
+check "0 is logged" contains "tone curve aces (0)"
+check "F12 names the file it wrote" contains "saved $S/f12.json (F12)"
+check "the file holds the toggled settings" python3 - "$S/f12.json" <<'PY'
+import json, sys
+p = json.load(open(sys.argv[1]))["postEffects"]
+sys.exit(0 if (p["bloom"]["enabled"], p["autoExposure"]["enabled"], p["tonemapping"]["mode"]) == (False, False, "aces") else 1)
+PY
+expect 0 "the F12 file passes photopic settings --check" -- "$PHOTOPIC" settings --check "$S/f12.json"
+expect 0 "loaded back, F12 writes it again" -- "$VIEW" --scene testbed --size 160x90 --frames 2 --fixed-dt 0.0333 \
+    --settings "$S/f12.json" --press F12 --save "$S/f12_again.json"
+check "... byte for byte the same settings" cmp -s "$S/f12.json" "$S/f12_again.json"
+expect 2 "an unknown --press key exits 2" -- "$VIEW" --frames 1 --press Q
+check "names it" contains "'Q' is not a key"
+
+# Orbit camera: a drag and the wheel move the testbed's camera (held still by cameraSpeed=0 so that only the
+# input moves it); the same drag on a scene without an interactive camera changes nothing. Compared right of
+# the panels (x >= 330), as mean |difference| per channel.
+cat > "$S/right_diff.py" <<'PY'
+import struct, sys, zlib
+def read(path):
+    data, pos, idat = open(path, "rb").read(), 8, b""
+    while pos < len(data):
+        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + n]
+        if kind == b"IHDR":
+            w, h, depth, ctype = struct.unpack(">IIBB", body[:10])
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + n
+    bpp = {2: 3, 6: 4}[ctype]
+    raw, stride, prev, rows = zlib.decompress(idat), w * bpp, bytearray(w * bpp), []
+    for y in range(h):
+        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+            p = a + b - c
+            pred = [0, a, b, (a + b) // 2, a if abs(p - a) <= abs(p - b) and abs(p - a) <= abs(p - c) else (b if abs(p - b) <= abs(p - c) else c)][f]
+            line[i] = (line[i] + pred) & 255
+        rows.append(bytes(line))
+        prev = line
+    return w, h, bpp, rows
+(w, h, b1, r1), (_, _, b2, r2) = read(sys.argv[1]), read(sys.argv[2])
+d = [abs(r1[y][x * b1 + c] - r2[y][x * b2 + c]) for y in range(h) for x in range(330, w) for c in range(3)]
+mean = sum(d) / len(d)
+print("mean |diff| right of the panels", round(mean, 3))
+sys.exit(0 if (mean > float(sys.argv[4]) if sys.argv[3] == "more" else mean <= float(sys.argv[4])) else 1)
+PY
+STILL=(--scene testbed --size 480x200 --frames 3 --fixed-dt 0.0333 --set testbed.cameraSpeed=0)
+expect 0 "testbed, no input" -- "$VIEW" "${STILL[@]}" --screenshot "$S/still.png"
+expect 0 "testbed, a drag" -- "$VIEW" "${STILL[@]}" --press drag:120:0 --screenshot "$S/dragged.png"
+expect 0 "testbed, the wheel" -- "$VIEW" "${STILL[@]}" --press wheel:4 --screenshot "$S/zoomed.png"
+check "the drag turns the view (mean |diff| > 4)" python3 "$S/right_diff.py" "$S/still.png" "$S/dragged.png" more 4
+check "the wheel zooms the view (mean |diff| > 4)" python3 "$S/right_diff.py" "$S/still.png" "$S/zoomed.png" more 4
+GRAD=(--scene gradient --size 480x200 --frames 3 --fixed-dt 0.0333)
+expect 0 "gradient, no input" -- "$VIEW" "${GRAD[@]}" --screenshot "$S/g.png"
+expect 0 "gradient, a drag" -- "$VIEW" "${GRAD[@]}" --press drag:120:0 --screenshot "$S/g_dragged.png"
+check "a scene without an interactive camera ignores it" python3 "$S/right_diff.py" "$S/g.png" "$S/g_dragged.png" less 0
+
 expect 2 "bad --set exits 2" -- "$VIEW" --frames 1 --set autoExposure.tauDarken=-3
 check "names the bad key" contains "tauDarken"
 expect 2 "bad scene --set exits 2" -- "$VIEW" --scene tabletop --frames 1 --set tabletop.nosuchkey=1

@@ -49,28 +49,35 @@ inline std::span<const std::string_view> aoApplyNames() {
 }
 
 struct AmbientOcclusionSettings {
-    bool enabled = false; ///< default off
-    float radius = 1.0f;  ///< world units, [0.001, 100], default 1: occluders farther than this do not count
-    /// World units, [0, 1], default 0: the surface point is lifted this far along its normal before the
-    /// horizons are searched, so surfaces less than `bias` above the tangent plane do not occlude (depth
-    /// buffer acne on coarse geometry). 0 matches the ray tracer's reference.
+    bool enabled = false;
+    float radius = 1.0f;
     float bias = 0.0f;
-    /// [0.1, 8], default 1: visibility^power, an artistic shaping applied after the raw visibility (the
-    /// lighting stage's texture stays raw and hands the exponent to the host; the multiply pass applies it).
     float power = 1.0f;
-    AoQuality quality = AoQuality::High;          ///< low, medium, high (default), ultra
-    AoResolution resolution = AoResolution::Full; ///< full (default), half
-    AoApply apply = AoApply::Lighting;            ///< lighting (default), multiply
+    AoQuality quality = AoQuality::High;
+    AoResolution resolution = AoResolution::Full;
+    AoApply apply = AoApply::Lighting;
 
     template <class V>
     void visit(V& v) {
-        v.field("enabled", enabled);
-        v.field("radius", radius, Range{0.001, 100});
-        v.field("bias", bias, Range{0, 1});
-        v.field("power", power, Range{0.1, 8});
-        v.field("quality", quality, aoQualityNames());
-        v.field("resolution", resolution, aoResolutionNames());
-        v.field("apply", apply, aoApplyNames());
+        v.field("enabled", enabled, "turns ground-truth-style ambient occlusion (horizon search) on");
+        v.field("radius", radius, Range{0.001, 100}, "world units: occluders farther than this do not count");
+        v.field("bias", bias, Range{0, 1},
+                "world units: the surface point is lifted this far along its normal before the horizons are "
+                "searched, so surfaces less than `bias` above the tangent plane do not occlude (depth buffer "
+                "acne on coarse geometry). 0 matches the ray tracer's reference");
+        v.field(
+            "power", power, Range{0.1, 8},
+            "visibility^power, an artistic shaping applied after the raw visibility (the lighting stage's "
+            "texture stays raw and hands the exponent to the host; the multiply pass applies it)");
+        v.field("quality", quality, aoQualityNames(),
+                "slices x steps per side of each slice: low 1 x 2, medium 2 x 2, high 3 x 3, ultra 9 x 3");
+        v.field("resolution", resolution, aoResolutionNames(),
+                "full: one horizon search per pixel; half: one per 2 x 2 pixels, upsampled by the "
+                "depth-aware denoiser");
+        v.field("apply", apply, aoApplyNames(),
+                "lighting: the lighting stage hands the visibility to the host, which multiplies its "
+                "indirect light only; multiply: a post pass multiplies the scene colour by it before TAA and "
+                "metering (darkens direct light too)");
     }
 };
 

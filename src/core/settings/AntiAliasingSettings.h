@@ -37,17 +37,19 @@ inline std::span<const std::string_view> ssaaFilterNames() {
 }
 
 struct AntiAliasingSettings {
-    /// none, fxaa, smaa, taa, ssaa, taa+smaa; default none. The older switches `fxaa.enabled` and
-    /// `taa.enabled` still select FXAA and TAA when this is none.
     AntiAliasing mode = AntiAliasing::None;
-    int level = 2;                           ///< SSAA: 2^level sub-frames per frame, [1, 4], default 2
-    SsaaFilter ssaaFilter = SsaaFilter::Box; ///< SSAA reconstruction: box (default), blackman-harris
+    int level = 2;
+    SsaaFilter ssaaFilter = SsaaFilter::Box;
 
     template <class V>
     void visit(V& v) {
-        v.field("mode", mode, antiAliasingNames());
-        v.field("level", level, Range{1, 4});
-        v.field("ssaaFilter", ssaaFilter, ssaaFilterNames());
+        v.field("mode", mode, antiAliasingNames(),
+                "the anti-aliasing method. The older switches `fxaa.enabled` and `taa.enabled` still select "
+                "FXAA and TAA when this is none");
+        v.field("level", level, Range{1, 4}, "SSAA: 2^level sub-frames per frame");
+        v.field("ssaaFilter", ssaaFilter, ssaaFilterNames(),
+                "SSAA reconstruction: box weighs every sub-frame alike, blackman-harris weighs those near "
+                "the pixel centre more");
     }
 };
 
@@ -60,14 +62,14 @@ inline std::span<const std::string_view> smaaQualityNames() {
 
 /// SMAA 1x (Jimenez et al. 2012) on the display-referred image.
 struct SmaaSettings {
-    /// low, medium, high, ultra; default high. The reference presets: luma threshold 0.15 / 0.1 / 0.1 /
-    /// 0.05, orthogonal search steps 4 / 8 / 16 / 32, diagonal steps - / - / 8 / 16, corner rounding
-    /// - / - / 25% / 25%.
     SmaaQuality quality = SmaaQuality::High;
 
     template <class V>
     void visit(V& v) {
-        v.field("quality", quality, smaaQualityNames());
+        v.field(
+            "quality", quality, smaaQualityNames(),
+            "sMAA preset. The reference presets: luma threshold 0.15 / 0.1 / 0.1 / 0.05, orthogonal search "
+            "steps 4 / 8 / 16 / 32, diagonal steps - / - / 8 / 16, corner rounding - / - / 25% / 25%");
     }
 };
 
@@ -83,25 +85,30 @@ inline std::span<const std::string_view> historyFilterNames() {
 
 /// Temporal anti-aliasing (Karis 2014; Salvi 2016 variance clipping; Playdead's adaptive feedback).
 struct TaaSettings {
-    bool enabled = false;       ///< default off; selects TAA when aa.mode is none
-    float blendFactor = 0.9f;   ///< [0, 0.99], default 0.9: the history's weight in the blend
-    float varianceGamma = 1.0f; ///< [0.5, 2], default 1: the clip box is mean +- gamma * sigma (YCoCg)
-    /// Default off: the history weight rises from feedbackMin to feedbackMax where the history agrees with
-    /// the current frame (less blur on moving edges, longer accumulation where it is stable).
+    bool enabled = false;
+    float blendFactor = 0.9f;
+    float varianceGamma = 1.0f;
     bool adaptiveFeedback = false;
-    float feedbackMin = 0.88f;                               ///< [0, 0.99], default 0.88
-    float feedbackMax = 0.97f;                               ///< [0, 0.99], default 0.97
-    HistoryFilter historyFilter = HistoryFilter::CatmullRom; ///< catmull-rom (default), bilinear
+    float feedbackMin = 0.88f;
+    float feedbackMax = 0.97f;
+    HistoryFilter historyFilter = HistoryFilter::CatmullRom;
 
     template <class V>
     void visit(V& v) {
-        v.field("enabled", enabled);
-        v.field("blendFactor", blendFactor, Range{0, 0.99});
-        v.field("varianceGamma", varianceGamma, Range{0.5, 2});
-        v.field("adaptiveFeedback", adaptiveFeedback);
-        v.field("feedbackMin", feedbackMin, Range{0, 0.99});
-        v.field("feedbackMax", feedbackMax, Range{0, 0.99});
-        v.field("historyFilter", historyFilter, historyFilterNames());
+        v.field("enabled", enabled, "turns TAA on; selects TAA when aa.mode is none");
+        v.field("blendFactor", blendFactor, Range{0, 0.99}, "the history's weight in the blend");
+        v.field("varianceGamma", varianceGamma, Range{0.5, 2},
+                "the clip box is mean +- gamma * sigma (YCoCg)");
+        v.field("adaptiveFeedback", adaptiveFeedback,
+                "the history weight rises from feedbackMin to feedbackMax where the history agrees with the "
+                "current frame (less blur on moving edges, longer accumulation where it is stable)");
+        v.field("feedbackMin", feedbackMin, Range{0, 0.99},
+                "adaptive feedback: the history weight where the history disagrees");
+        v.field("feedbackMax", feedbackMax, Range{0, 0.99},
+                "adaptive feedback: the history weight where the history agrees");
+        v.field("historyFilter", historyFilter, historyFilterNames(),
+                "how the history is fetched: catmull-rom keeps a moving image sharp, bilinear is cheaper but "
+                "blurs a little at every reprojection");
         v.require(feedbackMin <= feedbackMax, "feedbackMin", "must not exceed feedbackMax");
     }
 };

@@ -53,58 +53,56 @@ inline std::span<const std::string_view> adaptationModeNames() {
 struct AutoExposureSettings {
     /// Spot metering: a disc in image UV (u right, v down, (0, 0) = top-left of the image).
     struct SpotMetering {
-        float u = 0.5f;      ///< UV, [0, 1], default 0.5: disc centre, horizontal
-        float v = 0.5f;      ///< UV, [0, 1], default 0.5: disc centre, vertical (v = 0: top row)
-        float radius = 0.1f; ///< image heights, [0, 1], default 0.1: disc radius
-        int taps = 9;        ///< 1, 5, 9 or 13, default 9: the first `taps` entries of kSpotTaps
+        float u = 0.5f;
+        float v = 0.5f;
+        float radius = 0.1f;
+        int taps = 9;
 
         template <class V>
         void visit(V& vis) { // not `v`: that is a field here
-            vis.field("u", u, Range{0, 1});
-            vis.field("v", v, Range{0, 1});
-            vis.field("radius", radius, Range{0, 1});
-            vis.field("taps", taps, Range{1, 13});
+            vis.field("u", u, Range{0, 1}, "UV: disc centre, horizontal");
+            vis.field("v", v, Range{0, 1}, "UV: disc centre, vertical (v = 0: top row)");
+            vis.field("radius", radius, Range{0, 1}, "image heights: disc radius");
+            vis.field("taps", taps, Range{1, 13}, "1, 5, 9 or 13: the first `taps` entries of kSpotTaps");
             vis.require(taps == 1 || taps == 5 || taps == 9 || taps == 13, "taps", "must be 1, 5, 9 or 13");
         }
     };
 
     /// Mask metering: per-pixel weights from a grey image (its Rec.709 luma; negative, non-finite -> 0).
     struct MaskMetering {
-        std::string path; ///< file, default empty: grey image stretched over the frame, sampled nearest
+        std::string path;
 
         template <class V>
         void visit(V& v) {
-            v.field("path", path);
+            v.field("path", path, "file (empty: none): grey image stretched over the frame, sampled nearest");
         }
     };
 
-    bool enabled = false; ///< default off; off: exposure = 2^tonemapping.exposure
-    MeteringMode metering = MeteringMode::Average;           ///< what is measured, default average
-    AdaptationMode adaptation = AdaptationMode::Exponential; ///< how exposure follows, default exponential
+    bool enabled = false;
+    MeteringMode metering = MeteringMode::Average;
+    AdaptationMode adaptation = AdaptationMode::Exponential;
 
-    float keyValue = 0.18f;      ///< scene-linear, [0.001, 10], default 0.18: what the metered L maps to
-    float compensationEV = 0.0f; ///< EV, [-10, 10], default 0: added to the target before clamping
-    float minEV = -2.0f;         ///< EV, [-20, 20], default -2 (x0.25): lowest, <= maxEV
-    float maxEV = 2.0f;          ///< EV, [-20, 20], default 2 (x4): highest auto exposure
-    /// [log2 L, EV] points, x and y in [-32, 32], x strictly increasing, at most 16, default empty (none):
-    /// piecewise linear, flat past the ends; its EV at log2 L is added to the target.
+    float keyValue = 0.18f;
+    float compensationEV = 0.0f;
+    float minEV = -2.0f;
+    float maxEV = 2.0f;
     CurvePoints compensationCurve;
 
     // Rates by direction. Exposure rises when the scene darkens, falls when it brightens; the eye adapts to
     // light faster than to dark (tauBrighten 1 s / tauDarken 0.3 s; Unreal "Speed Up"/"Speed Down" and Bevy's
     // speed_brighten/speed_darken, 3 / 1 EV/s, are named after the scene, as speedUp/speedDown are here).
-    float tauBrighten = 1.0f;  ///< s, [0.001, 30], default 1: time constant while exposure rises
-    float tauDarken = 0.3f;    ///< s, [0.001, 30], default 0.3: time constant while exposure falls
-    float speedUp = 3.0f;      ///< 1/s (speed), EV/s (hybrid), [0.001, 100], default 3: scene brightens
-    float speedDown = 1.0f;    ///< 1/s (speed), EV/s (hybrid), [0.001, 100], default 1: scene darkens
-    float transitionEV = 1.5f; ///< EV, [0.01, 20], default 1.5: hybrid turns exponential this close
-    float deadbandEV = 0.02f;  ///< EV, [0, 4], default 0.02: adapt beyond it, stop below a tenth of it
-    float maxDt = 0.1f;        ///< s, [0.001, 10], default 0.1: frame time is clamped to [0, maxDt]
+    float tauBrighten = 1.0f;
+    float tauDarken = 0.3f;
+    float speedUp = 3.0f;
+    float speedDown = 1.0f;
+    float transitionEV = 1.5f;
+    float deadbandEV = 0.02f;
+    float maxDt = 0.1f;
 
-    float histogramLog2Min = -12.0f; ///< log2 L, [-32, 32], default -12: low edge of bin 1, < log2Max
-    float histogramLog2Max = 16.0f;  ///< log2 L, [-32, 32], default 16: high edge of bin 254
-    float lowPercent = 10.0f;        ///< %, [0, 100], default 10: darkest share left out of the mean
-    float highPercent = 90.0f;       ///< %, [0, 100], default 90: window top, > lowPercent
+    float histogramLog2Min = -12.0f;
+    float histogramLog2Max = 16.0f;
+    float lowPercent = 10.0f;
+    float highPercent = 90.0f;
 
     SpotMetering spot; ///< disc for metering = spot
     MaskMetering mask; ///< weight image for metering = mask
@@ -125,33 +123,44 @@ struct AutoExposureSettings {
 
     template <class V>
     void visit(V& v) {
-        v.field("enabled", enabled);
-        v.field("metering", metering, meteringModeNames());
-        v.field("adaptation", adaptation, adaptationModeNames());
+        v.field("enabled", enabled, "turns auto exposure on; off: exposure = 2^tonemapping.exposure");
+        v.field("metering", metering, meteringModeNames(), "what is measured");
+        v.field("adaptation", adaptation, adaptationModeNames(), "how exposure follows");
         // The older keys' aliases come before the fields they feed: a file holding both keeps the new key.
-        v.alias("speed", Range{0.001, 100}, [&](float s) {
-            speedUp = s;
-            speedDown = s;
-        });
+        v.alias(
+            "speed", Range{0.001, 100},
+            [&](float s) {
+                speedUp = s;
+                speedDown = s;
+            },
+            "older key: sets speedUp and speedDown");
         // 2^-20 .. 2^20: the multipliers whose log2 lies in minEV/maxEV's range.
-        v.alias("min", Range{9.5367431640625e-07, 1048576.0}, [&](float m) { minEV = std::log2(m); });
-        v.alias("max", Range{9.5367431640625e-07, 1048576.0}, [&](float m) { maxEV = std::log2(m); });
-        v.field("keyValue", keyValue, Range{0.001, 10});
-        v.field("compensationEV", compensationEV, Range{-10, 10});
-        v.field("minEV", minEV, Range{-20, 20});
-        v.field("maxEV", maxEV, Range{-20, 20});
-        v.field("compensationCurve", compensationCurve, Range{-32, 32});
-        v.field("tauBrighten", tauBrighten, Range{0.001, 30});
-        v.field("tauDarken", tauDarken, Range{0.001, 30});
-        v.field("speedUp", speedUp, Range{0.001, 100});
-        v.field("speedDown", speedDown, Range{0.001, 100});
-        v.field("transitionEV", transitionEV, Range{0.01, 20});
-        v.field("deadbandEV", deadbandEV, Range{0, 4});
-        v.field("maxDt", maxDt, Range{0.001, 10});
-        v.field("histogramLog2Min", histogramLog2Min, Range{-32, 32});
-        v.field("histogramLog2Max", histogramLog2Max, Range{-32, 32});
-        v.field("lowPercent", lowPercent, Range{0, 100});
-        v.field("highPercent", highPercent, Range{0, 100});
+        v.alias(
+            "min", Range{9.5367431640625e-07, 1048576.0}, [&](float m) { minEV = std::log2(m); },
+            "older key: the lowest exposure as a multiplier, minEV = log2(min)");
+        v.alias(
+            "max", Range{9.5367431640625e-07, 1048576.0}, [&](float m) { maxEV = std::log2(m); },
+            "older key: the highest exposure as a multiplier, maxEV = log2(max)");
+        v.field("keyValue", keyValue, Range{0.001, 10}, "scene-linear: what the metered L maps to");
+        v.field("compensationEV", compensationEV, Range{-10, 10}, "EV: added to the target before clamping");
+        v.field("minEV", minEV, Range{-20, 20}, "EV: lowest auto exposure (-2: x0.25), <= maxEV");
+        v.field("maxEV", maxEV, Range{-20, 20}, "EV: highest auto exposure (2: x4)");
+        v.field("compensationCurve", compensationCurve, Range{-32, 32},
+                "[log2 L, EV] points, x and y in the range, x strictly increasing, at most 16 (empty: none): "
+                "piecewise linear, flat past the ends; its EV at log2 L is added to the target");
+        v.field("tauBrighten", tauBrighten, Range{0.001, 30}, "s: time constant while exposure rises");
+        v.field("tauDarken", tauDarken, Range{0.001, 30}, "s: time constant while exposure falls");
+        v.field("speedUp", speedUp, Range{0.001, 100},
+                "1/s (speed), EV/s (hybrid): how fast exposure follows when the scene brightens");
+        v.field("speedDown", speedDown, Range{0.001, 100},
+                "1/s (speed), EV/s (hybrid): how fast exposure follows when the scene darkens");
+        v.field("transitionEV", transitionEV, Range{0.01, 20}, "EV: hybrid turns exponential this close");
+        v.field("deadbandEV", deadbandEV, Range{0, 4}, "EV: adapt beyond it, stop below a tenth of it");
+        v.field("maxDt", maxDt, Range{0.001, 10}, "s: frame time is clamped to [0, maxDt]");
+        v.field("histogramLog2Min", histogramLog2Min, Range{-32, 32}, "log2 L: low edge of bin 1, < log2Max");
+        v.field("histogramLog2Max", histogramLog2Max, Range{-32, 32}, "log2 L: high edge of bin 254");
+        v.field("lowPercent", lowPercent, Range{0, 100}, "%: darkest share left out of the mean");
+        v.field("highPercent", highPercent, Range{0, 100}, "%: window top, > lowPercent");
         v.object("spot", spot);
         v.object("mask", mask);
         v.require(minEV <= maxEV, "minEV", "must not exceed maxEV");

@@ -22,14 +22,13 @@ inline std::span<const std::string_view> bloomModeNames() {
 }
 
 struct BloomSettings {
-    bool enabled = true; ///< default on: a modest energy-conserving glare is part of a photographic look
-    BloomMode mode = BloomMode::EnergyConserving; ///< how bloom joins the scene, default energy-conserving
-    float intensity = 0.04f; ///< [0, 10], default 0.04: mix factor (energy-conserving, <= 1) or additive gain
-    float threshold = 1.0f;  ///< exposed scene-linear, [0, 65000], default 1: threshold mode only
-    float knee = 0.5f;       ///< fraction of threshold, [0, 1], default 0.5: soft-knee width, threshold mode
-    float radius =
-        0.85f;        ///< [0, 1], default 0.85: share each level hands to the wider ones (spread, roundness)
-    int mipCount = 0; ///< [0, 10], default 0 = the quality tier's count: levels of the chain below half size
+    bool enabled = true;
+    BloomMode mode = BloomMode::EnergyConserving;
+    float intensity = 0.04f;
+    float threshold = 1.0f;
+    float knee = 0.5f;
+    float radius = 0.85f;
+    int mipCount = 0;
 
     /// The real-time look: the defaults above, a glow over the whole image that games and the built-in
     /// scenes are tuned for.
@@ -53,13 +52,17 @@ struct BloomSettings {
 
     template <class V>
     void visit(V& v) {
-        v.field("enabled", enabled);
-        v.field("mode", mode, bloomModeNames());
-        v.field("intensity", intensity, Range{0, 10});
-        v.field("threshold", threshold, Range{0, 65000});
-        v.field("knee", knee, Range{0, 1});
-        v.field("radius", radius, Range{0, 1});
-        v.field("mipCount", mipCount, Range{0, 10});
+        v.field("enabled", enabled,
+                "turns bloom on: a modest energy-conserving glare is part of a photographic look");
+        v.field("mode", mode, bloomModeNames(), "how bloom joins the scene");
+        v.field("intensity", intensity, Range{0, 10},
+                "mix factor (energy-conserving, <= 1) or additive gain");
+        v.field("threshold", threshold, Range{0, 65000}, "exposed scene-linear: threshold mode only");
+        v.field("knee", knee, Range{0, 1}, "fraction of threshold: soft-knee width, threshold mode");
+        v.field("radius", radius, Range{0, 1},
+                "share each level hands to the wider ones (spread, roundness)");
+        v.field("mipCount", mipCount, Range{0, 10},
+                "levels of the chain below half size; 0: the quality tier's count");
         v.require(mode != BloomMode::EnergyConserving || intensity <= 1.0f, "intensity",
                   "must lie in [0, 1] in energy-conserving mode (it is a mix factor)");
     }

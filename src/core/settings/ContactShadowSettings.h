@@ -13,34 +13,35 @@ namespace photopic {
 inline constexpr std::size_t kMaxContactShadowMaskIds = 16;
 
 struct ContactShadowSettings {
-    bool enabled = false; ///< default off
-    /// World units, [0.001, 100], default 0.18: how far the ray marches towards the sun. Occluders farther
-    /// than this along the sun's direction cast no contact shadow (that is the shadow map's range).
+    bool enabled = false;
     float distance = 0.18f;
-    /// World units, [0, 10], default 0.003: how thick a surface in the depth buffer is assumed to be. A
-    /// sample occludes only where the ray, over the step that reaches it, lies behind the depth surface by
-    /// less than this (a ray that crosses a surface between two samples always counts), so the ray passing
-    /// far behind a thin foreground object casts nothing.
     float thickness = 0.003f;
-    /// [0, 4], default 1.1: the occlusion (1 at a hit near the surface, faded to 0 towards the ray's end and
-    /// at the screen's edges) is multiplied by this and clamped to [0, 1]; visibility = 1 - that. Above 1
-    /// a hit stays fully black further into the fade; below 1 no pixel goes fully black.
     float strength = 1.1f;
-    int steps = 22; ///< [1, 128], default 22: samples along the ray (one dithered start per pixel and frame)
-    /// Object ids (the host's objectId input), at most 16, each in [1, 4294967295]; default empty: every
-    /// object. When not empty, only the listed objects receive and cast contact shadows: other pixels keep
-    /// visibility 1, and their depth occludes nothing. A frame without an objectId input then skips the pass
-    /// (reported) rather than shadow every object.
+    int steps = 22;
     IdList mask;
 
     template <class V>
     void visit(V& v) {
-        v.field("enabled", enabled);
-        v.field("distance", distance, Range{0.001, 100});
-        v.field("thickness", thickness, Range{0, 10});
-        v.field("strength", strength, Range{0, 4});
-        v.field("steps", steps, Range{1, 128});
-        v.field("mask", mask, Range{1, 4294967295.0});
+        v.field("enabled", enabled, "turns screen-space contact shadows (a ray march towards the sun) on");
+        v.field("distance", distance, Range{0.001, 100},
+                "world units: how far the ray marches towards the sun. Occluders farther than this along the "
+                "sun's direction cast no contact shadow (that is the shadow map's range)");
+        v.field("thickness", thickness, Range{0, 10},
+                "world units: how thick a surface in the depth buffer is assumed to be. A sample occludes "
+                "only where the ray, over the step that reaches it, lies behind the depth surface by less "
+                "than this (a ray that crosses a surface between two samples always counts), so the ray "
+                "passing far behind a thin foreground object casts nothing");
+        v.field("strength", strength, Range{0, 4},
+                "the occlusion (1 at a hit near the surface, faded to 0 towards the ray's end and at the "
+                "screen's edges) is multiplied by this and clamped to [0, 1]; visibility = 1 - that. Above 1 "
+                "a hit stays fully black further into the fade; below 1 no pixel goes fully black");
+        v.field("steps", steps, Range{1, 128},
+                "samples along the ray (one dithered start per pixel and frame)");
+        v.field("mask", mask, Range{1, 4294967295.0},
+                "object ids (the host's objectId input), at most 16; empty: every object. When not empty, "
+                "only the listed objects receive and cast contact shadows: other pixels keep visibility 1, "
+                "and their depth occludes nothing. A frame without an objectId input then skips the pass "
+                "(reported) rather than shadow every object");
         v.require(mask.size() <= kMaxContactShadowMaskIds, "mask", "lists at most 16 object ids");
     }
 };

@@ -65,12 +65,11 @@ inline std::span<const std::string_view> debugViewNames() {
 }
 
 struct DebugSettings {
-    DebugView view =
-        DebugView::None; ///< default none; scene-value views replace the image before tone mapping
+    DebugView view = DebugView::None;
 
     template <class V>
     void visit(V& v) {
-        v.field("view", view, debugViewNames());
+        v.field("view", view, debugViewNames(), "scene-value views replace the image before tone mapping");
     }
 };
 

@@ -50,28 +50,32 @@ inline std::span<const std::string_view> dofQualityNames() {
 }
 
 struct DepthOfFieldSettings {
-    bool enabled = false;                    ///< default off
-    DofMode mode = DofMode::Physical;        ///< physical (default: the camera's lens), artistic
-    DofKernel kernel = DofKernel::Disc;      ///< disc (default), hexagon
-    DofQuality quality = DofQuality::Medium; ///< low, medium (default), high: rings of the gather
-    /// Pixels (full resolution), [1, 64], default 16: the largest CoC radius; larger blur is clamped.
+    bool enabled = false;
+    DofMode mode = DofMode::Physical;
+    DofKernel kernel = DofKernel::Disc;
+    DofQuality quality = DofQuality::Medium;
     float maxCocRadius = 16.0f;
-    float focalDistance = 10.0f; ///< artistic: scene units, [0.01, 1e5], default 10: the distance in focus
-    /// Artistic: scene units, [0.01, 1e5], default 5: how far in front of and behind the focal distance the
-    /// blur reaches bokehRadius
+    float focalDistance = 10.0f;
     float focalRange = 5.0f;
-    float bokehRadius = 4.0f; ///< artistic: pixels, [0, 64], default 4: the CoC radius at the range's ends
+    float bokehRadius = 4.0f;
 
     template <class V>
     void visit(V& v) {
-        v.field("enabled", enabled);
-        v.field("mode", mode, dofModeNames());
-        v.field("kernel", kernel, dofKernelNames());
-        v.field("quality", quality, dofQualityNames());
-        v.field("maxCocRadius", maxCocRadius, Range{1, 64});
-        v.field("focalDistance", focalDistance, Range{0.01, 1e5});
-        v.field("focalRange", focalRange, Range{0.01, 1e5});
-        v.field("bokehRadius", bokehRadius, Range{0, 64});
+        v.field("enabled", enabled, "turns depth of field on");
+        v.field("mode", mode, dofModeNames(),
+                "physical: the camera's lens (f-number, focus); artistic: focalDistance, focalRange and "
+                "bokehRadius");
+        v.field("kernel", kernel, dofKernelNames(), "the bokeh's shape");
+        v.field("quality", quality, dofQualityNames(), "rings of the gather");
+        v.field("maxCocRadius", maxCocRadius, Range{1, 64},
+                "pixels (full resolution): the largest CoC radius; larger blur is clamped");
+        v.field("focalDistance", focalDistance, Range{0.01, 1e5},
+                "artistic: scene units: the distance in focus");
+        v.field("focalRange", focalRange, Range{0.01, 1e5},
+                "artistic: scene units: how far in front of and behind the focal distance the blur reaches "
+                "bokehRadius");
+        v.field("bokehRadius", bokehRadius, Range{0, 64},
+                "artistic: pixels: the CoC radius at the range's ends");
     }
 };
 

@@ -23,14 +23,15 @@ inline std::span<const std::string_view> exposureModeNames() {
 }
 
 struct ExposureModeSettings {
-    /// manual (default), physical: needs a camera; a frame without one falls back to manual (logged once).
-    /// Physical: scene values are absolute luminance (cd/m^2); auto exposure, when enabled, meters the
-    /// camera-exposed image and adds its correction clamped to [autoExposure.minEV, maxEV].
     ExposureMode mode = ExposureMode::Manual;
 
     template <class V>
     void visit(V& v) {
-        v.field("mode", mode, exposureModeNames());
+        v.field(
+            "mode", mode, exposureModeNames(),
+            "manual or physical. Physical needs a camera (a frame without one falls back to manual, logged "
+            "once): scene values are absolute luminance (cd/m^2); auto exposure, when enabled, meters the "
+            "camera-exposed image and adds its correction clamped to [autoExposure.minEV, maxEV]");
     }
 };
 

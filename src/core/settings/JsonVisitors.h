@@ -56,28 +56,37 @@ public:
     explicit JsonWriter(json& out)
         : mOut(out) {}
 
-    void field(std::string_view key, bool& value) { mOut[std::string(key)] = value; }
-    void field(std::string_view key, float& value, Range) { mOut[std::string(key)] = shortestDecimal(value); }
-    void field(std::string_view key, int& value, Range) { mOut[std::string(key)] = value; }
-    void field(std::string_view key, std::string& value) { mOut[std::string(key)] = value; }
-    void field(std::string_view key, glm::vec2& value, Range) {
+    void field(std::string_view key, bool& value, std::string_view = {}) { mOut[std::string(key)] = value; }
+    void field(std::string_view key, float& value, Range, std::string_view = {}) {
+        mOut[std::string(key)] = shortestDecimal(value);
+    }
+    void field(std::string_view key, int& value, Range, std::string_view = {}) {
+        mOut[std::string(key)] = value;
+    }
+    void field(std::string_view key, std::string& value, std::string_view = {}) {
+        mOut[std::string(key)] = value;
+    }
+    void field(std::string_view key, glm::vec2& value, Range, std::string_view = {}) {
         mOut[std::string(key)] = {shortestDecimal(value.x), shortestDecimal(value.y)};
     }
-    void field(std::string_view key, glm::vec3& value, Range) {
+    void field(std::string_view key, glm::vec3& value, Range, std::string_view = {}) {
         mOut[std::string(key)] = {shortestDecimal(value.x), shortestDecimal(value.y),
                                   shortestDecimal(value.z)};
     }
-    void field(std::string_view key, CurvePoints& points, Range) {
+    void field(std::string_view key, CurvePoints& points, Range, std::string_view = {}) {
         json arr = json::array();
         for (const auto& p : points) {
             arr.push_back({shortestDecimal(p.x), shortestDecimal(p.y)});
         }
         mOut[std::string(key)] = arr;
     }
-    void field(std::string_view key, IdList& ids, Range) { mOut[std::string(key)] = ids; }
+    void field(std::string_view key, IdList& ids, Range, std::string_view = {}) {
+        mOut[std::string(key)] = ids;
+    }
     template <class E>
     requires std::is_enum_v<E>
-    void field(std::string_view key, E& value, std::span<const std::string_view> names) {
+    void field(std::string_view key, E& value, std::span<const std::string_view> names,
+               std::string_view = {}) {
         mOut[std::string(key)] = std::string(names[static_cast<std::size_t>(value)]);
     }
     template <class S>
@@ -88,7 +97,7 @@ public:
         mOut[std::string(key)] = std::move(child);
     }
     template <class F>
-    void alias(std::string_view, Range, F&&) {} // aliases are read, never written
+    void alias(std::string_view, Range, F&&, std::string_view = {}) {} // aliases are read, never written
     void require(bool, std::string_view, std::string_view) {}
 
 private:
@@ -103,7 +112,7 @@ public:
         , mPath(std::move(path))
         , mIssues(issues) {}
 
-    void field(std::string_view key, bool& value) {
+    void field(std::string_view key, bool& value, std::string_view = {}) {
         if (const json* j = find(key)) {
             if (!j->is_boolean()) {
                 wrongType(key, *j, "true or false");
@@ -112,7 +121,7 @@ public:
             value = j->get<bool>();
         }
     }
-    void field(std::string_view key, float& value, Range range) {
+    void field(std::string_view key, float& value, Range range, std::string_view = {}) {
         if (const json* j = find(key)) {
             double d = 0;
             if (number(key, *j, range, d)) {
@@ -120,7 +129,7 @@ public:
             }
         }
     }
-    void field(std::string_view key, int& value, Range range) {
+    void field(std::string_view key, int& value, Range range, std::string_view = {}) {
         if (const json* j = find(key)) {
             if (!j->is_number_integer()) {
                 wrongType(key, *j, fmt::format("an integer in [{}, {}]", range.min, range.max));
@@ -135,7 +144,7 @@ public:
             value = static_cast<int>(v);
         }
     }
-    void field(std::string_view key, std::string& value) {
+    void field(std::string_view key, std::string& value, std::string_view = {}) {
         if (const json* j = find(key)) {
             if (!j->is_string()) {
                 wrongType(key, *j, "a string");
@@ -144,9 +153,13 @@ public:
             value = j->get<std::string>();
         }
     }
-    void field(std::string_view key, glm::vec2& value, Range range) { vector(key, &value.x, 2, range); }
-    void field(std::string_view key, glm::vec3& value, Range range) { vector(key, &value.x, 3, range); }
-    void field(std::string_view key, CurvePoints& points, Range range) {
+    void field(std::string_view key, glm::vec2& value, Range range, std::string_view = {}) {
+        vector(key, &value.x, 2, range);
+    }
+    void field(std::string_view key, glm::vec3& value, Range range, std::string_view = {}) {
+        vector(key, &value.x, 3, range);
+    }
+    void field(std::string_view key, CurvePoints& points, Range range, std::string_view = {}) {
         const json* j = find(key);
         if (!j) {
             return;
@@ -175,7 +188,7 @@ public:
         }
         points = std::move(parsed);
     }
-    void field(std::string_view key, IdList& ids, Range range) {
+    void field(std::string_view key, IdList& ids, Range range, std::string_view = {}) {
         const json* j = find(key);
         if (!j) {
             return;
@@ -207,7 +220,8 @@ public:
     }
     template <class E>
     requires std::is_enum_v<E>
-    void field(std::string_view key, E& value, std::span<const std::string_view> names) {
+    void field(std::string_view key, E& value, std::span<const std::string_view> names,
+               std::string_view = {}) {
         const json* j = find(key);
         if (!j) {
             return;
@@ -242,7 +256,7 @@ public:
     /// A key kept for compatibility (older files' names): read, range-checked, handed to `set`, never
     /// written.
     template <class F>
-    void alias(std::string_view key, Range range, F&& set) {
+    void alias(std::string_view key, Range range, F&& set, std::string_view = {}) {
         if (const json* j = find(key)) {
             double d = 0;
             if (number(key, *j, range, d)) {

@@ -36,30 +36,33 @@ inline std::span<const std::string_view> motionBlurPlacementNames() {
 }
 
 struct MotionBlurSettings {
-    bool enabled = false; ///< default off
-    /// [0, 2], default 1: scales the blur's length (1: the length the shutter gives; 0: no blur).
+    bool enabled = false;
     float intensity = 1.0f;
-    int sampleCount = 15; ///< [3, 64], default 15: samples of the gather along the dominant velocity
-    /// Degrees, [0, 360], default 180: the shutter's open time as a fraction of the frame interval (360: the
-    /// whole interval; the blur of a point moving m pixels per frame is m x angle / 360 long).
+    int sampleCount = 15;
     float shutterAngle = 180.0f;
-    ShutterSource shutterSource = ShutterSource::Angle; ///< angle (default), camera
-    /// Pixels, [1, 256], default 20: the longest blur radius (half the streak); longer motion is clamped to
-    /// it. At most tileSize, since the gather looks at most one tile beyond its own.
+    ShutterSource shutterSource = ShutterSource::Angle;
     float maxBlur = 20.0f;
-    int tileSize = 20; ///< pixels, [4, 64], default 20: the velocity tiles' size
-    MotionBlurPlacement placement = MotionBlurPlacement::BeforeTaa; ///< before-taa (default), after-taa
+    int tileSize = 20;
+    MotionBlurPlacement placement = MotionBlurPlacement::BeforeTaa;
 
     template <class V>
     void visit(V& v) {
-        v.field("enabled", enabled);
-        v.field("intensity", intensity, Range{0, 2});
-        v.field("sampleCount", sampleCount, Range{3, 64});
-        v.field("shutterAngle", shutterAngle, Range{0, 360});
-        v.field("shutterSource", shutterSource, shutterSourceNames());
-        v.field("maxBlur", maxBlur, Range{1, 256});
-        v.field("tileSize", tileSize, Range{4, 64});
-        v.field("placement", placement, motionBlurPlacementNames());
+        v.field("enabled", enabled, "turns motion blur on");
+        v.field("intensity", intensity, Range{0, 2},
+                "scales the blur's length (1: the length the shutter gives; 0: no blur)");
+        v.field("sampleCount", sampleCount, Range{3, 64},
+                "samples of the gather along the dominant velocity");
+        v.field("shutterAngle", shutterAngle, Range{0, 360},
+                "degrees: the shutter's open time as a fraction of the frame interval (360: the whole "
+                "interval; the blur of a point moving m pixels per frame is m x angle / 360 long)");
+        v.field("shutterSource", shutterSource, shutterSourceNames(),
+                "angle: shutterAngle; camera: the camera's shutter");
+        v.field("maxBlur", maxBlur, Range{1, 256},
+                "pixels: the longest blur radius (half the streak); longer motion is clamped to it. At most "
+                "tileSize, since the gather looks at most one tile beyond its own");
+        v.field("tileSize", tileSize, Range{4, 64}, "pixels: the velocity tiles' size");
+        v.field("placement", placement, motionBlurPlacementNames(),
+                "whether the blur runs before or after TAA");
         v.require(maxBlur <= float(tileSize), "maxBlur", "must be at most tileSize");
     }
 };

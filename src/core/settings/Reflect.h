@@ -1,17 +1,20 @@
 #pragma once
 // Settings reflection: every settings struct lists its fields once, in a `visit(V&)` member template, and the
-// JSON reader, the JSON writer and the `--set` override are visitors over that one list (so a new field
-// cannot be forgotten by one of them). A field states its JSON key, its range and, for enums, the allowed
-// names.
+// JSON reader, the JSON writer, the `--set` override, the viewer's editor and the settings reference
+// (SettingsDescriber.h, `photopic settings --markdown`, docs/settings.md) are visitors over that one list (so
+// a new field cannot be forgotten by one of them). A field states its JSON key, its range or, for enums, the
+// allowed names, and last its meaning: the one description of the field, which the reference prints and
+// the viewer shows as a tooltip. The default is the member's initialiser; the description leaves range and
+// default to the reflection and names the unit first where there is one ("s: time constant ...").
 //
 //     template <class V> void visit(V& v) {
-//         v.field("exposure", exposure, Range{-20, 20});
-//         v.field("mode", mode, toneMapperNames());
+//         v.field("exposure", exposure, Range{-20, 20}, "EV: manual exposure");
+//         v.field("mode", mode, toneMapperNames(), "curve applied once, after every HDR effect");
 //         v.require(tauDarken > 0, "tauDarken", "must be positive");
 //     }
 //
-// `v.alias("speed", Range{...}, [&](float s) { ... })` keeps an older key readable without writing
-// it.
+// `v.alias("speed", Range{...}, [&](float s) { ... }, "older key: ...")` keeps an older key readable
+// without writing it.
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -22,37 +22,36 @@ inline std::span<const std::string_view> reflectionResolutionNames() {
 }
 
 struct ReflectionSettings {
-    bool enabled = false; ///< default off
-    /// [0, 4], default 1: multiplies the reflection added to the image (after the material's specular weight
-    /// and the confidence). 1 is physically based; 0 traces but adds nothing.
+    bool enabled = false;
     float intensity = 1.0f;
-    /// [1, 1000], default 200: the most cells the hierarchical march visits per ray. A ray that has not hit
-    /// after this many counts as a miss (confidence 0).
     int maxSteps = 200;
-    /// World units, [0.001, 100], default 0.25: how thick a surface in the depth buffer is assumed to be. A
-    /// ray that passes behind a surface by more than this goes on behind it (no hit).
     float thickness = 0.25f;
-    /// World units, [0.01, 10000], default 50: the longest reflected ray.
     float maxDistance = 50.0f;
-    /// [0, 1], default 0.6: surfaces rougher than this get no screen-space reflection (confidence 0); the
-    /// confidence fades out over the last 0.1 below it.
     float roughnessCutoff = 0.6f;
-    /// [0, 0.5] of the image's smaller side, default 0.05: hits this close to the image's border fade out,
-    /// where the reflected object is partly off screen.
     float edgeFade = 0.05f;
-    /// full or half, default full: the trace's resolution (the resolve and composite run at full resolution).
     ReflectionResolution resolution = ReflectionResolution::Full;
 
     template <class V>
     void visit(V& v) {
-        v.field("enabled", enabled);
-        v.field("intensity", intensity, Range{0, 4});
-        v.field("maxSteps", maxSteps, Range{1, 1000});
-        v.field("thickness", thickness, Range{0.001, 100});
-        v.field("maxDistance", maxDistance, Range{0.01, 10000});
-        v.field("roughnessCutoff", roughnessCutoff, Range{0, 1});
-        v.field("edgeFade", edgeFade, Range{0, 0.5});
-        v.field("resolution", resolution, reflectionResolutionNames());
+        v.field("enabled", enabled, "turns screen-space reflections on");
+        v.field("intensity", intensity, Range{0, 4},
+                "multiplies the reflection added to the image (after the material's specular weight and the "
+                "confidence). 1 is physically based; 0 traces but adds nothing");
+        v.field("maxSteps", maxSteps, Range{1, 1000},
+                "the most cells the hierarchical march visits per ray. A ray that has not hit after this "
+                "many counts as a miss (confidence 0)");
+        v.field("thickness", thickness, Range{0.001, 100},
+                "world units: how thick a surface in the depth buffer is assumed to be. A ray that passes "
+                "behind a surface by more than this goes on behind it (no hit)");
+        v.field("maxDistance", maxDistance, Range{0.01, 10000}, "world units: the longest reflected ray");
+        v.field("roughnessCutoff", roughnessCutoff, Range{0, 1},
+                "surfaces rougher than this get no screen-space reflection (confidence 0); the confidence "
+                "fades out over the last 0.1 below it");
+        v.field("edgeFade", edgeFade, Range{0, 0.5},
+                "fraction of the image's smaller side: hits this close to the image's border fade out, where "
+                "the reflected object is partly off screen");
+        v.field("resolution", resolution, reflectionResolutionNames(),
+                "full or half: the trace's resolution (the resolve and composite run at full resolution)");
     }
 };
 

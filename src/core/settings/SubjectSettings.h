@@ -29,23 +29,27 @@ inline std::span<const std::string_view> subjectFallbackNames() {
 struct SubjectSettings {
     /// The light probe under each subject.
     struct Probe {
-        float hz = 10.0f; ///< 1/s, [0.1, 240], default 10: probes per second of frame time
-        int taps = 5;     ///< 1, 5 or 9, default 5: the first taps of kSpotTaps (centre, plus, 3x3), averaged
-        float radius = 0.02f;           ///< image heights, [0, 0.5], default 0.02: distance of the outer taps
-        bool freezeWhileMoving = false; ///< default off: skip probes while the subject moves, force one when
-                                        ///< it stops (a walking token over torch pools does not pump)
-        float moveThreshold = 20.0f;    ///< world units/s, [0, 1e6], default 20: "moving" above this speed
-        float deadbandEV = 0.05f; ///< EV, [0, 4], default 0.05: a probe closer than this (in log2 luma) to
-                                  ///< the kept luma is ignored, so tiny changes do not make exposure hunt
+        float hz = 10.0f;
+        int taps = 5;
+        float radius = 0.02f;
+        bool freezeWhileMoving = false;
+        float moveThreshold = 20.0f;
+        float deadbandEV = 0.05f;
 
         template <class V>
         void visit(V& v) {
-            v.field("hz", hz, Range{0.1, 240});
-            v.field("taps", taps, Range{1, 9});
-            v.field("radius", radius, Range{0, 0.5});
-            v.field("freezeWhileMoving", freezeWhileMoving);
-            v.field("moveThreshold", moveThreshold, Range{0, 1e6});
-            v.field("deadbandEV", deadbandEV, Range{0, 4});
+            v.field("hz", hz, Range{0.1, 240}, "1/s: probes per second of frame time");
+            v.field("taps", taps, Range{1, 9},
+                    "1, 5 or 9: the first taps of kSpotTaps (centre, plus, 3x3), averaged");
+            v.field("radius", radius, Range{0, 0.5}, "image heights: distance of the outer taps");
+            v.field("freezeWhileMoving", freezeWhileMoving,
+                    "skip probes while the subject moves, force one when it stops (a walking token over "
+                    "torch pools does not pump)");
+            v.field("moveThreshold", moveThreshold, Range{0, 1e6},
+                    "world units/s: \"moving\" above this speed");
+            v.field("deadbandEV", deadbandEV, Range{0, 4},
+                    "EV: a probe closer than this (in log2 luma) to the kept luma is ignored, so tiny "
+                    "changes do not make exposure hunt");
             v.require(taps == 1 || taps == 5 || taps == 9, "taps", "must be 1, 5 or 9");
         }
     };
@@ -53,27 +57,30 @@ struct SubjectSettings {
     /// Outdoors coupling (outdoors, exposure may clamp tighter and adapt faster): blended by the
     /// subject's outdoors value, 0 = indoors (settings unchanged) .. 1 = fully outdoors.
     struct OutdoorsCoupling {
-        bool enabled = false;    ///< default off until tuned for a scene
-        float maxEV = 1.0f;      ///< EV, [-20, 20], default 1: highest auto exposure when fully outdoors
-        float speedScale = 2.0f; ///< x, [1, 10], default 2: adaptation runs this much faster fully outdoors
+        bool enabled = false;
+        float maxEV = 1.0f;
+        float speedScale = 2.0f;
 
         template <class V>
         void visit(V& v) {
-            v.field("enabled", enabled);
-            v.field("maxEV", maxEV, Range{-20, 20});
-            v.field("speedScale", speedScale, Range{1, 10});
+            v.field("enabled", enabled,
+                    "couples adaptation to how far outdoors the subject is (off until tuned for a scene)");
+            v.field("maxEV", maxEV, Range{-20, 20}, "EV: highest auto exposure when fully outdoors");
+            v.field("speedScale", speedScale, Range{1, 10},
+                    "x: adaptation runs this much faster fully outdoors");
         }
     };
 
-    SubjectFallback fallback = SubjectFallback::None; ///< default none: what the view follows without subject
-    int maxSubjects = 32; ///< count, [1, 1024], default 32: storage fixed at set-up; extra subjects dropped
+    SubjectFallback fallback = SubjectFallback::None;
+    int maxSubjects = 32;
     Probe probe;
     OutdoorsCoupling outdoorsCoupling;
 
     template <class V>
     void visit(V& v) {
-        v.field("fallback", fallback, subjectFallbackNames());
-        v.field("maxSubjects", maxSubjects, Range{1, 1024});
+        v.field("fallback", fallback, subjectFallbackNames(), "what the view follows without a subject");
+        v.field("maxSubjects", maxSubjects, Range{1, 1024},
+                "count: storage fixed at set-up; extra subjects dropped");
         v.object("probe", probe);
         v.object("outdoorsCoupling", outdoorsCoupling);
     }

@@ -21,13 +21,15 @@ inline std::span<const std::string_view> jitterModeNames() {
 }
 
 struct TemporalSettings {
-    JitterMode jitter = JitterMode::Auto; ///< auto, on, off; default auto
-    int jitterCycle = 8; ///< frames, [1, 1024], default 8: length of the Halton(2, 3) jitter sequence
+    JitterMode jitter = JitterMode::Auto;
+    int jitterCycle = 8;
 
     template <class V>
     void visit(V& v) {
-        v.field("jitter", jitter, jitterModeNames());
-        v.field("jitterCycle", jitterCycle, Range{1, 1024});
+        v.field("jitter", jitter, jitterModeNames(),
+                "sub-pixel camera jitter: auto (when a temporal effect needs it), on, off");
+        v.field("jitterCycle", jitterCycle, Range{1, 1024},
+                "frames: length of the Halton(2, 3) jitter sequence");
     }
 };
 

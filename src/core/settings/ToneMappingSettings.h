@@ -7,19 +7,18 @@ namespace photopic {
 
 /// The single tone mapping of the frame (docs/architecture.md). Common keys: mode, exposure.
 struct ToneMappingSettings {
-    ToneMapper mode =
-        ToneMapper::AcesFitted; ///< curve applied once, after every HDR effect; default aces-fitted
-    float exposure =
-        0.0f; ///< EV, [-20, 20], default 0: manual exposure, multiplies with auto exposure (2^EV)
-    float whitePoint = 4.0f;         ///< scene-linear, [1, 1e4], default 4: white point of reinhard-extended
-    AgxLook agxLook = AgxLook::Base; ///< look applied inside the agx curve: base, punchy, golden
+    ToneMapper mode = ToneMapper::AcesFitted;
+    float exposure = 0.0f;
+    float whitePoint = 4.0f;
+    AgxLook agxLook = AgxLook::Base;
 
     template <class V>
     void visit(V& v) {
-        v.field("mode", mode, toneMapperNames());
-        v.field("exposure", exposure, Range{-20, 20});
-        v.field("whitePoint", whitePoint, Range{1, 1e4});
-        v.field("agxLook", agxLook, agxLookNames());
+        v.field("mode", mode, toneMapperNames(), "curve applied once, after every HDR effect");
+        v.field("exposure", exposure, Range{-20, 20},
+                "EV: manual exposure, multiplies with auto exposure (2^EV)");
+        v.field("whitePoint", whitePoint, Range{1, 1e4}, "scene-linear: white point of reinhard-extended");
+        v.field("agxLook", agxLook, agxLookNames(), "look applied inside the agx curve");
     }
 };
 

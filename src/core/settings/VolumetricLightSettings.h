@@ -9,37 +9,37 @@
 namespace photopic {
 
 struct VolumetricLightSettings {
-    bool enabled = false; ///< default off
-    /// [0, 16], default 1: scales the light added (0: computed, not added). A multiplier like `weight` and
-    /// `exposure`; kept because older settings files set it.
+    bool enabled = false;
     float intensity = 1.0f;
-    /// [0, 2], default 1: how far towards the sun each pixel's samples reach, as a fraction of its distance
-    /// to the sun on screen (1: up to the sun; below 1 the rays of pixels far from the sun fall short of it,
-    /// so they get shorter).
     float density = 1.0f;
-    /// [0, 1], default 0.97: the falloff along the ray, per 1/64 of the way towards the sun (the paper's
-    /// per-sample decay at 64 samples; defined per fraction of the way so that `samples` changes the noise,
-    /// not the look). Below 1 the light near the pixel counts more than the light at the sun.
     float decay = 0.97f;
-    /// [0, 16], default 1: the weight of each sample (the paper's `weight`), normalised by the sample count.
     float weight = 1.0f;
-    /// [0, 1], default 0.005: the final scale (the paper's `exposure`). The sun's disc dominates the sums:
-    /// with the defaults the testbed's sun (radiance about 8000) adds about 0.2 at a quarter of the image
-    /// height from it and 0.1 at half; a scene with another sun radiance scales it to taste.
     float exposure = 0.005f;
-    /// [4, 256], default 64: samples along each ray (half resolution, a dithered start per pixel and frame,
-    /// accumulated over frames).
     int samples = 64;
 
     template <class V>
     void visit(V& v) {
-        v.field("enabled", enabled);
-        v.field("intensity", intensity, Range{0, 16});
-        v.field("density", density, Range{0, 2});
-        v.field("decay", decay, Range{0, 1});
-        v.field("weight", weight, Range{0, 16});
-        v.field("exposure", exposure, Range{0, 1});
-        v.field("samples", samples, Range{4, 256});
+        v.field("enabled", enabled, "turns volumetric light (screen-space light shafts) on");
+        v.field("intensity", intensity, Range{0, 16},
+                "scales the light added (0: computed, not added). A multiplier like `weight` and `exposure`; "
+                "kept because older settings files set it");
+        v.field("density", density, Range{0, 2},
+                "how far towards the sun each pixel's samples reach, as a fraction of its distance to the "
+                "sun on screen (1: up to the sun; below 1 the rays of pixels far from the sun fall short of "
+                "it, so they get shorter)");
+        v.field("decay", decay, Range{0, 1},
+                "the falloff along the ray, per 1/64 of the way towards the sun (the paper's per-sample "
+                "decay at 64 samples; defined per fraction of the way so that `samples` changes the noise, "
+                "not the look). Below 1 the light near the pixel counts more than the light at the sun");
+        v.field("weight", weight, Range{0, 16},
+                "the weight of each sample (the paper's `weight`), normalised by the sample count");
+        v.field("exposure", exposure, Range{0, 1},
+                "the final scale (the paper's `exposure`). The sun's disc dominates the sums: with the "
+                "defaults the testbed's sun (radiance about 8000) adds about 0.2 at a quarter of the image "
+                "height from it and 0.1 at half; a scene with another sun radiance scales it to taste");
+        v.field("samples", samples, Range{4, 256},
+                "samples along each ray (half resolution, a dithered start per pixel and frame, accumulated "
+                "over frames)");
     }
 };
 

@@ -1,7 +1,7 @@
 // Motion blur, step 4: the gather. After McGuire, Hennessy, Bukowski and Osman 2012, "A Reconstruction
 // Filter for Plausible Motion Blur" (samples along the neighbourhood's longest velocity, classified by depth)
 // and Guertin, McGuire and Nowrouzezahrai 2014, "A Fast and Stable Feature-Aware Motion Blur Filter"
-// (per-pixel jittered sample positions). The weights here are coverage rather than the paper's cones: the
+// (per-pixel jittered sample positions, mirrored in pairs through the pixel). The weights here are coverage rather than the paper's cones: the
 // N samples spread evenly over the streak [-vmax, vmax], each standing for `spacing` = 2 |vmax| / N pixels
 // of it, and a sample at distance d whose own streak (radius rY) reaches this pixel X covers X for
 // spacing / (2 rY) of the shutter. d is the distance of the point the sample stands for, not of its pixel's
@@ -71,7 +71,11 @@ void main() {
     vec3 front = vec3(0.0), layer = vec3(0.0);
     float frontCover = 0.0, layerWeight = 0.0;
     for (int i = 0; i < uSampleCount; ++i) {
-        float t = -1.0 + 2.0 * (float(i) + 0.5 + jitter) / n;
+        // Mirrored pairs (Guertin et al. 2014): the second half of the samples are the first half's mirror
+        // images through the pixel, so the streak is sampled symmetrically whatever the jitter.
+        bool mirror = i >= (uSampleCount + 1) / 2;
+        float t = -1.0 + 2.0 * (float(mirror ? uSampleCount - 1 - i : i) + 0.5 + jitter) / n;
+        t = mirror ? -t : t;
         ivec2 q = clamp(ivec2(floor(centre + t * vmax)), ivec2(0), size - 1);
         // The sample's distance along the streak: the point it stands for, not its pixel's centre (the
         // pixel lookup already gives the streak's end pixels their partial share).

@@ -8,15 +8,15 @@ namespace photopic {
 /// seconds: the smallest scene that exercises metering, adaptation, bloom and the scene runner. Deterministic
 /// per frame.
 struct GradientSceneSettings {
-    float period = 8.0f;          ///< s, [0.1, 600], default 8: one rise-and-set of the sun
-    float sunLuminance = 2000.0f; ///< scene-linear, [0, 65000], default 2000: the disc's luminance
-    float skyLuminance = 1.0f;    ///< scene-linear, [0, 1000], default 1: the zenith's luminance
+    float period = 8.0f;
+    float sunLuminance = 2000.0f;
+    float skyLuminance = 1.0f;
 
     template <class V>
     void visit(V& v) {
-        v.field("period", period, Range{0.1, 600});
-        v.field("sunLuminance", sunLuminance, Range{0, 65000});
-        v.field("skyLuminance", skyLuminance, Range{0, 1000});
+        v.field("period", period, Range{0.1, 600}, "s: one rise-and-set of the sun");
+        v.field("sunLuminance", sunLuminance, Range{0, 65000}, "scene-linear: the disc's luminance");
+        v.field("skyLuminance", skyLuminance, Range{0, 1000}, "scene-linear: the zenith's luminance");
     }
 };
 

@@ -16,23 +16,25 @@ namespace photopic {
 /// building with three torch-lit rooms, tokens, and a player token that walks out of the building and back
 /// in. Deterministic per frame index (time = frameIndex * dt). Its outdoors mask is the roof of the building.
 struct TabletopSceneSettings {
-    float sunIlluminance = 5.0f; ///< scene-linear irradiance, [0, 1000], default 5: the field at noon; a
-                                 ///< token outdoors reads ~25x what it reads by the torch inside the door
-    float darkness = 0.0f;       ///< [0, 1], default 0: Foundry's darkness level; scales the outdoor light
-                                 ///< down to 3% (a moonlit night) at 1
-    float torchIntensity = 1.5f; ///< scene-linear irradiance at a torch's core radius, [0, 100], default 1.5
-    float flicker = 0.05f;     ///< [0, 0.5], default 0.05: torch flicker amplitude (a fraction of the light)
-    float viewHeight = 900.0f; ///< world units, [100, 2000], default 900: height of the camera's window
-    float loopSeconds = 24.0f; ///< s, [20, 600], default 24: the player's walk repeats with this period
+    float sunIlluminance = 5.0f;
+    float darkness = 0.0f;
+    float torchIntensity = 1.5f;
+    float flicker = 0.05f;
+    float viewHeight = 900.0f;
+    float loopSeconds = 24.0f;
 
     template <class V>
     void visit(V& v) {
-        v.field("sunIlluminance", sunIlluminance, Range{0, 1000});
-        v.field("darkness", darkness, Range{0, 1});
-        v.field("torchIntensity", torchIntensity, Range{0, 100});
-        v.field("flicker", flicker, Range{0, 0.5});
-        v.field("viewHeight", viewHeight, Range{100, 2000});
-        v.field("loopSeconds", loopSeconds, Range{20, 600});
+        v.field("sunIlluminance", sunIlluminance, Range{0, 1000},
+                "scene-linear irradiance: the field at noon; a token outdoors reads ~25x what it reads by "
+                "the torch inside the door");
+        v.field("darkness", darkness, Range{0, 1},
+                "Foundry's darkness level; scales the outdoor light down to 3% (a moonlit night) at 1");
+        v.field("torchIntensity", torchIntensity, Range{0, 100},
+                "scene-linear irradiance at a torch's core radius");
+        v.field("flicker", flicker, Range{0, 0.5}, "torch flicker amplitude (a fraction of the light)");
+        v.field("viewHeight", viewHeight, Range{100, 2000}, "world units: height of the camera's window");
+        v.field("loopSeconds", loopSeconds, Range{20, 600}, "s: the player's walk repeats with this period");
     }
 };
 

@@ -10,6 +10,7 @@
 #include <limits>
 #include <numbers>
 #include <thread>
+#include <utility>
 
 namespace photopic::testbed {
 
@@ -208,8 +209,7 @@ void pixelCentreKinds(TruthKind kind, const Frame& f, const TruthOptions& o, int
 
 ImageF renderColor(TruthKind kind, const TruthOptions& o) {
     ImageF image(o.width, o.height, 0.0f);
-    const double shutter = o.lens.exposureTimeS > 0.0f ? double(o.lens.exposureTimeS)
-                                                       : double(o.lens.shutterAngleDeg) / 360.0 * o.dt;
+    const double shutter = shutterSeconds(o);
     const bool moving =
         kind == TruthKind::Shutter && shutter > 0.0 && (o.times.cameraRate > 0.0 || o.times.objectRate > 0.0);
     // Sub-samples per pixel: each position once, or shutterTimes times (one instant each) with motion.
@@ -337,6 +337,17 @@ float sunVisibilityAt(const std::vector<Primitive>& prims, const glm::vec3& p, c
 
 Camera truthCamera(const TruthOptions& options) {
     return frameAt(options, options.times.camera, options.times.objects).camera;
+}
+
+TruthInstant truthInstant(const TruthOptions& options, double offset) {
+    Frame f = frameAt(options, options.times.camera + options.times.cameraRate * offset,
+                      options.times.objects + options.times.objectRate * offset);
+    return {f.camera, std::move(f.prims)};
+}
+
+double shutterSeconds(const TruthOptions& options) {
+    return options.lens.exposureTimeS > 0.0f ? double(options.lens.exposureTimeS)
+                                             : double(options.lens.shutterAngleDeg) / 360.0 * options.dt;
 }
 
 ImageF renderTruth(TruthKind kind, const TruthOptions& options) {

@@ -76,6 +76,17 @@ struct TruthOptions {
 /// The Camera the truth and the rasteriser see for `options` (the path's, at the frame's camera time).
 [[nodiscard]] Camera truthCamera(const TruthOptions& options);
 
+/// The scene `offset` seconds of frame time after the frame's time, as the truth sees it (its camera, still
+/// or on the path, and every object). The shutter truth's instants are the centres of shutterTimes equal
+/// strata of [-shutterSeconds / 2, shutterSeconds / 2].
+struct TruthInstant {
+    Camera camera;
+    std::vector<Primitive> primitives;
+};
+[[nodiscard]] TruthInstant truthInstant(const TruthOptions& options, double offset);
+/// The shutter's open time in seconds: the lens's exposure time, else its shutter angle x dt.
+[[nodiscard]] double shutterSeconds(const TruthOptions& options);
+
 /// Ambient occlusion at a surface point p with unit normal n (the `ao` kind's value): the cosine-weighted
 /// fraction of samples x samples stratified rays that no primitive within `radius` blocks. `salt` varies the
 /// offsets within the strata.

@@ -2,6 +2,10 @@
 
 #include "scenes/SceneSettings.h"
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
 namespace photopic {
 
 TestbedScene::TestbedScene() = default;
@@ -68,6 +72,7 @@ testbed::TruthOptions TestbedScene::truthOptions(const FrameTime& time) const {
 FrameInputs TestbedScene::render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) {
     const testbed::FrameTimes t = frameTimes(time);
     mCamera = testbed::truthCamera(truthOptions(time));
+    mLastCameraTime = t.camera;
     const std::vector<testbed::Primitive> prims = testbed::primitivesAt(t.objects, t.prevObjects);
 
     const glm::vec2 jitter = pipeline.beginFrame(time, &mCamera);
@@ -105,6 +110,40 @@ FrameInputs TestbedScene::render(const FrameTime& time, Pipeline& pipeline, std:
     }
     telemetry = {double(testbed::cameraPoseAt(t.camera).shot), mCamera.cut ? 1.0 : 0.0};
     return inputs;
+}
+
+OrbitView TestbedScene::currentView() const {
+    OrbitView view;
+    if (mSettings.fixedCamera || mLastCameraTime < 0.0) {
+        view.eye = mSettings.eye;
+        view.target = mSettings.target;
+        return view;
+    }
+    // The path's camera of the last frame, looking at the point it focuses on.
+    const glm::mat4 cameraToWorld = glm::inverse(mCamera.view);
+    view.eye = glm::vec3(cameraToWorld[3]);
+    const glm::vec3 forward = -glm::normalize(glm::vec3(cameraToWorld[2]));
+    view.target = view.eye + forward * testbed::cameraPoseAt(mLastCameraTime).focusDistance;
+    return view;
+}
+
+void TestbedScene::holdView(const OrbitView& view) {
+    // Within the settings' range, so the held view saves and loads back as it is.
+    mSettings.fixedCamera = true;
+    mSettings.eye = glm::clamp(view.eye, glm::vec3(-1000.0f), glm::vec3(1000.0f));
+    mSettings.target = glm::clamp(view.target, glm::vec3(-1000.0f), glm::vec3(1000.0f));
+}
+
+void TestbedScene::orbit(float yaw, float pitch) {
+    OrbitView view = currentView();
+    view.orbit(yaw, pitch);
+    holdView(view);
+}
+
+void TestbedScene::zoom(float factor) {
+    OrbitView view = currentView();
+    view.zoom(factor);
+    holdView(view);
 }
 
 std::unique_ptr<Scene> makeTestbedScene() {

@@ -13,50 +13,57 @@
 namespace photopic {
 
 struct TestbedSceneSettings {
-    float cameraStart = 0.0f;    ///< s, [0, 1000], default 0: the camera path's time at frame 0
-    float cameraSpeed = 1.0f;    ///< [0, 100], default 1: path seconds per second (0 holds the camera still)
-    float objectStart = 0.0f;    ///< s, [0, 1000], default 0: the objects' time at frame 0
-    float objectSpeed = 1.0f;    ///< [0, 100], default 1: object seconds per second (0 holds them still)
-    float fNumber = 2.8f;        ///< [0.5, 256], default 2.8: the lens (thin-lens truth, the camera's lens)
-    float focusDistance = 0.0f;  ///< m, [0, 1000], default 0: the camera path's focus
-    float shutterAngle = 180.0f; ///< degrees, [0, 360], default 180 (shutter truth, the camera's lens)
-    int samples = 16;            ///< [1, 64], default 16: colour truths take samples x samples per pixel
-    float aoRadius = 1.0f;       ///< m, [0.01, 100], default 1: the ao truth's occluder distance
-    int aoSamples = 16;          ///< [1, 64], default 16: aoSamples x aoSamples rays per pixel
-    float sunMaxDistance = 0.0f; ///< m, [0, 1000], default 0 (unlimited): the sun truth's occluder distance
-    int sunSamples = 1;          ///< [1, 32], default 1: one ray to the sun's centre; n: n x n over its disc
-    /// Default false: the camera path's framing; true: a still camera at `eye` looking at `target` (a test
-    /// holds a chosen framing; focus at the target's distance unless focusDistance is set).
+    float cameraStart = 0.0f;
+    float cameraSpeed = 1.0f;
+    float objectStart = 0.0f;
+    float objectSpeed = 1.0f;
+    float fNumber = 2.8f;
+    float focusDistance = 0.0f;
+    float shutterAngle = 180.0f;
+    int samples = 16;
+    float aoRadius = 1.0f;
+    int aoSamples = 16;
+    float sunMaxDistance = 0.0f;
+    int sunSamples = 1;
     bool fixedCamera = false;
-    glm::vec3 eye{0.0f, 1.2f, 6.0f};     ///< m, each in [-1000, 1000]: the fixed camera's position
-    glm::vec3 target{0.0f, 0.8f, -1.0f}; ///< m, each in [-1000, 1000]: the point the fixed camera looks at
-    /// mm, [1, 1000], default 24 (full frame): the lens's sensor height; with the fixed 45-degree field of
-    /// view the focal length follows it, so a larger sensor gives a longer lens and shallower depth of field
+    glm::vec3 eye{0.0f, 1.2f, 6.0f};
+    glm::vec3 target{0.0f, 0.8f, -1.0f};
     float sensorHeight = 24.0f;
 
     template <class V>
     void visit(V& v) {
-        v.field("cameraStart", cameraStart, Range{0, 1000});
-        v.field("cameraSpeed", cameraSpeed, Range{0, 100});
-        v.field("objectStart", objectStart, Range{0, 1000});
-        v.field("objectSpeed", objectSpeed, Range{0, 100});
-        v.field("fNumber", fNumber, Range{0.5, 256});
-        v.field("focusDistance", focusDistance, Range{0, 1000});
-        v.field("shutterAngle", shutterAngle, Range{0, 360});
-        v.field("samples", samples, Range{1, 64});
-        v.field("aoRadius", aoRadius, Range{0.01, 100});
-        v.field("aoSamples", aoSamples, Range{1, 64});
-        v.field("sunMaxDistance", sunMaxDistance, Range{0, 1000});
-        v.field("sunSamples", sunSamples, Range{1, 32});
-        v.field("fixedCamera", fixedCamera);
-        v.field("eye", eye, Range{-1000, 1000});
-        v.field("target", target, Range{-1000, 1000});
-        v.field("sensorHeight", sensorHeight, Range{1, 1000});
+        v.field("cameraStart", cameraStart, Range{0, 1000}, "s: the camera path's time at frame 0");
+        v.field("cameraSpeed", cameraSpeed, Range{0, 100},
+                "path seconds per second (0 holds the camera still)");
+        v.field("objectStart", objectStart, Range{0, 1000}, "s: the objects' time at frame 0");
+        v.field("objectSpeed", objectSpeed, Range{0, 100}, "object seconds per second (0 holds them still)");
+        v.field("fNumber", fNumber, Range{0.5, 256}, "the lens (thin-lens truth, the camera's lens)");
+        v.field("focusDistance", focusDistance, Range{0, 1000}, "m: the camera path's focus");
+        v.field("shutterAngle", shutterAngle, Range{0, 360},
+                "degrees: the shutter (shutter truth, the camera's lens)");
+        v.field("samples", samples, Range{1, 64}, "colour truths take samples x samples per pixel");
+        v.field("aoRadius", aoRadius, Range{0.01, 100}, "m: the ao truth's occluder distance");
+        v.field("aoSamples", aoSamples, Range{1, 64}, "aoSamples x aoSamples rays per pixel");
+        v.field("sunMaxDistance", sunMaxDistance, Range{0, 1000},
+                "m (0: unlimited): the sun truth's occluder distance");
+        v.field("sunSamples", sunSamples, Range{1, 32},
+                "1: one ray to the sun's centre; n: n x n over its disc");
+        v.field("fixedCamera", fixedCamera,
+                "false: the camera path's framing; true: a still camera at `eye` looking at `target` (focus "
+                "at the target's distance unless focusDistance is set)");
+        v.field("eye", eye, Range{-1000, 1000}, "m: the fixed camera's position");
+        v.field("target", target, Range{-1000, 1000}, "m: the point the fixed camera looks at");
+        v.field(
+            "sensorHeight", sensorHeight, Range{1, 1000},
+            "mm (24: full frame): the lens's sensor height; with the fixed 45-degree field of view the focal "
+            "length follows it, so a larger sensor gives a longer lens and shallower depth of field");
         v.require(!fixedCamera || eye != target, "target", "must differ from eye");
     }
 };
 
-class TestbedScene final : public Scene {
+/// Its camera follows the scripted path; as an InteractiveCamera (photopic-view's drag and wheel) the first
+/// move holds the path's current view as a still camera (fixedCamera, eye, target) and then orbits that.
+class TestbedScene final : public Scene, private InteractiveCamera {
 public:
     /// Needs a current GL 4.5 context (compiles the scene's shaders).
     TestbedScene();
@@ -72,6 +79,8 @@ public:
     /// that hands back ambient occlusion or sun visibility, shades again with them.
     FrameInputs render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) override;
 
+    [[nodiscard]] InteractiveCamera* interactiveCamera() override { return this; }
+
     [[nodiscard]] const TestbedSceneSettings& settings() const { return mSettings; }
     /// The camera's and objects' times of frame `time` under the settings.
     [[nodiscard]] testbed::FrameTimes frameTimes(const FrameTime& time) const;
@@ -81,7 +90,14 @@ public:
     [[nodiscard]] Lens lens() const;
 
 private:
+    void orbit(float yaw, float pitch) override;
+    void zoom(float factor) override;
+    /// The still camera the next move starts from: the fixed one, else the path's view of the last frame.
+    [[nodiscard]] OrbitView currentView() const;
+    void holdView(const OrbitView& view);
+
     TestbedSceneSettings mSettings;
+    double mLastCameraTime = -1.0; ///< path time of the last rendered frame; < 0 before the first
     testbed::TestbedRenderer mRenderer;
     Camera mCamera;
     Extent mExtent;
