@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
     build-essential cmake pkg-config clang-format
     libepoxy-dev libegl-dev libgl1-mesa-dri libegl-mesa0
-    libopenexr-dev libpng-dev libtiff-dev libstb-dev libopencolorio-dev
+    libopenexr-dev libpng-dev libdeflate-dev libtiff-dev libstb-dev libopencolorio-dev
     nlohmann-json3-dev libtinygltf-dev libcli11-dev libfmt-dev libglm-dev
     libglfw3-dev libimgui-dev xvfb xauth
     libopengl-dev libgl-dev python3-glad doxygen

@@ -84,11 +84,16 @@ inline const std::filesystem::path kStdoutPath{"-"};
 /// straight through instead, and what reached it before a failure stays there.
 void writePng(const std::filesystem::path& path, const Image8& image);
 
-/// writePng for a sequence: the encoder's buffers (an opaque image's RGB copy, the encoded stream) are kept
-/// from one image to the next, so frames of one size allocate nothing after the first. The same bytes as
-/// writePng. One thread at a time.
+/// writePng for a sequence: the encoder's buffers (the filtered rows, the encoded stream) and its deflate
+/// state are kept from one image to the next, so frames of one size allocate nothing after the first. The
+/// same bytes as writePng. One thread at a time.
 class PngWriter {
 public:
+    PngWriter();
+    ~PngWriter();
+    PngWriter(const PngWriter&) = delete;
+    PngWriter& operator=(const PngWriter&) = delete;
+
     void write(const std::filesystem::path& path, const Image8& image);
 
     /// A buffer that is never cleared: only what the encoder writes is touched.
@@ -96,10 +101,12 @@ public:
         std::unique_ptr<unsigned char[]> bytes;
         std::size_t capacity = 0;
     };
+    struct Deflater;
 
 private:
-    std::vector<unsigned char> mRgb;
+    std::vector<unsigned char> mRows;
     EncodeBuffer mEncoded;
+    std::unique_ptr<Deflater> mDeflater;
 };
 
 /// Writes a text file (CSV telemetry, JSON) atomically, like writePng.

@@ -17,19 +17,29 @@ layout(std140, binding = BINDING_PARAMETERS) uniform BloomUpsampleParameters {
     float uRadius;
 };
 
+// The tent's three bilinear taps per axis (at -1, 0 and +1 coarse texel, all with the same fraction f) read four
+// coarse texels with the weights (1 - f) / 4, 1/2 - f/4, 1/4 + f/4 and f/4. Each pair of neighbours is one
+// bilinear tap at the position its two weights say: four taps instead of nine, the same filter (to rounding;
+// clamp-to-edge replicates the same border texels). Texture reads are what a CPU rasteriser pays for.
+vec2 pairOffset(vec2 w0, vec2 w1) {
+    return w1 / (w0 + w1);
+}
+
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, imageSize(uTarget)))) {
         return;
     }
     vec2 uv = (vec2(p) + 0.5) * uTargetTexel;
-    vec2 t = uCoarseTexel;
-    vec3 s = textureLod(uCoarse, uv, 0.0).rgb * 4.0;
-    s += (textureLod(uCoarse, uv + vec2(-t.x, 0.0), 0.0).rgb + textureLod(uCoarse, uv + vec2(t.x, 0.0), 0.0).rgb +
-          textureLod(uCoarse, uv + vec2(0.0, -t.y), 0.0).rgb + textureLod(uCoarse, uv + vec2(0.0, t.y), 0.0).rgb) *
-         2.0;
-    s += textureLod(uCoarse, uv - t, 0.0).rgb + textureLod(uCoarse, uv + t, 0.0).rgb +
-         textureLod(uCoarse, uv + vec2(-t.x, t.y), 0.0).rgb + textureLod(uCoarse, uv + vec2(t.x, -t.y), 0.0).rgb;
+    vec2 x = uv / uCoarseTexel - 0.5; // in coarse texels, texel centres at integers
+    vec2 i = floor(x);
+    vec2 f = x - i;
+    vec2 wA = 0.75 - 0.5 * f; // texels i - 1 and i
+    vec2 wB = 0.25 + 0.5 * f; // texels i + 1 and i + 2
+    vec2 a = (i - 0.5 + pairOffset(0.25 - 0.25 * f, 0.5 - 0.25 * f)) * uCoarseTexel;
+    vec2 b = (i + 1.5 + pairOffset(0.25 + 0.25 * f, 0.25 * f)) * uCoarseTexel;
+    vec3 s = (textureLod(uCoarse, a, 0.0).rgb * wA.x + textureLod(uCoarse, vec2(b.x, a.y), 0.0).rgb * wB.x) * wA.y +
+             (textureLod(uCoarse, vec2(a.x, b.y), 0.0).rgb * wA.x + textureLod(uCoarse, b, 0.0).rgb * wB.x) * wB.y;
     vec3 fine = textureLod(uFine, uv, 0.0).rgb;
-    imageStore(uTarget, p, vec4(mix(fine, s * (1.0 / 16.0), uRadius), 1.0));
+    imageStore(uTarget, p, vec4(mix(fine, s, uRadius), 1.0));
 }

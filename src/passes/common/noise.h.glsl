@@ -6,13 +6,23 @@ uint pcgHash(uint v) {
     return (word >> 22u) ^ word;
 }
 
+/// Uniform in [0, 1) from pixel and a seed: pcgHash(frame * 4u + salt), the same for every pixel of a frame, so
+/// a pass may hash it once on the CPU (TonemapPass.cpp) instead of once per pixel.
+float hashUniformSeeded(ivec2 p, uint seed) {
+    return float(pcgHash(uint(p.x) + pcgHash(uint(p.y) + seed))) * (1.0 / 4294967296.0);
+}
+
 /// Uniform in [0, 1) from pixel, frame and a channel salt.
 float hashUniform(ivec2 p, uint frame, uint salt) {
-    return float(pcgHash(uint(p.x) + pcgHash(uint(p.y) + pcgHash(frame * 4u + salt)))) * (1.0 / 4294967296.0);
+    return hashUniformSeeded(p, pcgHash(frame * 4u + salt));
 }
 
 /// Triangular-PDF noise in (-1, 1): the sum of two uniforms, the dither that removes banding without adding
-/// signal-dependent noise power.
+/// signal-dependent noise power. The seeds are those of `salt` and `salt + 7u`.
+float triangularNoiseSeeded(ivec2 p, uint seed, uint seed7) {
+    return hashUniformSeeded(p, seed) + hashUniformSeeded(p, seed7) - 1.0;
+}
+
 float triangularNoise(ivec2 p, uint frame, uint salt) {
-    return hashUniform(p, frame, salt) + hashUniform(p, frame, salt + 7u) - 1.0;
+    return triangularNoiseSeeded(p, pcgHash(frame * 4u + salt), pcgHash(frame * 4u + salt + 7u));
 }

@@ -12,6 +12,13 @@ namespace photopic {
 
 namespace {
 constexpr const char* kCompute = "passes/tonemap/tonemap.comp.glsl";
+
+/// passes/common/noise.h.glsl pcgHash, bit for bit (32-bit unsigned arithmetic wraps the same way).
+std::uint32_t pcgHash(std::uint32_t v) {
+    const std::uint32_t state = v * 747796405u + 2891336453u;
+    const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
 } // namespace
 
 TonemapPass::TonemapPass(const Capabilities& caps)
@@ -79,6 +86,12 @@ void TonemapPass::dispatch(const Program& program, const Inputs& in, const Textu
                                  .agxLook = int(in.tonemapping->agxLook),
                                  .dither = dither ? 1 : 0,
                                  .frame = std::uint32_t(in.frameIndex)};
+    // The per-frame part of the dither's hash (noise.h.glsl hashUniformSeeded), once here instead of per
+    // pixel.
+    for (std::uint32_t c = 0; c < 3; ++c) {
+        parameters.ditherSeeds[c] = pcgHash(parameters.frame * 4u + c);
+        parameters.ditherSeeds7[c] = pcgHash(parameters.frame * 4u + c + 7u);
+    }
     if (in.bloom) {
         parameters.bloomAdditive = in.bloomSettings->mode == BloomMode::Threshold ? 1 : 0;
         parameters.bloomIntensity = in.bloomSettings->intensity;

@@ -32,13 +32,15 @@ struct TonemapParameters {
     float padding3 = 0.0f;
     float gain[3] = {1.0f, 1.0f, 1.0f};
     float padding4 = 0.0f;
+    std::uint32_t ditherSeeds[4] = {};  ///< the dither's per-frame hashes of the salts 0, 1, 2 (xyz)
+    std::uint32_t ditherSeeds7[4] = {}; ///< and of the salts 7, 8, 9
 };
-static_assert(sizeof(TonemapParameters) == 160);
+static_assert(sizeof(TonemapParameters) == 192);
 static_assert(offsetof(TonemapParameters, frame) == 12 && offsetof(TonemapParameters, bloomAdditive) == 16 &&
               offsetof(TonemapParameters, whiteBalance) == 32 &&
               offsetof(TonemapParameters, contrast) == 80 && offsetof(TonemapParameters, glowRadius) == 96 &&
               offsetof(TonemapParameters, lift) == 112 && offsetof(TonemapParameters, invGamma) == 128 &&
-              offsetof(TonemapParameters, gain) == 144);
+              offsetof(TonemapParameters, gain) == 144 && offsetof(TonemapParameters, ditherSeeds) == 160);
 
 /// The uber pass: exposure, bloom composite, HDR grading, tone curve, sRGB, dither -> RGBA8 display image
 /// (RGBA16 at output.bitDepth 16);

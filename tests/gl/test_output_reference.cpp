@@ -1,0 +1,108 @@
+// The default chain's display image against a reference the chain rendered before its passes were rewritten
+// for speed (tests/data/reference/). Where a rewrite computes the same filter another way (the bloom
+// upsample's four bilinear taps for the tent's nine) only rounding may differ: every sample within 1/255.
+// PHOTOPIC_WRITE_REFERENCE=1 writes the references instead (run it on the code whose output they hold).
+
+#include "GlTest.h"
+
+#include "gl/TextureIo.h"
+#include "io/ImageIO.h"
+#include "pipeline/Pipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+namespace photopic::test {
+
+namespace {
+
+/// 160x90 scene-linear: a sky gradient, a textured ground, bright discs (a sun, lamps) that bloom, and one
+/// NaN and one +Inf pixel the chain sanitises.
+ImageF referenceScene() {
+    const int w = 160, h = 90;
+    ImageF image(w, h);
+    struct Disc {
+        float x, y, r, value;
+    };
+    const Disc discs[] = {{30, 20, 4, 400}, {110, 60, 2.5f, 60}, {140, 15, 6, 20}, {70, 75, 1.5f, 150}};
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            float* p = image.at(x, y);
+            const float fx = float(x) + 0.5f, fy = float(y) + 0.5f;
+            float r = 0, g = 0, b = 0;
+            if (y < h / 2) {
+                const float t = fy / float(h / 2);
+                r = 0.3f + 0.6f * t, g = 0.5f + 0.4f * t, b = 1.2f - 0.3f * t;
+            } else {
+                const float check = ((x / 4 + y / 4) % 2 == 0) ? 1.0f : 0.6f;
+                r = 0.12f * check + 0.002f * float(x), g = 0.09f * check,
+                b = 0.05f * check + 0.001f * float(y);
+            }
+            for (const Disc& d : discs) {
+                if (std::hypot(fx - d.x, fy - d.y) < d.r) {
+                    r = d.value, g = d.value * 0.9f, b = d.value * 0.7f;
+                }
+            }
+            p[0] = r, p[1] = g, p[2] = b, p[3] = 1;
+        }
+    }
+    image.at(5, 80)[1] = std::nanf("");
+    image.at(150, 85)[0] = INFINITY;
+    return image;
+}
+
+std::filesystem::path referencePath(const std::string& name) {
+    return std::filesystem::path(PHOTOPIC_SOURCE_DIR) / "tests/data/reference" / name;
+}
+
+/// Renders frame `frameIndex` of `settings` over the reference scene and compares it with the reference PNG
+/// `name`: every sample within `tolerance` (of 255).
+void expectMatchesReference(const Settings& settings, std::uint64_t frameIndex, const std::string& name,
+                            int tolerance) {
+    Pipeline pipeline({.settings = settings});
+    const Texture input = makeTexture(referenceScene(), "reference scene");
+    const Image8 out =
+        readTexture8(pipeline.execute({.color = &input}, {.dt = 1.0f / 30.0f, .frameIndex = frameIndex}));
+    if (std::getenv("PHOTOPIC_WRITE_REFERENCE")) {
+        std::filesystem::create_directories(referencePath(name).parent_path());
+        writePng(referencePath(name), out);
+        GTEST_SKIP() << "wrote " << referencePath(name);
+    }
+    const Image8 reference = readPng8(referencePath(name));
+    ASSERT_EQ(out.width, reference.width);
+    ASSERT_EQ(out.height, reference.height);
+    int worst = 0;
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < out.rgba.size(); ++i) {
+        const int d = std::abs(int(out.rgba[i]) - int(reference.rgba[i]));
+        worst = std::max(worst, d);
+        differing += d != 0 ? 1 : 0;
+    }
+    EXPECT_LE(worst, tolerance) << name << ": " << differing << " of " << out.rgba.size()
+                                << " samples differ";
+    // Rounding moves a sample across an 8-bit step now and then, not the image.
+    EXPECT_LT(double(differing), 0.01 * double(out.rgba.size())) << name;
+}
+
+} // namespace
+
+TEST_F(GlTest, DefaultChainStaysWithinOneStepOfTheReference) {
+    // Bloom, ACES (fitted) and the dither, as `photopic image` runs by default; frame 5's dither pattern.
+    expectMatchesReference(Settings{}, 5, "default_chain_160x90.png", 1);
+}
+
+TEST_F(GlTest, ThresholdBloomWithGradingStaysWithinOneStepOfTheReference) {
+    Settings s;
+    s.bloom.mode = BloomMode::Threshold;
+    s.bloom.threshold = 1.5f;
+    s.bloom.intensity = 0.3f;
+    s.colorGrading.enabled = true;
+    s.colorGrading.saturation = 1.2f;
+    s.tonemapping.mode = ToneMapper::Agx;
+    expectMatchesReference(s, 0, "threshold_grading_160x90.png", 1);
+}
+
+} // namespace photopic::test
