@@ -49,7 +49,7 @@ void checkModel(const orbit::Model& model) {
             }
         }
     }
-    for (const orbit::Texture& t : model.textures) {
+    for (const orbit::ModelTexture& t : model.textures) {
         if (t.image < 0 || std::size_t(t.image) >= model.images.size()) {
             broken("a texture's image index");
         }

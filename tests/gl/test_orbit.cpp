@@ -389,6 +389,57 @@ TEST_F(GlTest, OrbitShipShadowMapDarkensTheSunOnly) {
     EXPECT_EQ(fillOnly.color.rgba, fillOnlyOff.color.rgba) << "fills and IBL are not shadowed by the map";
 }
 
+// The scene hands its ship shadow map to the pipeline: volumetric light's shadow-map mode marches it (no
+// input error, no warning) and adds light, an image other than the screen-space rays'. Without the map
+// (shadows off) the same settings give the screen rays' image bit for bit, so the first half can fail.
+TEST_F(GlTest, OrbitHandsItsShadowMapToVolumetricLight) {
+    struct Run {
+        Frame frame;
+        PipelineStatus status;
+        std::vector<std::string> warnings;
+    };
+    const auto render = [](const char* shadow, bool volumetric, VolumetricLightMode mode) {
+        auto scene = makeScene(11.0f, {"post=\"raw\"", shadow});
+        Settings s = scene->defaultSettings();
+        s.volumetricLight.enabled = volumetric;
+        s.volumetricLight.mode = mode;
+        s.volumetricLight.scattering = 0.2f;
+        Run run;
+        const LogSink previous = setLogSink([&](LogLevel level, std::string_view message) {
+            if (level >= LogLevel::Warning) {
+                run.warnings.emplace_back(message);
+            }
+        });
+        Pipeline pipeline({.settings = s});
+        run.frame = renderFrame(*scene, pipeline);
+        setLogSink(previous);
+        run.status = pipeline.status();
+        return run;
+    };
+    const Run off = render("shadow.enabled=true", false, VolumetricLightMode::ShadowMap);
+    const Run marched = render("shadow.enabled=true", true, VolumetricLightMode::ShadowMap);
+    EXPECT_TRUE(marched.warnings.empty()) << marched.warnings.front();
+    EXPECT_TRUE(marched.status.inputErrors.empty());
+    EXPECT_NE(std::find(marched.status.ran.begin(), marched.status.ran.end(), "volumetric light"),
+              marched.status.ran.end());
+    double added = 0.0;
+    long brighter = 0;
+    for (std::size_t i = 0; i < off.frame.display.rgba.size(); i += 4) {
+        const double d = double(marched.frame.display.rgba[i + 1]) - double(off.frame.display.rgba[i + 1]);
+        added += d;
+        brighter += d > 0.0 ? 1 : 0;
+    }
+    RecordProperty("pixelsTheMarchBrightens", std::to_string(brighter));
+    EXPECT_GT(added, 0.0) << "in-scattering adds light";
+    EXPECT_GT(brighter, long(off.frame.ids.size() / 10)) << "along most view rays";
+    const Run screen = render("shadow.enabled=true", true, VolumetricLightMode::Screen);
+    EXPECT_NE(marched.frame.display.rgba, screen.frame.display.rgba) << "the map was marched";
+
+    const Run noMap = render("shadow.enabled=false", true, VolumetricLightMode::ShadowMap);
+    const Run noMapScreen = render("shadow.enabled=false", true, VolumetricLightMode::Screen);
+    EXPECT_EQ(noMap.frame.display.rgba, noMapScreen.frame.display.rgba) << "no map: the screen rays";
+}
+
 TEST_F(GlTest, OrbitMotionVectorsFollowTheCameraAndTheShipsOwnSpin) {
     // A moving script (speed 1) at frame 10: each ship pixel's motion must equal the reprojection of its
     // surface point through the previous ship transform and camera.

@@ -875,7 +875,7 @@ int Builder::textureUse(int index, int texCoord, bool srgb, const std::string& w
         fail(ModelIssue::Unsupported, textureWhere,
              "no source image (an extension's image format is not read)");
     }
-    Texture texture;
+    ModelTexture texture;
     texture.srgb = srgb;
     texture.image = decodeImage(t.source, textureWhere + ".source", model);
     if (t.sampler >= 0) {

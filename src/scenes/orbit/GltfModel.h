@@ -115,7 +115,7 @@ struct MeshInstance {
 enum class AlphaMode { Opaque, Mask, Blend };
 
 /// glTF's sampler, in its own (OpenGL) enum values; 0 where the file leaves a filter to the renderer.
-struct Sampler {
+struct ModelSampler {
     int magFilter = 0;
     int minFilter = 0;
     int wrapS = 10497; ///< REPEAT
@@ -123,10 +123,10 @@ struct Sampler {
 };
 
 /// One use of an image: the same image read as colour and as data appears twice, with each flag.
-struct Texture {
+struct ModelTexture {
     int image = -1;    ///< into Model::images
     bool srgb = false; ///< colour (base colour, emissive): decode sRGB; data (normal, ORM): linear
-    Sampler sampler;
+    ModelSampler sampler;
 };
 
 /// glTF's metallic-roughness material; texture fields index Model::textures, -1 for none.
@@ -158,7 +158,7 @@ struct TextureImage {
 struct Model {
     std::vector<MeshInstance> meshes;
     std::vector<Material> materials;
-    std::vector<Texture> textures;
+    std::vector<ModelTexture> textures;
     std::vector<TextureImage> images; ///< only those a material uses
     Bounds bounds;                    ///< world space, every vertex (framing)
 

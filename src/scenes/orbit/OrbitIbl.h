@@ -70,8 +70,8 @@ public:
 
     [[nodiscard]] GLuint environmentCube() const noexcept { return mEnvironment.id(); } ///< full mip chain
     [[nodiscard]] GLuint specularCube() const noexcept { return mSpecular.id(); }
-    [[nodiscard]] const Texture& lut() const noexcept { return mLut; } ///< RGBA16F (A, B, W, 0)
-    [[nodiscard]] const Sh9& sh() const noexcept { return mSh; }       ///< of radiance, core/Ibl.h's order
+    [[nodiscard]] const photopic::Texture& lut() const noexcept { return mLut; } ///< RGBA16F (A, B, W, 0)
+    [[nodiscard]] const Sh9& sh() const noexcept { return mSh; } ///< of radiance, core/Ibl.h's order
     [[nodiscard]] const IblOptions& options() const noexcept { return mOptions; }
     [[nodiscard]] const GpuIblParameters& parameters() const noexcept { return mParameters; }
     /// The table as uploaded: splitSumLut(lutSize, lutSamples) with W(n.v) as a third channel.
@@ -92,7 +92,7 @@ private:
     IblOptions mOptions;
     GlObject<detail::TextureDeleter> mEnvironment;
     GlObject<detail::TextureDeleter> mSpecular;
-    Texture mLut;
+    photopic::Texture mLut;
     Sh9 mSh;
     std::vector<glm::vec3> mCpuLut;
     GpuIblParameters mParameters;

@@ -32,7 +32,7 @@ GLenum wrapOf(int glTF) {
 
 } // namespace
 
-photopic::Texture makeModelTexture(const TextureImage& image, bool srgb, const Sampler& sampler,
+photopic::Texture makeModelTexture(const TextureImage& image, bool srgb, const ModelSampler& sampler,
                                    std::string_view debugName) {
     const int side = std::max(image.width, image.height);
     const int levels = std::bit_width(unsigned(std::max(side, 1)));
@@ -99,7 +99,7 @@ OrbitMeshes::OrbitMeshes(const Model& model)
     }
     mTextures.reserve(model.textures.size());
     for (std::size_t i = 0; i < model.textures.size(); ++i) {
-        const orbit::Texture& t = model.textures[i];
+        const orbit::ModelTexture& t = model.textures[i];
         const TextureImage& image = model.images[std::size_t(t.image)];
         const std::string name = "orbit " + image.name + (t.srgb ? " (sRGB)" : " (linear)");
         mTextures.push_back(makeModelTexture(image, t.srgb, t.sampler, name));

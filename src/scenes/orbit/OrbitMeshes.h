@@ -25,8 +25,8 @@ struct MeshDraw {
 /// A GL texture for one use of an image (sRGB or linear), mipmapped, with the glTF sampler's settings.
 /// `rgba` is width x height x 4 bytes, rows top to bottom (glTF's texture coordinates put v = 0 at the top
 /// row, so the rows are uploaded as they are: no flip).
-[[nodiscard]] photopic::Texture makeModelTexture(const TextureImage& image, bool srgb, const Sampler& sampler,
-                                                 std::string_view debugName);
+[[nodiscard]] photopic::Texture makeModelTexture(const TextureImage& image, bool srgb,
+                                                 const ModelSampler& sampler, std::string_view debugName);
 
 class OrbitMeshes {
 public:

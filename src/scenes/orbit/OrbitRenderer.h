@@ -65,6 +65,10 @@ public:
     /// the intensity, so changing it back and forth cannot drift).
     [[nodiscard]] float iblBaseline(int material) const { return mIblBaselines.at(std::size_t(material)); }
     [[nodiscard]] const OrbitMeshes& meshes() const { return *mMeshes; }
+    /// The ship's sun shadow map as the last draw left it; null when shadows are off or none was drawn.
+    [[nodiscard]] const ShadowMap* sunShadowMap() const {
+        return mShadowValid && mShadowSettings.enabled ? &mShadowMap : nullptr;
+    }
 
     [[nodiscard]] const photopic::Texture& color() const { return mColor; }
     [[nodiscard]] const photopic::Texture& depth() const { return mDepth; }

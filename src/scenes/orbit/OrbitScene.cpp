@@ -156,6 +156,15 @@ FrameInputs OrbitScene::render(const FrameTime& time, Pipeline& pipeline, std::v
                        .sunDirection = draw.lights.sunDirection,
                        .objectId = &mRenderer.objectId(),
                        .material = &mRenderer.material()};
+    // The ship's shadow map goes to the pipeline too: volumetric light's shadow-map mode marches it (off by
+    // default: there is no medium in orbit to scatter in; a user turns it on for the look). The sun's light
+    // reaching the ship is what the medium would scatter, the planet's eclipse included.
+    if (const orbit::ShadowMap* map = mRenderer.sunShadowMap()) {
+        const float visible = orbit::sunVisibility(orbit::kEarth, glm::vec3(0.0f), draw.lights.sunDirection);
+        inputs.sunShadow.depth = &map->depth();
+        inputs.sunShadow.worldToClip = map->projection().viewProjection;
+        inputs.sunShadow.illuminance = glm::vec3(draw.lights.sun * visible);
+    }
     const LightingOutputs& lighting = pipeline.renderLighting(inputs, time);
     draw.ambientOcclusion = lighting.ambientOcclusion;
     draw.ambientOcclusionPower = lighting.ambientOcclusionPower;

@@ -148,7 +148,7 @@ public:
     /// world position to colour 1, depth-tested. Binds the map with bind()'s defaults first.
     void drawVisibility(const glm::mat4& viewProjection, const ShadowCasterDraws& drawCasters) const;
 
-    [[nodiscard]] const Texture& depth() const { return mDepth; }
+    [[nodiscard]] const photopic::Texture& depth() const { return mDepth; }
     [[nodiscard]] const ShadowProjection& projection() const { return mProjection; }
 
     /// std140 mirror of orbit_shadow.h.glsl's OrbitSunShadow block.
@@ -169,7 +169,7 @@ public:
 private:
     Program mDepthProgram;
     Program mVisibilityProgram;
-    Texture mDepth;
+    photopic::Texture mDepth;
     Framebuffer mTarget;
     ParameterBlock<Block> mBlock;
     ShadowProjection mProjection;

@@ -253,7 +253,7 @@ TextureImage lightsEmissive() {
 
 int addTexture(Model& m, TextureImage img, bool srgb) {
     m.images.push_back(std::move(img));
-    Texture t;
+    ModelTexture t;
     t.image = int(m.images.size()) - 1;
     t.srgb = srgb;
     m.textures.push_back(t);
