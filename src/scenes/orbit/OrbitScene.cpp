@@ -23,6 +23,8 @@ OrbitScene::OrbitScene() = default;
 Settings OrbitScene::defaultSettings() const {
     Settings s;
     s.tonemapping.mode = ToneMapper::Neutral;
+    // Thin rods, panel seams and foil alias: SMAA on the display image by default (aa.mode=ssaa for stills).
+    s.aa.mode = AntiAliasing::Smaa;
     if (mSettings.post == OrbitPost::Raw) {
         s.autoExposure.enabled = false;
         s.tonemapping.exposure = std::log2(mSettings.exp);
