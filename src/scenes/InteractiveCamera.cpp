@@ -38,4 +38,16 @@ void OrbitView::zoom(float factor) {
     eye = target + (eye - target) * (d / r);
 }
 
+void InteractiveCamera::orbit(float yaw, float pitch) {
+    OrbitView view = currentView();
+    view.orbit(yaw, pitch);
+    holdView(view);
+}
+
+void InteractiveCamera::zoom(float factor) {
+    OrbitView view = currentView();
+    view.zoom(factor);
+    holdView(view);
+}
+
 } // namespace photopic

@@ -205,18 +205,6 @@ void OrbitScene::holdView(const OrbitView& view) {
     mSettings.eye = glm::clamp(view.eye, glm::vec3(-1000.0f), glm::vec3(1000.0f));
 }
 
-void OrbitScene::orbit(float yaw, float pitch) {
-    OrbitView view = currentView();
-    view.orbit(yaw, pitch);
-    holdView(view);
-}
-
-void OrbitScene::zoom(float factor) {
-    OrbitView view = currentView();
-    view.zoom(factor);
-    holdView(view);
-}
-
 std::unique_ptr<Scene> makeOrbitScene() {
     return std::make_unique<OrbitScene>();
 }

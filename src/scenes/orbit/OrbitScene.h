@@ -122,11 +122,9 @@ private:
     void loadModel();
     void loadEnvironment();
     [[nodiscard]] orbit::OrbitLights lightsAt(double seconds) const;
-    void orbit(float yaw, float pitch) override;
-    void zoom(float factor) override;
     /// The eye the camera has now: the still one, or the script's at the last rendered frame.
-    [[nodiscard]] OrbitView currentView() const;
-    void holdView(const OrbitView& view);
+    [[nodiscard]] OrbitView currentView() const override;
+    void holdView(const OrbitView& view) override;
 
     OrbitSceneSettings mSettings;
     orbit::OrbitRenderer mRenderer;

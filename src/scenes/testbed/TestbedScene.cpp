@@ -134,18 +134,6 @@ void TestbedScene::holdView(const OrbitView& view) {
     mSettings.target = glm::clamp(view.target, glm::vec3(-1000.0f), glm::vec3(1000.0f));
 }
 
-void TestbedScene::orbit(float yaw, float pitch) {
-    OrbitView view = currentView();
-    view.orbit(yaw, pitch);
-    holdView(view);
-}
-
-void TestbedScene::zoom(float factor) {
-    OrbitView view = currentView();
-    view.zoom(factor);
-    holdView(view);
-}
-
 std::unique_ptr<Scene> makeTestbedScene() {
     return std::make_unique<TestbedScene>();
 }

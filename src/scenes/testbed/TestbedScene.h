@@ -90,11 +90,9 @@ public:
     [[nodiscard]] Lens lens() const;
 
 private:
-    void orbit(float yaw, float pitch) override;
-    void zoom(float factor) override;
     /// The still camera the next move starts from: the fixed one, else the path's view of the last frame.
-    [[nodiscard]] OrbitView currentView() const;
-    void holdView(const OrbitView& view);
+    [[nodiscard]] OrbitView currentView() const override;
+    void holdView(const OrbitView& view) override;
 
     TestbedSceneSettings mSettings;
     double mLastCameraTime = -1.0; ///< path time of the last rendered frame; < 0 before the first
