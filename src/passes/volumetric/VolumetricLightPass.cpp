@@ -76,6 +76,38 @@ VolumetricShadowParameters shadowParametersFor(const FrameContext& ctx, Extent l
     return p;
 }
 
+/// Where either mode's composite writes: the scene colour with the light added, and the debug view's image
+/// when that view is on.
+struct CompositeTargets {
+    const Texture& out;
+    const Texture* view = nullptr;
+};
+
+CompositeTargets acquireCompositeTargets(const FrameContext& ctx, FrameResources& resources) {
+    const Extent e = ctx.extent;
+    const Texture& out =
+        resources.pool()
+            .acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with volumetric light"})
+            .texture();
+    if (ctx.settings.debug.view != DebugView::VolumetricLight) {
+        return {out};
+    }
+    return {out, &resources.pool()
+                      .acquire({.extent = e,
+                                .format = GL_RGBA16F,
+                                .minFilter = GL_NEAREST,
+                                .magFilter = GL_NEAREST,
+                                .debugName = "volumetric light view"})
+                      .texture()};
+}
+
+void publish(FrameResources& resources, const CompositeTargets& targets) {
+    resources.bind(Resource::SceneColor, targets.out);
+    if (targets.view != nullptr) {
+        resources.bind(Resource::VolumetricLight, *targets.view);
+    }
+}
+
 } // namespace
 
 VolumetricLightPass::VolumetricLightPass()
@@ -133,21 +165,10 @@ void VolumetricLightPass::executeShadowMap(FrameContext& ctx, FrameResources& re
                                        .magFilter = GL_NEAREST,
                                        .debugName = "volumetric light march (this frame)"})
                              .texture();
-    const Texture& out =
-        resources.pool()
-            .acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with volumetric light"})
-            .texture();
-    const bool writeView = ctx.settings.debug.view == DebugView::VolumetricLight;
-    const Texture* view = nullptr;
-    if (writeView) {
-        view = &resources.pool()
-                    .acquire({.extent = e,
-                              .format = GL_RGBA16F,
-                              .minFilter = GL_NEAREST,
-                              .magFilter = GL_NEAREST,
-                              .debugName = "volumetric light view"})
-                    .texture();
-    }
+    const CompositeTargets targets = acquireCompositeTargets(ctx, resources);
+    const Texture& out = targets.out;
+    const Texture* view = targets.view;
+    const bool writeView = view != nullptr;
     const bool hasHistory =
         mShadowLight.valid() && mShadowDepth.valid() && !ctx.resetHistory && !ctx.inputs.camera->cut;
     mShadowParameters.update(shadowParametersFor(ctx, low, factor, hasHistory, writeView));
@@ -204,10 +225,7 @@ void VolumetricLightPass::executeShadowMap(FrameContext& ctx, FrameResources& re
     }
     mShadowLight.advance();
     mShadowDepth.advance();
-    resources.bind(Resource::SceneColor, out);
-    if (view) {
-        resources.bind(Resource::VolumetricLight, *view);
-    }
+    publish(resources, targets);
 }
 
 void VolumetricLightPass::executeScreen(FrameContext& ctx, FrameResources& resources) {
@@ -225,21 +243,10 @@ void VolumetricLightPass::executeScreen(FrameContext& ctx, FrameResources& resou
                                        .magFilter = GL_NEAREST,
                                        .debugName = "volumetric light (this frame)"})
                              .texture();
-    const Texture& out =
-        resources.pool()
-            .acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with volumetric light"})
-            .texture();
-    const bool writeView = ctx.settings.debug.view == DebugView::VolumetricLight;
-    const Texture* view = nullptr;
-    if (writeView) {
-        view = &resources.pool()
-                    .acquire({.extent = e,
-                              .format = GL_RGBA16F,
-                              .minFilter = GL_NEAREST,
-                              .magFilter = GL_NEAREST,
-                              .debugName = "volumetric light view"})
-                    .texture();
-    }
+    const CompositeTargets targets = acquireCompositeTargets(ctx, resources);
+    const Texture& out = targets.out;
+    const Texture* view = targets.view;
+    const bool writeView = view != nullptr;
     const Texture* motion = resources.texture(Resource::Motion);
     const bool hasHistory = mHistory.valid() && !ctx.resetHistory;
     const VolumetricLightParameters p = parametersFor(ctx, half, hasHistory, motion != nullptr, writeView);
@@ -292,10 +299,7 @@ void VolumetricLightPass::executeScreen(FrameContext& ctx, FrameResources& resou
         glDispatchCompute(groups(e.width), groups(e.height), 1);
     }
     mHistory.advance();
-    resources.bind(Resource::SceneColor, out);
-    if (view) {
-        resources.bind(Resource::VolumetricLight, *view);
-    }
+    publish(resources, targets);
 }
 
 } // namespace photopic
