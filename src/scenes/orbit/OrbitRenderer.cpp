@@ -108,25 +108,7 @@ OrbitRenderer::OrbitRenderer()
 }
 
 void OrbitRenderer::resize(Extent extent) {
-    if (mColor.valid() && mColor.extent() == extent) {
-        return;
-    }
-    const auto target = [&](GLenum format, std::string_view name) {
-        return photopic::Texture({.extent = extent,
-                                  .format = format,
-                                  .minFilter = GL_NEAREST,
-                                  .magFilter = GL_NEAREST,
-                                  .debugName = name});
-    };
-    mColor = photopic::Texture({.extent = extent, .format = GL_RGBA16F, .debugName = "orbit colour"});
-    mDepth = target(GL_DEPTH_COMPONENT32F, "orbit depth");
-    mNormals = target(GL_RGBA16F, "orbit normals");
-    mMotion = target(GL_RG16F, "orbit motion");
-    mObjectId = target(GL_R32UI, "orbit object ids");
-    mMaterial = target(GL_RGBA16F, "orbit material");
-    mTargets = Framebuffer({.color = {&mColor, &mNormals, &mMotion, &mObjectId, &mMaterial},
-                            .depth = &mDepth,
-                            .debugName = "orbit targets"});
+    mTargets.resize(extent, "orbit");
 }
 
 void OrbitRenderer::setModel(const Model& model, const glm::mat4& placement) {
@@ -187,20 +169,11 @@ void OrbitRenderer::draw(const DrawInfo& info) {
     if (mMeshes && info.shadow != nullptr) {
         renderShadowMap(info);
     }
-    const GpuFrame f = frameBlock(info, mColor.extent());
+    const GpuFrame f = frameBlock(info, mTargets.extent());
     mFrame.update(&f, sizeof(f));
 
     DebugGroup group("orbit scene");
-    mTargets.bind();
-    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    for (int i = 0; i < 3; ++i) {
-        glClearNamedFramebufferfv(mTargets.id(), GL_COLOR, i, zero);
-    }
-    const GLuint noObject[4] = {0, 0, 0, 0};
-    glClearNamedFramebufferuiv(mTargets.id(), GL_COLOR, 3, noObject);
-    glClearNamedFramebufferfv(mTargets.id(), GL_COLOR, 4, zero);
-    const float far = 1.0f;
-    glClearNamedFramebufferfv(mTargets.id(), GL_DEPTH, 0, &far);
+    mTargets.bindAndClear();
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, mFrame.id());
     if (mIbl) {
         // Stored, never accumulated: the same value always gives the same frame.

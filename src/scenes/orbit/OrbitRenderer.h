@@ -9,6 +9,7 @@
 #include "core/Camera.h"
 #include "core/Image.h"
 #include "gl/Objects.h"
+#include "scenes/SceneTargets.h"
 #include "scenes/orbit/OrbitIbl.h"
 #include "scenes/orbit/OrbitMeshes.h"
 #include "scenes/orbit/OrbitShadowMap.h"
@@ -70,12 +71,12 @@ public:
         return mShadowValid && mShadowSettings.enabled ? &mShadowMap : nullptr;
     }
 
-    [[nodiscard]] const photopic::Texture& color() const { return mColor; }
-    [[nodiscard]] const photopic::Texture& depth() const { return mDepth; }
-    [[nodiscard]] const photopic::Texture& normals() const { return mNormals; }
-    [[nodiscard]] const photopic::Texture& motion() const { return mMotion; }
-    [[nodiscard]] const photopic::Texture& objectId() const { return mObjectId; }
-    [[nodiscard]] const photopic::Texture& material() const { return mMaterial; }
+    [[nodiscard]] const photopic::Texture& color() const { return mTargets.color(); }
+    [[nodiscard]] const photopic::Texture& depth() const { return mTargets.depth(); }
+    [[nodiscard]] const photopic::Texture& normals() const { return mTargets.normals(); }
+    [[nodiscard]] const photopic::Texture& motion() const { return mTargets.motion(); }
+    [[nodiscard]] const photopic::Texture& objectId() const { return mTargets.objectId(); }
+    [[nodiscard]] const photopic::Texture& material() const { return mTargets.material(); }
 
 private:
     void drawMeshes(const DrawInfo& info);
@@ -104,13 +105,7 @@ private:
     photopic::Texture mWhiteSrgb;
     photopic::Texture mWhiteLinear;
     photopic::Texture mFlatNormal;
-    photopic::Texture mColor;
-    photopic::Texture mDepth;
-    photopic::Texture mNormals;
-    photopic::Texture mMotion;
-    photopic::Texture mObjectId;
-    photopic::Texture mMaterial;
-    Framebuffer mTargets;
+    SceneTargets mTargets;
 };
 
 } // namespace photopic::orbit

@@ -68,38 +68,7 @@ TestbedRenderer::TestbedRenderer()
     , mFrame({.size = sizeof(GpuFrame), .debugName = "testbed frame"}) {}
 
 void TestbedRenderer::resize(Extent extent) {
-    if (mColor.valid() && mColor.extent() == extent) {
-        return;
-    }
-    mColor = Texture({.extent = extent, .format = GL_RGBA16F, .debugName = "testbed colour"});
-    mDepth = Texture({.extent = extent,
-                      .format = GL_DEPTH_COMPONENT32F,
-                      .minFilter = GL_NEAREST,
-                      .magFilter = GL_NEAREST,
-                      .debugName = "testbed depth"});
-    mNormals = Texture({.extent = extent,
-                        .format = GL_RGBA16F,
-                        .minFilter = GL_NEAREST,
-                        .magFilter = GL_NEAREST,
-                        .debugName = "testbed normals"});
-    mMotion = Texture({.extent = extent,
-                       .format = GL_RG16F,
-                       .minFilter = GL_NEAREST,
-                       .magFilter = GL_NEAREST,
-                       .debugName = "testbed motion"});
-    mObjectId = Texture({.extent = extent,
-                         .format = GL_R32UI,
-                         .minFilter = GL_NEAREST,
-                         .magFilter = GL_NEAREST,
-                         .debugName = "testbed object ids"});
-    mMaterial = Texture({.extent = extent,
-                         .format = GL_RGBA16F,
-                         .minFilter = GL_NEAREST,
-                         .magFilter = GL_NEAREST,
-                         .debugName = "testbed material"});
-    mTargets = Framebuffer({.color = {&mColor, &mNormals, &mMotion, &mObjectId, &mMaterial},
-                            .depth = &mDepth,
-                            .debugName = "testbed targets"});
+    mTargets.resize(extent, "testbed");
 }
 
 void TestbedRenderer::draw(const DrawInfo& info) {
@@ -108,7 +77,7 @@ void TestbedRenderer::draw(const DrawInfo& info) {
         throw std::logic_error("testbed: more primitives than TestbedRenderer::kMaxPrimitives");
     }
     const Camera& camera = *info.camera;
-    const Extent e = mColor.extent();
+    const Extent e = mTargets.extent();
     const Environment& env = environment();
 
     GpuPrimitive gpu[kMaxPrimitives];
@@ -139,16 +108,7 @@ void TestbedRenderer::draw(const DrawInfo& info) {
     mFrame.update(&f, sizeof(f));
 
     DebugGroup group("testbed scene");
-    mTargets.bind();
-    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    for (int i = 0; i < 3; ++i) {
-        glClearNamedFramebufferfv(mTargets.id(), GL_COLOR, i, zero);
-    }
-    const GLuint noObject[4] = {0, 0, 0, 0};
-    glClearNamedFramebufferuiv(mTargets.id(), GL_COLOR, 3, noObject);
-    glClearNamedFramebufferfv(mTargets.id(), GL_COLOR, 4, zero);
-    const float far = 1.0f;
-    glClearNamedFramebufferfv(mTargets.id(), GL_DEPTH, 0, &far);
+    mTargets.bindAndClear();
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, mFrame.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mPrimitives.id());
     glBindVertexArray(mVao.id());

@@ -8,6 +8,7 @@
 
 #include "core/Camera.h"
 #include "gl/Objects.h"
+#include "scenes/SceneTargets.h"
 #include "scenes/testbed/TestbedGeometry.h"
 
 #include <vector>
@@ -34,12 +35,12 @@ public:
     };
     void draw(const DrawInfo& info);
 
-    [[nodiscard]] const Texture& color() const { return mColor; }
-    [[nodiscard]] const Texture& depth() const { return mDepth; }
-    [[nodiscard]] const Texture& normals() const { return mNormals; }
-    [[nodiscard]] const Texture& motion() const { return mMotion; }
-    [[nodiscard]] const Texture& objectId() const { return mObjectId; }
-    [[nodiscard]] const Texture& material() const { return mMaterial; }
+    [[nodiscard]] const Texture& color() const { return mTargets.color(); }
+    [[nodiscard]] const Texture& depth() const { return mTargets.depth(); }
+    [[nodiscard]] const Texture& normals() const { return mTargets.normals(); }
+    [[nodiscard]] const Texture& motion() const { return mTargets.motion(); }
+    [[nodiscard]] const Texture& objectId() const { return mTargets.objectId(); }
+    [[nodiscard]] const Texture& material() const { return mTargets.material(); }
 
 private:
     Program mObjects;
@@ -47,13 +48,7 @@ private:
     VertexArray mVao;
     Buffer mPrimitives;
     Buffer mFrame;
-    Texture mColor;
-    Texture mDepth;
-    Texture mNormals;
-    Texture mMotion;
-    Texture mObjectId;
-    Texture mMaterial;
-    Framebuffer mTargets;
+    SceneTargets mTargets;
 };
 
 } // namespace photopic::testbed
