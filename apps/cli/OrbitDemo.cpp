@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "Outputs.h"
 #include "Progress.h"
+#include "TabletopDemo.h"
 #include "TelemetryCsv.h"
 #include "Video.h"
 
@@ -26,48 +27,22 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct OrbitSample {
-    float timeS = 0.0f;
-    float measuredLuma = 0.0f;
-    float targetLog2 = 0.0f;
-    float appliedLog2 = 0.0f;
-    float sunVisibility = 1.0f;
-};
-
 fs::path framePath(const fs::path& folder, std::size_t index) {
     return folder / fmt::format("frame_{:04d}.png", index);
 }
 
-Image8 plotOrbit(const std::vector<OrbitSample>& samples) {
-    PlotSeries luma{"metered luma (log2)", {120, 120, 120, 255}, {}, {}};
-    PlotSeries target{"target EV", {30, 110, 220, 255}, {}, {}};
-    PlotSeries applied{"applied EV", {220, 60, 30, 255}, {}, {}};
-    PlotSeries sun{"sun visible at the ship (0..1)", {220, 180, 30, 255}, {}, {}};
-    for (const OrbitSample& s : samples) {
-        for (PlotSeries* p : {&luma, &target, &applied, &sun}) {
-            p->x.push_back(s.timeS);
-        }
-        luma.y.push_back(s.measuredLuma > 0.0f ? std::log2(s.measuredLuma)
-                                               : std::numeric_limits<float>::quiet_NaN());
-        target.y.push_back(s.targetLog2);
-        applied.y.push_back(s.appliedLog2);
-        sun.y.push_back(s.sunVisibility);
-    }
-    return plotLines({luma, target, applied, sun}, 960, 420,
-                     "Orbit: into the planet's shadow and out into the sun, auto exposure", "time (s)");
-}
-
 /// Six written frames spread over the run, read back from their PNGs.
 Image8 contactSheet(const fs::path& folder, std::size_t written, int every,
-                    const std::vector<OrbitSample>& samples) {
+                    const std::vector<TelemetrySample>& samples, const std::vector<float>& sunVisibility) {
     std::vector<std::pair<std::string, Image8>> tiles;
     constexpr std::size_t kTiles = 6;
     for (std::size_t k = 0; k < kTiles; ++k) {
         const std::size_t w = written <= 1 ? 0 : k * (written - 1) / (kTiles - 1);
-        const OrbitSample& s = samples[std::min(w * std::size_t(every), samples.size() - 1)];
-        tiles.emplace_back(
-            fmt::format("t={:.1f}s sun {:.0f}% {:+.2f} EV", s.timeS, 100.0f * s.sunVisibility, s.appliedLog2),
-            readPng8(framePath(folder, w)));
+        const std::size_t i = std::min(w * std::size_t(every), samples.size() - 1);
+        const TelemetrySample& s = samples[i];
+        tiles.emplace_back(fmt::format("t={:.1f}s sun {:.0f}% {:+.2f} EV", s.timeS, 100.0f * sunVisibility[i],
+                                       s.appliedLog2),
+                           readPng8(framePath(folder, w)));
     }
     return makeContactSheet(tiles, 3, 320);
 }
@@ -78,8 +53,9 @@ namespace {
 
 /// What the frame loop leaves for the summary files.
 struct OrbitRun {
-    std::vector<OrbitSample> samples;
-    std::size_t written = 0; ///< frame PNGs
+    std::vector<TelemetrySample> samples;
+    std::vector<float> sunVisibility; ///< at the ship, 0..1, one per sample
+    std::size_t written = 0;          ///< frame PNGs
     int frames = 0;
 };
 
@@ -101,10 +77,14 @@ OrbitRun renderOrbit(const OrbitDemoOptions& options, RunOutputs& outputs) {
     const fs::path telemetryPath = options.output / "telemetry.csv";
     TelemetryCsv telemetry(telemetryPath, dt, scene.telemetryColumns());
     run.samples.reserve(std::size_t(run.frames));
+    run.sunVisibility.reserve(std::size_t(run.frames));
     // The scene's columns: script_s, sun_visibility.
     const auto addSample = [&](const ExposureTelemetry& t, const std::vector<double>& values) {
-        run.samples.push_back({float(t.frame) * dt, t.frameLuminance, t.targetLog2, t.appliedLog2,
-                               values.size() > 1 ? float(values[1]) : 1.0f});
+        run.samples.push_back({.timeS = float(t.frame) * dt,
+                               .measuredLuma = t.frameLuminance,
+                               .targetLog2 = t.targetLog2,
+                               .appliedLog2 = t.appliedLog2});
+        run.sunVisibility.push_back(values.size() > 1 ? float(values[1]) : 1.0f);
     };
     Progress progress("demo --scene orbit", std::size_t(run.frames));
     for (int i = 0; i < run.frames; ++i) {
@@ -133,7 +113,7 @@ void printSummary(const OrbitDemoOptions& options, const OrbitRun& run, const st
     if (!run.samples.empty()) {
         const auto [low, high] = std::minmax_element(
             run.samples.begin(), run.samples.end(),
-            [](const OrbitSample& a, const OrbitSample& b) { return a.appliedLog2 < b.appliedLog2; });
+            [](const TelemetrySample& a, const TelemetrySample& b) { return a.appliedLog2 < b.appliedLog2; });
         std::printf("  exposure: %+.2f EV (t=%.1f s) .. %+.2f EV (t=%.1f s)\n", double(low->appliedLog2),
                     double(low->timeS), double(high->appliedLog2), double(high->timeS));
     }
@@ -159,11 +139,14 @@ int runOrbitDemo(const OrbitDemoOptions& options) {
 
     const OrbitRun run = renderOrbit(options, outputs);
     const auto rendered = std::chrono::steady_clock::now();
-    writePng(plotPath, plotOrbit(run.samples));
+    writePng(plotPath,
+             plotExposureTelemetry(
+                 run.samples, {"sun visible at the ship (0..1)", {220, 180, 30, 255}, {}, run.sunVisibility},
+                 960, 420, "Orbit: into the planet's shadow and out into the sun, auto exposure"));
     outputs.wrote(plotPath);
     if (!run.samples.empty() && run.written > 0) {
-        writePng(sheetPath,
-                 contactSheet(options.output, run.written, std::max(1, options.frameEvery), run.samples));
+        writePng(sheetPath, contactSheet(options.output, run.written, std::max(1, options.frameEvery),
+                                         run.samples, run.sunVisibility));
         outputs.wrote(sheetPath);
     }
     std::string video = "demo.mp4 skipped (--no-video)";

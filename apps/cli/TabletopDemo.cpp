@@ -29,23 +29,22 @@ namespace photopic::cli {
 
 namespace fs = std::filesystem;
 
-Image8 plotExposureTelemetry(const std::vector<TelemetrySample>& samples, int width, int height) {
+Image8 plotExposureTelemetry(const std::vector<TelemetrySample>& samples, PlotSeries extra, int width,
+                             int height, const std::string& title) {
     PlotSeries luma{"measured luma (log2)", {120, 120, 120, 255}, {}, {}};
     PlotSeries target{"target EV", {30, 110, 220, 255}, {}, {}};
     PlotSeries applied{"applied EV", {220, 60, 30, 255}, {}, {}};
-    PlotSeries outdoors{"outdoors (0..1)", {40, 160, 60, 255}, {}, {}};
     for (const TelemetrySample& s : samples) {
-        for (PlotSeries* p : {&luma, &target, &applied, &outdoors}) {
-            p->x.push_back(s.timeS);
-        }
+        luma.x.push_back(s.timeS);
         luma.y.push_back(s.measuredLuma > 0.0f ? std::log2(s.measuredLuma)
                                                : std::numeric_limits<float>::quiet_NaN());
         target.y.push_back(s.targetLog2);
         applied.y.push_back(s.appliedLog2);
-        outdoors.y.push_back(s.outdoors);
     }
-    return plotLines({luma, target, applied, outdoors}, width, height,
-                     "Tabletop walk: light under the token and the eye's exposure", "time (s)");
+    target.x = luma.x;
+    applied.x = luma.x;
+    extra.x = luma.x;
+    return plotLines({luma, target, applied, extra}, width, height, title, "time (s)");
 }
 
 std::vector<std::size_t> keyFrameIndices(const std::vector<Transition>& transitions, std::size_t frameCount) {
@@ -165,7 +164,12 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     outputs.wrote(telemetryPath);
 
     const std::vector<Transition> transitions = analyzeTransitions(samples, ae);
-    writePng(plotPath, plotExposureTelemetry(samples, 960, 420));
+    PlotSeries outdoors{"outdoors (0..1)", {40, 160, 60, 255}, {}, {}};
+    for (const TelemetrySample& s : samples) {
+        outdoors.y.push_back(s.outdoors);
+    }
+    writePng(plotPath, plotExposureTelemetry(samples, std::move(outdoors), 960, 420,
+                                             "Tabletop walk: light under the token and the eye's exposure"));
     outputs.wrote(plotPath);
     const std::vector<std::size_t> keyFrames = keyFrameIndices(transitions, samples.size());
     if (!keyFrames.empty()) {

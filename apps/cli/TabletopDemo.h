@@ -3,6 +3,7 @@
 // pipeline with `subject` metering -- the pipeline probes the tokens and exposure follows the light under the
 // player -- then telemetry -> plot, key frames, an MP4 when ffmpeg is there, and a summary per transition.
 
+#include "common/Raster.h"
 #include "common/TransitionAnalysis.h"
 #include "core/Image.h"
 
@@ -13,10 +14,10 @@
 
 namespace photopic::cli {
 
-/// measured luma (log2), target, applied (EV) and outdoors (0..1) over time, drawn by common/Raster.h
-/// plotLines.
-[[nodiscard]] Image8 plotExposureTelemetry(const std::vector<TelemetrySample>& samples, int width,
-                                           int height);
+/// Measured luma (log2), target and applied (EV) over time, and `extra` beside them (its name, colour and
+/// one y per sample; x is filled in), drawn under `title` by common/Raster.h plotLines.
+[[nodiscard]] Image8 plotExposureTelemetry(const std::vector<TelemetrySample>& samples, PlotSeries extra,
+                                           int width, int height, const std::string& title);
 
 /// Frame indices worth showing for each transition: just before the crossing, the start of the gap (the
 /// blow-out or the dark lag) and the first settled frame; sorted, without repeats.
