@@ -364,6 +364,19 @@ const Texture& Pipeline::subframeMean() const {
     return mSsaa->mean();
 }
 
+const Texture& Pipeline::supersample(const Texture& color, const std::function<void(glm::vec2)>& draw) {
+    const int subframes = subframeCount();
+    if (subframes <= 1) {
+        return color;
+    }
+    accumulateSubframe(color, 0);
+    for (int i = 1; i < subframes; ++i) {
+        draw(subframeJitter(i));
+        accumulateSubframe(color, i);
+    }
+    return subframeMean();
+}
+
 const Texture& Pipeline::sceneReferred() {
     const GlStateScope hostState;
     if (!mCaps.rgba32fRenderable) {

@@ -101,6 +101,12 @@ public:
     /// The weighted mean of this frame's sub-frames (RGBA32F), the colour to hand to execute(); valid
     /// until the next frame's first accumulateSubframe().
     [[nodiscard]] const Texture& subframeMean() const;
+    /// The three calls above for a host that renders a frame with one call: with subframeCount() > 1, folds
+    /// `color` (sub-frame 0, already drawn with beginFrame's jitter) into the mean, then for each further
+    /// sub-frame calls `draw` with its jitter (it renders into `color` again) and folds that in; returns the
+    /// mean. With one sub-frame it returns `color` and calls nothing.
+    [[nodiscard]] const Texture& supersample(const Texture& color,
+                                             const std::function<void(glm::vec2)>& draw);
 
     /// Lighting stage (3D hosts, after beginFrame, before the host shades): runs the passes whose outputs the
     /// host consumes while lighting and hands back their textures (null when that pass is off or lacks its

@@ -95,19 +95,12 @@ FrameInputs TestbedScene::render(const FrameTime& time, Pipeline& pipeline, std:
     if (lighting.ambientOcclusion != nullptr || lighting.contactShadows != nullptr) {
         mRenderer.draw(draw);
     }
-    // Supersampling: each further sub-frame is rendered with its own jitter (and the lighting stage's
-    // textures) and folded into the pipeline's mean in linear light; depth, normals and motion are the last
-    // sub-frame's.
-    const int subframes = pipeline.subframeCount();
-    if (subframes > 1) {
-        pipeline.accumulateSubframe(mRenderer.color(), 0);
-        for (int i = 1; i < subframes; ++i) {
-            draw.jitter = pipeline.subframeJitter(i);
-            mRenderer.draw(draw);
-            pipeline.accumulateSubframe(mRenderer.color(), i);
-        }
-        inputs.color = &pipeline.subframeMean();
-    }
+    // Supersampling: each further sub-frame with its own jitter (and the lighting stage's textures), folded
+    // into the pipeline's mean in linear light; depth, normals and motion are the last sub-frame's.
+    inputs.color = &pipeline.supersample(mRenderer.color(), [&](glm::vec2 jitter) {
+        draw.jitter = jitter;
+        mRenderer.draw(draw);
+    });
     telemetry = {double(testbed::cameraPoseAt(t.camera).shot), mCamera.cut ? 1.0 : 0.0};
     return inputs;
 }
