@@ -1,11 +1,11 @@
 #include "OrbitDemo.h"
 
 #include "Commands.h"
+#include "DemoFiles.h"
 #include "Outputs.h"
 #include "Progress.h"
 #include "TabletopDemo.h"
 #include "TelemetryCsv.h"
-#include "Video.h"
 
 #include "common/Raster.h"
 #include "gl/Context.h"
@@ -27,10 +27,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path framePath(const fs::path& folder, std::size_t index) {
-    return folder / fmt::format("frame_{:04d}.png", index);
-}
-
 /// Six written frames spread over the run, read back from their PNGs.
 Image8 contactSheet(const fs::path& folder, std::size_t written, int every,
                     const std::vector<TelemetrySample>& samples, const std::vector<float>& sunVisibility) {
@@ -42,7 +38,7 @@ Image8 contactSheet(const fs::path& folder, std::size_t written, int every,
         const TelemetrySample& s = samples[i];
         tiles.emplace_back(fmt::format("t={:.1f}s sun {:.0f}% {:+.2f} EV", s.timeS, 100.0f * sunVisibility[i],
                                        s.appliedLog2),
-                           readPng8(framePath(folder, w)));
+                           readPng8(demoFramePath(folder, w)));
     }
     return makeContactSheet(tiles, 3, 320);
 }
@@ -93,7 +89,7 @@ OrbitRun renderOrbit(const OrbitDemoOptions& options, RunOutputs& outputs) {
         const FrameInputs frame = scene.render(time, pipeline, values);
         const Texture& display = pipeline.execute(frame, time);
         if (i % every == 0) {
-            writePng(framePath(options.output, run.written++), readTexture8(display));
+            writePng(demoFramePath(options.output, run.written++), readTexture8(display));
             outputs.wroteSequenceItem();
         }
         telemetry.sceneValues(std::uint64_t(i), std::move(values));
@@ -123,41 +119,25 @@ void printSummary(const OrbitDemoOptions& options, const OrbitRun& run, const st
 
 int runOrbitDemo(const OrbitDemoOptions& options) {
     const auto begin = std::chrono::steady_clock::now();
-    if (options.width < 16 || options.height < 16 || options.fps <= 0.0f || options.seconds <= 0.0f) {
-        throw InputError("demo: --size must be at least 16x16, --fps and --seconds positive");
-    }
     // Every output is checked before the first frame; a run that fails takes back what it wrote.
     RunOutputs outputs;
-    outputs.makeFolder(options.output);
-    const fs::path plotPath = options.output / "exposure_plot.png";
-    const fs::path sheetPath = options.output / "contact_sheet.png";
-    const fs::path videoPath = options.output / "demo.mp4";
-    for (const fs::path& path : {framePath(options.output, 0), plotPath, sheetPath, videoPath}) {
-        RunOutputs::requireFile(path);
-    }
-    outputs.sequence([&](std::size_t i) { return framePath(options.output, i); });
+    const DemoFiles files = prepareDemoFiles(outputs, options.output, options.width, options.height,
+                                             options.fps, options.seconds);
 
     const OrbitRun run = renderOrbit(options, outputs);
     const auto rendered = std::chrono::steady_clock::now();
-    writePng(plotPath,
+    writePng(files.plot,
              plotExposureTelemetry(
                  run.samples, {"sun visible at the ship (0..1)", {220, 180, 30, 255}, {}, run.sunVisibility},
                  960, 420, "Orbit: into the planet's shadow and out into the sun, auto exposure"));
-    outputs.wrote(plotPath);
+    outputs.wrote(files.plot);
     if (!run.samples.empty() && run.written > 0) {
-        writePng(sheetPath, contactSheet(options.output, run.written, std::max(1, options.frameEvery),
-                                         run.samples, run.sunVisibility));
-        outputs.wrote(sheetPath);
+        writePng(files.sheet, contactSheet(options.output, run.written, std::max(1, options.frameEvery),
+                                           run.samples, run.sunVisibility));
+        outputs.wrote(files.sheet);
     }
-    std::string video = "demo.mp4 skipped (--no-video)";
-    if (options.video) {
-        const VideoResult result = encodeFrameSequence(
-            options.output, double(options.fps) / double(std::max(1, options.frameEvery)), videoPath);
-        if (result.written) {
-            outputs.wrote(videoPath);
-        }
-        video = result.note;
-    }
+    const std::string video = encodeDemoVideo(
+        outputs, files, double(options.fps) / double(std::max(1, options.frameEvery)), options.video);
     outputs.commit();
     const auto end = std::chrono::steady_clock::now();
     printSummary(options, run, video);

@@ -4,10 +4,10 @@
 #include "TabletopDemo.h"
 
 #include "Commands.h"
+#include "DemoFiles.h"
 #include "Outputs.h"
 #include "Progress.h"
 #include "TelemetryCsv.h"
-#include "Video.h"
 
 #include "common/Raster.h"
 #include "core/Log.h"
@@ -73,10 +73,6 @@ double meanDisplay(const Image8& image) {
     return image.rgba.empty() ? 0.0 : sum / (3.0 * double(image.rgba.size() / 4));
 }
 
-fs::path framePath(const fs::path& folder, std::size_t index) {
-    return folder / fmt::format("frame_{:04d}.png", index);
-}
-
 /// The contact sheet's tiles: each key frame, or with --every N the written frame at or before it (only
 /// those are on disk; frames are never kept in memory), read back from its PNG.
 Image8 contactSheet(const fs::path& folder, const std::vector<std::size_t>& keyFrames, int every,
@@ -92,7 +88,7 @@ Image8 contactSheet(const fs::path& folder, const std::vector<std::size_t>& keyF
     for (std::size_t f : shown) {
         tiles.emplace_back(fmt::format("t={:.2f}s {:+.2f} EV (target {:+.2f})", samples[f].timeS,
                                        samples[f].appliedLog2, samples[f].targetLog2),
-                           readPng8(framePath(folder, f / std::size_t(every))));
+                           readPng8(demoFramePath(folder, f / std::size_t(every))));
     }
     return makeContactSheet(tiles, 3, 320);
 }
@@ -101,21 +97,12 @@ Image8 contactSheet(const fs::path& folder, const std::vector<std::size_t>& keyF
 
 int runTabletopWalk(const TabletopWalkOptions& options) {
     const auto begin = std::chrono::steady_clock::now();
-    if (options.width < 16 || options.height < 16 || options.fps <= 0.0f || options.seconds <= 0.0f) {
-        throw InputError("demo: --size must be at least 16x16, --fps and --seconds positive");
-    }
     const std::optional<Settings> look =
         options.preset.empty() ? std::nullopt : std::optional<Settings>(presetLook(options.preset));
     // Every output is checked before the first frame; a run that fails takes back what it wrote.
     RunOutputs outputs;
-    outputs.makeFolder(options.output);
-    const fs::path plotPath = options.output / "exposure_plot.png";
-    const fs::path sheetPath = options.output / "contact_sheet.png";
-    const fs::path videoPath = options.output / "demo.mp4";
-    for (const fs::path& path : {framePath(options.output, 0), plotPath, sheetPath, videoPath}) {
-        RunOutputs::requireFile(path);
-    }
-    outputs.sequence([&](std::size_t i) { return framePath(options.output, i); });
+    const DemoFiles files = prepareDemoFiles(outputs, options.output, options.width, options.height,
+                                             options.fps, options.seconds);
 
     HeadlessContext context;
     TabletopScene scene;
@@ -150,9 +137,9 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
         const FrameInputs frame = scene.render(time, pipeline, values);
         const Image8 display = readTexture8(pipeline.execute(frame, time));
         if (i % every == 0) {
-            writePng(framePath(options.output, std::size_t(i / every)), display);
+            writePng(demoFramePath(options.output, std::size_t(i / every)), display);
             outputs.wroteSequenceItem();
-            logDebug("frame {} -> {}", i, framePath(options.output, std::size_t(i / every)).string());
+            logDebug("frame {} -> {}", i, demoFramePath(options.output, std::size_t(i / every)).string());
         }
         brightness.push_back(meanDisplay(display));
         telemetry.sceneValues(std::uint64_t(i), std::move(values));
@@ -168,24 +155,22 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     for (const TelemetrySample& s : samples) {
         outdoors.y.push_back(s.outdoors);
     }
-    writePng(plotPath, plotExposureTelemetry(samples, std::move(outdoors), 960, 420,
-                                             "Tabletop walk: light under the token and the eye's exposure"));
-    outputs.wrote(plotPath);
+    writePng(files.plot,
+             plotExposureTelemetry(samples, std::move(outdoors), 960, 420,
+                                   "Tabletop walk: light under the token and the eye's exposure"));
+    outputs.wrote(files.plot);
     const std::vector<std::size_t> keyFrames = keyFrameIndices(transitions, samples.size());
     if (!keyFrames.empty()) {
-        writePng(sheetPath, contactSheet(options.output, keyFrames, every, samples));
-        outputs.wrote(sheetPath);
+        writePng(files.sheet, contactSheet(options.output, keyFrames, every, samples));
+        outputs.wrote(files.sheet);
     }
-    std::string video = "demo.mp4 skipped (--no-video)";
     if (options.video) {
-        progress.note(fmt::format("encoding {} with ffmpeg", videoPath.filename().string()));
-        const VideoResult result =
-            encodeFrameSequence(options.output, double(options.fps) / double(every), videoPath);
+        progress.note(fmt::format("encoding {} with ffmpeg", files.video.filename().string()));
+    }
+    const std::string video =
+        encodeDemoVideo(outputs, files, double(options.fps) / double(every), options.video);
+    if (options.video) {
         progress.clear();
-        if (result.written) {
-            outputs.wrote(videoPath);
-        }
-        video = result.note;
     }
     outputs.commit();
     const auto end = std::chrono::steady_clock::now();
