@@ -181,6 +181,19 @@ Sampler Sampler::nearest(std::string_view debugName) {
     return s;
 }
 
+Sampler Sampler::linear(std::string_view debugName) {
+    Sampler s;
+    GLuint id = 0;
+    glCreateSamplers(1, &id);
+    s.mObject = GlObject<detail::SamplerDeleter>(id);
+    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    label(GL_SAMPLER, id, debugName);
+    return s;
+}
+
 Sampler Sampler::depthCompare(std::string_view debugName) {
     Sampler s;
     GLuint id = 0;

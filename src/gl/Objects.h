@@ -214,6 +214,9 @@ public:
     Sampler() = default;
     /// NEAREST filtering, clamped: what an integer texture read with texelFetch needs to be complete.
     static Sampler nearest(std::string_view debugName);
+    /// LINEAR filtering (level 0 only), clamped: bilinear reads of a texture whose own filtering and
+    /// completeness the caller does not control (a host's).
+    static Sampler linear(std::string_view debugName);
     /// LINEAR filtering with depth comparison (LEQUAL), clamped: a depth texture read through a
     /// sampler2DShadow as the share of a 2x2 footprint whose depth is at or beyond the reference.
     static Sampler depthCompare(std::string_view debugName);

@@ -30,8 +30,8 @@ void readRgba(const Texture& texture, GLenum type, Image& image) {
 }
 } // namespace
 
-Texture makeTexture(const ImageF& image, std::string_view debugName) {
-    Texture t({.extent = {image.width, image.height}, .format = GL_RGBA32F, .debugName = debugName});
+Texture makeTexture(const ImageF& image, std::string_view debugName, GLenum format) {
+    Texture t({.extent = {image.width, image.height}, .format = format, .debugName = debugName});
     t.uploadRgba32f(image.rgba.data());
     return t;
 }

@@ -10,8 +10,9 @@
 
 namespace photopic {
 
-/// RGBA32F texture holding `image` (sampling only; no render-target capability needed).
-Texture makeTexture(const ImageF& image, std::string_view debugName);
+/// A texture holding `image` (sampling only; no render-target capability needed): RGBA32F, or `format`
+/// (e.g. GL_RGBA16F, which the upload rounds to).
+Texture makeTexture(const ImageF& image, std::string_view debugName, GLenum format = GL_RGBA32F);
 /// Blocking read of level 0 as float RGBA (offline paths: CLI, tests).
 ImageF readTextureF(const Texture& texture);
 /// Blocking read of level 0 of a depth texture (GL_DEPTH_COMPONENT*): width*height window depths, rows top

@@ -128,6 +128,9 @@ struct FrameContext {
     /// This frame's auto exposure settings: the settings' own, or the subject probe pass's outdoors-coupled
     /// copy for the subject of the view.
     const AutoExposureSettings* autoExposure = nullptr;
+    /// Some pass this frame reads the scene colour without sanitising each value it reads, so the sanitize
+    /// pass makes a clean copy first; else the host's colour stands in for it (Pipeline::execute).
+    bool sanitizeScene = true;
 };
 
 class FramePass {
@@ -143,6 +146,10 @@ public:
     [[nodiscard]] virtual bool enabled(const FrameContext&) const { return true; }
     /// Runs even when nothing downstream reads its outputs (readbacks a host polls: telemetry, probes).
     [[nodiscard]] virtual bool hasSideEffects() const { return false; }
+    /// Every value it reads of the scene colour goes through sanitize() (passes/common/sanitize.h.glsl) or
+    /// an equivalent, so it may read the host's raw colour: when every pass of a frame that reads the scene
+    /// colour says so, the frame skips the full-resolution sanitize pass.
+    [[nodiscard]] virtual bool sanitizesSceneReads() const { return false; }
     /// New settings (construction and Pipeline::setSettings): a set-up boundary, so it may throw (an
     /// unreadable metering mask throws IoError naming the file; a shader variant that fails to compile,
     /// GlError with its log).

@@ -16,6 +16,24 @@ namespace photopic {
 namespace {
 
 constexpr Resource kLightingOutputs[] = {Resource::AmbientOcclusion, Resource::ContactShadows};
+
+/// Whether a pass the settings turn on this frame reads the scene colour without sanitising what it reads
+/// (the 3D passes, lens flare): then the sanitize pass makes a clean copy for all of them. Otherwise its
+/// readers (metering, probes, bloom, tone mapping, the scene debug views) each sanitise what they read, and
+/// a full-resolution read and write of the frame is saved.
+bool readsRawScene(std::span<FramePass* const> passes, const FramePass& sanitize, const FrameContext& ctx) {
+    for (const FramePass* pass : passes) {
+        if (pass == &sanitize || pass->sanitizesSceneReads() || !pass->enabled(ctx)) {
+            continue;
+        }
+        for (const ResourceUse& use : pass->uses()) {
+            if (use.resource == Resource::SceneColor && use.access != Access::Write) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
 /// A scene-value debug view replaces the display image when its pass can run.
 constexpr Resource kPostOutputs[] = {Resource::DebugColor, Resource::DisplayColor};
 
@@ -301,6 +319,7 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
     mLightingTimed = false;
     const QualityTier tier = effectiveTier(mCaps, mSettings.quality);
     FrameContext ctx = makeContext(inputs, time, tier);
+    ctx.sanitizeScene = readsRawScene(mOrder->post(), mOrder->sanitize, ctx);
     if (lighting.ambientOcclusion == nullptr && lighting.contactShadows == nullptr) {
         mResources.pool().beginFrame(); // else the lighting stage began it and its textures are in use
     }

@@ -89,6 +89,33 @@ TEST_F(GlTest, TwoDFramesRunNoThreeDPassAndSkipNothing) {
     EXPECT_FALSE(contains(st.ran, "debug view"));
 }
 
+TEST_F(GlTest, TheSanitizePassRunsOnlyWhenAPassReadsTheRawScene) {
+    // Metering, bloom and tone mapping sanitise what they read: the default chain reads the host's colour.
+    ImageF image = grey(kW, kH, 0.2f);
+    image.at(3, 3)[0] = std::numeric_limits<float>::quiet_NaN();
+    image.at(10, 4)[1] = std::numeric_limits<float>::infinity();
+    image.at(20, 6)[2] = -5.0f;
+    image.at(30, 8)[0] = 1e30f;
+    const Texture color = makeTexture(image, "color");
+    Settings s; // bloom on, as `photopic image` runs
+    s.autoExposure.enabled = true;
+    Pipeline pipeline({.settings = s});
+    pipeline.execute({.color = &color}, {});
+    EXPECT_FALSE(contains(pipeline.status().ran, "sanitize"));
+    EXPECT_TRUE(contains(pipeline.status().ran, "bloom"));
+    const ImageF scene = readTextureF(pipeline.sceneReferred());
+    for (std::size_t i = 0; i < scene.rgba.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(scene.rgba[i]) && scene.rgba[i] >= 0.0f && scene.rgba[i] < 65504.0f) << i;
+    }
+    EXPECT_TRUE(std::isfinite(pipeline.telemetry().appliedLog2));
+
+    // Lens flare reads the scene without sanitising it: the frame makes the clean copy first.
+    s.lensFlare.enabled = true;
+    pipeline.setSettings(s);
+    pipeline.execute({.color = &color}, {});
+    EXPECT_TRUE(contains(pipeline.status().ran, "sanitize"));
+}
+
 TEST_F(GlTest, DepthWithoutAConsumerIsNotLinearised) {
     Pipeline pipeline({.settings = plain()});
     const Texture color = makeTexture(grey(kW, kH, 0.2f), "color");

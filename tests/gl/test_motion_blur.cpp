@@ -51,7 +51,10 @@ ImageF blurColumn(const Settings& settings, float pixelsPerFrame, int w = 160, i
             motion.at(x, y)[0] = x < movingColumns ? pixelsPerFrame / float(w) : 0.0f;
         }
     }
-    const Texture c = makeTexture(color, "color");
+    // Half float, as a renderer's colour target: the comparisons with the blur off are to the bit, and a
+    // frame without a 3D pass reads a 32-bit colour at its own precision, not rounded to half as a 3D pass
+    // sees it.
+    const Texture c = makeTexture(color, "color", GL_RGBA16F);
     const Texture d = makeTexture(depth, "depth");
     const Texture m = makeTexture(motion, "motion");
     const Camera camera;

@@ -21,6 +21,7 @@ BloomPass::BloomPass()
     : mPrefilter(makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}})))
     , mDownsample(makeComputeProgram(kDown, bindingDefines()))
     , mUpsample(makeComputeProgram(kUp, bindingDefines()))
+    , mSceneSampler(Sampler::linear("bloom scene sampler"))
     , mDownsampleParameters("bloom downsample parameters")
     , mUpsampleParameters("bloom upsample parameters") {}
 
@@ -96,10 +97,12 @@ const Texture& BloomPass::execute(const Inputs& in) {
         mDownsampleParameters.bind(kBindingParameters);
         program.use();
         glBindTextureUnit(0, source.id());
+        glBindSampler(0, i == 0 ? mSceneSampler.id() : 0);
         glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
         dispatchPixels(te);
         imageWriteBarrier();
     }
+    glBindSampler(0, 0);
 
     // Upsample chain, smallest level first: up[i] = mix(down[i], tent(up[i + 1]), radius).
     for (int i = levels - 2; i >= 0; --i) {

@@ -52,6 +52,8 @@ public:
     };
     BloomPass();
     [[nodiscard]] std::string_view name() const override { return "bloom"; }
+    /// The prefilter sanitises each of its five boxes (bloom_downsample.comp.glsl).
+    [[nodiscard]] bool sanitizesSceneReads() const override { return true; }
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
     /// The HDR path's chain (the LDR path's glow is part of the tone-map pass).
     [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
@@ -69,6 +71,8 @@ private:
     Program mPrefilter; ///< level 0: exposure, Karis average, threshold
     Program mDownsample;
     Program mUpsample;
+    /// The prefilter's: the scene may be the host's own texture, with its own filtering.
+    Sampler mSceneSampler;
     ParameterBlock<BloomDownsampleParameters> mDownsampleParameters;
     ParameterBlock<BloomUpsampleParameters> mUpsampleParameters;
     Extent mExtent;

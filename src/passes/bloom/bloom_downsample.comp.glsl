@@ -6,13 +6,19 @@
 // dominate a whole region; only the first level needs it, the later ones already see averaged colour.
 // With PREFILTER the taps are scene colour multiplied by the frame's exposure (bloom works on exposed colour,
 // so what blooms does not depend on the scene's absolute level) and, in threshold mode, the soft knee
-// (constants from core/Bloom.cpp) keeps only what lies above the threshold.
+// (constants from core/Bloom.cpp) keeps only what lies above the threshold. The prefilter may read the host's
+// raw colour (the frame skips the sanitize pass when every reader sanitises), so each of the five boxes is
+// sanitised: over finite texels in [0, kSanitizeMax] that is the box of the sanitised texels (up to rounding;
+// a 32-bit colour is no longer rounded to half first), and a box holding a NaN or an infinity counts as 0, a
+// negative texel is clamped with its box instead of alone. Sanitising each tap, or re-reading a non-finite
+// tap texel by texel, cost 4 and 30 ms more at 1920x1080 on llvmpipe (which runs both sides of a branch).
 // A compute pass (8x8 groups, one target texel each, image store): on GPUs whose raster units are a small part
 // of the chip a full-screen triangle runs far below the memory's pace, and the taps hit the texture cache the
 // same way from either stage.
 #include "passes/common/color.h.glsl"
 #ifdef PREFILTER
 #include "passes/common/exposure.h.glsl"
+#include "passes/common/sanitize.h.glsl"
 #endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -29,11 +35,16 @@ layout(std140, binding = BINDING_PARAMETERS) uniform BloomDownsampleParameters {
 };
 
 vec3 tap(vec2 uv) {
-#ifdef PREFILTER
-    // Exposed before the Karis weights, which must see the luma the viewer will see.
-    return textureLod(uSource, uv, 0.0).rgb * gExposure.exposure;
-#else
     return textureLod(uSource, uv, 0.0).rgb;
+}
+
+// One of the five boxes: the mean of its four taps, sanitised and exposed with PREFILTER (exposed before
+// the Karis weights, which must see the luma the viewer will see).
+vec3 box(vec3 a, vec3 b, vec3 c, vec3 d) {
+#ifdef PREFILTER
+    return sanitize((a + b + c + d) * 0.25) * gExposure.exposure;
+#else
+    return (a + b + c + d) * 0.25;
 #endif
 }
 
@@ -64,11 +75,11 @@ void main() {
     vec3 l = tap(uv + t * vec2(0.0, -2.0));
     vec3 m = tap(uv + t * vec2(2.0, -2.0));
 
-    vec3 centre = (d + e + i + j) * 0.25;
-    vec3 topLeft = (a + b + f + g) * 0.25;
-    vec3 topRight = (b + c + g + h) * 0.25;
-    vec3 bottomLeft = (f + g + k + l) * 0.25;
-    vec3 bottomRight = (g + h + l + m) * 0.25;
+    vec3 centre = box(d, e, i, j);
+    vec3 topLeft = box(a, b, f, g);
+    vec3 topRight = box(b, c, g, h);
+    vec3 bottomLeft = box(f, g, k, l);
+    vec3 bottomRight = box(g, h, l, m);
 
 #ifdef KARIS
     float wc = 0.5 * karisWeight(centre);

@@ -60,6 +60,7 @@ class DebugViewPass final : public FramePass {
 public:
     DebugViewPass();
     [[nodiscard]] std::string_view name() const override { return "debug view"; }
+    [[nodiscard]] bool sanitizesSceneReads() const override { return true; }
     /// Depends on the view: the 3D views require their input, the others the scene and its metering.
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
     [[nodiscard]] bool enabled(const FrameContext& ctx) const override {

@@ -63,6 +63,7 @@ public:
     /// Which shader meters a frame that needs no histogram (see mRowsWithoutHistogram); tests run both.
     void setRowShaderWithoutHistogram(bool rows) { mRowsWithoutHistogram = rows; }
     [[nodiscard]] std::string_view name() const override { return "metering"; }
+    [[nodiscard]] bool sanitizesSceneReads() const override { return true; }
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
     /// Loads the mask image that `autoExposure.mask.path` names (throws IoError naming the file).
     void configure(const Settings& settings) override;

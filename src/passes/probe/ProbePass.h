@@ -42,6 +42,7 @@ public:
 
     ProbePass();
     [[nodiscard]] std::string_view name() const override { return "subject probes"; }
+    [[nodiscard]] bool sanitizesSceneReads() const override { return true; }
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
     /// The subject tracker advances every frame (selection, probe schedule, results coming back).
     [[nodiscard]] bool hasSideEffects() const override { return true; }

@@ -11,8 +11,12 @@ public:
     SanitizePass();
     [[nodiscard]] std::string_view name() const override { return "sanitize"; }
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
-    /// The HDR path only: the LDR path sanitises inside its single pass.
-    [[nodiscard]] bool enabled(const FrameContext& ctx) const override { return ctx.hdr; }
+    /// The HDR path only, and only when a pass of the frame reads the scene colour without sanitising it:
+    /// the LDR path sanitises inside its single pass, and metering, bloom and tone mapping sanitise what
+    /// they read.
+    [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
+        return ctx.hdr && ctx.sanitizeScene;
+    }
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
 private:

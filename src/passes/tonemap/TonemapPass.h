@@ -64,6 +64,7 @@ public:
     /// `caps` decides whether frames can take the HDR path (for the programs configure() prepares).
     explicit TonemapPass(const Capabilities& caps);
     [[nodiscard]] std::string_view name() const override { return "composite + grade + tonemap"; }
+    [[nodiscard]] bool sanitizesSceneReads() const override { return true; }
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
     /// Compiles the programs the settings select (with and without bloom) ahead of the first frame: a
     /// set-up boundary, throws GlError with the log. execute() compiles any still missing.
