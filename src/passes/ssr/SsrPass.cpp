@@ -50,6 +50,11 @@ Extent depthPyramidExtent(Extent e) noexcept {
     return {(e.width + cell - 1) / cell * cell, (e.height + cell - 1) / cell * cell};
 }
 
+Extent depthPyramidAtlasExtent(Extent e) noexcept {
+    const Extent size0 = depthPyramidExtent(e);
+    return {size0.width + (depthPyramidLevels(e) > 1 ? size0.width / 2 : 0), size0.height};
+}
+
 DepthPyramidPass::DepthPyramidPass()
     : mProgram(makeComputeProgram("passes/ssr/ssr_pyramid.comp.glsl", bindingDefines())) {}
 
@@ -61,27 +66,26 @@ std::span<const ResourceUse> DepthPyramidPass::uses() const {
 
 void DepthPyramidPass::execute(FrameContext& ctx, FrameResources& resources) {
     const int levels = depthPyramidLevels(ctx.extent);
-    const Extent padded = depthPyramidExtent(ctx.extent);
+    const Extent size0 = depthPyramidExtent(ctx.extent);
+    // One level holding them all (ssr_pyramid.h.glsl): every read of it is a texelFetch at lod 0.
     const Texture& pyramid = resources.pool()
-                                 .acquire({.extent = padded,
+                                 .acquire({.extent = depthPyramidAtlasExtent(ctx.extent),
                                            .format = GL_R32F,
-                                           .levels = levels,
-                                           .minFilter = GL_NEAREST_MIPMAP_NEAREST,
+                                           .minFilter = GL_NEAREST,
                                            .magFilter = GL_NEAREST,
                                            .debugName = "ssr depth pyramid"})
                                  .texture();
     // Level 0 reads a depth and writes one; the rest of the chain is a third of that again.
     ScopedGpuTimer timer(ctx.timers, "ssr depth pyramid",
-                         double(padded.width) * padded.height * (8.0 + 8.0 / 3.0));
+                         double(size0.width) * size0.height * (8.0 + 8.0 / 3.0));
     mProgram.use();
     glBindTextureUnit(0, resources.texture(Resource::LinearDepth)->id());
+    glBindImageTexture(0, pyramid.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
+    glProgramUniform2i(mProgram.id(), 1, size0.width, size0.height);
     for (int level = 0; level < levels; ++level) {
-        const int w = std::max(1, padded.width >> level);
-        const int h = std::max(1, padded.height >> level);
         glProgramUniform1i(mProgram.id(), 0, level);
-        glBindImageTexture(0, pyramid.id(), std::max(level - 1, 0), GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
-        glBindImageTexture(1, pyramid.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-        glDispatchCompute(groups(w), groups(h), 1);
+        glDispatchCompute(groups(size0.width >> level), groups(size0.height >> level), 1);
+        // The next level reads what this one wrote.
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
     resources.bind(Resource::DepthPyramid, pyramid);
@@ -124,6 +128,7 @@ void SsrHistoryPass::execute(FrameContext& ctx, FrameResources& resources) {
 SsrPass::SsrPass(const SsrHistoryPass& history)
     : mHistory(history)
     , mTrace(makeComputeProgram("passes/ssr/ssr_trace.comp.glsl", bindingDefines()))
+    , mRefine(makeComputeProgram("passes/ssr/ssr_trace.comp.glsl", bindingDefines({{"REFINE", "1"}})))
     , mResolve(makeComputeProgram("passes/ssr/ssr_resolve.comp.glsl", bindingDefines()))
     , mParameters("ssr parameters") {}
 
@@ -143,13 +148,18 @@ void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Extent e = ctx.extent;
     const bool half = s.resolution == ReflectionResolution::Half;
     const Extent traceExtent = half ? Extent{(e.width + 1) / 2, (e.height + 1) / 2} : e;
-    const Texture& hits = resources.pool()
-                              .acquire({.extent = traceExtent,
-                                        .format = GL_RGBA32F,
-                                        .minFilter = GL_NEAREST,
-                                        .magFilter = GL_NEAREST,
-                                        .debugName = "ssr hits"})
-                              .texture();
+    const auto hitTexture = [&](Extent extent, const char* name) -> const Texture& {
+        return resources.pool()
+            .acquire({.extent = extent,
+                      .format = GL_RGBA32F,
+                      .minFilter = GL_NEAREST,
+                      .magFilter = GL_NEAREST,
+                      .debugName = name})
+            .texture();
+    };
+    // One hit per pixel; at half resolution the blocks' hits first, from which each pixel finds its own.
+    const Texture& hits = hitTexture(e, "ssr hits");
+    const Texture* blockHits = half ? &hitTexture(traceExtent, "ssr block hits") : nullptr;
     const Texture& sceneOut =
         resources.pool()
             .acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with reflections"})
@@ -182,6 +192,8 @@ void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
     p.intensity = s.intensity;
     p.maxSteps = s.maxSteps;
     p.levels = depthPyramidLevels(e);
+    const Extent pyramidSize = depthPyramidExtent(e);
+    p.pyramidSize = glm::ivec2(pyramidSize.width, pyramidSize.height);
     p.normals = normals == nullptr ? 0 : ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 2 : 1;
     p.hasMaterial = material ? 1 : 0;
     p.hasHistory = history ? 1 : 0;
@@ -197,22 +209,29 @@ void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
     glBindTextureUnit(2, material ? material->id() : depth.id());
     {
         // Depth, normal and material at the origin, the pyramid (4/3 of a full-resolution R32F) read once
-        // from memory, the hit written.
+        // from memory, the hit written; at half resolution the blocks' hits also written and read.
         const double inputs =
             pixels * (4.0 + (normals ? 8.0 : 0.0) + (material ? 8.0 : 0.0) + 4.0 * 4.0 / 3.0);
-        ScopedGpuTimer timer(ctx.timers, "ssr trace", inputs + tracePixels * 16.0);
+        ScopedGpuTimer timer(ctx.timers, "ssr trace",
+                             inputs + pixels * 16.0 + (half ? 2.0 * tracePixels * 16.0 : 0.0));
         mTrace.use();
         glBindTextureUnit(3, pyramid.id());
-        glBindImageTexture(0, hits.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glBindImageTexture(0, (half ? *blockHits : hits).id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
         glDispatchCompute(groups(traceExtent.width), groups(traceExtent.height), 1);
+        if (half) {
+            glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+            mRefine.use();
+            glBindTextureUnit(4, blockHits->id());
+            glBindImageTexture(0, hits.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+            glDispatchCompute(groups(e.width), groups(e.height), 1);
+        }
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
         // The hits, the scene colour, the history, motion and material where present, each once; two outputs.
         ScopedGpuTimer timer(ctx.timers, "ssr resolve",
-                             tracePixels * 16.0 +
-                                 pixels * (8.0 + (history ? 8.0 : 0.0) + (motion ? 4.0 : 0.0) +
-                                           (material ? 8.0 : 0.0) + 16.0));
+                             pixels * (16.0 + 8.0 + (history ? 8.0 : 0.0) + (motion ? 4.0 : 0.0) +
+                                       (material ? 8.0 : 0.0) + 16.0));
         mResolve.use();
         glBindTextureUnit(1, scene.id());
         glBindTextureUnit(2, history ? history->id() : scene.id());

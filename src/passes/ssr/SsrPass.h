@@ -1,8 +1,10 @@
 #pragma once
 // Screen-space reflections (docs/architecture.md, "Screen-space reflections"), in the post stage's HDR
 // domain after AO and before TAA. Three passes:
-//   - DepthPyramidPass: linearDepth -> depthPyramid, the min-depth mip chain the march climbs;
-//   - SsrPass: the hierarchical-Z trace (full or half resolution), then the resolve, which reads the
+//   - DepthPyramidPass: linearDepth -> depthPyramid, the min-depth chain the march climbs (its levels side
+//     by side in one single-level texture: ssr_pyramid.h.glsl);
+//   - SsrPass: the hierarchical-Z trace (full resolution; or half, each pixel then finding its own hit near
+//     those of the 2 x 2 blocks around it), then the resolve, which reads the
 //     reflected radiance from last frame's image and adds it, weighted by the material's specular weight and
 //     the confidence, to sceneColor; it also writes `reflections` (radiance, confidence) for the debug view;
 //   - SsrHistoryPass: after TAA, keeps the frame's finished HDR image (with mips) for the next frame's
@@ -39,18 +41,24 @@ struct SsrParameters {
     std::int32_t hasHistory = 0;
     std::int32_t hasMotion = 0;
     std::int32_t half = 0;
+    glm::ivec2 pyramidSize{1}; ///< level 0 of the depth pyramid (depthPyramidExtent)
+    std::int32_t padding[2] = {};
 };
-static_assert(sizeof(SsrParameters) == 288);
+static_assert(sizeof(SsrParameters) == 304);
 static_assert(offsetof(SsrParameters, rayNear) == 128);
 static_assert(offsetof(SsrParameters, fullSize) == 224);
 static_assert(offsetof(SsrParameters, thickness) == 240);
 static_assert(offsetof(SsrParameters, intensity) == 256);
 static_assert(offsetof(SsrParameters, half) == 284);
+static_assert(offsetof(SsrParameters, pyramidSize) == 288);
 
 /// Levels of the depth pyramid for an image (at most 7: cells of up to 64 pixels).
 [[nodiscard]] int depthPyramidLevels(Extent e) noexcept;
 /// Level 0's extent: the image's, padded up to a whole number of the coarsest cells (the padding is sky).
 [[nodiscard]] Extent depthPyramidExtent(Extent e) noexcept;
+/// The pyramid texture's extent: one level holding every level of the chain (ssr_pyramid.h.glsl), level 0
+/// with the others in a column to its right.
+[[nodiscard]] Extent depthPyramidAtlasExtent(Extent e) noexcept;
 
 class DepthPyramidPass final : public FramePass {
 public:
@@ -104,6 +112,7 @@ public:
 private:
     const SsrHistoryPass& mHistory;
     Program mTrace;
+    Program mRefine; ///< half resolution: each pixel's hit from the blocks' hits
     Program mResolve;
     ParameterBlock<SsrParameters> mParameters;
 };

@@ -25,10 +25,19 @@ layout(std140, binding = BINDING_PARAMETERS) uniform SsrParameters {
     int uHasHistory;  // last frame's image is valid
     int uHasMotion;   // the frame has motion vectors
     int uHalf;        // the trace runs at half resolution
+    ivec2 uPyramidSize; // level 0 of the depth pyramid (ssr_pyramid.h.glsl)
 };
 
-// A depth a surface can be at: positive and finite (NaN fails the first test).
-bool validDepth(float z) { return z > 0.0 && !isinf(z); }
+// Positive and finite: tested on the bit pattern (a positive float's bits are below +inf's, 0x7f800000; NaN,
+// +-inf, zero and negative values are not), which no compiler may fold away as it may isinf or isnan, or a
+// comparison with a NaN, under relaxed float rules.
+bool finitePositive(float x) {
+    uint bits = floatBitsToUint(x);
+    return bits != 0u && bits < 0x7f800000u;
+}
+
+// A depth a surface can be at.
+bool validDepth(float z) { return finitePositive(z); }
 
 // The view-space point through a window position (pixels, GL origin) at linear view depth z: the view ray's
 // points at NDC z = -1 and 0 are affine in NDC x and y for perspective and orthographic projections alike.
@@ -78,7 +87,7 @@ vec3 surfaceNormal(sampler2D depth, sampler2D normals, ivec2 p, vec3 centre, flo
         n = cross(dx, dy);
     }
     float len2 = dot(n, n);
-    if (!(len2 > 1e-12) || isinf(len2)) { // NaN, zero or infinite
+    if (!finitePositive(len2) || len2 <= 1e-12) { // NaN, zero, tiny or infinite
         return vec3(0.0);
     }
     n *= inversesqrt(len2);

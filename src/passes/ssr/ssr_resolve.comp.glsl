@@ -58,7 +58,7 @@ void main() {
         return;
     }
     vec3 scene = texelFetch(uScene, p, 0).rgb;
-    vec4 hit = texelFetch(uHits, uHalf != 0 ? p / 2 : p, 0);
+    vec4 hit = texelFetch(uHits, p, 0);
     float confidence = hit.z;
     vec3 radiance = vec3(0.0);
     if (confidence > 0.0 && all(lessThanEqual(abs(hit), vec4(1e6)))) {
