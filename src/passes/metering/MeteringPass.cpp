@@ -27,6 +27,25 @@ int meteringModeIndex(MeteringPass::Weights w) {
     return -1; // the metering dispatch computes no partials
 }
 
+/// The rows program's variant index for a weighting index (meteringModeIndex).
+std::size_t rowsVariant(int weights) {
+    switch (weights) {
+    case int(MeteringMode::Average):
+        return 1;
+    case int(MeteringMode::Center):
+        return 2;
+    case int(MeteringMode::Mask):
+        return 3;
+    default:
+        return 0;
+    }
+}
+
+Program rowsProgram(int weights) {
+    return makeComputeProgram("passes/metering/metering_rows.comp.glsl",
+                              bindingDefines({{"WEIGHTS", std::to_string(weights)}}));
+}
+
 /// The header every frame's metering starts from (an empty min/max), copied on the GPU into the working
 /// buffer: a working buffer the CPU rewrites every frame is one a driver may move to host memory.
 Buffer meteringResetBuffer() {
@@ -40,7 +59,8 @@ Buffer meteringResetBuffer() {
 
 MeteringPass::MeteringPass()
     : mMeter(makeComputeProgram("passes/metering/metering.comp.glsl", bindingDefines()))
-    , mMeterRows(makeComputeProgram("passes/metering/metering_rows.comp.glsl", bindingDefines()))
+    , mMeterRows{rowsProgram(-1), rowsProgram(int(MeteringMode::Average)),
+                 rowsProgram(int(MeteringMode::Center)), rowsProgram(int(MeteringMode::Mask))}
     , mReduce(makeComputeProgram("passes/metering/metering_reduce.comp.glsl", bindingDefines()))
     , mMeterParameters("metering parameters")
     , mReduceParameters("metering reduce parameters")
@@ -158,14 +178,15 @@ MeteringPass::Outputs MeteringPass::execute(const Inputs& in) noexcept {
     const Weights weights = in.weights == Weights::Mask && !in.mask ? Weights::Average : in.weights;
 
     const AutoExposureSettings& s = *in.settings;
+    const int weightsIndex = weighted ? meteringModeIndex(weights) : -1;
     mMeterParameters.update({.buildHistogram = in.histogram ? 1 : 0,
-                             .weights = weighted ? meteringModeIndex(weights) : -1,
+                             .weights = weightsIndex,
                              .log2Min = s.histogramLog2Min,
                              .log2Max = s.histogramLog2Max});
     mMeterParameters.bind(kBindingParameters);
     const bool rows = !in.histogram && mRowsWithoutHistogram;
     const int rowsPerGroup = rows ? kGroupSize : 1;
-    (rows ? mMeterRows : mMeter).use();
+    (rows ? mMeterRows[rowsVariant(weightsIndex)] : mMeter).use();
     glDispatchCompute(GLuint(mGroupsX), GLuint(mGroupsY), 1);
 
     if (in.weights != Weights::None) {

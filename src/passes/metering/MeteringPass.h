@@ -6,6 +6,8 @@
 #include "core/settings/AutoExposureSettings.h"
 #include "passes/FramePass.h"
 
+#include <array>
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -99,7 +101,9 @@ public:
 
 private:
     Program mMeter;
-    Program mMeterRows; ///< no histogram: one invocation per block row, no barriers
+    /// No histogram: one invocation per block row, no barriers; one variant per weighting (WEIGHTS: -1 none,
+    /// or the mode's index), since a CPU rasteriser computes every weight a uniform branch could choose.
+    std::array<Program, 4> mMeterRows;
     Program mReduce;
     ParameterBlock<MeteringParameters> mMeterParameters;
     ParameterBlock<MeteringReduceParameters> mReduceParameters;

@@ -176,8 +176,8 @@ FrameInputs OrbitScene::render(const FrameTime& time, Pipeline& pipeline, std::v
     }
     // Supersampling: each further sub-frame with its own jitter (and the lighting stage's textures), folded
     // into the pipeline's mean in linear light; depth, normals and motion are the last sub-frame's.
-    inputs.color = &pipeline.supersample(mRenderer.color(), [&](glm::vec2 jitter) {
-        draw.jitter = jitter;
+    inputs.color = &pipeline.supersample(mRenderer.color(), [&](glm::vec2 subframeJitter) {
+        draw.jitter = subframeJitter;
         mRenderer.draw(draw);
     });
     telemetry = {t, double(orbit::sunVisibility(orbit::kEarth, glm::vec3(0.0f), draw.lights.sunDirection))};

@@ -97,8 +97,8 @@ FrameInputs TestbedScene::render(const FrameTime& time, Pipeline& pipeline, std:
     }
     // Supersampling: each further sub-frame with its own jitter (and the lighting stage's textures), folded
     // into the pipeline's mean in linear light; depth, normals and motion are the last sub-frame's.
-    inputs.color = &pipeline.supersample(mRenderer.color(), [&](glm::vec2 jitter) {
-        draw.jitter = jitter;
+    inputs.color = &pipeline.supersample(mRenderer.color(), [&](glm::vec2 subframeJitter) {
+        draw.jitter = subframeJitter;
         mRenderer.draw(draw);
     });
     telemetry = {double(testbed::cameraPoseAt(t.camera).shot), mCamera.cut ? 1.0 : 0.0};
