@@ -50,14 +50,19 @@ bool createOn(EGLDisplay display, bool debug, HeadlessContext::Egl& out, std::st
         eglTerminate(display);
         return false;
     }
+    // The version and profile attributes are EGL 1.5's and EGL_KHR_create_context's alike (the same values);
+    // the debug flag is EGL_CONTEXT_OPENGL_DEBUG only from EGL 1.5 on: an EGL 1.4 display (softpipe's, some
+    // drivers') rejects that attribute and takes the extension's flags bit instead.
+    const bool egl15 = major > 1 || (major == 1 && minor >= 5);
     const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
                                      4,
                                      EGL_CONTEXT_MINOR_VERSION,
                                      5,
                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                     EGL_CONTEXT_OPENGL_DEBUG,
-                                     debug ? EGL_TRUE : EGL_FALSE,
+                                     egl15 ? EGL_CONTEXT_OPENGL_DEBUG : EGL_CONTEXT_FLAGS_KHR,
+                                     egl15 ? (debug ? EGL_TRUE : EGL_FALSE)
+                                           : (debug ? EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR : 0),
                                      EGL_NONE};
     EGLContext context =
         eglCreateContext(display, noConfig ? EGL_NO_CONFIG_KHR : config, EGL_NO_CONTEXT, contextAttribs);
