@@ -168,44 +168,31 @@ VertexArray VertexArray::create(std::string_view debugName) {
     return v;
 }
 
-Sampler Sampler::nearest(std::string_view debugName) {
+Sampler Sampler::clamped(GLenum filter, std::string_view debugName) {
     Sampler s;
     GLuint id = 0;
     glCreateSamplers(1, &id);
     s.mObject = GlObject<detail::SamplerDeleter>(id);
-    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GLint(filter));
+    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GLint(filter));
     glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     label(GL_SAMPLER, id, debugName);
     return s;
+}
+
+Sampler Sampler::nearest(std::string_view debugName) {
+    return clamped(GL_NEAREST, debugName);
 }
 
 Sampler Sampler::linear(std::string_view debugName) {
-    Sampler s;
-    GLuint id = 0;
-    glCreateSamplers(1, &id);
-    s.mObject = GlObject<detail::SamplerDeleter>(id);
-    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    label(GL_SAMPLER, id, debugName);
-    return s;
+    return clamped(GL_LINEAR, debugName);
 }
 
 Sampler Sampler::depthCompare(std::string_view debugName) {
-    Sampler s;
-    GLuint id = 0;
-    glCreateSamplers(1, &id);
-    s.mObject = GlObject<detail::SamplerDeleter>(id);
-    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    label(GL_SAMPLER, id, debugName);
+    Sampler s = clamped(GL_LINEAR, debugName);
+    glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     return s;
 }
 

@@ -223,6 +223,9 @@ public:
     [[nodiscard]] GLuint id() const { return mObject.id(); }
 
 private:
+    /// `filter` for minification and magnification, clamped to the edge.
+    static Sampler clamped(GLenum filter, std::string_view debugName);
+
     GlObject<detail::SamplerDeleter> mObject;
 };
 
