@@ -96,6 +96,11 @@ TEST_F(GlTest, TheSanitizePassRunsOnlyWhenAPassReadsTheRawScene) {
     image.at(10, 4)[1] = std::numeric_limits<float>::infinity();
     image.at(20, 6)[2] = -5.0f;
     image.at(30, 8)[0] = 1e30f;
+    for (int x = 24; x < 28; ++x) { // finite values whose plain sum in a bloom box overflows
+        for (int y = 10; y < 14; ++y) {
+            image.at(x, y)[1] = 3e38f;
+        }
+    }
     const Texture color = makeTexture(image, "color");
     Settings s; // bloom on, as `photopic image` runs
     s.autoExposure.enabled = true;
