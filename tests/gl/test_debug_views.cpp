@@ -23,8 +23,7 @@ ImageF bandImage() {
     return image;
 }
 
-Image8 render(DebugView view, const ImageF& image) {
-    Settings s;
+Image8 render(DebugView view, const ImageF& image, Settings s = {}) {
     s.debug.view = view;
     s.output.dither = false;
     Pipeline p({.settings = s});
@@ -82,9 +81,22 @@ TEST_F(GlTest, HistogramOverlayLeavesTheImageOutsideItsPanel) {
 }
 
 TEST_F(GlTest, BloomViewWithoutBloomIsBlack) {
-    const Image8 out = render(DebugView::Bloom, ImageF(8, 8, 2.0f));
+    Settings s;
+    s.bloom.enabled = false;
+    const Image8 out = render(DebugView::Bloom, ImageF(8, 8, 2.0f), s);
     EXPECT_EQ(out.at(4, 4)[0], 0);
     EXPECT_EQ(out.at(4, 4)[1], 0);
+}
+
+TEST_F(GlTest, BloomViewCoversTheWholeFrame) {
+    // The bloom of a uniform image is uniform: the view brings the smaller bloom image up to every pixel (it
+    // once read the frame's pixel coordinates in the half-size image, black past its edge on llvmpipe).
+    const Image8 out = render(DebugView::Bloom, ImageF(64, 36, 2.0f));
+    const std::uint8_t centre = out.at(32, 18)[1];
+    EXPECT_GT(centre, 0);
+    for (const auto& [x, y] : {std::pair{0, 0}, {63, 0}, {0, 35}, {63, 35}, {48, 27}, {16, 9}}) {
+        EXPECT_NEAR(out.at(x, y)[1], centre, 1) << x << "," << y;
+    }
 }
 
 } // namespace photopic::test

@@ -110,7 +110,9 @@ void main() {
         // The weight over a dim grey copy of the image, so the metered region reads against the scene.
         c = mix(vec3(0.3 * srgbEncode(exposed)), vec3(1.0, 0.6, 0.1), w);
     } else if (uView == 6 && uHasBloom != 0) {
-        c = srgbEncode(sanitize(texelFetch(uBloom, p, 0).rgb));
+        // The bloom chain's result is half or a quarter of the frame: brought up with one bilinear tap, as the
+        // composite adds it (a texel fetch at the frame's pixel would read past its edge).
+        c = srgbEncode(sanitize(textureLod(uBloom, (vec2(p) + 0.5) / vec2(size), 0.0).rgb));
     }
     imageStore(uOutput, p, vec4(c, 1.0));
 }
