@@ -1,6 +1,7 @@
 #include "scenes/orbit/OrbitRenderer.h"
 
 #include "gl/ShaderLibrary.h"
+#include "scenes/SceneCamera.h"
 #include "scenes/orbit/OrbitWorld.h"
 
 #include <cmath>
@@ -13,13 +14,7 @@ namespace {
 
 /// std140 mirror of orbit_frame.h.glsl's OrbitFrame.
 struct GpuFrame {
-    glm::mat4 view;
-    glm::mat4 invView;
-    glm::mat4 projection;
-    glm::mat4 viewProjection;
-    glm::mat4 currViewProj;
-    glm::mat4 prevViewProj;
-    glm::vec4 viewport;
+    GpuSceneCamera camera;
     glm::vec4 cameraPos;
     glm::vec4 sunDirection;
     glm::vec4 sunIlluminance;
@@ -34,7 +29,7 @@ struct GpuFrame {
     glm::vec4 aoPower;
 };
 static_assert(sizeof(GpuFrame) == 6 * 64 + 13 * 16);
-static_assert(offsetof(GpuFrame, viewport) == 384 && offsetof(GpuFrame, flags) == 560);
+static_assert(offsetof(GpuFrame, cameraPos) == 400 && offsetof(GpuFrame, flags) == 560);
 
 /// std140 mirror of orbit_draw.h.glsl's OrbitDraw.
 struct GpuDraw {
@@ -65,14 +60,8 @@ GpuFrame frameBlock(const OrbitRenderer::DrawInfo& info, Extent e) {
     const OrbitLights& lights = info.lights;
 
     GpuFrame f{};
-    f.view = camera.view;
-    f.invView = glm::inverse(camera.view);
-    f.projection = jitteredProjection(camera.projection, info.jitter, e.width, e.height);
-    f.viewProjection = f.projection * camera.view;
-    f.currViewProj = camera.viewProjection();
-    f.prevViewProj = camera.prevViewProjection;
-    f.viewport = {float(e.width), float(e.height), 1.0f / float(e.width), 1.0f / float(e.height)};
-    f.cameraPos = glm::vec4(glm::vec3(f.invView[3]), camera.verticalFov / float(e.height));
+    f.camera = sceneCameraBlock(camera, info.jitter, e);
+    f.cameraPos = glm::vec4(glm::vec3(f.camera.invView[3]), camera.verticalFov / float(e.height));
     f.sunDirection = glm::vec4(glm::normalize(lights.sunDirection), std::cos(kSunAngularRadius));
     f.sunIlluminance = glm::vec4(glm::vec3(lights.sun),
                                  1.0f / (std::numbers::pi_v<float> * kSunAngularRadius * kSunAngularRadius));

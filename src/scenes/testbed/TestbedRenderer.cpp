@@ -1,6 +1,7 @@
 #include "scenes/testbed/TestbedRenderer.h"
 
 #include "gl/ShaderLibrary.h"
+#include "scenes/SceneCamera.h"
 
 #include <cmath>
 #include <cstddef>
@@ -26,13 +27,7 @@ static_assert(sizeof(GpuPrimitive) == 3 * 64 + 5 * 16);
 
 /// std140 mirror of the TestbedFrame block.
 struct GpuFrame {
-    glm::mat4 view;
-    glm::mat4 invView;
-    glm::mat4 projection;
-    glm::mat4 viewProjection;
-    glm::mat4 currViewProj;
-    glm::mat4 prevViewProj;
-    glm::vec4 viewport;
+    GpuSceneCamera camera;
     glm::vec4 sunDirection;
     glm::vec4 sunIlluminance;
     glm::vec4 skyZenith;
@@ -44,7 +39,7 @@ struct GpuFrame {
     glm::vec4 ambientOcclusionPower; ///< x: the exponent on the ambient visibility (ssao.power)
 };
 static_assert(sizeof(GpuFrame) == 6 * 64 + 10 * 16);
-static_assert(offsetof(GpuFrame, viewport) == 384 && offsetof(GpuFrame, flags) == 512);
+static_assert(offsetof(GpuFrame, sunDirection) == 400 && offsetof(GpuFrame, flags) == 512);
 
 GpuPrimitive toGpu(const Primitive& p) {
     return {p.toWorld,
@@ -87,13 +82,7 @@ void TestbedRenderer::draw(const DrawInfo& info) {
     mPrimitives.update(gpu, sizeof(GpuPrimitive) * prims.size());
 
     GpuFrame f{};
-    f.view = camera.view;
-    f.invView = glm::inverse(camera.view);
-    f.projection = jitteredProjection(camera.projection, info.jitter, e.width, e.height);
-    f.viewProjection = f.projection * camera.view;
-    f.currViewProj = camera.viewProjection();
-    f.prevViewProj = camera.prevViewProjection;
-    f.viewport = {float(e.width), float(e.height), 1.0f / float(e.width), 1.0f / float(e.height)};
+    f.camera = sceneCameraBlock(camera, info.jitter, e);
     f.sunDirection = glm::vec4(env.sunDirection, std::cos(env.sunAngularRadius));
     f.sunIlluminance =
         glm::vec4(info.sunScale * env.sunIlluminance,
