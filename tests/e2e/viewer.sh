@@ -12,36 +12,48 @@ fi
 source "$(dirname "$0")/../../scripts/xvfb.bash"
 start_xvfb "$S" || exit 1
 
+# The PNG reader the checks below share (each puts "$S" on its path): an 8-bit RGB or RGBA PNG's size, bytes per
+# pixel and unfiltered rows.
+cat > "$S/png_rows.py" <<'PY'
+import struct, zlib
+def read(path):
+    data, pos, idat = open(path, "rb").read(), 8, b""
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", path
+    while pos < len(data):
+        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + n]
+        if kind == b"IHDR":
+            w, h, depth, ctype = struct.unpack(">IIBB", body[:10])
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + n
+    assert depth == 8, (path, depth)
+    bpp = {2: 3, 6: 4}[ctype]
+    raw, stride, prev, rows = zlib.decompress(idat), w * bpp, bytearray(w * bpp), []
+    for y in range(h):
+        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+            p = a + b - c
+            pred = [0, a, b, (a + b) // 2, a if abs(p - a) <= abs(p - b) and abs(p - a) <= abs(p - c) else (b if abs(p - b) <= abs(p - c) else c)][f]
+            line[i] = (line[i] + pred) & 255
+        rows.append(bytes(line))
+        prev = line
+    return w, h, bpp, rows
+PY
+
 expect 0 "tabletop, 90 frames, screenshot and save" -- "$VIEW" --scene tabletop --frames 90 --size 640x360 \
     --fixed-dt 0.0333 --screenshot "$S/view.png" --save "$S/view.json" --set autoExposure.tauDarken=0.5
 check "reports a GL 4.5 (or newer) context" contains "GL 4.5"
 check "screenshot written" test -s "$S/view.png"
-check "screenshot is 640x360 and not uniform" python3 - "$S/view.png" <<'PY'
-import struct, sys, zlib
-data = open(sys.argv[1], "rb").read()
-assert data[:8] == b"\x89PNG\r\n\x1a\n"
-pos, idat = 8, b""
-while pos < len(data):
-    n, kind = struct.unpack(">I4s", data[pos:pos + 8])
-    body = data[pos + 8:pos + 8 + n]
-    if kind == b"IHDR":
-        w, h, depth, ctype = struct.unpack(">IIBB", body[:10])
-    elif kind == b"IDAT":
-        idat += body
-    pos += 12 + n
-assert (w, h, depth) == (640, 360, 8), (w, h, depth)
-bpp = {2: 3, 6: 4}[ctype]
-raw, stride, prev, rows = zlib.decompress(idat), w * bpp, bytearray(w * bpp), []
-for y in range(h):
-    f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-    for i in range(stride):
-        a = line[i - bpp] if i >= bpp else 0
-        b, c = prev[i], prev[i - bpp] if i >= bpp else 0
-        p = a + b - c
-        pred = [0, a, b, (a + b) // 2, a if abs(p - a) <= abs(p - b) and abs(p - a) <= abs(p - c) else (b if abs(p - b) <= abs(p - c) else c)][f]
-        line[i] = (line[i] + pred) & 255
-    rows.append(bytes(line))
-    prev = line
+check "screenshot is 640x360 and not uniform" python3 - "$S/view.png" "$S" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[2])
+from png_rows import read
+w, h, bpp, rows = read(sys.argv[1])
+assert (w, h) == (640, 360), (w, h)
+stride = w * bpp
 colours = {r[i:i + 3] for r in rows[::4] for i in range(0, stride, bpp * 4)}
 print(len(colours), "distinct colours")
 sys.exit(0 if len(colours) > 64 else 1)
@@ -74,30 +86,8 @@ check "names it" contains "'Q' is not a key"
 # input moves it); the same drag on a scene without an interactive camera changes nothing. Compared right of
 # the panels (x >= 330), as mean |difference| per channel.
 cat > "$S/right_diff.py" <<'PY'
-import struct, sys, zlib
-def read(path):
-    data, pos, idat = open(path, "rb").read(), 8, b""
-    while pos < len(data):
-        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + n]
-        if kind == b"IHDR":
-            w, h, depth, ctype = struct.unpack(">IIBB", body[:10])
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + n
-    bpp = {2: 3, 6: 4}[ctype]
-    raw, stride, prev, rows = zlib.decompress(idat), w * bpp, bytearray(w * bpp), []
-    for y in range(h):
-        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - bpp] if i >= bpp else 0
-            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
-            p = a + b - c
-            pred = [0, a, b, (a + b) // 2, a if abs(p - a) <= abs(p - b) and abs(p - a) <= abs(p - c) else (b if abs(p - b) <= abs(p - c) else c)][f]
-            line[i] = (line[i] + pred) & 255
-        rows.append(bytes(line))
-        prev = line
-    return w, h, bpp, rows
+import sys
+from png_rows import read
 (w, h, b1, r1), (_, _, b2, r2) = read(sys.argv[1]), read(sys.argv[2])
 d = [abs(r1[y][x * b1 + c] - r2[y][x * b2 + c]) for y in range(h) for x in range(330, w) for c in range(3)]
 mean = sum(d) / len(d)
@@ -129,31 +119,10 @@ expect 0 "views an EXR file" -- "$VIEW" "$DESK" --frames 3 --fixed-dt 0.0333 --s
 check "names the file and takes its size" contains "Desk.exr at 644x874"
 expect 0 "the same file through photopic image" -- "$PHOTOPIC" image "$DESK" -o "$S/desk_cli.png"
 check "right of the panels the window shows the pipeline's image (mean |diff| <= 2/255)" python3 - \
-    "$S/desk_view.png" "$S/desk_cli.png" <<'PY'
-import struct, sys, zlib
-def read(path):
-    data, pos, idat = open(path, "rb").read(), 8, b""
-    while pos < len(data):
-        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + n]
-        if kind == b"IHDR":
-            w, h, depth, ctype = struct.unpack(">IIBB", body[:10])
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + n
-    bpp = {2: 3, 6: 4}[ctype]
-    raw, stride, prev, rows = zlib.decompress(idat), w * bpp, bytearray(w * bpp), []
-    for y in range(h):
-        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - bpp] if i >= bpp else 0
-            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
-            p = a + b - c
-            pred = [0, a, b, (a + b) // 2, a if abs(p - a) <= abs(p - b) and abs(p - a) <= abs(p - c) else (b if abs(p - b) <= abs(p - c) else c)][f]
-            line[i] = (line[i] + pred) & 255
-        rows.append(bytes(line))
-        prev = line
-    return w, h, bpp, rows
+    "$S/desk_view.png" "$S/desk_cli.png" "$S" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[3])
+from png_rows import read
 (w, h, bv, view), (w2, h2, bc, cli) = read(sys.argv[1]), read(sys.argv[2])
 assert (w, h) == (w2, h2) == (644, 874), (w, h, w2, h2)
 diffs = [abs(view[y][x * bv + c] - cli[y][x * bc + c]) for y in range(0, h, 2) for x in range(340, w, 2) for c in range(3)]
