@@ -71,6 +71,16 @@ using ExrExtraSlices =
 /// place, and logs once per set of primaries (info, naming `path`); does nothing for Rec.709 / D65.
 void convertExrToRec709(const std::filesystem::path& path, const Imf::Header& header, ImageF& image);
 
+/// Reads the pixels of a single-part scanline file with ZIP or ZIPS compression into `frameBuffer`, as
+/// Imf::InputFile::readPixels does for the whole data window (the same values to the bit: absent channels
+/// take the slice's fill value), with the inflate done by libdeflate on OpenEXR's global thread pool
+/// (ExrZip.cpp). Returns false when the file or the frame buffer is outside what it decodes (another
+/// compression, tiled or multi-part, subsampled or UINT channels, slices that are not FLOAT) or when the data
+/// does not decode; the caller then reads through Imf::InputFile, which overwrites every pixel or reports the
+/// error.
+[[nodiscard]] bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& header,
+                                    const Imf::FrameBuffer& frameBuffer);
+
 /// The colour of an OpenEXR file open over `bytes`, as readImage returns it (in linear Rec.709: other
 /// chromaticities are converted), into `image` (its storage kept
 /// when large enough), plus whatever `extra` adds, read in the same pass. Throws IoError naming `path`;

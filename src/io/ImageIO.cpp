@@ -815,8 +815,10 @@ void detail::readExrColor(const fs::path& path, std::span<const unsigned char> b
     addSlice("A", 3, 1.0);
     if (extra)
         extra(frameBuffer, dataWindow, width, height);
-    file.setFrameBuffer(frameBuffer);
-    file.readPixels(dataWindow.min.y, dataWindow.max.y);
+    if (!readZipScanlines(bytes, header, frameBuffer)) {
+        file.setFrameBuffer(frameBuffer);
+        file.readPixels(dataWindow.min.y, dataWindow.max.y);
+    }
 
     if (!hasRgb) {
         for (std::size_t i = 0; i < image.pixelCount(); ++i)

@@ -1,0 +1,370 @@
+// Scanline ZIP / ZIPS pixel data of an OpenEXR file in memory, decoded through OpenEXR's core library (chunk
+// table, chunk reads and their checks) with the inflate step done by libdeflate instead of zlib, on OpenEXR's
+// global thread pool. The unpacking into the frame buffer is done here too: OpenEXR 3.1's own routine for
+// four half channels into interleaved floats at descending addresses (A, B, G, R into RGBA) writes them in
+// file order, R's value where A belongs (ExrZipTest.RgbaMatchesOpenExrBitForBit fails with it). zlib's
+// inflate was the largest single cost of reading a ZIP-compressed sequence; libdeflate inflates the same
+// stream several times faster.
+//
+// The ZIP codec (OpenEXR file layout, "ZIP compression"): a chunk's bytes are deflated in a zlib stream after
+// two reversible steps, which are undone here after inflating: the bytes were split into the even-indexed
+// ones followed by the odd-indexed ones, and then each byte replaced by its difference to the previous one
+// plus 128 (modulo 256; the first byte kept). A chunk whose deflated size would not be smaller is stored raw.
+#include "io/ExrDetail.h"
+
+#include <IlmThreadPool.h>
+#include <Imath/half.h>
+#include <ImfChannelList.h>
+#include <libdeflate.h>
+#include <openexr.h>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace photopic::detail {
+
+namespace {
+
+// ------------------------------------------------------------------------------------------------ ZIP codec
+
+/// Undoes the predictor in place: b[i] = b[i - 1] + b[i] - 128 (mod 256) for i >= 1, a running sum.
+void undoPredictor(std::uint8_t* bytes, std::size_t size) {
+    if (size == 0)
+        return;
+    std::size_t i = 1;
+    std::uint8_t previous = bytes[0];
+#if defined(__SSE2__)
+    // Sixteen bytes at a time: subtract 128 from each, a prefix sum in four shifted adds, plus the last sum.
+    const __m128i bias = _mm_set1_epi8(char(-128));
+    for (; i + 16 <= size; i += 16) {
+        __m128i d = _mm_add_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(bytes + i)), bias);
+        d = _mm_add_epi8(d, _mm_slli_si128(d, 1));
+        d = _mm_add_epi8(d, _mm_slli_si128(d, 2));
+        d = _mm_add_epi8(d, _mm_slli_si128(d, 4));
+        d = _mm_add_epi8(d, _mm_slli_si128(d, 8));
+        d = _mm_add_epi8(d, _mm_set1_epi8(char(previous)));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(bytes + i), d);
+        previous = std::uint8_t(_mm_extract_epi16(d, 7) >> 8);
+    }
+#endif
+    for (; i < size; ++i) {
+        previous = std::uint8_t(previous + bytes[i] - 128);
+        bytes[i] = previous;
+    }
+}
+
+/// out[2i] = in[i] and out[2i + 1] = in[(size + 1) / 2 + i]: the two halves woven back together.
+void interleave(std::uint8_t* out, const std::uint8_t* in, std::size_t size) {
+    const std::uint8_t* even = in;
+    const std::uint8_t* odd = in + (size + 1) / 2;
+    std::size_t o = 0;
+#if defined(__SSE2__)
+    for (; o + 32 <= size; o += 32) {
+        const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(even));
+        const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(odd));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + o), _mm_unpacklo_epi8(a, b));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + o + 16), _mm_unpackhi_epi8(a, b));
+        even += 16;
+        odd += 16;
+    }
+#endif
+    for (; o < size; ++o)
+        out[o] = (o % 2 == 0) ? *even++ : *odd++;
+}
+
+/// One decoding thread's state: its inflater and the inflated bytes before the two steps are undone.
+struct ZipState {
+    ZipState()
+        : inflater(libdeflate_alloc_decompressor()) {}
+    ZipState(const ZipState&) = delete;
+    ZipState& operator=(const ZipState&) = delete;
+    ~ZipState() { libdeflate_free_decompressor(inflater); }
+
+    libdeflate_decompressor* inflater;
+    std::vector<std::uint8_t> inflated;
+};
+
+/// The pipeline's decompress step for ZIP and ZIPS chunks (decoding_user_data: the thread's ZipState).
+exr_result_t inflateZipChunk(exr_decode_pipeline_t* decode) {
+    const std::uint64_t packed = decode->chunk.packed_size;
+    const std::uint64_t unpacked = decode->chunk.unpacked_size;
+    if (packed == 0 || packed == unpacked)
+        return EXR_ERR_SUCCESS; // stored raw: the pipeline already points the unpacked buffer at it
+    auto* state = static_cast<ZipState*>(decode->decoding_user_data);
+    if (state == nullptr || state->inflater == nullptr || decode->unpacked_buffer == nullptr ||
+        decode->unpacked_alloc_size < unpacked)
+        return EXR_ERR_OUT_OF_MEMORY;
+    state->inflated.resize(unpacked);
+    // With no length out-parameter libdeflate demands exactly `unpacked` bytes, as OpenEXR's own reader does.
+    if (libdeflate_zlib_decompress(state->inflater, decode->packed_buffer, packed, state->inflated.data(),
+                                   unpacked, nullptr) != LIBDEFLATE_SUCCESS)
+        return EXR_ERR_CORRUPT_CHUNK;
+    undoPredictor(state->inflated.data(), unpacked);
+    interleave(static_cast<std::uint8_t*>(decode->unpacked_buffer), state->inflated.data(), unpacked);
+    return EXR_ERR_SUCCESS;
+}
+
+/// The pipeline's unpack step: each line of the chunk holds every channel's run of values in the part's
+/// channel order (no subsampling here), little-endian; a channel with a destination is converted to float as
+/// Imf::InputFile converts it (Imath's half), the others are stepped over.
+exr_result_t unpackToFloat(exr_decode_pipeline_t* decode) {
+    static_assert(std::endian::native == std::endian::little, "EXR values are little-endian");
+    const auto* source = static_cast<const std::uint8_t*>(decode->unpacked_buffer);
+    const int lines = decode->chunk.height;
+    std::uint64_t lineBytes = 0;
+    for (int c = 0; c < decode->channel_count; ++c) {
+        const exr_coding_channel_info_t& channel = decode->channels[c];
+        if (channel.height != lines || channel.width != decode->chunk.width ||
+            (channel.bytes_per_element != 2 && channel.bytes_per_element != 4))
+            return EXR_ERR_INVALID_ARGUMENT;
+        lineBytes += std::uint64_t(channel.width) * std::uint64_t(channel.bytes_per_element);
+    }
+    if (source == nullptr || lines < 0 || lineBytes * std::uint64_t(lines) != decode->chunk.unpacked_size)
+        return EXR_ERR_CORRUPT_CHUNK;
+    for (int y = 0; y < lines; ++y) {
+        for (int c = 0; c < decode->channel_count; ++c) {
+            const exr_coding_channel_info_t& channel = decode->channels[c];
+            const std::size_t width = std::size_t(channel.width);
+            if (channel.decode_to_ptr != nullptr) {
+                std::uint8_t* out = channel.decode_to_ptr + std::ptrdiff_t(y) * channel.user_line_stride;
+                const std::ptrdiff_t step = channel.user_pixel_stride;
+                if (channel.bytes_per_element == 2) {
+                    for (std::size_t x = 0; x < width; ++x) {
+                        Imath::half h;
+                        h.setBits(std::uint16_t(source[2 * x] | (source[2 * x + 1] << 8)));
+                        const float value = h;
+                        std::memcpy(out + std::ptrdiff_t(x) * step, &value, sizeof(float));
+                    }
+                } else {
+                    for (std::size_t x = 0; x < width; ++x)
+                        std::memcpy(out + std::ptrdiff_t(x) * step, source + 4 * x, sizeof(float));
+                }
+            }
+            source += width * std::size_t(channel.bytes_per_element);
+        }
+    }
+    return EXR_ERR_SUCCESS;
+}
+
+// ---------------------------------------------------------------------------------------- the file in memory
+
+int64_t readMemory(exr_const_context_t, void* user, void* buffer, uint64_t size, uint64_t offset,
+                   exr_stream_error_func_ptr_t) {
+    const auto& bytes = *static_cast<const std::span<const unsigned char>*>(user);
+    if (offset >= bytes.size())
+        return 0;
+    const std::uint64_t n = std::min<std::uint64_t>(size, bytes.size() - offset);
+    std::memcpy(buffer, bytes.data() + offset, n);
+    return int64_t(n);
+}
+
+int64_t memorySize(exr_const_context_t, void* user) {
+    return int64_t(static_cast<const std::span<const unsigned char>*>(user)->size());
+}
+
+/// Any failure here falls back to Imf::InputFile, which reports it in its own words: nothing to print.
+void quiet(exr_const_context_t, exr_result_t, const char*) {}
+
+struct Context {
+    exr_context_t handle = nullptr;
+    Context() = default;
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+    ~Context() {
+        if (handle != nullptr)
+            exr_finish(&handle);
+    }
+};
+
+/// Where a file channel goes: the frame buffer slice's pixel (x, y) of the data window is at
+/// `origin + (y - minY) * lineStride + (x - minX) * pixelStride`.
+struct Target {
+    std::uint8_t* origin = nullptr;
+    int pixelStride = 0;
+    int lineStride = 0;
+};
+
+struct Job {
+    exr_const_context_t context = nullptr;
+    int minY = 0;
+    int scanlinesPerChunk = 1;
+    std::vector<Target> targets; // one per file channel, in the part's channel order; origin null: skipped
+    std::atomic<bool> failed{false};
+};
+
+bool decodeChunk(Job& job, ZipState& state, exr_decode_pipeline_t& decode, bool& initialised, int chunkY) {
+    exr_chunk_info_t chunk{};
+    if (exr_read_scanline_chunk_info(job.context, 0, chunkY, &chunk) != EXR_ERR_SUCCESS)
+        return false;
+    if (!initialised) {
+        if (exr_decoding_initialize(job.context, 0, &chunk, &decode) != EXR_ERR_SUCCESS)
+            return false;
+        initialised = true;
+        decode.decoding_user_data = &state; // initialize clears the whole pipeline
+    } else if (exr_decoding_update(job.context, 0, &chunk, &decode) != EXR_ERR_SUCCESS) {
+        return false;
+    }
+    if (std::size_t(decode.channel_count) != job.targets.size())
+        return false;
+    for (int c = 0; c < decode.channel_count; ++c) {
+        exr_coding_channel_info_t& channel = decode.channels[c];
+        const Target& target = job.targets[std::size_t(c)];
+        if (target.origin == nullptr) {
+            channel.decode_to_ptr = nullptr;
+            continue;
+        }
+        channel.decode_to_ptr = target.origin + std::ptrdiff_t(chunk.start_y - job.minY) * target.lineStride;
+        channel.user_pixel_stride = target.pixelStride;
+        channel.user_line_stride = target.lineStride;
+        channel.user_data_type = EXR_PIXEL_FLOAT;
+        channel.user_bytes_per_element = 4;
+    }
+    if (exr_decoding_choose_default_routines(job.context, 0, &decode) != EXR_ERR_SUCCESS)
+        return false;
+    if (decode.decompress_fn != nullptr)
+        decode.decompress_fn = &inflateZipChunk;
+    decode.unpack_and_convert_fn = &unpackToFloat;
+    return exr_decoding_run(job.context, 0, &decode) == EXR_ERR_SUCCESS;
+}
+
+/// Decodes the chunks first, first + step, ... of the part (scanline chunks, in file order of y).
+class ChunkTask : public IlmThread::Task {
+public:
+    ChunkTask(IlmThread::TaskGroup* group, Job& job, int first, int step, int chunks)
+        : IlmThread::Task(group)
+        , mJob(job)
+        , mFirst(first)
+        , mStep(step)
+        , mChunks(chunks) {}
+
+    void execute() override {
+        ZipState state;
+        exr_decode_pipeline_t decode = EXR_DECODE_PIPELINE_INITIALIZER;
+        bool initialised = false;
+        for (int i = mFirst; i < mChunks && !mJob.failed.load(std::memory_order_relaxed); i += mStep) {
+            if (!decodeChunk(mJob, state, decode, initialised, mJob.minY + i * mJob.scanlinesPerChunk)) {
+                mJob.failed.store(true, std::memory_order_relaxed);
+                break;
+            }
+        }
+        if (initialised)
+            exr_decoding_destroy(mJob.context, &decode);
+    }
+
+private:
+    Job& mJob;
+    int mFirst;
+    int mStep;
+    int mChunks;
+};
+
+} // namespace
+
+bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& header,
+                      const Imf::FrameBuffer& frameBuffer) {
+    if (header.compression() != Imf::ZIP_COMPRESSION && header.compression() != Imf::ZIPS_COMPRESSION)
+        return false;
+    for (auto it = frameBuffer.begin(); it != frameBuffer.end(); ++it) {
+        const Imf::Slice& s = it.slice();
+        if (s.type != Imf::FLOAT || s.xSampling != 1 || s.ySampling != 1 || s.xTileCoords || s.yTileCoords ||
+            s.xStride <= 0 || s.yStride <= 0 || s.xStride > std::numeric_limits<int>::max() ||
+            s.yStride > std::numeric_limits<int>::max())
+            return false;
+    }
+
+    std::span<const unsigned char> file = bytes;
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    init.user_data = &file;
+    init.read_fn = &readMemory;
+    init.size_fn = &memorySize;
+    init.error_handler_fn = &quiet;
+    Context context;
+    if (exr_start_read(&context.handle, "memory", &init) != EXR_ERR_SUCCESS)
+        return false;
+    int parts = 0;
+    exr_storage_t storage{};
+    exr_compression_t compression{};
+    exr_attr_box2i_t window{};
+    int32_t scanlinesPerChunk = 0;
+    int32_t chunks = 0;
+    const exr_attr_chlist_t* channels = nullptr;
+    if (exr_get_count(context.handle, &parts) != EXR_ERR_SUCCESS || parts != 1 ||
+        exr_get_storage(context.handle, 0, &storage) != EXR_ERR_SUCCESS || storage != EXR_STORAGE_SCANLINE ||
+        exr_get_compression(context.handle, 0, &compression) != EXR_ERR_SUCCESS ||
+        (compression != EXR_COMPRESSION_ZIP && compression != EXR_COMPRESSION_ZIPS) ||
+        exr_get_data_window(context.handle, 0, &window) != EXR_ERR_SUCCESS ||
+        exr_get_scanlines_per_chunk(context.handle, 0, &scanlinesPerChunk) != EXR_ERR_SUCCESS ||
+        scanlinesPerChunk < 1 || exr_get_chunk_count(context.handle, 0, &chunks) != EXR_ERR_SUCCESS ||
+        chunks < 1 || exr_get_channels(context.handle, 0, &channels) != EXR_ERR_SUCCESS ||
+        channels == nullptr)
+        return false;
+    const Imath::Box2i dataWindow = header.dataWindow();
+    if (window.min.x != dataWindow.min.x || window.min.y != dataWindow.min.y ||
+        window.max.x != dataWindow.max.x || window.max.y != dataWindow.max.y)
+        return false;
+    const std::int64_t height = std::int64_t(window.max.y) - window.min.y + 1;
+    if (std::int64_t(chunks) != (height + scanlinesPerChunk - 1) / scanlinesPerChunk)
+        return false;
+
+    Job job;
+    job.context = context.handle;
+    job.minY = window.min.y;
+    job.scanlinesPerChunk = scanlinesPerChunk;
+    for (int c = 0; c < channels->num_channels; ++c) {
+        const exr_attr_chlist_entry_t& entry = channels->entries[c];
+        const Imf::Slice* slice = frameBuffer.findSlice(entry.name.str);
+        Target target;
+        if (slice != nullptr) {
+            if ((entry.pixel_type != EXR_PIXEL_HALF && entry.pixel_type != EXR_PIXEL_FLOAT) ||
+                entry.x_sampling != 1 || entry.y_sampling != 1)
+                return false;
+            // Imf's base addresses pixel (x, y) of the data window at base + x * xStride + y * yStride.
+            target.origin = reinterpret_cast<std::uint8_t*>(reinterpret_cast<std::intptr_t>(slice->base) +
+                                                            std::intptr_t(window.min.x) * slice->xStride +
+                                                            std::intptr_t(window.min.y) * slice->yStride);
+            target.pixelStride = int(slice->xStride);
+            target.lineStride = int(slice->yStride);
+        }
+        job.targets.push_back(target);
+    }
+
+    // Slices the file has no channel for take their fill value, as Imf::InputFile gives them.
+    const int width = window.max.x - window.min.x + 1;
+    for (auto it = frameBuffer.begin(); it != frameBuffer.end(); ++it) {
+        bool inFile = false;
+        for (int c = 0; c < channels->num_channels && !inFile; ++c)
+            inFile = std::strcmp(channels->entries[c].name.str, it.name()) == 0;
+        if (inFile)
+            continue;
+        const Imf::Slice& s = it.slice();
+        const float fill = float(s.fillValue);
+        for (std::int64_t y = window.min.y; y <= window.max.y; ++y) {
+            auto* row = reinterpret_cast<std::uint8_t*>(reinterpret_cast<std::intptr_t>(s.base) +
+                                                        std::intptr_t(y) * s.yStride +
+                                                        std::intptr_t(window.min.x) * s.xStride);
+            for (int x = 0; x < width; ++x)
+                std::memcpy(row + std::ptrdiff_t(x) * s.xStride, &fill, sizeof(float));
+        }
+    }
+
+    const int threads = std::max(1, IlmThread::ThreadPool::globalThreadPool().numThreads());
+    const int tasks = std::min(threads, int(chunks));
+    {
+        IlmThread::TaskGroup group; // waits for its tasks when it goes out of scope
+        for (int t = 0; t < tasks; ++t)
+            IlmThread::ThreadPool::addGlobalTask(new ChunkTask(&group, job, t, tasks, chunks));
+    }
+    return !job.failed.load();
+}
+
+} // namespace photopic::detail
