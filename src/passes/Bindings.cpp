@@ -7,6 +7,7 @@ namespace photopic {
 ShaderDefines bindingDefines(ShaderDefines extra) {
     ShaderDefines defines = {
         {"BINDING_EXPOSURE_STATE", std::to_string(kBindingExposureState)},
+        {"BINDING_EXPOSURE_UNIFORM", std::to_string(kBindingExposureUniform)},
         {"BINDING_HISTOGRAM", std::to_string(kBindingHistogram)},
         {"BINDING_METERING", std::to_string(kBindingMetering)},
         {"BINDING_PROBE", std::to_string(kBindingProbe)},

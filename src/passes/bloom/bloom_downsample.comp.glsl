@@ -16,6 +16,7 @@
 // of the chip a full-screen triangle runs far below the memory's pace, and the taps hit the texture cache the
 // same way from either stage.
 #include "passes/common/color.h.glsl"
+#include "passes/common/invocation.h.glsl"
 #ifdef PREFILTER
 #include "passes/common/exposure.h.glsl"
 #include "passes/common/sanitize.h.glsl"
@@ -57,10 +58,7 @@ float karisWeight(vec3 box) {
 #endif
 
 void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(p, imageSize(uTarget)))) {
-        return;
-    }
+    ivec2 p = clampedInvocationPixel(imageSize(uTarget));
     vec2 uv = (vec2(p) + 0.5) * uTargetTexel;
     vec2 t = uSourceStep;
     vec3 a = tap(uv + t * vec2(-2.0, 2.0));

@@ -5,6 +5,8 @@
 // keeps the weights of all levels summing to 1 (core/Bloom.h bloomLevelWeight), so bloom moves energy
 // around without adding any: what `energy-conserving` needs and what keeps `threshold` mode predictable.
 // A compute pass (8x8 groups, image store), as the downsample.
+#include "passes/common/invocation.h.glsl"
+
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uCoarse; // result of level i + 1 (or the smallest downsampled level)
@@ -26,10 +28,7 @@ vec2 pairOffset(vec2 w0, vec2 w1) {
 }
 
 void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(p, imageSize(uTarget)))) {
-        return;
-    }
+    ivec2 p = clampedInvocationPixel(imageSize(uTarget));
     vec2 uv = (vec2(p) + 0.5) * uTargetTexel;
     vec2 x = uv / uCoarseTexel - 0.5; // in coarse texels, texel centres at integers
     vec2 i = floor(x);

@@ -154,7 +154,7 @@ void DebugViewPass::bindSceneView(const FrameContext& ctx, const FrameResources&
                              .spotRadius = ae.spot.radius});
     mSceneParameters.bind(kBindingParameters);
     p.use();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
+    glBindBufferBase(GL_UNIFORM_BUFFER, kBindingExposureUniform,
                      resources.buffer(Resource::ExposureState)->id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingHistogram,
                      resources.buffer(Resource::Histogram)->id());
@@ -215,7 +215,7 @@ void HistogramOverlayPass::execute(FrameContext& ctx, FrameResources& resources)
     // The display image read and written once; the histogram is 1 KB.
     ScopedGpuTimer timer(ctx.timers, "histogram overlay",
                          double(e.width) * e.height * 2 * bytesPerTexel(format));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
+    glBindBufferBase(GL_UNIFORM_BUFFER, kBindingExposureUniform,
                      resources.buffer(Resource::ExposureState)->id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingHistogram,
                      resources.buffer(Resource::Histogram)->id());

@@ -65,7 +65,7 @@ void DisplayEffectsPass::execute(FrameContext& ctx, FrameResources& resources) {
          .frame = std::uint32_t(ctx.time.frameIndex)});
     mParameters.bind(kBindingParameters);
     mProgram.at(bitDepth).use();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
+    glBindBufferBase(GL_UNIFORM_BUFFER, kBindingExposureUniform,
                      resources.buffer(Resource::ExposureState)->id());
     glBindTextureUnit(0, display.id());
     glBindTextureUnit(1, flare ? flare->id() : mBlack.id());

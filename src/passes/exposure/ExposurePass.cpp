@@ -189,7 +189,8 @@ void ExposurePass::execute(const Inputs& in) noexcept {
     mProgram.use();
     glDispatchCompute(1, 1, 1);
     // Later passes read the state as an SSBO; the readback copies it.
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    // Readers take the state as a uniform block (kBindingExposureUniform) or a storage buffer.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 } // namespace photopic

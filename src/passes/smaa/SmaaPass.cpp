@@ -97,7 +97,7 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
          .diagonalSteps = preset.diagonalSteps});
     mParameters.bind(kBindingParameters);
     if (hdr) {
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
+        glBindBufferBase(GL_UNIFORM_BUFFER, kBindingExposureUniform,
                          resources.buffer(Resource::ExposureState)->id());
     }
     const std::string prefix = hdr ? "smaa (hdr) " : "smaa ";

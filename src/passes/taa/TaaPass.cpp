@@ -78,7 +78,7 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
                         .padding = 0});
     mParameters.bind(kBindingParameters);
     mProgram.use();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState,
+    glBindBufferBase(GL_UNIFORM_BUFFER, kBindingExposureUniform,
                      resources.buffer(Resource::ExposureState)->id());
     glBindTextureUnit(0, resources.texture(Resource::SceneColor)->id());
     // Without a history the shader reads none; a bound texture keeps every sampler complete.

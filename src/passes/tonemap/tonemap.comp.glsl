@@ -13,6 +13,7 @@
 #include "passes/common/color.h.glsl"
 #include "passes/common/display_format.h.glsl"
 #include "passes/common/exposure.h.glsl"
+#include "passes/common/invocation.h.glsl"
 #include "passes/common/noise.h.glsl"
 #include "passes/common/sanitize.h.glsl"
 #include "passes/tonemap/tonecurves.h.glsl"
@@ -98,10 +99,7 @@ vec3 grade(vec3 c) {
 }
 
 void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(p, imageSize(uOutput)))) {
-        return;
-    }
+    ivec2 p = clampedInvocationPixel(imageSize(uOutput));
     vec2 fragCoord = vec2(p) + 0.5;
     // Sanitised here as well: on the LDR path this is where the pipeline first reads the host's colour.
     vec3 c = sanitize(texelFetch(uScene, p, 0).rgb) * gExposure.exposure;
