@@ -197,6 +197,8 @@ struct Target {
 struct Job {
     exr_const_context_t context = nullptr;
     int minY = 0;
+    int maxY = 0;
+    int width = 0;
     int scanlinesPerChunk = 1;
     std::vector<Target> targets; // one per file channel, in the part's channel order; origin null: skipped
     std::atomic<bool> failed{false};
@@ -205,6 +207,10 @@ struct Job {
 bool decodeChunk(Job& job, ZipState& state, exr_decode_pipeline_t& decode, bool& initialised, int chunkY) {
     exr_chunk_info_t chunk{};
     if (exr_read_scanline_chunk_info(job.context, 0, chunkY, &chunk) != EXR_ERR_SUCCESS)
+        return false;
+    // The rows the chunk writes, checked against the frame buffer's before any pointer is made.
+    if (chunk.width != job.width || chunk.height < 1 || chunk.start_y != chunkY ||
+        std::int64_t(chunk.start_y) + chunk.height - 1 > job.maxY)
         return false;
     if (!initialised) {
         if (exr_decoding_initialize(job.context, 0, &chunk, &decode) != EXR_ERR_SUCCESS)
@@ -319,6 +325,8 @@ bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& h
     Job job;
     job.context = context.handle;
     job.minY = window.min.y;
+    job.maxY = window.max.y;
+    job.width = window.max.x - window.min.x + 1;
     job.scanlinesPerChunk = scanlinesPerChunk;
     for (int c = 0; c < channels->num_channels; ++c) {
         const exr_attr_chlist_entry_t& entry = channels->entries[c];
@@ -339,7 +347,7 @@ bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& h
     }
 
     // Slices the file has no channel for take their fill value, as Imf::InputFile gives them.
-    const int width = window.max.x - window.min.x + 1;
+    const int width = job.width;
     for (auto it = frameBuffer.begin(); it != frameBuffer.end(); ++it) {
         bool inFile = false;
         for (int c = 0; c < channels->num_channels && !inFile; ++c)
