@@ -9,9 +9,11 @@
 #include <ImfHeader.h>
 #include <ImfIO.h>
 #include <ImfInputFile.h>
+#include <ImfPartType.h>
 #include <ImfRgbaFile.h>
 #include <ImfStdIO.h>
 #include <ImfThreading.h>
+#include <ImfVersion.h>
 #include <libdeflate.h>
 #include <png.h>
 #include <sys/stat.h>
@@ -272,6 +274,29 @@ void checkExrAttributeSizes(const fs::path& path, std::span<const unsigned char>
     }
 }
 
+/// Tiles no larger than the image, or than kMaxTileBeyondImage where the image is smaller: Imf::InputFile
+/// allocates a buffer of a whole row of tiles (the data window's width times the tile height) and one tile
+/// per thread, by what the header says, before it reads a byte of them (a fuzzed 2 x 100663298 tile asked for
+/// 2.4 GB for a 6 x 4 image). Common tile sizes (32 to 256) on small images stay valid.
+constexpr std::uint64_t kMaxTileBeyondImage = 256;
+
+void checkTileSize(const fs::path& path, const Imf::Header& header, int version, std::int64_t width,
+                   std::int64_t height) {
+    // A single-part file says it is tiled in its version field, a part of a multi-part file in its type.
+    const bool tiled = Imf::isTiled(version) || (header.hasType() && Imf::isTiled(header.type()));
+    if (!tiled || !header.hasTileDescription())
+        return;
+    const Imf::TileDescription& tiles = header.tileDescription();
+    if (tiles.xSize < 1 || tiles.ySize < 1 ||
+        tiles.xSize > std::max<std::uint64_t>(std::uint64_t(width), kMaxTileBeyondImage) ||
+        tiles.ySize > std::max<std::uint64_t>(std::uint64_t(height), kMaxTileBeyondImage))
+        throw IoError(path, "OpenEXR tile size " + std::to_string(tiles.xSize) + " x " +
+                                std::to_string(tiles.ySize) + " does not fit the image (" +
+                                std::to_string(width) + " x " + std::to_string(height) +
+                                "): at most the image's size, or " + std::to_string(kMaxTileBeyondImage) +
+                                " where the image is smaller");
+}
+
 /// The first part's header alone, checked before Imf::InputFile sees the file: opening it allocates offset
 /// tables and line buffers sized by the data window, so a corrupt window must be refused first.
 void checkExrHeader(const fs::path& path, std::span<const unsigned char> bytes,
@@ -290,6 +315,7 @@ void checkExrHeader(const fs::path& path, std::span<const unsigned char> bytes,
     const std::int64_t width = std::int64_t(dataWindow.max.x) - dataWindow.min.x + 1;
     const std::int64_t height = std::int64_t(dataWindow.max.y) - dataWindow.min.y + 1;
     checkSize(path, width, height, limits);
+    checkTileSize(path, header, version, width, height);
     checkBytesHold(path, width, height, exrMinimumBytes(header, width, height), bytes.size(), "OpenEXR");
 }
 

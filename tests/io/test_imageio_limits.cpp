@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfTiledOutputFile.h>
 #include <unistd.h>
 
 #include <array>
@@ -128,6 +132,51 @@ TEST(ImageLimits, ExrHeaderDeclaringMoreChunksThanTheFileHoldsIsRejected) {
     const std::string error = decodeError(bytes);
     EXPECT_FALSE(error.empty());
     EXPECT_NE(error.find("mem.img"), std::string::npos) << error;
+}
+
+/// A tiled 10 x 6 RGB file with `tile` x `tile` tiles, written by OpenEXR.
+Bytes tiledExr(unsigned tile) {
+    const fs::path path =
+        fs::temp_directory_path() / ("photopic-tiled-" + std::to_string(::getpid()) + ".exr");
+    const int w = 10, h = 6;
+    Imf::Header header(w, h);
+    header.setTileDescription(Imf::TileDescription(tile, tile, Imf::ONE_LEVEL));
+    for (const char* name : {"R", "G", "B"})
+        header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    std::vector<float> values(std::size_t(w) * h, 0.25f);
+    Imf::FrameBuffer frameBuffer;
+    for (const char* name : {"R", "G", "B"})
+        frameBuffer.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data()), sizeof(float),
+                                            sizeof(float) * w));
+    {
+        Imf::TiledOutputFile file(path.c_str(), header);
+        file.setFrameBuffer(frameBuffer);
+        file.writeTiles(0, file.numXTiles() - 1, 0, file.numYTiles() - 1);
+    }
+    std::ifstream in(path, std::ios::binary);
+    Bytes bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    fs::remove(path);
+    return bytes;
+}
+
+// OpenEXR allocates a row of tiles (the image's width times the tile height) and a tile per thread by what
+// the header says: a tile size beyond the image (and beyond 256) is refused before, naming the file and the
+// size.
+TEST(ImageLimits, ExrTilesLargerThanTheImageAreRejectedUnallocated) {
+    EXPECT_EQ(decodeImage(tiledExr(64), "tiles64.exr").width, 10) << "tiles up to 256 fit any image";
+    Bytes bytes = tiledExr(4);
+    const std::string name = "tiledesc";
+    auto at = std::search(bytes.begin(), bytes.end(), name.begin(), name.end());
+    ASSERT_NE(at, bytes.end());
+    // "tiledesc"\0 size(4) xSize(4) ySize(4) mode(1): set ySize to 2^24, which OpenEXR itself accepts (a row
+    // of tiles of this file would be 10 x 2^24 floats per channel, 2 GB).
+    const std::size_t ySize = std::size_t(at - bytes.begin()) + name.size() + 1 + 4 + 4;
+    const std::uint32_t huge = 1u << 24;
+    for (int i = 0; i < 4; ++i)
+        bytes[ySize + std::size_t(i)] = static_cast<unsigned char>(huge >> (8 * i));
+    const std::string error = decodeError(bytes);
+    EXPECT_NE(error.find("mem.img"), std::string::npos) << error;
+    EXPECT_NE(error.find("tile size 4 x 16777216"), std::string::npos) << error;
 }
 
 TEST(OutputChecks, RequireWritableFileNamesWhatIsWrong) {
