@@ -29,6 +29,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <new>
 #include <vector>
 
 namespace photopic::detail {
@@ -104,7 +105,12 @@ exr_result_t inflateZipChunk(exr_decode_pipeline_t* decode) {
     if (state == nullptr || state->inflater == nullptr || decode->unpacked_buffer == nullptr ||
         decode->unpacked_alloc_size < unpacked)
         return EXR_ERR_OUT_OF_MEMORY;
-    state->inflated.resize(unpacked);
+    // Called from OpenEXR's C code on a pool thread: nothing may throw through it.
+    try {
+        state->inflated.resize(unpacked);
+    } catch (const std::bad_alloc&) {
+        return EXR_ERR_OUT_OF_MEMORY;
+    }
     // With no length out-parameter libdeflate demands exactly `unpacked` bytes, as OpenEXR's own reader does.
     if (libdeflate_zlib_decompress(state->inflater, decode->packed_buffer, packed, state->inflated.data(),
                                    unpacked, nullptr) != LIBDEFLATE_SUCCESS)
