@@ -18,4 +18,8 @@ ShaderDefines bindingDefines(ShaderDefines extra) {
     return defines;
 }
 
+void bindExposureStateForReading(const Buffer& state) {
+    glBindBufferBase(GL_UNIFORM_BUFFER, kBindingExposureUniform, state.id());
+}
+
 } // namespace photopic

@@ -115,4 +115,9 @@ static_assert(sizeof(GpuSubjectState) == 16 && offsetof(GpuSubjectState, hasKept
 /// #defines every shader gets: the binding indices above.
 ShaderDefines bindingDefines(ShaderDefines extra = {});
 
+/// Binds the exposure state buffer (GpuExposureState) where the passes that only read it find it: the
+/// uniform block at kBindingExposureUniform (passes/common/exposure.h.glsl). The adaptation pass, its one
+/// writer, binds it as a storage buffer at kBindingExposureState.
+void bindExposureStateForReading(const Buffer& state);
+
 } // namespace photopic

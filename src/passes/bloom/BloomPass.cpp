@@ -76,7 +76,7 @@ const Texture& BloomPass::execute(const Inputs& in) {
         bloomMipCount({mExtent.width, mExtent.height}, in.firstDivisor, std::max(1, in.mipCount));
     ensureChain(in.firstDivisor, levels);
     DebugGroup group("bloom");
-    glBindBufferBase(GL_UNIFORM_BUFFER, kBindingExposureUniform, in.exposureState->id());
+    bindExposureStateForReading(*in.exposureState);
 
     // Downsample chain; level 0 reads the scene with the prefilter (exposure, Karis, threshold).
     for (int i = 0; i < levels; ++i) {

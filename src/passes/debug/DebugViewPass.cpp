@@ -154,8 +154,7 @@ void DebugViewPass::bindSceneView(const FrameContext& ctx, const FrameResources&
                              .spotRadius = ae.spot.radius});
     mSceneParameters.bind(kBindingParameters);
     p.use();
-    glBindBufferBase(GL_UNIFORM_BUFFER, kBindingExposureUniform,
-                     resources.buffer(Resource::ExposureState)->id());
+    bindExposureStateForReading(*resources.buffer(Resource::ExposureState));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingHistogram,
                      resources.buffer(Resource::Histogram)->id());
     glBindTextureUnit(0, scene->id());
@@ -215,8 +214,7 @@ void HistogramOverlayPass::execute(FrameContext& ctx, FrameResources& resources)
     // The display image read and written once; the histogram is 1 KB.
     ScopedGpuTimer timer(ctx.timers, "histogram overlay",
                          double(e.width) * e.height * 2 * bytesPerTexel(format));
-    glBindBufferBase(GL_UNIFORM_BUFFER, kBindingExposureUniform,
-                     resources.buffer(Resource::ExposureState)->id());
+    bindExposureStateForReading(*resources.buffer(Resource::ExposureState));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingHistogram,
                      resources.buffer(Resource::Histogram)->id());
     const Program& p = mProgram.at(bitDepth);

@@ -65,8 +65,7 @@ void DisplayEffectsPass::execute(FrameContext& ctx, FrameResources& resources) {
          .frame = std::uint32_t(ctx.time.frameIndex)});
     mParameters.bind(kBindingParameters);
     mProgram.at(bitDepth).use();
-    glBindBufferBase(GL_UNIFORM_BUFFER, kBindingExposureUniform,
-                     resources.buffer(Resource::ExposureState)->id());
+    bindExposureStateForReading(*resources.buffer(Resource::ExposureState));
     glBindTextureUnit(0, display.id());
     glBindTextureUnit(1, flare ? flare->id() : mBlack.id());
     glBindTextureUnit(2, glare ? glare->id() : mBlack.id());

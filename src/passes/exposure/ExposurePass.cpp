@@ -188,8 +188,8 @@ void ExposurePass::execute(const Inputs& in) noexcept {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingMetering, in.metering->id());
     mProgram.use();
     glDispatchCompute(1, 1, 1);
-    // Later passes read the state as an SSBO; the readback copies it.
-    // Readers take the state as a uniform block (kBindingExposureUniform) or a storage buffer.
+    // Later passes read the state as a uniform block (bindExposureStateForReading), the next frame's
+    // adaptation as a storage buffer; the readback copies it.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 

@@ -66,7 +66,7 @@ const Texture& LensFlarePass::execute(const Inputs& in) {
                                      .threshold = in.settings->threshold});
         mPrefilterParameters.bind(kBindingParameters);
         mPrefilter.use();
-        glBindBufferBase(GL_UNIFORM_BUFFER, kBindingExposureUniform, in.exposureState->id());
+        bindExposureStateForReading(*in.exposureState);
         glBindTextureUnit(0, in.scene->id());
         glBindImageTexture(0, mSource.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
         dispatchPixels(e);

@@ -97,8 +97,7 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
          .diagonalSteps = preset.diagonalSteps});
     mParameters.bind(kBindingParameters);
     if (hdr) {
-        glBindBufferBase(GL_UNIFORM_BUFFER, kBindingExposureUniform,
-                         resources.buffer(Resource::ExposureState)->id());
+        bindExposureStateForReading(*resources.buffer(Resource::ExposureState));
     }
     const std::string prefix = hdr ? "smaa (hdr) " : "smaa ";
     {

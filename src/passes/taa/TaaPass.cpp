@@ -78,8 +78,7 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
                         .padding = 0});
     mParameters.bind(kBindingParameters);
     mProgram.use();
-    glBindBufferBase(GL_UNIFORM_BUFFER, kBindingExposureUniform,
-                     resources.buffer(Resource::ExposureState)->id());
+    bindExposureStateForReading(*resources.buffer(Resource::ExposureState));
     glBindTextureUnit(0, resources.texture(Resource::SceneColor)->id());
     // Without a history the shader reads none; a bound texture keeps every sampler complete.
     glBindTextureUnit(1, mHistory.previous() ? mHistory.previous()->id() : mHistory.current().id());

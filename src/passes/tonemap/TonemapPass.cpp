@@ -128,7 +128,7 @@ void TonemapPass::dispatch(const Program& program, const Inputs& in, const Textu
     mParameters.bind(kBindingParameters);
     program.use();
     glBindTextureUnit(0, in.scene->id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, kBindingExposureUniform, in.exposureState->id());
+    bindExposureStateForReading(*in.exposureState);
     glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, target.format());
     dispatchPixels(extent);
     imageWriteBarrier();
