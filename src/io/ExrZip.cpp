@@ -192,6 +192,14 @@ struct Context {
     }
 };
 
+/// The address of pixel (x, y), in data-window coordinates, of an Imf slice: Imf's base addresses it at
+/// base + x * xStride + y * yStride (the base itself may lie outside the buffer).
+std::uint8_t* slicePixel(const Imf::Slice& slice, std::int64_t x, std::int64_t y) {
+    return reinterpret_cast<std::uint8_t*>(reinterpret_cast<std::intptr_t>(slice.base) +
+                                           std::intptr_t(x) * std::intptr_t(slice.xStride) +
+                                           std::intptr_t(y) * std::intptr_t(slice.yStride));
+}
+
 /// Where a file channel goes: the frame buffer slice's pixel (x, y) of the data window is at
 /// `origin + (y - minY) * lineStride + (x - minX) * pixelStride`.
 struct Target {
@@ -342,10 +350,7 @@ bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& h
             if ((entry.pixel_type != EXR_PIXEL_HALF && entry.pixel_type != EXR_PIXEL_FLOAT) ||
                 entry.x_sampling != 1 || entry.y_sampling != 1)
                 return false;
-            // Imf's base addresses pixel (x, y) of the data window at base + x * xStride + y * yStride.
-            target.origin = reinterpret_cast<std::uint8_t*>(reinterpret_cast<std::intptr_t>(slice->base) +
-                                                            std::intptr_t(window.min.x) * slice->xStride +
-                                                            std::intptr_t(window.min.y) * slice->yStride);
+            target.origin = slicePixel(*slice, window.min.x, window.min.y);
             target.pixelStride = int(slice->xStride);
             target.lineStride = int(slice->yStride);
         }
@@ -353,20 +358,14 @@ bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& h
     }
 
     // Slices the file has no channel for take their fill value, as Imf::InputFile gives them.
-    const int width = job.width;
     for (auto it = frameBuffer.begin(); it != frameBuffer.end(); ++it) {
-        bool inFile = false;
-        for (int c = 0; c < channels->num_channels && !inFile; ++c)
-            inFile = std::strcmp(channels->entries[c].name.str, it.name()) == 0;
-        if (inFile)
+        if (header.channels().findChannel(it.name()) != nullptr)
             continue;
         const Imf::Slice& s = it.slice();
         const float fill = float(s.fillValue);
         for (std::int64_t y = window.min.y; y <= window.max.y; ++y) {
-            auto* row = reinterpret_cast<std::uint8_t*>(reinterpret_cast<std::intptr_t>(s.base) +
-                                                        std::intptr_t(y) * s.yStride +
-                                                        std::intptr_t(window.min.x) * s.xStride);
-            for (int x = 0; x < width; ++x)
+            std::uint8_t* row = slicePixel(s, window.min.x, y);
+            for (int x = 0; x < job.width; ++x)
                 std::memcpy(row + std::ptrdiff_t(x) * s.xStride, &fill, sizeof(float));
         }
     }
