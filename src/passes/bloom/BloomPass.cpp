@@ -19,7 +19,10 @@ double texelBytes(Extent e, GLenum format) {
 
 BloomPass::BloomPass()
     : mPrefilter(makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}})))
+    , mPrefilterBlocks(
+          makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {"BLOCKS", "1"}})))
     , mDownsample(makeComputeProgram(kDown, bindingDefines()))
+    , mDownsampleBlocks(makeComputeProgram(kDown, bindingDefines({{"BLOCKS", "1"}})))
     , mUpsample(makeComputeProgram(kUp, bindingDefines()))
     , mSceneSampler(Sampler::linear("bloom scene sampler"))
     , mDownsampleParameters("bloom downsample parameters")
@@ -82,9 +85,16 @@ const Texture& BloomPass::execute(const Inputs& in) {
     for (int i = 0; i < levels; ++i) {
         const Texture& source = i == 0 ? *in.scene : mDown[std::size_t(i - 1)];
         const Texture& target = mDown[std::size_t(i)];
-        const Program& program = i == 0 ? mPrefilter : mDownsample;
         const Extent se = source.extent(), te = target.extent();
         const float step = i == 0 ? float(in.firstDivisor) * 0.5f : 1.0f;
+        // Taps step by `step` source texels around each target texel; where the target is exactly half the
+        // source in those steps, the next target texel's taps are these moved by two steps, and blocks share
+        // them.
+        const float span = 2.0f * step;
+        const bool blocks =
+            float(se.width) == span * float(te.width) && float(se.height) == span * float(te.height);
+        const Program& program =
+            i == 0 ? (blocks ? mPrefilterBlocks : mPrefilter) : (blocks ? mDownsampleBlocks : mDownsample);
         ScopedGpuTimer timer(in.timers, i == 0 ? "bloom prefilter" : fmt::format("bloom down {}", i),
                              texelBytes(se, source.format()) + texelBytes(te, kFormat));
         BloomDownsampleParameters parameters{.targetTexel = {1.0f / float(te.width), 1.0f / float(te.height)},
@@ -99,7 +109,7 @@ const Texture& BloomPass::execute(const Inputs& in) {
         glBindTextureUnit(0, source.id());
         glBindSampler(0, i == 0 ? mSceneSampler.id() : 0);
         glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
-        dispatchPixels(te);
+        dispatchPixels(blocks ? Extent{(te.width + 1) / 2, (te.height + 1) / 2} : te);
         imageWriteBarrier();
     }
     glBindSampler(0, 0);

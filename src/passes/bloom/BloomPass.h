@@ -68,8 +68,10 @@ public:
 private:
     void ensureChain(int firstDivisor, int levels);
 
-    Program mPrefilter; ///< level 0: exposure, Karis average, threshold
-    Program mDownsample;
+    /// Level 0 (exposure, Karis average, threshold) and the later levels; `Blocks`: 2x2 target texels per
+    /// invocation sharing their taps, for a target exactly half its source.
+    Program mPrefilter, mPrefilterBlocks;
+    Program mDownsample, mDownsampleBlocks;
     Program mUpsample;
     /// The prefilter's: the scene may be the host's own texture, with its own filtering.
     Sampler mSceneSampler;

@@ -12,9 +12,10 @@
 // a 32-bit colour is no longer rounded to half first), and a box holding a NaN or an infinity counts as 0, a
 // negative texel is clamped with its box instead of alone. Sanitising each tap, or re-reading a non-finite
 // tap texel by texel, cost about 4 and 29 ms more at 1920x1080 on llvmpipe (which runs both sides of a branch).
-// A compute pass (8x8 groups, one target texel each, image store): on GPUs whose raster units are a small part
-// of the chip a full-screen triangle runs far below the memory's pace, and the taps hit the texture cache the
-// same way from either stage.
+// A compute pass (8x8 groups, image stores): on GPUs whose raster units are a small part of the chip a
+// full-screen triangle runs far below the memory's pace. With BLOCKS each invocation filters a 2x2 block of
+// target texels whose taps it shares: texture reads are what a CPU rasteriser pays for, and a GPU issues half
+// the texture instructions.
 #include "passes/common/color.h.glsl"
 #include "passes/common/invocation.h.glsl"
 #ifdef PREFILTER
@@ -57,24 +58,10 @@ float karisWeight(vec3 box) {
 }
 #endif
 
-void main() {
-    ivec2 p = clampedInvocationPixel(imageSize(uTarget));
-    vec2 uv = (vec2(p) + 0.5) * uTargetTexel;
-    vec2 t = uSourceStep;
-    vec3 a = tap(uv + t * vec2(-2.0, 2.0));
-    vec3 b = tap(uv + t * vec2(0.0, 2.0));
-    vec3 c = tap(uv + t * vec2(2.0, 2.0));
-    vec3 d = tap(uv + t * vec2(-1.0, 1.0));
-    vec3 e = tap(uv + t * vec2(1.0, 1.0));
-    vec3 f = tap(uv + t * vec2(-2.0, 0.0));
-    vec3 g = tap(uv);
-    vec3 h = tap(uv + t * vec2(2.0, 0.0));
-    vec3 i = tap(uv + t * vec2(-1.0, -1.0));
-    vec3 j = tap(uv + t * vec2(1.0, -1.0));
-    vec3 k = tap(uv + t * vec2(-2.0, -2.0));
-    vec3 l = tap(uv + t * vec2(0.0, -2.0));
-    vec3 m = tap(uv + t * vec2(2.0, -2.0));
-
+// The filter of one target texel from its 13 taps: a, b, c on the row two source texels up, d, e one up, f, g, h
+// on its own row, i, j one down, k, l, m two down (g at its centre).
+vec3 downsample(vec3 a, vec3 b, vec3 c, vec3 d, vec3 e, vec3 f, vec3 g, vec3 h, vec3 i, vec3 j, vec3 k, vec3 l,
+                vec3 m) {
     vec3 centre = box(d, e, i, j);
     vec3 topLeft = box(a, b, f, g);
     vec3 topRight = box(b, c, g, h);
@@ -88,7 +75,7 @@ void main() {
     float w2 = 0.125 * karisWeight(bottomLeft);
     float w3 = 0.125 * karisWeight(bottomRight);
     vec3 color = (centre * wc + topLeft * w0 + topRight * w1 + bottomLeft * w2 + bottomRight * w3) /
-                  (wc + w0 + w1 + w2 + w3);
+                 (wc + w0 + w1 + w2 + w3);
 #else
     vec3 color = centre * 0.5 + (topLeft + topRight + bottomLeft + bottomRight) * 0.125;
 #endif
@@ -101,5 +88,58 @@ void main() {
         color *= max(rq, br - uKnee.x) / max(br, 1e-4);
     }
 #endif
+    return color;
+}
+
+#ifdef BLOCKS
+// Each invocation filters a 2x2 block of target texels. Neighbouring target texels share taps (the corner
+// boxes of one are those of the next), so the block needs 25 taps instead of 52: a 4x4 grid on the even
+// offsets and a 3x3 grid on the odd ones. The host picks this variant only where the target is exactly half
+// the source in both directions (in units of the tap step), where the second texel's taps are the first's
+// moved by two steps. A block's second column and row lie past the edge of an odd-sized target; image stores
+// there have no effect (no early return: see passes/common/invocation.h.glsl).
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy) * 2;
+    vec2 t = uSourceStep;
+    vec2 uv0 = (vec2(p) + 0.5) * uTargetTexel;
+    vec2 uv1 = uv0 + 2.0 * t;
+    // Even offsets: -2, 0, +2 of the first texel and +2 of the second; odd: -1, +1 of the first, +1 of the
+    // second.
+    vec4 ex = vec4(uv0.x - 2.0 * t.x, uv0.x, uv1.x, uv1.x + 2.0 * t.x);
+    vec4 ey = vec4(uv0.y - 2.0 * t.y, uv0.y, uv1.y, uv1.y + 2.0 * t.y);
+    vec3 ox = vec3(uv0.x - t.x, uv0.x + t.x, uv1.x + t.x);
+    vec3 oy = vec3(uv0.y - t.y, uv0.y + t.y, uv1.y + t.y);
+    vec3 e00 = tap(vec2(ex.x, ey.x)), e10 = tap(vec2(ex.y, ey.x)), e20 = tap(vec2(ex.z, ey.x));
+    vec3 e30 = tap(vec2(ex.w, ey.x)), e01 = tap(vec2(ex.x, ey.y)), e11 = tap(vec2(ex.y, ey.y));
+    vec3 e21 = tap(vec2(ex.z, ey.y)), e31 = tap(vec2(ex.w, ey.y)), e02 = tap(vec2(ex.x, ey.z));
+    vec3 e12 = tap(vec2(ex.y, ey.z)), e22 = tap(vec2(ex.z, ey.z)), e32 = tap(vec2(ex.w, ey.z));
+    vec3 e03 = tap(vec2(ex.x, ey.w)), e13 = tap(vec2(ex.y, ey.w)), e23 = tap(vec2(ex.z, ey.w));
+    vec3 e33 = tap(vec2(ex.w, ey.w));
+    vec3 o00 = tap(vec2(ox.x, oy.x)), o10 = tap(vec2(ox.y, oy.x)), o20 = tap(vec2(ox.z, oy.x));
+    vec3 o01 = tap(vec2(ox.x, oy.y)), o11 = tap(vec2(ox.y, oy.y)), o21 = tap(vec2(ox.z, oy.y));
+    vec3 o02 = tap(vec2(ox.x, oy.z)), o12 = tap(vec2(ox.y, oy.z)), o22 = tap(vec2(ox.z, oy.z));
+    // downsample()'s a, b, c are on the row two steps up (+y), k, l, m two steps down; the grids' second
+    // index grows with y.
+    imageStore(uTarget, p, vec4(downsample(e02, e12, e22, o01, o11, e01, e11, e21, o00, o10, e00, e10, e20), 1.0));
+    imageStore(uTarget, p + ivec2(1, 0),
+               vec4(downsample(e12, e22, e32, o11, o21, e11, e21, e31, o10, o20, e10, e20, e30), 1.0));
+    imageStore(uTarget, p + ivec2(0, 1),
+               vec4(downsample(e03, e13, e23, o02, o12, e02, e12, e22, o01, o11, e01, e11, e21), 1.0));
+    imageStore(uTarget, p + ivec2(1, 1),
+               vec4(downsample(e13, e23, e33, o12, o22, e12, e22, e32, o11, o21, e11, e21, e31), 1.0));
+}
+#else
+// One target texel per invocation: for levels that are not half the one above (odd sizes), where each texel's
+// taps are placed from its own centre.
+void main() {
+    ivec2 p = clampedInvocationPixel(imageSize(uTarget));
+    vec2 uv = (vec2(p) + 0.5) * uTargetTexel;
+    vec2 t = uSourceStep;
+    vec3 color = downsample(tap(uv + t * vec2(-2.0, 2.0)), tap(uv + t * vec2(0.0, 2.0)), tap(uv + t * vec2(2.0, 2.0)),
+                            tap(uv + t * vec2(-1.0, 1.0)), tap(uv + t * vec2(1.0, 1.0)), tap(uv + t * vec2(-2.0, 0.0)),
+                            tap(uv), tap(uv + t * vec2(2.0, 0.0)), tap(uv + t * vec2(-1.0, -1.0)),
+                            tap(uv + t * vec2(1.0, -1.0)), tap(uv + t * vec2(-2.0, -2.0)),
+                            tap(uv + t * vec2(0.0, -2.0)), tap(uv + t * vec2(2.0, -2.0)));
     imageStore(uTarget, p, vec4(color, 1.0));
 }
+#endif

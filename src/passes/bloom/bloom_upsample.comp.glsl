@@ -39,6 +39,6 @@ void main() {
     vec2 b = (i + 1.5 + pairOffset(0.25 + 0.25 * f, 0.25 * f)) * uCoarseTexel;
     vec3 s = (textureLod(uCoarse, a, 0.0).rgb * wA.x + textureLod(uCoarse, vec2(b.x, a.y), 0.0).rgb * wB.x) * wA.y +
              (textureLod(uCoarse, vec2(a.x, b.y), 0.0).rgb * wA.x + textureLod(uCoarse, b, 0.0).rgb * wB.x) * wB.y;
-    vec3 fine = textureLod(uFine, uv, 0.0).rgb;
+    vec3 fine = texelFetch(uFine, p, 0).rgb; // the target's own texel: a fetch, not a filtered tap
     imageStore(uTarget, p, vec4(mix(fine, s, uRadius), 1.0));
 }
