@@ -142,6 +142,44 @@ TEST_F(GlTest, DitherIsTpdfOfOneCodeValueAndDeterministic) {
     EXPECT_GT(maxV, minV);
 }
 
+TEST_F(GlTest, DitherIsTriangularAndIndependentBetweenChannels) {
+    // On a value that is exactly a code, triangular noise of +-1 code rounds to the code below or above with
+    // probability 1/8 each (the tails past half a code: (1/2)^2 / 2); rectangular noise of the same width would
+    // give 1/4 each, no noise never. 16,384 pixels: a count's standard deviation is under 0.3 percentage points.
+    constexpr int kSize = 128;
+    const ImageF image = uniformImage(kSize, kSize, srgbDecode(128.0f / 255.0f));
+    Settings s = linearNoDither();
+    s.output.dither = true;
+    Pipeline pipeline({.settings = s});
+    const Image8 out = processImage(pipeline, image, {.dt = 0.1f, .frameIndex = 9});
+    const double n = kSize * kSize;
+    double mean[3] = {}, product = 0;
+    for (int ch = 0; ch < 3; ++ch) {
+        int below = 0, at = 0, above = 0;
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x) {
+                const int v = out.at(x, y)[ch];
+                below += v == 127 ? 1 : 0;
+                at += v == 128 ? 1 : 0;
+                above += v == 129 ? 1 : 0;
+                mean[ch] += v - 128;
+            }
+        }
+        EXPECT_EQ(below + at + above, kSize * kSize) << "channel " << ch << ": beyond one code";
+        EXPECT_NEAR(below / n, 0.125, 0.015) << "channel " << ch;
+        EXPECT_NEAR(above / n, 0.125, 0.015) << "channel " << ch;
+        mean[ch] /= n;
+    }
+    // Channels dithered alike would tint the noise: the red and green offsets are uncorrelated.
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            product += (out.at(x, y)[0] - 128 - mean[0]) * (out.at(x, y)[1] - 128 - mean[1]);
+        }
+    }
+    const double variance = 0.25; // (1/8 + 1/8) codes^2
+    EXPECT_LT(std::abs(product / n / variance), 0.05);
+}
+
 TEST_F(GlTest, ForcedLdrPathRendersTheSameImageWithoutHdrTargets) {
     ImageF image(32, 8);
     for (int y = 0; y < 8; ++y) {

@@ -86,12 +86,9 @@ void TonemapPass::dispatch(const Program& program, const Inputs& in, const Textu
                                  .agxLook = int(in.tonemapping->agxLook),
                                  .dither = dither ? 1 : 0,
                                  .frame = std::uint32_t(in.frameIndex)};
-    // The per-frame part of the dither's hash (noise.h.glsl hashUniformSeeded), once here instead of per
-    // pixel.
-    for (std::uint32_t c = 0; c < 3; ++c) {
-        parameters.ditherSeeds[c] = pcgHash(parameters.frame * 4u + c);
-        parameters.ditherSeeds7[c] = pcgHash(parameters.frame * 4u + c + 7u);
-    }
+    // The dither's two seeds for this frame: its pattern changes with every frame index.
+    parameters.ditherSeeds[0] = pcgHash(parameters.frame * 2u);
+    parameters.ditherSeeds[1] = pcgHash(parameters.frame * 2u + 1u);
     if (in.bloom) {
         parameters.bloomAdditive = in.bloomSettings->mode == BloomMode::Threshold ? 1 : 0;
         parameters.bloomIntensity = in.bloomSettings->intensity;

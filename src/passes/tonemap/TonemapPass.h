@@ -32,10 +32,10 @@ struct TonemapParameters {
     float padding3 = 0.0f;
     float gain[3] = {1.0f, 1.0f, 1.0f};
     float padding4 = 0.0f;
-    std::uint32_t ditherSeeds[4] = {};  ///< the dither's per-frame hashes of the salts 0, 1, 2 (xyz)
-    std::uint32_t ditherSeeds7[4] = {}; ///< and of the salts 7, 8, 9
+    std::uint32_t ditherSeeds[2] = {}; ///< the dither's two per-frame seeds (noise.h.glsl triangularNoise3)
+    std::uint32_t padding5[2] = {};
 };
-static_assert(sizeof(TonemapParameters) == 192);
+static_assert(sizeof(TonemapParameters) == 176);
 static_assert(offsetof(TonemapParameters, frame) == 12 && offsetof(TonemapParameters, bloomAdditive) == 16 &&
               offsetof(TonemapParameters, whiteBalance) == 32 &&
               offsetof(TonemapParameters, contrast) == 80 && offsetof(TonemapParameters, glowRadius) == 96 &&

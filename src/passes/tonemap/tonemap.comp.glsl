@@ -47,8 +47,7 @@ layout(std140, binding = BINDING_PARAMETERS) uniform TonemapParameters {
     vec3 uLift;
     vec3 uInvGamma; // 1 / gamma, per channel
     vec3 uGain;
-    uvec4 uDitherSeeds;  // xyz: pcgHash(frame * 4 + salt) of the channels' salts 0, 1, 2 (noise.h.glsl)
-    uvec4 uDitherSeeds7; // xyz: the same for the salts 7, 8, 9
+    uvec2 uDitherSeeds; // the dither's two per-frame seeds (noise.h.glsl triangularNoise3)
 };
 
 const float kMiddleGrey = 0.18; // core/ColorGrading.h kGradingMiddleGrey
@@ -118,9 +117,7 @@ void main() {
 #else
     vec3 display = srgbEncode(toneMap(TONEMAP_MODE, c, uWhitePoint, uAgxLook));
     if (uDither != 0) {
-        display += vec3(triangularNoiseSeeded(p, uDitherSeeds.x, uDitherSeeds7.x),
-                        triangularNoiseSeeded(p, uDitherSeeds.y, uDitherSeeds7.y),
-                        triangularNoiseSeeded(p, uDitherSeeds.z, uDitherSeeds7.z)) * (1.0 / 255.0);
+        display += triangularNoise3(p, uDitherSeeds.x, uDitherSeeds.y) * (1.0 / 255.0);
     }
     imageStore(uOutput, p, vec4(clamp(display, 0.0, 1.0), 1.0));
 #endif
