@@ -1,12 +1,19 @@
-// Bloom on the GPU: radial symmetry, energy conservation, the threshold, and grading reaching the EXR output.
+// Bloom on the GPU: the downsample against its CPU twin, radial symmetry, energy conservation, the threshold, and
+// grading reaching the EXR output.
 
 #include "GlTest.h"
 
+#include "core/Bloom.h"
+#include "core/Color.h"
 #include "core/ColorGrading.h"
 #include "gl/TextureIo.h"
+#include "passes/Bindings.h"
+#include "passes/bloom/BloomPass.h"
 #include "pipeline/Pipeline.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace photopic::test {
 
@@ -60,7 +67,122 @@ float bilinear(const ImageF& image, float x, float y, int ch) {
            (at(x0, y0 + 1) * (1 - tx) + at(x0 + 1, y0 + 1) * tx) * ty;
 }
 
+/// CPU twin of one target texel of bloom_downsample.comp.glsl: 13 bilinear taps (clamp to edge) around the
+/// texel's centre, one tap step apart, as five boxes; on level 0 (`prefilter`) each box sanitised and
+/// exposed, the boxes weighted by Karis's 1 / (1 + luma), and the soft knee in threshold mode.
+glm::vec3 cpuDownsample(const ImageF& source, int width, int height, int x, int y, float step, bool prefilter,
+                        float exposure, const BloomSettings& settings) {
+    auto tap = [&](float u, float v) {
+        const float fx = u * float(source.width) - 0.5f, fy = v * float(source.height) - 0.5f;
+        const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+        const float tx = fx - float(x0), ty = fy - float(y0);
+        auto at = [&](int px, int py) {
+            const float* p =
+                source.at(std::clamp(px, 0, source.width - 1), std::clamp(py, 0, source.height - 1));
+            return glm::vec3(p[0], p[1], p[2]);
+        };
+        return (at(x0, y0) * (1 - tx) + at(x0 + 1, y0) * tx) * (1 - ty) +
+               (at(x0, y0 + 1) * (1 - tx) + at(x0 + 1, y0 + 1) * tx) * ty;
+    };
+    const float u = (float(x) + 0.5f) / float(width), v = (float(y) + 0.5f) / float(height);
+    const float tu = step / float(source.width), tv = step / float(source.height);
+    auto box = [&](float cx, float cy, float half) {
+        const glm::vec3 mean = (tap(u + (cx - half) * tu, v + (cy - half) * tv) +
+                                tap(u + (cx + half) * tu, v + (cy - half) * tv) +
+                                tap(u + (cx - half) * tu, v + (cy + half) * tv) +
+                                tap(u + (cx + half) * tu, v + (cy + half) * tv)) *
+                               0.25f;
+        if (!prefilter) {
+            return mean;
+        }
+        glm::vec3 clean;
+        for (int c = 0; c < 3; ++c) {
+            clean[c] = std::isfinite(mean[c]) ? std::clamp(mean[c], 0.0f, 65000.0f) : 0.0f;
+        }
+        return clean * exposure;
+    };
+    const glm::vec3 boxes[5] = {box(0, 0, 1), box(-1, 1, 1), box(1, 1, 1), box(-1, -1, 1), box(1, -1, 1)};
+    glm::vec3 sum(0.0f);
+    float weights = 0.0f;
+    for (int i = 0; i < 5; ++i) {
+        const float w = (i == 0 ? 0.5f : 0.125f) * (prefilter ? 1.0f / (1.0f + luma709(boxes[i])) : 1.0f);
+        sum += boxes[i] * w;
+        weights += w;
+    }
+    glm::vec3 color = sum / weights;
+    if (prefilter && settings.mode == BloomMode::Threshold) {
+        const glm::vec4 k = bloomKneeConstants(settings.threshold, settings.knee);
+        const float br = std::max({color.r, color.g, color.b});
+        float rq = std::clamp(br - k.y, 0.0f, k.z);
+        rq = rq * rq * k.w;
+        color *= std::max(rq, br - k.x) / std::max(br, 1e-4f);
+    }
+    return color;
+}
+
 } // namespace
+
+// Every downsampled level against the CPU filter, on sizes whose levels halve exactly (2x2 blocks of target
+// texels sharing their taps, odd-sized targets among them) and sizes whose levels do not (one texel per
+// invocation), with both first divisors, both modes, and fireflies, negative values and a NaN in the scene.
+// Each level is checked from the GPU's own level above, so rounding to half floats does not accumulate.
+TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
+    struct Case {
+        int width, height, divisor;
+        BloomMode mode;
+    };
+    const Case cases[] = {{64, 48, 2, BloomMode::EnergyConserving},
+                          {70, 46, 2, BloomMode::Threshold},
+                          {64, 48, 4, BloomMode::Threshold},
+                          {61, 37, 2, BloomMode::EnergyConserving}};
+    for (const Case& k : cases) {
+        ImageF image(k.width, k.height);
+        for (int y = 0; y < k.height; ++y) {
+            for (int x = 0; x < k.width; ++x) {
+                float* p = image.at(x, y);
+                const float base = 0.5f + 0.5f * std::sin(0.37f * float(x) + 0.21f * float(y * y));
+                p[0] = base * 2.0f;
+                p[1] = (x * 7 + y * 13) % 17 == 0 ? 40.0f : base; // fireflies for the Karis weights
+                p[2] = (x + y) % 11 == 0 ? -0.5f : 0.25f * base;  // negatives for the box clamp
+                p[3] = 1.0f;
+            }
+        }
+        image.at(5, 7)[0] = std::numeric_limits<float>::quiet_NaN();
+        const Texture input = makeTexture(image, "bloom twin input");
+        GpuExposureState state;
+        state.exposure = 1.5f;
+        const Buffer exposure({.size = sizeof(state), .data = &state, .debugName = "bloom twin exposure"});
+        BloomSettings settings;
+        settings.mode = k.mode;
+        BloomPass pass;
+        pass.resize({k.width, k.height});
+        pass.execute({.scene = &input,
+                      .exposureState = &exposure,
+                      .settings = &settings,
+                      .firstDivisor = k.divisor,
+                      .mipCount = 6});
+        ASSERT_GE(pass.levels(), 3);
+        for (int level = 0; level < pass.levels(); ++level) {
+            const ImageF source = readTextureF(level == 0 ? input : pass.downsampled(level - 1));
+            const ImageF gpu = readTextureF(pass.downsampled(level));
+            const float step = level == 0 ? float(k.divisor) * 0.5f : 1.0f;
+            float worst = 0.0f;
+            for (int y = 0; y < gpu.height; ++y) {
+                for (int x = 0; x < gpu.width; ++x) {
+                    const glm::vec3 want = cpuDownsample(source, gpu.width, gpu.height, x, y, step,
+                                                         level == 0, state.exposure, settings);
+                    for (int c = 0; c < 3; ++c) {
+                        const float d = std::abs(gpu.at(x, y)[c] - want[c]) / (std::abs(want[c]) + 1e-3f);
+                        worst = std::max(worst, std::isfinite(gpu.at(x, y)[c]) ? d : 1e9f);
+                    }
+                }
+            }
+            // A half float holds 11 significant bits (relative step 2^-11, about 5e-4).
+            EXPECT_LT(worst, 2e-3f) << k.width << "x" << k.height << " divisor " << k.divisor << " level "
+                                    << level << " (" << gpu.width << "x" << gpu.height << ")";
+        }
+    }
+}
 
 TEST_F(GlTest, BrightDiscBloomsWithRadialSymmetry) {
     // 256 px and 5 levels (128 .. 8 texels): the coarsest level still has texels to spare around the disc; a

@@ -64,6 +64,8 @@ public:
     const Texture& execute(const Inputs& in);
     /// Levels of the chain the last execute ran.
     [[nodiscard]] int levels() const { return mLevels; }
+    /// Downsampled level `level` (0: the prefilter's output) of the last execute, before the upsamples.
+    [[nodiscard]] const Texture& downsampled(int level) const { return mDown.at(std::size_t(level)); }
 
 private:
     void ensureChain(int firstDivisor, int levels);
