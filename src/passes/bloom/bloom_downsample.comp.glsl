@@ -58,10 +58,10 @@ float karisWeight(vec3 box) {
 }
 #endif
 
-// The filter of one target texel from its 13 taps: a, b, c on the row two source texels up, d, e one up, f, g, h
-// on its own row, i, j one down, k, l, m two down (g at its centre).
-vec3 downsample(vec3 a, vec3 b, vec3 c, vec3 d, vec3 e, vec3 f, vec3 g, vec3 h, vec3 i, vec3 j, vec3 k, vec3 l,
-                vec3 m) {
+// The filter of one target texel from its 13 taps: a, b, c on the row two steps up, d, e one up, f, g, h on
+// its own row, i, j one down, k, l, m two down (g at its centre).
+vec3 downsample(vec3 a, vec3 b, vec3 c, vec3 d, vec3 e, vec3 f, vec3 g, vec3 h, vec3 i, vec3 j, vec3 k,
+                vec3 l, vec3 m) {
     vec3 centre = box(d, e, i, j);
     vec3 topLeft = box(a, b, f, g);
     vec3 topRight = box(b, c, g, h);
@@ -120,7 +120,8 @@ void main() {
     vec3 o02 = tap(vec2(ox.x, oy.z)), o12 = tap(vec2(ox.y, oy.z)), o22 = tap(vec2(ox.z, oy.z));
     // downsample()'s a, b, c are on the row two steps up (+y), k, l, m two steps down; the grids' second
     // index grows with y.
-    imageStore(uTarget, p, vec4(downsample(e02, e12, e22, o01, o11, e01, e11, e21, o00, o10, e00, e10, e20), 1.0));
+    imageStore(uTarget, p,
+               vec4(downsample(e02, e12, e22, o01, o11, e01, e11, e21, o00, o10, e00, e10, e20), 1.0));
     imageStore(uTarget, p + ivec2(1, 0),
                vec4(downsample(e12, e22, e32, o11, o21, e11, e21, e31, o10, o20, e10, e20, e30), 1.0));
     imageStore(uTarget, p + ivec2(0, 1),
@@ -135,9 +136,10 @@ void main() {
     ivec2 p = clampedInvocationPixel(imageSize(uTarget));
     vec2 uv = (vec2(p) + 0.5) * uTargetTexel;
     vec2 t = uSourceStep;
-    vec3 color = downsample(tap(uv + t * vec2(-2.0, 2.0)), tap(uv + t * vec2(0.0, 2.0)), tap(uv + t * vec2(2.0, 2.0)),
-                            tap(uv + t * vec2(-1.0, 1.0)), tap(uv + t * vec2(1.0, 1.0)), tap(uv + t * vec2(-2.0, 0.0)),
-                            tap(uv), tap(uv + t * vec2(2.0, 0.0)), tap(uv + t * vec2(-1.0, -1.0)),
+    vec3 color = downsample(tap(uv + t * vec2(-2.0, 2.0)), tap(uv + t * vec2(0.0, 2.0)),
+                            tap(uv + t * vec2(2.0, 2.0)), tap(uv + t * vec2(-1.0, 1.0)),
+                            tap(uv + t * vec2(1.0, 1.0)), tap(uv + t * vec2(-2.0, 0.0)), tap(uv),
+                            tap(uv + t * vec2(2.0, 0.0)), tap(uv + t * vec2(-1.0, -1.0)),
                             tap(uv + t * vec2(1.0, -1.0)), tap(uv + t * vec2(-2.0, -2.0)),
                             tap(uv + t * vec2(0.0, -2.0)), tap(uv + t * vec2(2.0, -2.0)));
     imageStore(uTarget, p, vec4(color, 1.0));

@@ -8,10 +8,11 @@ uint pcgHash(uint v) {
 
 /// Uniform in [0, 1) from pixel, frame and a channel salt.
 float hashUniform(ivec2 p, uint frame, uint salt) {
-    return float(pcgHash(uint(p.x) + pcgHash(uint(p.y) + pcgHash(frame * 4u + salt)))) * (1.0 / 4294967296.0);
+    uint seed = pcgHash(frame * 4u + salt);
+    return float(pcgHash(uint(p.x) + pcgHash(uint(p.y) + seed))) * (1.0 / 4294967296.0);
 }
 
-/// Triangular-PDF noise in (-1, 1): the sum of two uniforms (the salts `salt` and `salt + 7u`), the dither that
+/// Triangular-PDF noise in (-1, 1): the sum of two uniforms (the salts `salt` and `salt + 7u`), noise that
 /// removes banding without adding signal-dependent noise power.
 float triangularNoise(ivec2 p, uint frame, uint salt) {
     return hashUniform(p, frame, salt) + hashUniform(p, frame, salt + 7u) - 1.0;
