@@ -1,5 +1,5 @@
-// Bloom on the GPU: the downsample against its CPU twin, radial symmetry, energy conservation, the threshold, and
-// grading reaching the EXR output.
+// Bloom on the GPU: the downsample against its CPU twin, radial symmetry, energy conservation, the threshold,
+// and grading reaching the EXR output.
 
 #include "GlTest.h"
 
@@ -58,11 +58,13 @@ double sumRgb(const ImageF& image) {
 }
 
 float bilinear(const ImageF& image, float x, float y, int ch) {
-    // (x, y) in pixel units with centres at +0.5.
+    // (x, y) in pixel units with centres at +0.5; texels past the edge repeat the edge (GL_CLAMP_TO_EDGE).
     const float fx = x - 0.5f, fy = y - 0.5f;
     const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
     const float tx = fx - float(x0), ty = fy - float(y0);
-    auto at = [&](int px, int py) { return image.at(px, py)[ch]; };
+    auto at = [&](int px, int py) {
+        return image.at(std::clamp(px, 0, image.width - 1), std::clamp(py, 0, image.height - 1))[ch];
+    };
     return (at(x0, y0) * (1 - tx) + at(x0 + 1, y0) * tx) * (1 - ty) +
            (at(x0, y0 + 1) * (1 - tx) + at(x0 + 1, y0 + 1) * tx) * ty;
 }
@@ -73,16 +75,9 @@ float bilinear(const ImageF& image, float x, float y, int ch) {
 glm::vec3 cpuDownsample(const ImageF& source, int width, int height, int x, int y, float step, bool prefilter,
                         float exposure, const BloomSettings& settings) {
     auto tap = [&](float u, float v) {
-        const float fx = u * float(source.width) - 0.5f, fy = v * float(source.height) - 0.5f;
-        const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
-        const float tx = fx - float(x0), ty = fy - float(y0);
-        auto at = [&](int px, int py) {
-            const float* p =
-                source.at(std::clamp(px, 0, source.width - 1), std::clamp(py, 0, source.height - 1));
-            return glm::vec3(p[0], p[1], p[2]);
-        };
-        return (at(x0, y0) * (1 - tx) + at(x0 + 1, y0) * tx) * (1 - ty) +
-               (at(x0, y0 + 1) * (1 - tx) + at(x0 + 1, y0 + 1) * tx) * ty;
+        const float px = u * float(source.width), py = v * float(source.height);
+        return glm::vec3(bilinear(source, px, py, 0), bilinear(source, px, py, 1),
+                         bilinear(source, px, py, 2));
     };
     const float u = (float(x) + 0.5f) / float(width), v = (float(y) + 0.5f) / float(height);
     const float tu = step / float(source.width), tv = step / float(source.height);
