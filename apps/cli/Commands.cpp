@@ -414,7 +414,8 @@ void requireNew(const std::vector<fs::path>& paths) {
 
 /// Where runImage writes each input's result, every path checked before any work. The rules of -o: "-", a
 /// device or a pipe is a stream; a name with a frame number (out/f%04d.png) is a pattern; an extension
-/// means a file; a trailing '/', an existing folder, no extension or several inputs mean a folder.
+/// means a file; a trailing '/', an existing folder, no extension or several inputs mean a folder. Several
+/// inputs and the name of an image file (out.png, not an existing folder) are refused.
 std::vector<fs::path> plannedOutputs(const ImageOptions& options, const std::vector<InputFile>& files,
                                      RunOutputs& outputs) {
     const fs::path& out = options.output;
@@ -433,6 +434,12 @@ std::vector<fs::path> plannedOutputs(const ImageOptions& options, const std::vec
             paths.push_back(out.parent_path() / pattern->name(n));
         }
         folder = out.parent_path();
+    } else if (inputs.size() > 1 && !fs::is_directory(out) &&
+               (displayFileFormatFor(out) || lowerExtension(out) == ".exr")) {
+        // A name like out.png is one image; a folder of that name, made silently, is not what it asked for.
+        throw InputError(fmt::format("output {} names one image file, and there are {} inputs: name a folder "
+                                     "(-o out/) or a pattern (-o out/f%04d.png)",
+                                     out.string(), inputs.size()));
     } else if (inputs.size() > 1 || fs::is_directory(out) || lowerExtension(out).empty()) {
         for (const fs::path& in : inputs) {
             paths.push_back(out / (in.stem().string() + "." + options.format));

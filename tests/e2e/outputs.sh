@@ -6,6 +6,7 @@ source "$(dirname "$0")/lib.bash"
 S="$SCRATCH"
 cp "$DATA/Desk.exr" "$S/desk.exr"
 cp "$DATA/Desk.hdr" "$S/desk.hdr"
+cp "$DATA/Desk.exr" "$S/seq-a.exr"
 before=$(sha256sum "$S/desk.exr" | cut -d' ' -f1)
 
 expect 2 "an output that is the input is refused" -- "$PHOTOPIC" image "$S/desk.exr" -o "$S/desk.exr"
@@ -37,6 +38,15 @@ expect 2 "the image and the telemetry both to standard output is refused" -- \
     "$PHOTOPIC" image "$S/desk.exr" -o - --telemetry -
 expect 2 "-o - with several inputs is refused" -- "$PHOTOPIC" image "$S/desk.exr" "$S/desk.hdr" -o -
 check "says a stream holds one image" contains "holds one image, not 2"
+expect 2 "several inputs and one image file name are refused" -- \
+    "$PHOTOPIC" image "$S/desk.exr" "$S/desk.hdr" -o "$S/both.png"
+check "says a folder or a pattern is needed" contains "names one image file, and there are 2 inputs"
+check "no folder was made" [ ! -e "$S/both.png" ]
+mkdir -p "$S/renders.png"
+expect 0 "an existing folder with a dot in its name still takes several inputs" -- \
+    "$PHOTOPIC" image "$S/seq-a.exr" "$S/desk.hdr" -o "$S/renders.png" --set tonemapping.mode=neutral
+check "the first result in it" [ -f "$S/renders.png/seq-a.png" ]
+check "the second result in it" [ -f "$S/renders.png/desk.png" ]
 expect 0 "a device is streamed to" -- "$PHOTOPIC" image "$S/desk.exr" -o /dev/null
 check "and left a device" [ -c /dev/null ]
 mkfifo "$S/pipe.png"
