@@ -17,7 +17,10 @@ if ! command -v valgrind > /dev/null; then
     echo "$0: valgrind is not installed (apt-get install valgrind)" >&2
     exit 2
 fi
-args=(--size 480x270 "$@")
+args=("$@")
+if [[ " $* " != *" --size "* ]]; then
+    args=(--size 480x270 "$@")
+fi
 count() {
     valgrind --tool=callgrind --callgrind-out-file=/dev/null --smc-check=all-non-file \
         "$bin" bench "${args[@]}" --frames "$1" --warmup 0 2>&1 | awk '/Collected :/ {print $4}'
