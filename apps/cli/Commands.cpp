@@ -571,6 +571,25 @@ void requireNewSideOutputs(const ImageOptions& options, const std::vector<fs::pa
     requireNew(paths);
 }
 
+bool taaSelected(const Settings& settings) {
+    const AntiAliasing aa = settings.antiAliasing();
+    return aa == AntiAliasing::Taa || aa == AntiAliasing::TaaSmaa;
+}
+
+/// TAA gathers each pixel over earlier frames, and a single image has none: it is turned off with one
+/// warning that says what runs instead (SMAA under taa+smaa, else FXAA when its switch is on, else nothing).
+void dropTaaForOneImage(Settings& settings) {
+    const AntiAliasing asked = settings.antiAliasing();
+    settings.aa.mode = asked == AntiAliasing::TaaSmaa ? AntiAliasing::Smaa : AntiAliasing::None;
+    settings.taa.enabled = false;
+    const AntiAliasing now = settings.antiAliasing();
+    logWarning("aa.mode {}: a single image has no earlier frames for TAA to gather, so TAA is off for it; {}",
+               antiAliasingNames()[std::size_t(asked)],
+               now == AntiAliasing::None
+                   ? std::string("no anti-aliasing runs (aa.mode smaa or fxaa anti-alias a single image)")
+                   : fmt::format("{} runs", antiAliasingNames()[std::size_t(now)]));
+}
+
 } // namespace
 
 int runImage(const ImageOptions& options) {
@@ -585,7 +604,11 @@ int runImage(const ImageOptions& options) {
     if (options.output.empty()) {
         throw InputError("image: an output is required (-o FILE, FOLDER/, PATTERN or -), or --info");
     }
-    const Settings settings = imageSettings(options);
+    Settings settings = imageSettings(options);
+    const bool taa = taaSelected(settings);
+    if (taa && inputs.size() == 1) {
+        dropTaaForOneImage(settings);
+    }
     const std::optional<OcioDisplay> ocio = ocioDisplayFor(options);
     std::FILE* const console = consoleFor(options);
     // Every output is checked before any work; a run that fails takes back what it wrote, the frames it
@@ -633,6 +656,16 @@ int runImage(const ImageOptions& options) {
         const FrameTime time{.dt = dt, .frameIndex = i};
         if (frame.jittered) {
             pipeline->beginFrame(time); // the renderer jittered this frame, as a two-stage host would
+        } else if (taaSelected(settings) &&
+                   (!frame.motion.empty() || (!frame.depth.empty() && frame.camera))) {
+            // (Without motion, or depth and a camera to derive it, the pipeline skips TAA and says so.)
+            // Said in the CLI's words; the key is the pipeline's own, so its host-API wording stays unsaid.
+            warnOnce("taa.no-jitter",
+                     fmt::format("aa.mode {}: {} carries no `jitter` attribute and --jitter halton was not "
+                                 "given: its frames are taken as not jittered, so TAA filters the sequence "
+                                 "over time and cannot anti-alias its edges",
+                                 antiAliasingNames()[std::size_t(settings.antiAliasing())],
+                                 inputs[i].string()));
         }
         const FrameInputs frameInputs = textures.upload(frame, hdrPath);
         if (!options.writeAux.empty()) {

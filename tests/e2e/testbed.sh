@@ -30,6 +30,15 @@ check "says once that TAA can only filter over time" contains "not jittered"
 expect 0 "--jitter halton takes Photopic's own sequence" -- "$PHOTOPIC" image "$S"/tb/scene_*.exr -o "$S/taa3/" \
     --set aa.mode=taa --jitter halton
 check "then no warning" bash -c "! grep -q 'not jittered' <<< \"\$1\"" _ "$OUTPUT"
+expect 0 "TAA on a single image" -- "$PHOTOPIC" image "$S/tb/scene_0002.exr" -o "$S/one.png" --set aa.mode=taa
+check "says TAA is off for a single image" contains "a single image has no earlier frames"
+check "in one warning" test "$(grep -c 'warning' <<< "$OUTPUT")" -eq 1
+expect 0 "TAA + SMAA on a single image" -- "$PHOTOPIC" image "$S/tb/scene_0002.exr" -o "$S/one-smaa.png" \
+    --set aa.mode=taa+smaa
+check "SMAA still runs" contains "smaa runs"
+expect 0 "SMAA alone on the same image" -- "$PHOTOPIC" image "$S/tb/scene_0002.exr" -o "$S/one-smaa-only.png" \
+    --set aa.mode=smaa
+check "the same image as taa+smaa gives" cmp -s "$S/one-smaa.png" "$S/one-smaa-only.png"
 
 expect 0 "ao truth" -- "$PHOTOPIC" scene testbed --truth ao -o "$S/truth" --frames 1 --start 10 --size 64x36 \
     --set testbed.aoSamples=4
