@@ -576,17 +576,27 @@ bool taaSelected(const Settings& settings) {
     return aa == AntiAliasing::Taa || aa == AntiAliasing::TaaSmaa;
 }
 
-/// TAA gathers each pixel over earlier frames, and a single image has none: it is turned off with one
-/// warning that says what runs instead (SMAA under taa+smaa, else FXAA when its switch is on, else nothing).
-void dropTaaForOneImage(Settings& settings) {
+/// The anti-aliasing an image run cannot do, turned off with one warning that says why and what runs
+/// instead (SMAA under taa+smaa, else FXAA when its switch is on, else nothing): TAA gathers each pixel over
+/// earlier frames, and a single image has none; SSAA renders each frame several times, which only the
+/// renderer that made the image could.
+void dropUnavailableAa(Settings& settings, std::size_t inputCount) {
     const AntiAliasing asked = settings.antiAliasing();
+    std::string why;
+    if (asked == AntiAliasing::Ssaa) {
+        why = "SSAA renders each frame several times, which only the renderer that made an image can do, so "
+              "it is off for images";
+    } else if (taaSelected(settings) && inputCount == 1) {
+        why = "a single image has no earlier frames for TAA to gather, so TAA is off for it";
+    } else {
+        return;
+    }
     settings.aa.mode = asked == AntiAliasing::TaaSmaa ? AntiAliasing::Smaa : AntiAliasing::None;
     settings.taa.enabled = false;
     const AntiAliasing now = settings.antiAliasing();
-    logWarning("aa.mode {}: a single image has no earlier frames for TAA to gather, so TAA is off for it; {}",
-               antiAliasingNames()[std::size_t(asked)],
+    logWarning("aa.mode {}: {}; {}", antiAliasingNames()[std::size_t(asked)], why,
                now == AntiAliasing::None
-                   ? std::string("no anti-aliasing runs (aa.mode smaa or fxaa anti-alias a single image)")
+                   ? std::string("no anti-aliasing runs (aa.mode smaa or fxaa anti-alias images)")
                    : fmt::format("{} runs", antiAliasingNames()[std::size_t(now)]));
 }
 
@@ -605,10 +615,7 @@ int runImage(const ImageOptions& options) {
         throw InputError("image: an output is required (-o FILE, FOLDER/, PATTERN or -), or --info");
     }
     Settings settings = imageSettings(options);
-    const bool taa = taaSelected(settings);
-    if (taa && inputs.size() == 1) {
-        dropTaaForOneImage(settings);
-    }
+    dropUnavailableAa(settings, inputs.size());
     const std::optional<OcioDisplay> ocio = ocioDisplayFor(options);
     std::FILE* const console = consoleFor(options);
     // Every output is checked before any work; a run that fails takes back what it wrote, the frames it

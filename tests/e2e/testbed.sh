@@ -39,6 +39,9 @@ check "SMAA still runs" contains "smaa runs"
 expect 0 "SMAA alone on the same image" -- "$PHOTOPIC" image "$S/tb/scene_0002.exr" -o "$S/one-smaa-only.png" \
     --set aa.mode=smaa
 check "the same image as taa+smaa gives" cmp -s "$S/one-smaa.png" "$S/one-smaa-only.png"
+expect 0 "SSAA on images" -- "$PHOTOPIC" image "$S/tb/scene_0002.exr" -o "$S/one-ssaa.png" --set aa.mode=ssaa
+check "says SSAA is off for images, in one warning" test "$(grep -c 'SSAA renders each frame' <<< "$OUTPUT")" -eq 1
+check "and nothing else" test "$(grep -c 'warning' <<< "$OUTPUT")" -eq 1
 
 expect 0 "ao truth" -- "$PHOTOPIC" scene testbed --truth ao -o "$S/truth" --frames 1 --start 10 --size 64x36 \
     --set testbed.aoSamples=4
