@@ -85,6 +85,17 @@ TEST(Settings, UnknownKeyNamedByPath) {
         << line;
 }
 
+TEST(Settings, GroupAtTheTopIsPointedInsidePostEffects) {
+    Settings s;
+    const auto issues = readSettingsJson(R"({"bloom": {"intensity": 2}, "bogus": 1})", s);
+    ASSERT_EQ(issues.size(), 2u) << formatSettingsIssues(issues);
+    EXPECT_EQ(issues[0].path, "bloom");
+    EXPECT_NE(issues[0].message.find(R"({"postEffects": {"bloom": ...}})"), std::string::npos)
+        << issues[0].message;
+    EXPECT_EQ(issues[1].path, "bogus");
+    EXPECT_EQ(issues[1].message.find("postEffects:"), std::string::npos) << issues[1].message; // no hint
+}
+
 TEST(Settings, MissingFileIsNamedAsMissing) {
     const std::filesystem::path file =
         std::filesystem::temp_directory_path() / "photopic_no_such_settings.json";

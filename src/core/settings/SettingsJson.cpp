@@ -91,8 +91,13 @@ std::vector<SettingsIssue> readDocument(const json& doc, Settings& settings,
     }
     for (const auto& [key, value] : doc.items()) {
         if (key != "version" && key != "preset" && key != "postEffects") {
-            issues.push_back(
-                {SettingsIssueCode::UnknownKey, key, "known keys: version, preset, postEffects"});
+            // A settings group written at the top ({"bloom": ...}) is the likeliest slip: say where it goes.
+            const bool group = writeObject(Settings{}).contains(key);
+            issues.push_back({SettingsIssueCode::UnknownKey, key,
+                              group ? fmt::format("known keys: version, preset, postEffects; \"{}\" belongs "
+                                                  "inside postEffects: {{\"postEffects\": {{\"{}\": ...}}}}",
+                                                  key, key)
+                                    : std::string("known keys: version, preset, postEffects")});
         }
     }
     // The preset first, so that the document's own keys land on top of it.
