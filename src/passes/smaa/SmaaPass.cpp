@@ -8,6 +8,7 @@ namespace photopic {
 namespace {
 
 constexpr ResourceUse kDisplayUses[] = {{Resource::DisplayColor, Access::Read},
+                                        {Resource::LinearDepth, Access::ReadOptional},
                                         {Resource::DisplayColor, Access::Write}};
 constexpr ResourceUse kHdrUses[] = {{Resource::SceneColor, Access::Read},
                                     {Resource::ExposureState, Access::Read},
@@ -101,10 +102,21 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     }
     const std::string prefix = hdr ? "smaa (hdr) " : "smaa ";
     {
-        // Up to ten colour reads per pixel (neighbours hit the cache) and one RG8 write.
-        ScopedGpuTimer timer(ctx.timers, prefix + "edges", pixels * (colorBytes + 2.0));
-        mEdges.use();
+        // A 3D host's linear depth marks the silhouettes (display placement only); its program is compiled
+        // the first time a frame brings one, so 2D hosts never pay for it.
+        const Texture* depth = hdr ? nullptr : resources.texture(Resource::LinearDepth);
+        if (depth && !mEdgesDepth) {
+            mEdgesDepth.emplace(makeComputeProgram("passes/smaa/smaa_edges.comp.glsl",
+                                                   bindingDefines({{"SMAA_DEPTH", "1"}})));
+        }
+        // Up to ten colour reads per pixel (neighbours hit the cache), the depth's and one RG8 write.
+        ScopedGpuTimer timer(ctx.timers, prefix + "edges",
+                             pixels * (colorBytes + (depth ? bytesPerTexel(depth->format()) : 0.0) + 2.0));
+        (depth ? *mEdgesDepth : mEdges).use();
         glBindTextureUnit(0, color.id());
+        if (depth) {
+            glBindTextureUnit(1, depth->id());
+        }
         glBindImageTexture(0, edges.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG8);
         glDispatchCompute(groups(e.width), groups(e.height), 1);
     }

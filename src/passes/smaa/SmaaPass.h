@@ -4,8 +4,8 @@
 // the edges and weights are pooled transients, the area and search tables (core/SmaaTextures.h) are uploaded
 // once. Two placements:
 //  - Display (aa.mode smaa): on the display-referred RGBA8 image after tone mapping, in FXAA's place; edges
-//  on
-//    the encoded values, the blend in linear light.
+//    on the encoded values (silhouettes kept by the frame's linear depth when a 3D host gives one), the blend
+//    in linear light.
 //  - Hdr (aa.mode taa+smaa): on the scene-referred colour of the current frame, before TAA gathers it, so the
 //    temporal resolve starts from anti-aliased edges (SMAA first, then the temporal gather, as engines ship
 //    the pair). Edges are judged on a display-like luma of the exposed colour (last frame's exposure, as TAA
@@ -16,6 +16,7 @@
 #include "passes/FramePass.h"
 
 #include <cstdint>
+#include <optional>
 
 namespace photopic {
 
@@ -61,6 +62,8 @@ public:
 private:
     Domain mDomain;
     Program mEdges;
+    /// With the frame's linear depth: silhouettes are kept whatever their neighbours. Made on first use.
+    std::optional<Program> mEdgesDepth;
     Program mWeights;
     DisplayProgram mBlend; ///< the HDR domain only ever uses its 8-bit build (which stores RGBA16F)
     Texture mAreaOrtho;

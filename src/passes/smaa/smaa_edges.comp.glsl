@@ -1,7 +1,10 @@
 // SMAA 1x, step 1: luma edge detection with local contrast adaptation (Jimenez et al. 2012, "SMAA:
 // Enhanced Subpixel Morphological Antialiasing", section 3.1). An edge on a pixel's -x or -y side is kept
 // when the luma step across it exceeds the threshold and is not dwarfed (by `uContrastFactor`) by a
-// neighbouring edge, so the weaker edge beside a strong one does not start a second, wrong pattern.
+// neighbouring edge, so the weaker edge beside a strong one does not start a second, wrong pattern. With
+// SMAA_DEPTH (a 3D host's frame) an edge across a depth step is a silhouette and is kept whatever its
+// neighbours: where a textured surface meets the sky, its light texels' steps against the sky are weaker
+// than the texture's own edges beside them, and dropping them cut the silhouette into short runs that blend.
 // Luma is Rec.709 weights on the display-encoded values: edges are judged by perceived contrast. In the HDR
 // placement (SMAA_HDR) the colour is scene-referred: luma is taken from the exposed value through a
 // Reinhard-like curve and a square root, sqrt(l E / (1 + l E)), close enough to a tone-mapped, encoded value
@@ -16,6 +19,19 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uColor;
 layout(binding = 0, rg8) uniform writeonly image2D uEdges;
+#ifdef SMAA_DEPTH
+layout(binding = 1) uniform sampler2D uLinearDepth; // R32F view depth, +inf: sky
+
+float depthAt(ivec2 p) {
+    return texelFetch(uLinearDepth, clamp(p, ivec2(0), textureSize(uLinearDepth, 0) - 1), 0).r;
+}
+
+// 1 where the two depths differ by more than a tenth of the nearer (a silhouette), else 0.
+float depthStep(float a, float b) {
+    float lo = min(a, b), hi = max(a, b);
+    return (isinf(hi) && !isinf(lo)) || hi > 1.1 * lo ? 1.0 : 0.0;
+}
+#endif
 
 #include "passes/smaa/smaa_parameters.h.glsl"
 
@@ -60,6 +76,11 @@ void main() {
     float aroundY = max(max(delta.x, plusX), plusY);
     aroundY = max(aroundY, abs(ly - lumaAt(p - ivec2(0, 2))));
     aroundY = max(aroundY, max(abs(ly - lxy), abs(ly - lumaAt(p + ivec2(1, -1)))));
-    edges *= step(vec2(aroundX, aroundY), uContrastFactor * delta);
+    vec2 kept = step(vec2(aroundX, aroundY), uContrastFactor * delta);
+#ifdef SMAA_DEPTH
+    float z = depthAt(p);
+    kept = max(kept, vec2(depthStep(z, depthAt(p - ivec2(1, 0))), depthStep(z, depthAt(p - ivec2(0, 1)))));
+#endif
+    edges *= kept;
     imageStore(uEdges, p, vec4(edges, 0.0, 0.0));
 }
