@@ -479,6 +479,37 @@ TEST_F(SmaaTest, DISABLED_TestbedErrorBreakdown) {
 
 namespace photopic::test {
 
+namespace {
+
+/// A still testbed view at `cameraStart` seconds along the camera's path (160x90), the ids and the display
+/// image of its supersampled truth, and the scene's settings with FXAA, bloom, dither and auto exposure off
+/// (the truth went through them).
+struct StillView {
+    TestbedScene scene;
+    FrameTime time{.dt = 1.0f / 30.0f, .frameIndex = 0};
+    ImageF ids;
+    Image8 reference;
+    Settings settings;
+
+    StillView(float cameraStart, int truthSamples) {
+        EXPECT_TRUE(scene.applyOverride("cameraSpeed=0").empty());
+        EXPECT_TRUE(scene.applyOverride("objectSpeed=0").empty());
+        EXPECT_TRUE(scene.applyOverride(fmt::format("cameraStart={}", cameraStart)).empty());
+        scene.resize({160, 90});
+        testbed::TruthOptions truth = scene.truthOptions(time);
+        truth.samples = truthSamples;
+        ids = testbed::renderTruth(testbed::TruthKind::ObjectId, truth);
+        settings = scene.defaultSettings();
+        settings.fxaa.enabled = false;
+        settings.bloom.enabled = false;
+        settings.output.dither = false;
+        settings.autoExposure.enabled = false;
+        reference = runImage(testbed::renderTruth(testbed::TruthKind::Color, truth), settings);
+    }
+};
+
+} // namespace
+
 // With the frame's depth, a silhouette is never dropped by the local contrast adaptation: where a checker
 // texture meets the sky, the weaker steps of the silhouette (light squares against the sky) sit beside the
 // squares' stronger crossing edges, and without depth they go and cut the silhouette into short runs that
@@ -487,21 +518,8 @@ namespace photopic::test {
 TEST_F(SmaaTest, DepthKeepsSilhouettesThroughContrastAdaptation) {
     constexpr int kW = 160, kH = 90;
     for (const float start : {0.0f, 1.5f, 2.5f, 3.5f}) {
-        TestbedScene scene;
-        ASSERT_TRUE(scene.applyOverride("cameraSpeed=0").empty());
-        ASSERT_TRUE(scene.applyOverride("objectSpeed=0").empty());
-        ASSERT_TRUE(scene.applyOverride(fmt::format("cameraStart={}", start)).empty());
-        scene.resize({kW, kH});
-        const FrameTime time{.dt = 1.0f / 30.0f, .frameIndex = 0};
-        testbed::TruthOptions truth = scene.truthOptions(time);
-        truth.samples = 8;
-        const ImageF ids = testbed::renderTruth(testbed::TruthKind::ObjectId, truth);
-        Settings s = scene.defaultSettings();
-        s.fxaa.enabled = false;
-        s.bloom.enabled = false;
-        s.output.dither = false;
-        s.autoExposure.enabled = false;
-        const Image8 reference = runImage(testbed::renderTruth(testbed::TruthKind::Color, truth), s);
+        StillView view(start, 8);
+        auto& [scene, time, ids, reference, s] = view;
         s.aa.mode = AntiAliasing::Smaa;
         auto render = [&](bool depth) {
             Pipeline pipeline(PipelineCreateInfo{.settings = s});
@@ -542,26 +560,13 @@ TEST_F(SmaaTest, DepthKeepsSilhouettesThroughContrastAdaptation) {
 // (no pole, post or wire in the 3x3), and how many edge pixels touch those thin objects.
 TEST_F(SmaaTest, DISABLED_EdgeErrorOverCameraPositions) {
     constexpr int kW = 160, kH = 90;
-    std::vector<double> smaaRatios, fxaaRatios, smaaSolid, thinShare;
+    std::vector<double> smaaRatios, fxaaRatios, smaaSolid;
     std::printf(
         "  | cameraStart | edge px (thin) | none RMSE | fxaa of none | smaa of none | smaa, solid edges |\n");
     for (int v = 0; v < 10; ++v) {
         const float start = 0.5f * float(v);
-        TestbedScene scene;
-        ASSERT_TRUE(scene.applyOverride("cameraSpeed=0").empty());
-        ASSERT_TRUE(scene.applyOverride("objectSpeed=0").empty());
-        ASSERT_TRUE(scene.applyOverride(fmt::format("cameraStart={}", start)).empty());
-        scene.resize({kW, kH});
-        const FrameTime time{.dt = 1.0f / 30.0f, .frameIndex = 0};
-        testbed::TruthOptions truth = scene.truthOptions(time);
-        truth.samples = 16;
-        const ImageF ids = testbed::renderTruth(testbed::TruthKind::ObjectId, truth);
-        Settings base = scene.defaultSettings();
-        base.fxaa.enabled = false;
-        base.bloom.enabled = false;
-        base.output.dither = false;
-        base.autoExposure.enabled = false;
-        const Image8 reference = runImage(testbed::renderTruth(testbed::TruthKind::Color, truth), base);
+        StillView view(start, 16);
+        auto& [scene, time, ids, reference, base] = view;
         auto render = [&](AntiAliasing aa) {
             Settings s = base;
             s.aa.mode = aa;
