@@ -12,6 +12,7 @@ constexpr ResourceUse kDisplayUses[] = {{Resource::DisplayColor, Access::Read},
                                         {Resource::DisplayColor, Access::Write}};
 constexpr ResourceUse kHdrUses[] = {{Resource::SceneColor, Access::Read},
                                     {Resource::ExposureState, Access::Read},
+                                    {Resource::LinearDepth, Access::ReadOptional},
                                     {Resource::SceneColor, Access::Write}};
 
 ShaderDefines domainVariant(SmaaPass::Domain domain) {
@@ -20,6 +21,12 @@ ShaderDefines domainVariant(SmaaPass::Domain domain) {
 
 ShaderDefines domainDefines(SmaaPass::Domain domain) {
     return bindingDefines(domainVariant(domain));
+}
+
+ShaderDefines depthDefines(SmaaPass::Domain domain) {
+    ShaderDefines defines = domainVariant(domain);
+    defines.emplace_back("SMAA_DEPTH", "1");
+    return bindingDefines(defines);
 }
 
 GLuint groups(int size) {
@@ -102,12 +109,12 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     }
     const std::string prefix = hdr ? "smaa (hdr) " : "smaa ";
     {
-        // A 3D host's linear depth marks the silhouettes (display placement only); its program is compiled
-        // the first time a frame brings one, so 2D hosts never pay for it.
-        const Texture* depth = hdr ? nullptr : resources.texture(Resource::LinearDepth);
+        // A 3D host's linear depth marks the silhouettes; its program is compiled the first time a frame
+        // brings one, so 2D hosts never pay for it.
+        const Texture* depth = resources.texture(Resource::LinearDepth);
         if (depth && !mEdgesDepth) {
-            mEdgesDepth.emplace(makeComputeProgram("passes/smaa/smaa_edges.comp.glsl",
-                                                   bindingDefines({{"SMAA_DEPTH", "1"}})));
+            mEdgesDepth.emplace(
+                makeComputeProgram("passes/smaa/smaa_edges.comp.glsl", depthDefines(mDomain)));
         }
         // Up to ten colour reads per pixel (neighbours hit the cache), the depth's and one RG8 write.
         ScopedGpuTimer timer(ctx.timers, prefix + "edges",

@@ -9,8 +9,8 @@
 //  - Hdr (aa.mode taa+smaa): on the scene-referred colour of the current frame, before TAA gathers it, so the
 //    temporal resolve starts from anti-aliased edges (SMAA first, then the temporal gather, as engines ship
 //    the pair). Edges are judged on a display-like luma of the exposed colour (last frame's exposure, as TAA
-//    uses), sqrt(l E / (1 + l E)), so the thresholds mean what they mean after tone mapping; the blend mixes
-//    scene light, as a supersampled render would.
+//    uses), sqrt(l E / (1 + l E)), so the thresholds mean what they mean after tone mapping; silhouettes are
+//    kept by the linear depth as above; the blend mixes scene light, as a supersampled render would.
 
 #include "passes/DisplayProgram.h"
 #include "passes/FramePass.h"
