@@ -86,14 +86,17 @@ Settings resolveSettings(const SettingsSources& sources, Settings base) {
         settings = loadSettingsFile(sources.file, std::move(settings),
                                     sources.preset.empty() ? DocumentPreset::Apply : DocumentPreset::Ignore);
     }
+    // The shorthands' errors name the option the user typed, not the --set it stands for.
     if (!sources.tonemap.empty()) {
-        applySettingsOverride(settings, "tonemapping.mode=" + sources.tonemap);
+        applySettingsOverride(settings, "tonemapping.mode=" + sources.tonemap,
+                              "--tonemap " + sources.tonemap);
     }
     if (sources.exposure) {
-        applySettingsOverride(settings, fmt::format("tonemapping.exposure={}", *sources.exposure));
+        applySettingsOverride(settings, fmt::format("tonemapping.exposure={}", *sources.exposure),
+                              fmt::format("--exposure {}", *sources.exposure));
     }
     if (!sources.debugView.empty()) {
-        applySettingsOverride(settings, "debug.view=" + sources.debugView);
+        applySettingsOverride(settings, "debug.view=" + sources.debugView, "--debug " + sources.debugView);
     }
     for (const auto& o : sources.overrides) {
         applySettingsOverride(settings, o);

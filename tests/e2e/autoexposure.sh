@@ -43,6 +43,7 @@ check "histogram counted with auto exposure off" awk -F, 'NR == 2 { exit !($11 =
 expect 2 "unknown debug view" -- "$PHOTOPIC" image "$DATA/Desk.hdr" -o "$S/bad.png" --debug sparkles
 check "error names the key" contains "postEffects.debug.view"
 check "allowed views listed" contains "histogram"
+check "and the option as typed" contains "invalid settings in --debug sparkles"
 check "no output for a bad view" test ! -e "$S/bad.png"
 
 expect 2 "unreadable metering mask" -- "$PHOTOPIC" image "$DATA/Desk.hdr" -o "$S/mask.png" \

@@ -35,6 +35,7 @@ check "no output for a truncated input" test ! -e "$S/truncated.png"
 expect 2 "bad tone curve" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/bad.png" --tonemap filmic
 check "error names the key and the allowed values" contains "postEffects.tonemapping.mode"
 check "allowed values listed" contains "aces-fitted"
+check "and the option as typed" contains "invalid settings in --tonemap filmic"
 expect 2 "out-of-range exposure" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/bad.png" --set tonemapping.exposure=99
 check "range named" contains "[-20, 20]"
 expect 2 "unknown key" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/bad.png" --set tonemapping.gamma=2

@@ -268,10 +268,11 @@ bool parseAssignment(std::string_view assignment, json& patch) {
 
 } // namespace settings_json
 
-void applySettingsOverride(Settings& settings, std::string_view assignment) {
+void applySettingsOverride(Settings& settings, std::string_view assignment, std::string_view option) {
     // Command-line text is raw bytes: say so when it is not UTF-8 (JSON strings must be), and print it with
     // \xNN in place of the bad bytes so the message itself stays valid text.
-    const std::string source = fmt::format("--set {}", escapeInvalidUtf8(assignment));
+    const std::string source =
+        option.empty() ? fmt::format("--set {}", escapeInvalidUtf8(assignment)) : escapeInvalidUtf8(option);
     if (const auto bad = invalidUtf8Offset(assignment)) {
         throw SettingsError(source, {{SettingsIssueCode::InvalidUtf8, "",
                                       fmt::format("at byte {} (0x{:02x}); settings text must be UTF-8", *bad,

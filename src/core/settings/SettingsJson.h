@@ -54,8 +54,9 @@ std::string settingsToJson(const Settings& settings);
 nlohmann::json settingsToJsonValue(const Settings& settings);
 
 /// Applies "path=value" (path below postEffects, e.g. "tonemapping.mode=agx"). The value is parsed as JSON
-/// when it is valid JSON, else taken as a string. Throws SettingsError naming the override.
-void applySettingsOverride(Settings& settings, std::string_view assignment);
+/// when it is valid JSON, else taken as a string. Throws SettingsError naming the override: as "--set
+/// path=value", or as `option` when a shorthand made it (e.g. "--tonemap nope" for tonemapping.mode=nope).
+void applySettingsOverride(Settings& settings, std::string_view assignment, std::string_view option = {});
 
 /// Every issue `settings` has (a value out of its range, a NaN), by JSON path: what loading the same values
 /// from JSON would report. Empty when the settings can be used.
