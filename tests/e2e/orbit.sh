@@ -48,10 +48,13 @@ for f in BoxWithInfinites.glb:"not finite" IndexOutOfRange.gltf:"index 255 past"
     problem="${f#*:}"
     expect 2 "--model $file is refused" -- "$PHOTOPIC" scene orbit -o "$S/bad-model" --frames 1 --size 32x18 \
         --model "$BAD/$file"
-    check "$file: the file is named" contains "$(basename "$file"):"
+    check "$file: the file is named, by its path" contains "\"$BAD/$file\":"
     check "$file: the problem is named" contains "$problem"
     check "$file: nothing written" test ! -e "$S/bad-model"
 done
+expect 2 "an image given as the model is refused" -- "$PHOTOPIC" scene orbit -o "$S/img-model" --frames 1 \
+    --size 32x18 --model "$DATA/Desk.hdr"
+check "says it is not a glTF model" contains "\"$DATA/Desk.hdr\": not a glTF 2.0 model"
 expect 2 "--model on another scene is refused" -- "$PHOTOPIC" scene testbed -o "$S/tb" --frames 1 --size 32x18 \
     --model "$DATA/gltf/2CylinderEngine.glb"
 check "says whose option it is" contains "--model is an option of the orbit scene"

@@ -1,5 +1,6 @@
 #include "scenes/orbit/GltfJson.h"
 
+#include <algorithm>
 #include <climits>
 #include <string>
 
@@ -295,6 +296,16 @@ json parseGltfJson(std::span<const std::uint8_t> text, const fs::path& file, int
         if (const auto close = message.find("] ");
             message.starts_with("[json.") && close != std::string::npos) {
             message.erase(0, close + 2);
+        }
+        // A file that does not even open as a JSON object is not a glTF file at all (an image passed as the
+        // model, say): say that first.
+        const auto first = std::find_if(text.begin(), text.end(), [](std::uint8_t c) {
+            return c != ' ' && c != '\t' && c != '\n' && c != '\r' && c != 0xEF && c != 0xBB && c != 0xBF;
+        });
+        if (first == text.end() || *first != '{') {
+            message =
+                "not a glTF 2.0 model (a .gltf file is a JSON object, a .glb file starts with \"glTF\"): " +
+                message;
         }
         throw ModelError(file, ModelIssue::ParseError, "", message);
     }

@@ -12,6 +12,7 @@
 
 #include <stb_image.h>
 
+#include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -38,8 +39,9 @@ constexpr const char* kIssueNames[] = {
 };
 
 std::string errorMessage(const fs::path& file, std::string_view where, std::string_view problem) {
-    std::string message = file.filename().string();
-    message.append(": ");
+    // The path as given, quoted as the image readers quote theirs: two models of one name in different
+    // folders stay apart.
+    std::string message = fmt::format("\"{}\": ", file.string());
     if (!where.empty()) {
         message.append(where).append(": ");
     }
@@ -97,27 +99,26 @@ std::string path(std::string_view array, std::size_t index) {
 /// Reads a whole regular file of at most `maxBytes`; the error names the model file and the JSON path.
 Bytes readFile(const fs::path& file, const fs::path& model, const std::string& where,
                std::uint64_t maxBytes) {
+    // The message opens with the model's path; a file the model refers to (a buffer, an image) is named too.
+    const std::string named = file == model ? std::string() : fmt::format("\"{}\" ", file.string());
     std::error_code ec;
     const auto status = fs::status(file, ec);
     if (!fs::exists(status)) {
-        throw ModelError(model, ModelIssue::MissingFile, where, "file \"" + file.string() + "\" not found");
+        throw ModelError(model, ModelIssue::MissingFile, where, fmt::format("file {}not found", named));
     }
     if (!fs::is_regular_file(status)) {
-        throw ModelError(model, ModelIssue::Unreadable, where,
-                         "\"" + file.string() + "\" is not a regular file");
+        throw ModelError(model, ModelIssue::Unreadable, where, named + "is not a regular file");
     }
     const std::uint64_t size = fs::file_size(file, ec);
     if (ec || size > maxBytes) {
         throw ModelError(
             model, ec ? ModelIssue::Unreadable : ModelIssue::TooLarge, where,
-            "\"" + file.string() + "\": " +
-                (ec ? ec.message()
-                    : std::to_string(size) + " bytes, over the limit of " + std::to_string(maxBytes)));
+            named + (ec ? ec.message() : fmt::format("{} bytes, over the limit of {}", size, maxBytes)));
     }
     Bytes bytes(size);
     std::ifstream in(file, std::ios::binary);
     if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size))) {
-        throw ModelError(model, ModelIssue::Unreadable, where, "\"" + file.string() + "\" cannot be read");
+        throw ModelError(model, ModelIssue::Unreadable, where, named + "cannot be read");
     }
     return bytes;
 }

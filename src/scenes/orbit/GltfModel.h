@@ -46,7 +46,8 @@ enum class ModelIssue {
 
 [[nodiscard]] std::string_view modelIssueName(ModelIssue issue); ///< "BadIndex"
 
-/// what(): "FILE: JSON-PATH: problem", e.g. "Box.gltf: accessors[0]: index 255 past the 24 vertices".
+/// what(): "\"FILE\": JSON-PATH: problem", the file's path as given, e.g. "\"models/Box.gltf\": accessors[0]:
+/// index 255 past the 24 vertices".
 class ModelError : public std::runtime_error {
 public:
     ModelError(const std::filesystem::path& file, ModelIssue issue, std::string_view where,
