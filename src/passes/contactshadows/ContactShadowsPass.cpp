@@ -8,10 +8,6 @@ namespace photopic {
 
 namespace {
 
-GLuint groups(int size) {
-    return GLuint((size + 7) / 8);
-}
-
 constexpr ResourceUse kUses[] = {
     {Resource::LinearDepth, Access::Read},        {Resource::Camera, Access::Read},
     {Resource::SunDirection, Access::Read},       {Resource::Normals, Access::ReadOptional},
@@ -153,7 +149,7 @@ void ContactShadowsPass::execute(FrameContext& ctx, FrameResources& resources) {
                              texels * (4.0 + (normals ? 8.0 : 16.0) + (objectId ? 4.0 : 0.0) + 16.0));
         mSurface.use();
         glBindImageTexture(0, surface.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     glBindSampler(2, 0);
@@ -165,7 +161,7 @@ void ContactShadowsPass::execute(FrameContext& ctx, FrameResources& resources) {
         glBindTextureUnit(3, surface.id());
         glBindImageTexture(0, raw.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
         glBindImageTexture(1, steps ? steps->id() : mNoSteps.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
@@ -177,7 +173,7 @@ void ContactShadowsPass::execute(FrameContext& ctx, FrameResources& resources) {
         glBindTextureUnit(4, mHistory.previous() ? mHistory.previous()->id() : raw.id());
         glBindTextureUnit(5, motion ? motion->id() : depth.id());
         glBindImageTexture(0, mHistory.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
     }
     resources.bind(Resource::ContactShadows, mHistory.current());
     if (steps) {

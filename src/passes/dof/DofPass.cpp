@@ -10,10 +10,6 @@ namespace photopic {
 
 namespace {
 
-GLuint groups(int size) {
-    return GLuint((size + 7) / 8);
-}
-
 constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
                                  {Resource::LinearDepth, Access::Read},
                                  {Resource::Camera, Access::Read},
@@ -96,7 +92,7 @@ void DofPass::execute(FrameContext& ctx, FrameResources& resources) {
         mCoc.use();
         glBindTextureUnit(0, depth.id());
         glBindImageTexture(0, coc.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
@@ -106,7 +102,7 @@ void DofPass::execute(FrameContext& ctx, FrameResources& resources) {
         glBindTextureUnit(1, coc.id());
         glBindImageTexture(0, farField.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
         glBindImageTexture(1, nearField.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glDispatchCompute(groups(half.width), groups(half.height), 1);
+        dispatchPixels(half);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
@@ -114,12 +110,12 @@ void DofPass::execute(FrameContext& ctx, FrameResources& resources) {
         mTiles.use();
         glBindTextureUnit(0, nearField.id());
         glBindImageTexture(0, tileMax.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-        glDispatchCompute(groups(tiles.width), groups(tiles.height), 1);
+        dispatchPixels(tiles);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
         mDilate.use();
         glBindTextureUnit(0, tileMax.id());
         glBindImageTexture(0, tileReach.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-        glDispatchCompute(groups(tiles.width), groups(tiles.height), 1);
+        dispatchPixels(tiles);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
@@ -129,7 +125,7 @@ void DofPass::execute(FrameContext& ctx, FrameResources& resources) {
         glBindTextureUnit(0, farField.id());
         glBindTextureUnit(1, tileReach.id());
         glBindImageTexture(0, farBlur.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glDispatchCompute(groups(half.width), groups(half.height), 1);
+        dispatchPixels(half);
     }
     {
         ScopedGpuTimer timer(ctx.timers, "dof near", halfTexels * (8.0 + 8.0));
@@ -137,7 +133,7 @@ void DofPass::execute(FrameContext& ctx, FrameResources& resources) {
         glBindTextureUnit(0, nearField.id());
         glBindTextureUnit(1, tileReach.id());
         glBindImageTexture(0, nearBlur.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glDispatchCompute(groups(half.width), groups(half.height), 1);
+        dispatchPixels(half);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
@@ -148,7 +144,7 @@ void DofPass::execute(FrameContext& ctx, FrameResources& resources) {
         glBindTextureUnit(2, farBlur.id());
         glBindTextureUnit(3, nearBlur.id());
         glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
     }
     resources.bind(Resource::SceneColor, out);
     resources.bind(Resource::DofCoc, coc);

@@ -4,12 +4,6 @@
 
 namespace photopic {
 
-namespace {
-GLuint groups(int size) {
-    return GLuint((size + 7) / 8);
-}
-} // namespace
-
 GtaoPass::GtaoPass(Stage stage)
     : mStage(stage)
     , mMain(makeComputeProgram("passes/gtao/gtao_main.comp.glsl", bindingDefines()))
@@ -91,13 +85,13 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
 
     mMain.use();
     glBindImageTexture(0, raw.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-    glDispatchCompute(groups(rawExtent.width), groups(rawExtent.height), 1);
+    dispatchPixels(rawExtent);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
     mDenoise.use();
     glBindTextureUnit(2, raw.id());
     glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-    glDispatchCompute(groups(e.width), groups(e.height), 1);
+    dispatchPixels(e);
     resources.bind(Resource::AmbientOcclusion, out);
 }
 
@@ -129,7 +123,7 @@ void AoMultiplyPass::execute(FrameContext& ctx, FrameResources& resources) {
     glBindTextureUnit(0, resources.texture(Resource::SceneColor)->id());
     glBindTextureUnit(1, resources.texture(Resource::AmbientOcclusion)->id());
     glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    glDispatchCompute(groups(e.width), groups(e.height), 1);
+    dispatchPixels(e);
     resources.bind(Resource::SceneColor, out);
 }
 

@@ -5,12 +5,6 @@
 
 namespace photopic {
 
-namespace {
-GLuint groups(int size) {
-    return GLuint((size + 7) / 8);
-}
-} // namespace
-
 LinearDepthPass::LinearDepthPass()
     : mProgram(makeComputeProgram("passes/inputs/linear_depth.comp.glsl", bindingDefines()))
     , mParameters("linear depth parameters") {}
@@ -45,7 +39,7 @@ void LinearDepthPass::execute(FrameContext& ctx, FrameResources& resources) {
     mProgram.use();
     glBindTextureUnit(0, depth.id());
     glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    glDispatchCompute(groups(ctx.extent.width), groups(ctx.extent.height), 1);
+    dispatchPixels(ctx.extent);
     resources.bind(Resource::LinearDepth, out);
 }
 
@@ -89,7 +83,7 @@ void CameraMotionPass::execute(FrameContext& ctx, FrameResources& resources) {
     mProgram.use();
     glBindTextureUnit(0, resources.texture(Resource::LinearDepth)->id());
     glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-    glDispatchCompute(groups(ctx.extent.width), groups(ctx.extent.height), 1);
+    dispatchPixels(ctx.extent);
     resources.bind(Resource::Motion, out);
 }
 

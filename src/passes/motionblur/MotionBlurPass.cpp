@@ -9,10 +9,6 @@ namespace photopic {
 
 namespace {
 
-GLuint groups(int size) {
-    return GLuint((size + 7) / 8);
-}
-
 constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
                                  {Resource::Motion, Access::Read},
                                  {Resource::LinearDepth, Access::Read},
@@ -94,7 +90,7 @@ void MotionBlurPass::execute(FrameContext& ctx, FrameResources& resources) {
         mPrepare.use();
         glBindTextureUnit(0, motion.id());
         glBindImageTexture(0, velocity.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
@@ -102,7 +98,7 @@ void MotionBlurPass::execute(FrameContext& ctx, FrameResources& resources) {
         mTiles.use();
         glBindTextureUnit(0, velocity.id());
         glBindImageTexture(0, tileMax.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-        glDispatchCompute(groups(tiles.width), groups(tiles.height), 1);
+        dispatchPixels(tiles);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
@@ -111,7 +107,7 @@ void MotionBlurPass::execute(FrameContext& ctx, FrameResources& resources) {
         mNeighbours.use();
         glBindTextureUnit(0, tileMax.id());
         glBindImageTexture(0, neighbourMax.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-        glDispatchCompute(groups(tiles.width), groups(tiles.height), 1);
+        dispatchPixels(tiles);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
@@ -127,7 +123,7 @@ void MotionBlurPass::execute(FrameContext& ctx, FrameResources& resources) {
         glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
         glBindImageTexture(1, tilesView ? tilesView->id() : mNoTiles.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                            GL_RGBA16F);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
     }
     resources.bind(Resource::SceneColor, out);
     if (tilesView) {

@@ -4,14 +4,6 @@
 
 namespace photopic {
 
-namespace {
-
-GLuint groups(int size) {
-    return GLuint((size + 7) / 8);
-}
-
-} // namespace
-
 OutlinePass::OutlinePass()
     : mProgram(makeComputeProgram("passes/outline/outline.comp.glsl", bindingDefines()))
     , mParameters("outline parameters") {}
@@ -50,7 +42,7 @@ void OutlinePass::execute(FrameContext& ctx, FrameResources& resources) {
     glBindTextureUnit(1, depth.id());
     glBindTextureUnit(2, normals ? normals->id() : depth.id());
     glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    glDispatchCompute(groups(e.width), groups(e.height), 1);
+    dispatchPixels(e);
     resources.bind(Resource::SceneColor, out);
 }
 

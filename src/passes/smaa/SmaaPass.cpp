@@ -29,10 +29,6 @@ ShaderDefines depthDefines(SmaaPass::Domain domain) {
     return bindingDefines(defines);
 }
 
-GLuint groups(int size) {
-    return GLuint((size + 7) / 8);
-}
-
 Texture makeTable(int width, int height, GLenum internalFormat, GLenum format, GLenum type, const void* data,
                   std::string_view name) {
     Texture t({.extent = {width, height},
@@ -125,7 +121,7 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
             glBindTextureUnit(1, depth->id());
         }
         glBindImageTexture(0, edges.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG8);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
@@ -137,7 +133,7 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
         glBindTextureUnit(2, mAreaDiag.id());
         glBindTextureUnit(3, mSearch.id());
         glBindImageTexture(0, weights.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
@@ -147,7 +143,7 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
         glBindTextureUnit(0, color.id());
         glBindTextureUnit(1, weights.id());
         glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, colorFormat);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
     }
     for (GLuint unit = 0; unit < 4; ++unit) {
         glBindTextureUnit(unit, 0);

@@ -9,10 +9,6 @@ namespace photopic {
 
 namespace {
 
-GLuint groups(int size) {
-    return GLuint((size + 7) / 8);
-}
-
 constexpr int kMaxPyramidLevels = 7;
 /// Mip levels of the history the glossy cones read.
 constexpr int kHistoryLevels = 6;
@@ -84,7 +80,7 @@ void DepthPyramidPass::execute(FrameContext& ctx, FrameResources& resources) {
     glProgramUniform2i(mProgram.id(), 1, size0.width, size0.height);
     for (int level = 0; level < levels; ++level) {
         glProgramUniform1i(mProgram.id(), 0, level);
-        glDispatchCompute(groups(size0.width >> level), groups(size0.height >> level), 1);
+        dispatchPixels({size0.width >> level, size0.height >> level});
         // The next level reads what this one wrote.
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
@@ -118,7 +114,7 @@ void SsrHistoryPass::execute(FrameContext& ctx, FrameResources& resources) {
         mProgram.use();
         glBindTextureUnit(0, resources.texture(Resource::SceneColor)->id());
         glBindImageTexture(0, mHistory.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
         glGenerateTextureMipmap(mHistory.id());
     }
@@ -217,13 +213,13 @@ void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
         mTrace.use();
         glBindTextureUnit(3, pyramid.id());
         glBindImageTexture(0, (half ? *blockHits : hits).id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        glDispatchCompute(groups(traceExtent.width), groups(traceExtent.height), 1);
+        dispatchPixels(traceExtent);
         if (half) {
             glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
             mRefine.use();
             glBindTextureUnit(4, blockHits->id());
             glBindImageTexture(0, hits.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-            glDispatchCompute(groups(e.width), groups(e.height), 1);
+            dispatchPixels(e);
         }
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -240,7 +236,7 @@ void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
         glBindTextureUnit(5, material ? material->id() : depth.id());
         glBindImageTexture(0, sceneOut.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
         glBindImageTexture(1, reflections.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
     }
     resources.bind(Resource::SceneColor, sceneOut);
     resources.bind(Resource::Reflections, reflections);

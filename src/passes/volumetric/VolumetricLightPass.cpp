@@ -11,10 +11,6 @@ namespace photopic {
 
 namespace {
 
-GLuint groups(int size) {
-    return GLuint((size + 7) / 8);
-}
-
 constexpr ResourceUse kUses[] = {
     {Resource::SceneColor, Access::Read},     {Resource::LinearDepth, Access::Read},
     {Resource::Camera, Access::Read},         {Resource::SunDirection, Access::Read},
@@ -191,7 +187,7 @@ void VolumetricLightPass::executeShadowMap(FrameContext& ctx, FrameResources& re
         glBindSampler(kShadowUnit, mShadowSampler.id());
         glBindImageTexture(0, raw.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
         glBindImageTexture(1, mShadowDepth.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-        glDispatchCompute(groups(low.width), groups(low.height), 1);
+        dispatchPixels(low);
         glBindSampler(kShadowUnit, 0);
         glBindTextureUnit(kShadowUnit, 0);
     }
@@ -207,7 +203,7 @@ void VolumetricLightPass::executeShadowMap(FrameContext& ctx, FrameResources& re
         glBindTextureUnit(5, current.id());
         glBindTextureUnit(6, mShadowDepth.previous() ? mShadowDepth.previous()->id() : current.id());
         glBindImageTexture(0, mShadowLight.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glDispatchCompute(groups(low.width), groups(low.height), 1);
+        dispatchPixels(low);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
@@ -221,7 +217,7 @@ void VolumetricLightPass::executeShadowMap(FrameContext& ctx, FrameResources& re
         glBindTextureUnit(6, mShadowLight.current().id());
         glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
         glBindImageTexture(1, view ? view->id() : mNoView.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
     }
     mShadowLight.advance();
     mShadowDepth.advance();
@@ -264,7 +260,7 @@ void VolumetricLightPass::executeScreen(FrameContext& ctx, FrameResources& resou
         ScopedGpuTimer timer(ctx.timers, "volumetric light source", full * (8.0 + 4.0 + 8.0));
         mPrepare.use();
         glBindImageTexture(0, source.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
@@ -274,7 +270,7 @@ void VolumetricLightPass::executeScreen(FrameContext& ctx, FrameResources& resou
         mScatter.use();
         glBindTextureUnit(2, source.id());
         glBindImageTexture(0, raw.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glDispatchCompute(groups(half.width), groups(half.height), 1);
+        dispatchPixels(half);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
@@ -285,7 +281,7 @@ void VolumetricLightPass::executeScreen(FrameContext& ctx, FrameResources& resou
         glBindTextureUnit(4, mHistory.previous() ? mHistory.previous()->id() : raw.id());
         glBindTextureUnit(5, motion ? motion->id() : depth.id());
         glBindImageTexture(0, mHistory.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glDispatchCompute(groups(half.width), groups(half.height), 1);
+        dispatchPixels(half);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
@@ -296,7 +292,7 @@ void VolumetricLightPass::executeScreen(FrameContext& ctx, FrameResources& resou
         glBindTextureUnit(6, mHistory.current().id());
         glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
         glBindImageTexture(1, view ? view->id() : mNoView.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glDispatchCompute(groups(e.width), groups(e.height), 1);
+        dispatchPixels(e);
     }
     mHistory.advance();
     publish(resources, targets);
