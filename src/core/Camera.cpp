@@ -142,4 +142,19 @@ float linearDepthFromReversed(float windowDepth, float nearPlane, float farPlane
     return nearPlane * farPlane / (windowDepth * (farPlane - nearPlane) + nearPlane);
 }
 
+void viewRays(const glm::mat4& projection, glm::vec4 (&nearRay)[3], glm::vec4 (&farRay)[3]) noexcept {
+    const glm::mat4 inv = glm::inverse(projection);
+    const auto point = [&](float x, float y, float z) {
+        const glm::vec4 p = inv * glm::vec4(x, y, z, 1.0f);
+        return glm::vec4(glm::vec3(p) / p.w, 0.0f);
+    };
+    for (int k = 0; k < 2; ++k) {
+        const float z = k == 0 ? -1.0f : 0.0f;
+        glm::vec4(&ray)[3] = k == 0 ? nearRay : farRay;
+        ray[0] = point(0.0f, 0.0f, z);
+        ray[1] = point(1.0f, 0.0f, z) - ray[0];
+        ray[2] = point(0.0f, 1.0f, z) - ray[0];
+    }
+}
+
 } // namespace photopic

@@ -69,6 +69,12 @@ struct Camera {
 [[nodiscard]] glm::mat4 jitteredProjection(const glm::mat4& projection, glm::vec2 jitterPixels, int width,
                                            int height) noexcept;
 
+/// The view-space rays through the image, for passes that rebuild a pixel's view position from its depth: the
+/// points at NDC z = -1 (`nearRay`) and z = 0 (`farRay`) on the ray through NDC (x, y), each as the point at
+/// x = y = 0 ([0]) and its slopes in x ([1]) and y ([2]), w = 0. The projection's w row does not depend on x
+/// or y, so both points are affine in them: point(x, y) = ray[0] + x ray[1] + y ray[2].
+void viewRays(const glm::mat4& projection, glm::vec4 (&nearRay)[3], glm::vec4 (&farRay)[3]) noexcept;
+
 /// Linear view depth (positive distance along -z, scene units) of a GL window depth in [0, 1] written with
 /// a standard perspective projection (glDepthRange(0, 1), NDC z in [-1, 1]). far may be +inf.
 [[nodiscard]] float linearDepthFromWindow(float windowDepth, float nearPlane, float farPlane) noexcept;

@@ -82,3 +82,25 @@ TEST(Camera, InvalidCamerasSayWhy) {
     c.lens.fNumber = 0.0f;
     EXPECT_NE(invalidCameraReason(c), nullptr);
 }
+
+// viewRays: the point it gives for NDC (x, y) at the near (z = -1) and mid (z = 0) planes projects back to
+// that NDC position, for a finite and an infinite far plane.
+TEST(Camera, ViewRaysProjectBackToTheirNdcPoint) {
+    for (const float far : {100.0f, std::numeric_limits<float>::infinity()}) {
+        const glm::mat4 projection = perspectiveProjection(1.0f, 16.0f / 9.0f, 0.1f, far);
+        glm::vec4 nearRay[3], farRay[3];
+        viewRays(projection, nearRay, farRay);
+        for (const glm::vec2 ndc : {glm::vec2(0.0f), glm::vec2(0.5f, -0.25f), glm::vec2(-1.0f, 1.0f)}) {
+            for (int k = 0; k < 2; ++k) {
+                const glm::vec4(&ray)[3] = k == 0 ? nearRay : farRay;
+                const glm::vec4 view = ray[0] + ndc.x * ray[1] + ndc.y * ray[2];
+                EXPECT_EQ(view.w, 0.0f);
+                const glm::vec4 clip = projection * glm::vec4(glm::vec3(view), 1.0f);
+                EXPECT_NEAR(clip.x / clip.w, ndc.x, 1e-4f) << "far " << far << " plane " << k;
+                EXPECT_NEAR(clip.y / clip.w, ndc.y, 1e-4f) << "far " << far << " plane " << k;
+                EXPECT_NEAR(clip.z / clip.w, k == 0 ? -1.0f : 0.0f, 1e-4f) << "far " << far << " plane " << k;
+                EXPECT_LT(view.z, 0.0f); // in front of the camera
+            }
+        }
+    }
+}

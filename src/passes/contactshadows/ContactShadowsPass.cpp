@@ -19,23 +19,6 @@ constexpr ResourceUse kMaskedUses[] = {
     {Resource::Normals, Access::ReadOptional}, {Resource::Motion, Access::ReadOptional},
     {Resource::ContactShadows, Access::Write}, {Resource::ContactShadowSteps, Access::Write}};
 
-/// The view-space points at NDC z = -1 and z = 0 on the ray through NDC (x, y), as an origin plus x and y
-/// slopes: the projection's w row does not depend on x or y, so both are affine in them.
-void viewRays(const glm::mat4& projection, glm::vec4 (&nearRay)[3], glm::vec4 (&farRay)[3]) {
-    const glm::mat4 inv = glm::inverse(projection);
-    const auto point = [&](float x, float y, float z) {
-        const glm::vec4 p = inv * glm::vec4(x, y, z, 1.0f);
-        return glm::vec4(glm::vec3(p) / p.w, 0.0f);
-    };
-    for (int k = 0; k < 2; ++k) {
-        const float z = k == 0 ? -1.0f : 0.0f;
-        glm::vec4(&ray)[3] = k == 0 ? nearRay : farRay;
-        ray[0] = point(0.0f, 0.0f, z);
-        ray[1] = point(1.0f, 0.0f, z) - ray[0];
-        ray[2] = point(0.0f, 1.0f, z) - ray[0];
-    }
-}
-
 /// Edge fade width: 2% of the image height (at least 2 px), where an occluder may be partly off screen.
 float edgeFadePixels(Extent e) {
     return std::max(2.0f, 0.02f * float(e.height));

@@ -13,23 +13,6 @@ constexpr int kMaxPyramidLevels = 7;
 /// Mip levels of the history the glossy cones read.
 constexpr int kHistoryLevels = 6;
 
-/// The view-space points at NDC z = -1 and z = 0 on the ray through NDC (x, y), as an origin plus x and y
-/// slopes (the projection's w row does not depend on x or y, so both are affine in them).
-void viewRays(const glm::mat4& projection, glm::vec4 (&nearRay)[3], glm::vec4 (&farRay)[3]) {
-    const glm::mat4 inv = glm::inverse(projection);
-    const auto point = [&](float x, float y, float z) {
-        const glm::vec4 p = inv * glm::vec4(x, y, z, 1.0f);
-        return glm::vec4(glm::vec3(p) / p.w, 0.0f);
-    };
-    for (int k = 0; k < 2; ++k) {
-        const float z = k == 0 ? -1.0f : 0.0f;
-        glm::vec4(&ray)[3] = k == 0 ? nearRay : farRay;
-        ray[0] = point(0.0f, 0.0f, z);
-        ray[1] = point(1.0f, 0.0f, z) - ray[0];
-        ray[2] = point(0.0f, 1.0f, z) - ray[0];
-    }
-}
-
 int mipLevels(Extent e, int most) {
     const auto smaller = unsigned(std::max(1, std::min(e.width, e.height)));
     return std::min(most, int(std::bit_width(smaller)));
