@@ -618,7 +618,6 @@ int runImage(const ImageOptions& options) {
         throw InputError("image: an output is required (-o FILE, FOLDER/, PATTERN or -), or --info");
     }
     Settings settings = imageSettings(options);
-    dropUnavailableAa(settings, inputs.size());
     const std::optional<OcioDisplay> ocio = ocioDisplayFor(options);
     std::FILE* const console = consoleFor(options);
     // Every output is checked before any work; a run that fails takes back what it wrote, the frames it
@@ -633,6 +632,7 @@ int runImage(const ImageOptions& options) {
     if (!options.writeAux.empty()) {
         outputs.makeFolder(options.writeAux);
     }
+    dropUnavailableAa(settings, inputs.size()); // warned once the outputs are known to be fine
     const float dt = 1.0f / options.fps;
     std::optional<TelemetryCsv> telemetry;
     if (!options.telemetry.empty()) {
