@@ -156,14 +156,13 @@ void addImageCommand(CLI::App& app, Cli& c) {
         ->required();
     c.image->add_option(
         "-o,--output", c.imageOptions.output,
-        "where results go, required unless --info: an extension means a file (.png, .tif, "
-        ".tiff, .jpg, .jpeg: the display image; .exr: scene-referred); a "
-        "trailing '/', an existing folder or no extension means a folder (NAME.png, --format), "
-        "and several inputs need one (or a pattern); a frame number means a pattern (out/f%04d.png: each "
-        "input's "
-        "frame number, or 0, 1, ... when the inputs carry none); '-', a device or a pipe is "
-        "streamed (one input, PNG). An output that is an input, or that two inputs would "
-        "share, is refused. Existing files are replaced (atomically) unless -n");
+        "where results go, required unless --info: an extension means a file (.png, .tif, .tiff, "
+        ".jpg, .jpeg: the display image; .exr: scene-referred); a trailing '/', an existing folder or "
+        "no extension means a folder (NAME.png, --format), and several inputs need one (or a pattern); "
+        "a frame number means a pattern (out/f%04d.png: each input's frame number, or 0, 1, ... when "
+        "the inputs carry none); '-', a device or a pipe is streamed (one input, PNG). An output that "
+        "is an input, or that two inputs would share, is refused. Existing files are replaced "
+        "(atomically) unless -n");
     auto* noOverwrite = c.image->add_flag("-n,--no-overwrite", c.imageOptions.noOverwrite,
                                           "never overwrite: an output that exists is refused (exit 2) "
                                           "before any work, like ffmpeg -n");
