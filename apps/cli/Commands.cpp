@@ -574,11 +574,6 @@ void requireNewSideOutputs(const ImageOptions& options, const std::vector<fs::pa
     requireNew(paths);
 }
 
-bool taaSelected(const Settings& settings) {
-    const AntiAliasing aa = settings.antiAliasing();
-    return aa == AntiAliasing::Taa || aa == AntiAliasing::TaaSmaa;
-}
-
 /// The anti-aliasing an image run cannot do, turned off with one warning that says why and what runs
 /// instead (SMAA under taa+smaa, else FXAA when its switch is on, else nothing): TAA gathers each pixel over
 /// earlier frames, and a single image has none; SSAA renders each frame several times, which only the
@@ -589,7 +584,7 @@ void dropUnavailableAa(Settings& settings, std::size_t inputCount) {
     if (asked == AntiAliasing::Ssaa) {
         why = "SSAA renders each frame several times, which only the renderer that made an image can do, so "
               "it is off for images";
-    } else if (taaSelected(settings) && inputCount == 1) {
+    } else if (settings.temporalAntiAliasing() && inputCount == 1) {
         why = "a single image has no earlier frames for TAA to gather, so TAA is off for it";
     } else {
         return;
@@ -666,7 +661,7 @@ int runImage(const ImageOptions& options) {
         const FrameTime time{.dt = dt, .frameIndex = i};
         if (frame.jittered) {
             pipeline->beginFrame(time); // the renderer jittered this frame, as a two-stage host would
-        } else if (taaSelected(settings) &&
+        } else if (settings.temporalAntiAliasing() &&
                    (!frame.motion.empty() || (!frame.depth.empty() && frame.camera))) {
             // (Without motion, or depth and a camera to derive it, the pipeline skips TAA and says so.)
             // Said in the CLI's words; the key is the pipeline's own, so its host-API wording stays unsaid.

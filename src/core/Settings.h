@@ -83,6 +83,11 @@ struct Settings {
         }
         return fxaa.enabled ? AntiAliasing::Fxaa : AntiAliasing::None;
     }
+    /// Whether that anti-aliasing gathers over frames: taa or taa+smaa.
+    [[nodiscard]] bool temporalAntiAliasing() const noexcept {
+        const AntiAliasing a = antiAliasing();
+        return a == AntiAliasing::Taa || a == AntiAliasing::TaaSmaa;
+    }
 
     template <class V>
     void visit(V& v) {

@@ -164,7 +164,8 @@ glm::vec2 Pipeline::beginFrame(const FrameTime& time, const Camera* camera) {
         return mJitter;
     }
     const JitterMode mode = mSettings.temporal.jitter;
-    const bool jitter = mode == JitterMode::On || (mode == JitterMode::Auto && TaaPass::selected(mSettings));
+    const bool jitter =
+        mode == JitterMode::On || (mode == JitterMode::Auto && mSettings.temporalAntiAliasing());
     mJitter = jitter ? haltonJitter(time.frameIndex, mSettings.temporal.jitterCycle) : glm::vec2(0.0f);
     return mJitter;
 }
@@ -331,7 +332,7 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
         }
     }
     mAccumulating = false;
-    if (!mBeganFrame && TaaPass::selected(mSettings)) {
+    if (!mBeganFrame && mSettings.temporalAntiAliasing()) {
         try {
             warnOnce("taa.no-jitter", "TAA is on but the host does not call beginFrame(): its frames are not "
                                       "jittered, so TAA only filters over time and cannot anti-alias edges");

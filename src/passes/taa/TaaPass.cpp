@@ -26,13 +26,8 @@ std::span<const ResourceUse> TaaPass::uses() const {
     return kUses;
 }
 
-bool TaaPass::selected(const Settings& settings) noexcept {
-    const AntiAliasing aa = settings.antiAliasing();
-    return aa == AntiAliasing::Taa || aa == AntiAliasing::TaaSmaa;
-}
-
 bool TaaPass::enabled(const FrameContext& ctx) const {
-    return ctx.hdr && selected(ctx.settings);
+    return ctx.hdr && ctx.settings.temporalAntiAliasing(); // on the HDR path when aa.mode selects it
 }
 
 void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {

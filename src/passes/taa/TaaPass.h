@@ -46,9 +46,6 @@ public:
     }
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
-    /// TAA runs on the HDR path when aa.mode (or taa.enabled) selects it.
-    [[nodiscard]] static bool selected(const Settings& settings) noexcept;
-
 private:
     Program mProgram;
     ParameterBlock<TaaParameters> mParameters;
