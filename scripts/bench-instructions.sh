@@ -18,7 +18,7 @@ if ! command -v valgrind > /dev/null; then
     exit 2
 fi
 args=("$@")
-if [[ " $* " != *" --size "* ]]; then
+if [[ " $* " != *" --size "* && " $* " != *" --size="* ]]; then
     args=(--size 480x270 "$@")
 fi
 count() {
