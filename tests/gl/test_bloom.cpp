@@ -117,9 +117,10 @@ glm::vec3 cpuDownsample(const ImageF& source, int width, int height, int x, int 
 
 } // namespace
 
-// Every downsampled level against the CPU filter, on sizes whose levels halve exactly (2x2 blocks of target
-// texels sharing their taps, odd-sized targets among them) and sizes whose levels do not (one texel per
-// invocation), with both first divisors, both modes, and fireflies, negative values and a NaN in the scene.
+// Every downsampled level against the CPU filter, on sizes whose levels halve exactly (2x2 and 4x4 blocks
+// of target texels sharing their taps, odd-sized targets among them) and sizes whose levels do not (one texel
+// per invocation), with both first divisors, both modes, and fireflies, negative values and a NaN in the
+// scene.
 // Each level is checked from the GPU's own level above, so rounding to half floats does not accumulate.
 TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
     struct Case {
@@ -130,51 +131,56 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
                           {70, 46, 2, BloomMode::Threshold},
                           {64, 48, 4, BloomMode::Threshold},
                           {61, 37, 2, BloomMode::EnergyConserving}};
-    for (const Case& k : cases) {
-        ImageF image(k.width, k.height);
-        for (int y = 0; y < k.height; ++y) {
-            for (int x = 0; x < k.width; ++x) {
-                float* p = image.at(x, y);
-                const float base = 0.5f + 0.5f * std::sin(0.37f * float(x) + 0.21f * float(y * y));
-                p[0] = base * 2.0f;
-                p[1] = (x * 7 + y * 13) % 17 == 0 ? 40.0f : base; // fireflies for the Karis weights
-                p[2] = (x + y) % 11 == 0 ? -0.5f : 0.25f * base;  // negatives for the box clamp
-                p[3] = 1.0f;
-            }
-        }
-        image.at(5, 7)[0] = std::numeric_limits<float>::quiet_NaN();
-        const Texture input = makeTexture(image, "bloom twin input");
-        GpuExposureState state;
-        state.exposure = 1.5f;
-        const Buffer exposure({.size = sizeof(state), .data = &state, .debugName = "bloom twin exposure"});
-        BloomSettings settings;
-        settings.mode = k.mode;
-        BloomPass pass;
-        pass.resize({k.width, k.height});
-        pass.execute({.scene = &input,
-                      .exposureState = &exposure,
-                      .settings = &settings,
-                      .firstDivisor = k.divisor,
-                      .mipCount = 6});
-        ASSERT_GE(pass.levels(), 3);
-        for (int level = 0; level < pass.levels(); ++level) {
-            const ImageF source = readTextureF(level == 0 ? input : pass.downsampled(level - 1));
-            const ImageF gpu = readTextureF(pass.downsampled(level));
-            const float step = level == 0 ? float(k.divisor) * 0.5f : 1.0f;
-            float worst = 0.0f;
-            for (int y = 0; y < gpu.height; ++y) {
-                for (int x = 0; x < gpu.width; ++x) {
-                    const glm::vec3 want = cpuDownsample(source, gpu.width, gpu.height, x, y, step,
-                                                         level == 0, state.exposure, settings);
-                    for (int c = 0; c < 3; ++c) {
-                        const float d = std::abs(gpu.at(x, y)[c] - want[c]) / (std::abs(want[c]) + 1e-3f);
-                        worst = std::max(worst, std::isfinite(gpu.at(x, y)[c]) ? d : 1e9f);
-                    }
+    for (const int side : {2, 4}) {
+        for (const Case& k : cases) {
+            ImageF image(k.width, k.height);
+            for (int y = 0; y < k.height; ++y) {
+                for (int x = 0; x < k.width; ++x) {
+                    float* p = image.at(x, y);
+                    const float base = 0.5f + 0.5f * std::sin(0.37f * float(x) + 0.21f * float(y * y));
+                    p[0] = base * 2.0f;
+                    p[1] = (x * 7 + y * 13) % 17 == 0 ? 40.0f : base; // fireflies for the Karis weights
+                    p[2] = (x + y) % 11 == 0 ? -0.5f : 0.25f * base;  // negatives for the box clamp
+                    p[3] = 1.0f;
                 }
             }
-            // A half float holds 11 significant bits (relative step 2^-11, about 5e-4).
-            EXPECT_LT(worst, 2e-3f) << k.width << "x" << k.height << " divisor " << k.divisor << " level "
-                                    << level << " (" << gpu.width << "x" << gpu.height << ")";
+            image.at(5, 7)[0] = std::numeric_limits<float>::quiet_NaN();
+            const Texture input = makeTexture(image, "bloom twin input");
+            GpuExposureState state;
+            state.exposure = 1.5f;
+            const Buffer exposure(
+                {.size = sizeof(state), .data = &state, .debugName = "bloom twin exposure"});
+            BloomSettings settings;
+            settings.mode = k.mode;
+            BloomPass pass;
+            pass.setBlockSide(side);
+            pass.resize({k.width, k.height});
+            pass.execute({.scene = &input,
+                          .exposureState = &exposure,
+                          .settings = &settings,
+                          .firstDivisor = k.divisor,
+                          .mipCount = 6});
+            ASSERT_GE(pass.levels(), 3);
+            for (int level = 0; level < pass.levels(); ++level) {
+                const ImageF source = readTextureF(level == 0 ? input : pass.downsampled(level - 1));
+                const ImageF gpu = readTextureF(pass.downsampled(level));
+                const float step = level == 0 ? float(k.divisor) * 0.5f : 1.0f;
+                float worst = 0.0f;
+                for (int y = 0; y < gpu.height; ++y) {
+                    for (int x = 0; x < gpu.width; ++x) {
+                        const glm::vec3 want = cpuDownsample(source, gpu.width, gpu.height, x, y, step,
+                                                             level == 0, state.exposure, settings);
+                        for (int c = 0; c < 3; ++c) {
+                            const float d = std::abs(gpu.at(x, y)[c] - want[c]) / (std::abs(want[c]) + 1e-3f);
+                            worst = std::max(worst, std::isfinite(gpu.at(x, y)[c]) ? d : 1e9f);
+                        }
+                    }
+                }
+                // A half float holds 11 significant bits (relative step 2^-11, about 5e-4).
+                EXPECT_LT(worst, 2e-3f)
+                    << k.width << "x" << k.height << " divisor " << k.divisor << " level " << level << " ("
+                    << gpu.width << "x" << gpu.height << "), blocks of " << side;
+            }
         }
     }
 }

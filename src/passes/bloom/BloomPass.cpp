@@ -1,9 +1,11 @@
 #include "passes/bloom/BloomPass.h"
 
 #include "core/Bloom.h"
+#include "gl/Capabilities.h"
 #include "passes/Bindings.h"
 
 #include <fmt/format.h>
+#include <stdexcept>
 
 namespace photopic {
 
@@ -19,14 +21,24 @@ double texelBytes(Extent e, GLenum format) {
 
 BloomPass::BloomPass()
     : mPrefilter(makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}})))
-    , mPrefilterBlocks(
-          makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {"BLOCKS", "1"}})))
     , mDownsample(makeComputeProgram(kDown, bindingDefines()))
-    , mDownsampleBlocks(makeComputeProgram(kDown, bindingDefines({{"BLOCKS", "1"}})))
     , mUpsample(makeComputeProgram(kUp, bindingDefines()))
     , mSceneSampler(Sampler::linear("bloom scene sampler"))
     , mDownsampleParameters("bloom downsample parameters")
-    , mUpsampleParameters("bloom upsample parameters") {}
+    , mUpsampleParameters("bloom upsample parameters") {
+    setBlockSide(isSoftwareRenderer() ? 4 : 2);
+}
+
+void BloomPass::setBlockSide(int side) {
+    if (side != 2 && side != 4) {
+        throw std::invalid_argument(fmt::format("bloom block side {}: 2 or 4", side));
+    }
+    const char* blocks = side == 4 ? "BLOCKS_4X4" : "BLOCKS";
+    mPrefilterBlocks =
+        makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {blocks, "1"}}));
+    mDownsampleBlocks = makeComputeProgram(kDown, bindingDefines({{blocks, "1"}}));
+    mBlockSide = side;
+}
 
 std::span<const ResourceUse> BloomPass::uses() const {
     static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
@@ -109,7 +121,8 @@ const Texture& BloomPass::execute(const Inputs& in) {
         glBindTextureUnit(0, source.id());
         glBindSampler(0, i == 0 ? mSceneSampler.id() : 0);
         glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
-        dispatchPixels(blocks ? Extent{(te.width + 1) / 2, (te.height + 1) / 2} : te);
+        const int side = mBlockSide;
+        dispatchPixels(blocks ? Extent{(te.width + side - 1) / side, (te.height + side - 1) / side} : te);
         imageWriteBarrier();
     }
     glBindSampler(0, 0);

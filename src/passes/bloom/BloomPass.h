@@ -51,6 +51,11 @@ public:
         GpuTimers* timers = nullptr;
     };
     BloomPass();
+    /// Target texels per side of an invocation's block where a level is exactly half its source: 4 (16 texels
+    /// from 61 shared taps) on a software renderer, 2 (4 texels from 25) on a GPU, where holding 61 taps at
+    /// once would cost occupancy. Tests run both.
+    void setBlockSide(int side);
+    [[nodiscard]] int blockSide() const { return mBlockSide; }
     [[nodiscard]] std::string_view name() const override { return "bloom"; }
     /// The prefilter sanitises each of its five boxes (bloom_downsample.comp.glsl).
     [[nodiscard]] bool sanitizesSceneReads() const override { return true; }
@@ -70,10 +75,11 @@ public:
 private:
     void ensureChain(int firstDivisor, int levels);
 
-    /// Level 0 (exposure, Karis average, threshold) and the later levels; `Blocks`: 2x2 target texels per
-    /// invocation sharing their taps, for a target exactly half its source.
+    /// Level 0 (exposure, Karis average, threshold) and the later levels; `Blocks`: blocks of mBlockSide x
+    /// mBlockSide target texels per invocation sharing their taps, for a target exactly half its source.
     Program mPrefilter, mPrefilterBlocks;
     Program mDownsample, mDownsampleBlocks;
+    int mBlockSide = 2;
     Program mUpsample;
     /// The prefilter's: the scene may be the host's own texture, with its own filtering.
     Sampler mSceneSampler;

@@ -14,8 +14,8 @@
 // tap texel by texel, cost about 4 and 29 ms more at 1920x1080 on llvmpipe (which runs both sides of a branch).
 // A compute pass (8x8 groups, image stores): on GPUs whose raster units are a small part of the chip a
 // full-screen triangle runs far below the memory's pace. With BLOCKS each invocation filters a 2x2 block of
-// target texels whose taps it shares: texture reads are what a CPU rasteriser pays for, and a GPU issues half
-// the texture instructions.
+// target texels whose taps it shares (BLOCKS_4X4: a 4x4 block): texture reads are what a CPU rasteriser pays
+// for, and a GPU issues half the texture instructions.
 #include "passes/common/color.h.glsl"
 #include "passes/common/invocation.h.glsl"
 #ifdef PREFILTER
@@ -91,7 +91,78 @@ vec3 downsample(vec3 a, vec3 b, vec3 c, vec3 d, vec3 e, vec3 f, vec3 g, vec3 h, 
     return color;
 }
 
-#ifdef BLOCKS
+#ifdef BLOCKS_4X4
+// Each invocation filters a 4x4 block of target texels from 61 taps (a 6x6 grid on the even offsets, a 5x5
+// on the odd ones) instead of 208: 3.8 filtered taps per target texel where 2x2 blocks take 6.25. The host
+// picks it on a software renderer, where it takes the prefilter at 1920x1080 from 10.4 to 8 ms; a GPU keeps
+// the 2x2 blocks, whose 25 taps held at once cost less occupancy. Target texel (q, r) of the block reads
+// e<q..q+2><r..r+2> and o<q..q+1><r..r+1> (x first, y growing with the texture's y).
+vec3 gridTap(vec2 origin, int i, int j) {
+    return tap(origin + uSourceStep * vec2(2 * i, 2 * j));
+}
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy) * 4;
+    vec2 uv0 = (vec2(p) + 0.5) * uTargetTexel;
+    // Even offsets -2, 0, ..., +8 source steps from the first texel's centre; odd offsets -1, +1, ..., +7.
+    vec2 e = uv0 - 2.0 * uSourceStep, o = uv0 - uSourceStep;
+    vec3 e00 = gridTap(e, 0, 0), e10 = gridTap(e, 1, 0), e20 = gridTap(e, 2, 0);
+    vec3 e30 = gridTap(e, 3, 0), e40 = gridTap(e, 4, 0), e50 = gridTap(e, 5, 0);
+    vec3 e01 = gridTap(e, 0, 1), e11 = gridTap(e, 1, 1), e21 = gridTap(e, 2, 1);
+    vec3 e31 = gridTap(e, 3, 1), e41 = gridTap(e, 4, 1), e51 = gridTap(e, 5, 1);
+    vec3 e02 = gridTap(e, 0, 2), e12 = gridTap(e, 1, 2), e22 = gridTap(e, 2, 2);
+    vec3 e32 = gridTap(e, 3, 2), e42 = gridTap(e, 4, 2), e52 = gridTap(e, 5, 2);
+    vec3 e03 = gridTap(e, 0, 3), e13 = gridTap(e, 1, 3), e23 = gridTap(e, 2, 3);
+    vec3 e33 = gridTap(e, 3, 3), e43 = gridTap(e, 4, 3), e53 = gridTap(e, 5, 3);
+    vec3 e04 = gridTap(e, 0, 4), e14 = gridTap(e, 1, 4), e24 = gridTap(e, 2, 4);
+    vec3 e34 = gridTap(e, 3, 4), e44 = gridTap(e, 4, 4), e54 = gridTap(e, 5, 4);
+    vec3 e05 = gridTap(e, 0, 5), e15 = gridTap(e, 1, 5), e25 = gridTap(e, 2, 5);
+    vec3 e35 = gridTap(e, 3, 5), e45 = gridTap(e, 4, 5), e55 = gridTap(e, 5, 5);
+    vec3 o00 = gridTap(o, 0, 0), o10 = gridTap(o, 1, 0), o20 = gridTap(o, 2, 0);
+    vec3 o30 = gridTap(o, 3, 0), o40 = gridTap(o, 4, 0);
+    vec3 o01 = gridTap(o, 0, 1), o11 = gridTap(o, 1, 1), o21 = gridTap(o, 2, 1);
+    vec3 o31 = gridTap(o, 3, 1), o41 = gridTap(o, 4, 1);
+    vec3 o02 = gridTap(o, 0, 2), o12 = gridTap(o, 1, 2), o22 = gridTap(o, 2, 2);
+    vec3 o32 = gridTap(o, 3, 2), o42 = gridTap(o, 4, 2);
+    vec3 o03 = gridTap(o, 0, 3), o13 = gridTap(o, 1, 3), o23 = gridTap(o, 2, 3);
+    vec3 o33 = gridTap(o, 3, 3), o43 = gridTap(o, 4, 3);
+    vec3 o04 = gridTap(o, 0, 4), o14 = gridTap(o, 1, 4), o24 = gridTap(o, 2, 4);
+    vec3 o34 = gridTap(o, 3, 4), o44 = gridTap(o, 4, 4);
+    // downsample()'s a, b, c are on the row two steps up (+y), k, l, m two steps down.
+    imageStore(uTarget, p + ivec2(0, 0),
+               vec4(downsample(e02, e12, e22, o01, o11, e01, e11, e21, o00, o10, e00, e10, e20), 1.0));
+    imageStore(uTarget, p + ivec2(1, 0),
+               vec4(downsample(e12, e22, e32, o11, o21, e11, e21, e31, o10, o20, e10, e20, e30), 1.0));
+    imageStore(uTarget, p + ivec2(2, 0),
+               vec4(downsample(e22, e32, e42, o21, o31, e21, e31, e41, o20, o30, e20, e30, e40), 1.0));
+    imageStore(uTarget, p + ivec2(3, 0),
+               vec4(downsample(e32, e42, e52, o31, o41, e31, e41, e51, o30, o40, e30, e40, e50), 1.0));
+    imageStore(uTarget, p + ivec2(0, 1),
+               vec4(downsample(e03, e13, e23, o02, o12, e02, e12, e22, o01, o11, e01, e11, e21), 1.0));
+    imageStore(uTarget, p + ivec2(1, 1),
+               vec4(downsample(e13, e23, e33, o12, o22, e12, e22, e32, o11, o21, e11, e21, e31), 1.0));
+    imageStore(uTarget, p + ivec2(2, 1),
+               vec4(downsample(e23, e33, e43, o22, o32, e22, e32, e42, o21, o31, e21, e31, e41), 1.0));
+    imageStore(uTarget, p + ivec2(3, 1),
+               vec4(downsample(e33, e43, e53, o32, o42, e32, e42, e52, o31, o41, e31, e41, e51), 1.0));
+    imageStore(uTarget, p + ivec2(0, 2),
+               vec4(downsample(e04, e14, e24, o03, o13, e03, e13, e23, o02, o12, e02, e12, e22), 1.0));
+    imageStore(uTarget, p + ivec2(1, 2),
+               vec4(downsample(e14, e24, e34, o13, o23, e13, e23, e33, o12, o22, e12, e22, e32), 1.0));
+    imageStore(uTarget, p + ivec2(2, 2),
+               vec4(downsample(e24, e34, e44, o23, o33, e23, e33, e43, o22, o32, e22, e32, e42), 1.0));
+    imageStore(uTarget, p + ivec2(3, 2),
+               vec4(downsample(e34, e44, e54, o33, o43, e33, e43, e53, o32, o42, e32, e42, e52), 1.0));
+    imageStore(uTarget, p + ivec2(0, 3),
+               vec4(downsample(e05, e15, e25, o04, o14, e04, e14, e24, o03, o13, e03, e13, e23), 1.0));
+    imageStore(uTarget, p + ivec2(1, 3),
+               vec4(downsample(e15, e25, e35, o14, o24, e14, e24, e34, o13, o23, e13, e23, e33), 1.0));
+    imageStore(uTarget, p + ivec2(2, 3),
+               vec4(downsample(e25, e35, e45, o24, o34, e24, e34, e44, o23, o33, e23, e33, e43), 1.0));
+    imageStore(uTarget, p + ivec2(3, 3),
+               vec4(downsample(e35, e45, e55, o34, o44, e34, e44, e54, o33, o43, e33, e43, e53), 1.0));
+}
+#elif defined(BLOCKS)
 // Each invocation filters a 2x2 block of target texels. Neighbouring target texels share taps (the corner
 // boxes of one are those of the next), so the block needs 25 taps instead of 52: a 4x4 grid on the even
 // offsets and a 3x3 grid on the odd ones. The host picks this variant only where the target is exactly half
