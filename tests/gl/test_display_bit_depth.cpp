@@ -102,8 +102,8 @@ TEST_F(GlTest, SixteenBitDisplayHoldsTheExactSrgbEncode) {
     // The shaders encode sRGB with a polynomial rather than pow() (passes/common/color.h.glsl). At 16 bits,
     // each of the ramp's 3072 greys comes back within 0.05 of a code of the exact encode past the half code
     // of rounding: an error of 7.6e-7 at most, where the polynomial's is 1.7e-7 and float arithmetic's about
-    // as much. A fit of two degrees lower (error 2.1e-6) comes within 0.04 of failing; llvmpipe's pow()
-    // moves 7 greys to the next code, the polynomial 12.
+    // as much. A fit of two degrees lower (error 2.1e-6) fails it (0.56 of a code off on one grey);
+    // llvmpipe's pow() moves 7 greys to the next code, the polynomial 12.
     Settings settings;
     settings.output.dither = false;
     const Rendered r = renderBoth(settings);
