@@ -9,6 +9,7 @@
 // is 1 (shadowed by an occluder within the distance); away = FACING is 0. Prints one line per region, "REGION
 // pixels=N mean=M", then "range=ok" or "range=bad" (every view value in [0, 1]).
 
+#include "FixtureMain.h"
 #include "io/ImageIO.h"
 
 #include <cmath>
@@ -67,14 +68,6 @@ int run(const char* viewPath, const char* contactPath, const char* facingPath) {
 } // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 4) {
-        std::fprintf(stderr, "usage: %s VIEW.exr CONTACT.exr FACING.exr\n", argv[0]);
-        return 2;
-    }
-    try {
-        return run(argv[1], argv[2], argv[3]);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return 1;
-    }
+    return photopic::test::fixtureMain(argc, argv, 3, "VIEW.exr CONTACT.exr FACING.exr",
+                                       [&] { return run(argv[1], argv[2], argv[3]); });
 }

@@ -9,6 +9,7 @@
 // truth's pixel-centre depth may belong to different surfaces). Prints "compared=N near=N far=N
 // maxError=E" (E in pixels), then "colours=ok" or "colours=bad" (G always 0, never both R and B).
 
+#include "FixtureMain.h"
 #include "core/DepthOfField.h"
 #include "io/ImageIO.h"
 
@@ -78,16 +79,7 @@ int run(char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 7) {
-        std::fprintf(
-            stderr,
-            "usage: photopic_dof_fixture VIEW.exr DEPTH.exr FNUMBER SENSOR_HEIGHT_MM FOCUS_M MAX_COC_PX\n");
-        return 2;
-    }
-    try {
-        return run(argv);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return 1;
-    }
+    return photopic::test::fixtureMain(argc, argv, 6,
+                                       "VIEW.exr DEPTH.exr FNUMBER SENSOR_HEIGHT_MM FOCUS_M MAX_COC_PX",
+                                       [&] { return run(argv); });
 }

@@ -6,6 +6,7 @@
 // scaled to 255; printed: maxdiff and meandiff, the largest and the mean absolute difference from the PNG's
 // stored bytes in code values, over every colour channel of every pixel.
 
+#include "FixtureMain.h"
 #include "core/Color.h"
 #include "io/ImageIO.h"
 
@@ -44,14 +45,6 @@ int run(const char* scenePath, const char* displayPath) {
 } // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 3) {
-        std::fprintf(stderr, "usage: %s SCENE.exr DISPLAY.png\n", argv[0]);
-        return 2;
-    }
-    try {
-        return run(argv[1], argv[2]);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return 1;
-    }
+    return photopic::test::fixtureMain(argc, argv, 2, "SCENE.exr DISPLAY.png",
+                                       [&] { return run(argv[1], argv[2]); });
 }

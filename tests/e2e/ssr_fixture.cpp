@@ -9,6 +9,7 @@
 // with a confidence above 0; within10: the fraction of covered pixels whose luminance is within 10% of the
 // truth's; then "range=ok" or "range=bad" (every value finite, confidences in [0, 1]).
 
+#include "FixtureMain.h"
 #include "io/ImageIO.h"
 
 #include <cmath>
@@ -65,14 +66,6 @@ int run(const char* viewPath, const char* truthPath, const char* idPath) {
 } // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 4) {
-        std::fprintf(stderr, "usage: %s VIEW.exr REFLECTION.exr OBJECTID.exr\n", argv[0]);
-        return 2;
-    }
-    try {
-        return run(argv[1], argv[2], argv[3]);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return 1;
-    }
+    return photopic::test::fixtureMain(argc, argv, 3, "VIEW.exr REFLECTION.exr OBJECTID.exr",
+                                       [&] { return run(argv[1], argv[2], argv[3]); });
 }

@@ -13,6 +13,7 @@
 //             bloom
 //   peak      the brightest input pixel (x, y) and its luminance
 
+#include "FixtureMain.h"
 #include "core/Color.h"
 #include "io/ImageIO.h"
 
@@ -84,14 +85,6 @@ int run(const char* onPath, const char* offPath, const char* inputPath) {
 } // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 4) {
-        std::fprintf(stderr, "usage: %s ON.png OFF.png INPUT.exr\n", argv[0]);
-        return 2;
-    }
-    try {
-        return run(argv[1], argv[2], argv[3]);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return 1;
-    }
+    return photopic::test::fixtureMain(argc, argv, 3, "ON.png OFF.png INPUT.exr",
+                                       [&] { return run(argv[1], argv[2], argv[3]); });
 }

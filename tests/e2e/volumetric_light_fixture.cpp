@@ -10,6 +10,7 @@
 // peakdist: pixels from the sun to the view's brightest pixel; then "range=ok" or "range=bad" (every value
 // finite and not negative).
 
+#include "FixtureMain.h"
 #include "io/ImageIO.h"
 
 #include <algorithm>
@@ -87,14 +88,6 @@ int run(const char* viewPath, const char* scenePath) {
 } // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 3) {
-        std::fprintf(stderr, "usage: %s VIEW.exr SCENE.exr\n", argv[0]);
-        return 2;
-    }
-    try {
-        return run(argv[1], argv[2]);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return 1;
-    }
+    return photopic::test::fixtureMain(argc, argv, 2, "VIEW.exr SCENE.exr",
+                                       [&] { return run(argv[1], argv[2]); });
 }
