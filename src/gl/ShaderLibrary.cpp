@@ -1,9 +1,12 @@
 #include "gl/ShaderLibrary.h"
 
+#include "gl/Capabilities.h"
+
 #include <fmt/format.h>
 
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 namespace photopic {
 
@@ -154,8 +157,35 @@ void setUniform(const Program& p, const char* name, float x, float y, float z, f
 }
 
 void dispatchPixels(Extent extent) noexcept {
-    glDispatchCompute(GLuint((extent.width + kPixelGroupSize - 1) / kPixelGroupSize),
-                      GLuint((extent.height + kPixelGroupSize - 1) / kPixelGroupSize), 1);
+    dispatchPixels(extent, kPixelGroupSquare);
+}
+
+namespace {
+std::optional<PixelGroup> gForcedPixelGroup;
+} // namespace
+
+PixelGroup pixelGroup() {
+    if (gForcedPixelGroup) {
+        return *gForcedPixelGroup;
+    }
+    return isSoftwareRenderer() ? kPixelGroupRow : kPixelGroupSquare;
+}
+
+void forcePixelGroup(std::optional<PixelGroup> group) {
+    if (group && *group != kPixelGroupSquare && *group != kPixelGroupRow) {
+        throw std::invalid_argument(
+            fmt::format("pixel group {}x{}: 8x8 or 64x1", group->width, group->height));
+    }
+    gForcedPixelGroup = group;
+}
+
+ShaderDefines pixelGroupDefines(PixelGroup group) {
+    return group == kPixelGroupRow ? ShaderDefines{{"PIXEL_GROUP_ROW", "1"}} : ShaderDefines{};
+}
+
+void dispatchPixels(Extent extent, PixelGroup group) noexcept {
+    glDispatchCompute(GLuint((extent.width + group.width - 1) / group.width),
+                      GLuint((extent.height + group.height - 1) / group.height), 1);
 }
 
 void imageWriteBarrier() noexcept {

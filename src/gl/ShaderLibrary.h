@@ -6,6 +6,7 @@
 #include "gl/Objects.h"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -31,6 +32,26 @@ Program makeGraphicsProgram(std::string_view vertexName, std::string_view fragme
 /// return early outside the image).
 inline constexpr int kPixelGroupSize = 8;
 void dispatchPixels(Extent extent) noexcept;
+
+/// The invocation shape of the pixel passes that let the host choose it (the bloom chain and the tone-map
+/// pass, through passes/common/pixel_group.h.glsl): 8x8 on a GPU, a row of 64 on a software renderer, which
+/// runs eight lanes along x and took the default chain to 0.93-0.96 of its 8x8 time that way
+/// (docs/architecture.md). Results do not depend on the shape.
+struct PixelGroup {
+    int width = 8;
+    int height = 8;
+    friend bool operator==(PixelGroup, PixelGroup) = default;
+};
+inline constexpr PixelGroup kPixelGroupSquare{8, 8};
+inline constexpr PixelGroup kPixelGroupRow{64, 1};
+/// The shape for passes built now: by the current context's renderer, unless a test forced one.
+PixelGroup pixelGroup();
+/// Tests: the shape pixelGroup() gives from now on; nullopt: by the renderer again.
+void forcePixelGroup(std::optional<PixelGroup> group);
+/// The #defines that select `group` in passes/common/pixel_group.h.glsl (8x8 or 64x1).
+ShaderDefines pixelGroupDefines(PixelGroup group);
+/// Groups of `group` covering `extent`, one invocation per element.
+void dispatchPixels(Extent extent, PixelGroup group) noexcept;
 /// After a pass's image stores: whatever reads the image next (a sampler, an image load, a blit, a readback
 /// or a copy) sees the stores.
 void imageWriteBarrier() noexcept;

@@ -6,6 +6,7 @@
 #include "core/Bloom.h"
 #include "core/Color.h"
 #include "core/ColorGrading.h"
+#include "gl/ShaderLibrary.h"
 #include "gl/TextureIo.h"
 #include "passes/Bindings.h"
 #include "passes/bloom/BloomPass.h"
@@ -14,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 namespace photopic::test {
 
@@ -182,6 +185,67 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
                     << gpu.width << "x" << gpu.height << "), blocks of " << side;
             }
         }
+    }
+}
+
+// The bloom chain and the tone-map pass take their invocation shape from pixelGroup(): rows of 64 on a
+// software renderer, 8x8 on a GPU. Results must not depend on it: with either shape forced, every bloom level
+// (both block sizes) and the display image, dithered, are the same to the bit, on a size whose levels halve
+// exactly and on an odd one.
+TEST_F(GlTest, PixelGroupShapesGiveTheSameBloomAndDisplay) {
+    struct ByRendererAgain { // the tests after this one get the renderer's shape, even after a failure here
+        ~ByRendererAgain() { forcePixelGroup(std::nullopt); }
+    } restore;
+    for (const Extent size : {Extent{128, 64}, Extent{97, 61}}) {
+        ImageF image(size.width, size.height);
+        for (int y = 0; y < size.height; ++y) {
+            for (int x = 0; x < size.width; ++x) {
+                float* p = image.at(x, y);
+                const float base = 0.5f + 0.5f * std::sin(0.37f * float(x) + 0.21f * float(y * y));
+                p[0] = base * 3.0f;
+                p[1] = (x * 7 + y * 13) % 17 == 0 ? 40.0f : base;
+                p[2] = 0.25f * base;
+                p[3] = 1.0f;
+            }
+        }
+        const Texture input = makeTexture(image, "pixel group input");
+        GpuExposureState state;
+        state.exposure = 1.5f;
+        const Buffer exposure({.size = sizeof(state), .data = &state, .debugName = "pixel group exposure"});
+        const BloomSettings settings;
+        std::vector<std::vector<ImageF>> levels;
+        std::vector<Image8> displays;
+        for (const PixelGroup group : {kPixelGroupSquare, kPixelGroupRow}) {
+            forcePixelGroup(group);
+            for (const int side : {2, 4}) {
+                BloomPass pass;
+                ASSERT_EQ(pass.group(), group);
+                pass.setBlockSide(side);
+                pass.resize(size);
+                const Texture& bloom =
+                    pass.execute({.scene = &input, .exposureState = &exposure, .settings = &settings});
+                std::vector<ImageF> read;
+                for (int level = 0; level < pass.levels(); ++level) {
+                    read.push_back(readTextureF(pass.downsampled(level)));
+                }
+                read.push_back(readTextureF(bloom));
+                levels.push_back(std::move(read));
+            }
+            Pipeline pipeline({.settings = Settings{}});
+            displays.push_back(processImage(pipeline, image));
+        }
+        // levels: square 2, square 4, row 2, row 4.
+        for (int side = 0; side < 2; ++side) {
+            const auto& square = levels[std::size_t(side)];
+            const auto& row = levels[std::size_t(2 + side)];
+            ASSERT_EQ(square.size(), row.size());
+            for (std::size_t level = 0; level < square.size(); ++level) {
+                EXPECT_EQ(square[level].rgba, row[level].rgba)
+                    << size.width << "x" << size.height << ", blocks of " << (side == 0 ? 2 : 4) << ", "
+                    << (level + 1 == square.size() ? "bloom result" : "level " + std::to_string(level));
+            }
+        }
+        EXPECT_EQ(displays[0].rgba, displays[1].rgba) << size.width << "x" << size.height << " display image";
     }
 }
 

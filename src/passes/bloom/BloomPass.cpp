@@ -19,10 +19,21 @@ double texelBytes(Extent e, GLenum format) {
 }
 } // namespace
 
+namespace {
+/// `defines` with the pixel group's.
+ShaderDefines withGroup(ShaderDefines defines, PixelGroup group) {
+    for (auto& define : pixelGroupDefines(group)) {
+        defines.push_back(std::move(define));
+    }
+    return bindingDefines(defines);
+}
+} // namespace
+
 BloomPass::BloomPass()
-    : mPrefilter(makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}})))
-    , mDownsample(makeComputeProgram(kDown, bindingDefines()))
-    , mUpsample(makeComputeProgram(kUp, bindingDefines()))
+    : mGroup(pixelGroup())
+    , mPrefilter(makeComputeProgram(kDown, withGroup({{"PREFILTER", "1"}, {"KARIS", "1"}}, mGroup)))
+    , mDownsample(makeComputeProgram(kDown, withGroup({}, mGroup)))
+    , mUpsample(makeComputeProgram(kUp, withGroup({}, mGroup)))
     , mSceneSampler(Sampler::linear("bloom scene sampler"))
     , mDownsampleParameters("bloom downsample parameters")
     , mUpsampleParameters("bloom upsample parameters") {
@@ -35,8 +46,8 @@ void BloomPass::setBlockSide(int side) {
     }
     const char* blocks = side == 4 ? "BLOCKS_4X4" : "BLOCKS";
     mPrefilterBlocks =
-        makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {blocks, "1"}}));
-    mDownsampleBlocks = makeComputeProgram(kDown, bindingDefines({{blocks, "1"}}));
+        makeComputeProgram(kDown, withGroup({{"PREFILTER", "1"}, {"KARIS", "1"}, {blocks, "1"}}, mGroup));
+    mDownsampleBlocks = makeComputeProgram(kDown, withGroup({{blocks, "1"}}, mGroup));
     mBlockSide = side;
 }
 
@@ -122,7 +133,8 @@ const Texture& BloomPass::execute(const Inputs& in) {
         glBindSampler(0, i == 0 ? mSceneSampler.id() : 0);
         glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
         const int side = mBlockSide;
-        dispatchPixels(blocks ? Extent{(te.width + side - 1) / side, (te.height + side - 1) / side} : te);
+        dispatchPixels(blocks ? Extent{(te.width + side - 1) / side, (te.height + side - 1) / side} : te,
+                       mGroup);
         imageWriteBarrier();
     }
     glBindSampler(0, 0);
@@ -142,7 +154,7 @@ const Texture& BloomPass::execute(const Inputs& in) {
         glBindTextureUnit(0, coarse.id());
         glBindTextureUnit(1, fine.id());
         glBindImageTexture(0, mUp[std::size_t(i)].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
-        dispatchPixels(te);
+        dispatchPixels(te, mGroup);
         imageWriteBarrier();
     }
     return levels == 1 ? mDown[0] : mUp[0];

@@ -5,6 +5,7 @@
 // threshold add).
 
 #include "core/settings/BloomSettings.h"
+#include "gl/ShaderLibrary.h"
 #include "passes/FramePass.h"
 
 #include <cstddef>
@@ -56,6 +57,8 @@ public:
     /// once would cost occupancy. Tests run both.
     void setBlockSide(int side);
     [[nodiscard]] int blockSide() const { return mBlockSide; }
+    /// The invocation shape the programs were built with (pixelGroup() when the pass was made).
+    [[nodiscard]] PixelGroup group() const { return mGroup; }
     [[nodiscard]] std::string_view name() const override { return "bloom"; }
     /// The prefilter sanitises each of its five boxes (bloom_downsample.comp.glsl).
     [[nodiscard]] bool sanitizesSceneReads() const override { return true; }
@@ -75,6 +78,7 @@ public:
 private:
     void ensureChain(int firstDivisor, int levels);
 
+    PixelGroup mGroup; ///< the invocation shape of every program here (gl/ShaderLibrary.h pixelGroup)
     /// Level 0 (exposure, Karis average, threshold) and the later levels; `Blocks`: blocks of mBlockSide x
     /// mBlockSide target texels per invocation sharing their taps, for a target exactly half its source.
     Program mPrefilter, mPrefilterBlocks;

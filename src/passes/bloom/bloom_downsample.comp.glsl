@@ -12,10 +12,10 @@
 // a 32-bit colour is no longer rounded to half first), and a box holding a NaN or an infinity counts as 0, a
 // negative texel is clamped with its box instead of alone. Sanitising each tap, or re-reading a non-finite
 // tap texel by texel, cost about 4 and 29 ms more at 1920x1080 on llvmpipe (which runs both sides of a branch).
-// A compute pass (8x8 groups, image stores): on GPUs whose raster units are a small part of the chip a
-// full-screen triangle runs far below the memory's pace. With BLOCKS each invocation filters a 2x2 block of
-// target texels whose taps it shares (BLOCKS_4X4: a 4x4 block): texture reads are what a CPU rasteriser pays
-// for, and a GPU issues half the texture instructions.
+// A compute pass (8x8 groups, rows of 64 on a software renderer; image stores): on GPUs whose raster units
+// are a small part of the chip a full-screen triangle runs far below the memory's pace. With BLOCKS each
+// invocation filters a 2x2 block of target texels whose taps it shares (BLOCKS_4X4: a 4x4 block): texture
+// reads are what a CPU rasteriser pays for, and a GPU issues half the texture instructions.
 #include "passes/common/color.h.glsl"
 #include "passes/common/invocation.h.glsl"
 #ifdef PREFILTER
@@ -23,7 +23,7 @@
 #include "passes/common/sanitize.h.glsl"
 #endif
 
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "passes/common/pixel_group.h.glsl"
 
 layout(binding = 0) uniform sampler2D uSource;
 layout(binding = 0, rgba16f) uniform writeonly image2D uTarget;

@@ -4,10 +4,10 @@
 // blurred once more per step up and the sum approximates a wide, smooth kernel. Mixing (instead of adding)
 // keeps the weights of all levels summing to 1 (core/Bloom.h bloomLevelWeight), so bloom moves energy
 // around without adding any: what `energy-conserving` needs and what keeps `threshold` mode predictable.
-// A compute pass (8x8 groups, image store), as the downsample.
+// A compute pass (8x8 groups, rows of 64 on a software renderer; image store), as the downsample.
 #include "passes/common/invocation.h.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "passes/common/pixel_group.h.glsl"
 
 layout(binding = 0) uniform sampler2D uCoarse; // result of level i + 1 (or the smallest downsampled level)
 layout(binding = 1) uniform sampler2D uFine;   // downsampled level i

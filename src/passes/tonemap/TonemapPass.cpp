@@ -23,7 +23,8 @@ std::uint32_t pcgHash(std::uint32_t v) {
 
 TonemapPass::TonemapPass(const Capabilities& caps)
     : mParameters("tonemap parameters")
-    , mCaps(caps) {}
+    , mCaps(caps)
+    , mGroup(pixelGroup()) {}
 
 std::span<const ResourceUse> TonemapPass::uses() const {
     static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
@@ -57,6 +58,9 @@ const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool
         }
         if (scene) {
             defines.emplace_back("OUTPUT_SCENE", "1");
+        }
+        for (auto& define : pixelGroupDefines(mGroup)) {
+            defines.push_back(std::move(define));
         }
         it = mPrograms.emplace(key, makeComputeProgram(kCompute, bindingDefines(defines))).first;
     }
@@ -127,7 +131,7 @@ void TonemapPass::dispatch(const Program& program, const Inputs& in, const Textu
     glBindTextureUnit(0, in.scene->id());
     bindExposureStateForReading(*in.exposureState);
     glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, target.format());
-    dispatchPixels(extent);
+    dispatchPixels(extent, mGroup);
     imageWriteBarrier();
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/Settings.h"
+#include "gl/ShaderLibrary.h"
 #include "passes/FramePass.h"
 
 #include <cstddef>
@@ -86,6 +87,7 @@ private:
     std::map<int, Program> mPrograms; ///< by variant key (see variant())
     ParameterBlock<TonemapParameters> mParameters;
     const Capabilities& mCaps;
+    PixelGroup mGroup; ///< the programs' invocation shape (gl/ShaderLibrary.h pixelGroup)
     Texture mScene;
 };
 
