@@ -118,6 +118,24 @@ glm::vec3 cpuDownsample(const ImageF& source, int width, int height, int x, int 
     return color;
 }
 
+/// A wavy field with fireflies (for the Karis weights), negative blue values (for the box clamp) and a NaN at
+/// (5, 7): what the prefilter must handle.
+ImageF fireflyField(int width, int height) {
+    ImageF image(width, height);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            float* p = image.at(x, y);
+            const float base = 0.5f + 0.5f * std::sin(0.37f * float(x) + 0.21f * float(y * y));
+            p[0] = base * 2.0f;
+            p[1] = (x * 7 + y * 13) % 17 == 0 ? 40.0f : base;
+            p[2] = (x + y) % 11 == 0 ? -0.5f : 0.25f * base;
+            p[3] = 1.0f;
+        }
+    }
+    image.at(5, 7)[0] = std::numeric_limits<float>::quiet_NaN();
+    return image;
+}
+
 } // namespace
 
 // Every downsampled level against the CPU filter, on sizes whose levels halve exactly (2x2 and 4x4 blocks
@@ -136,18 +154,7 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
                           {61, 37, 2, BloomMode::EnergyConserving}};
     for (const int side : {2, 4}) {
         for (const Case& k : cases) {
-            ImageF image(k.width, k.height);
-            for (int y = 0; y < k.height; ++y) {
-                for (int x = 0; x < k.width; ++x) {
-                    float* p = image.at(x, y);
-                    const float base = 0.5f + 0.5f * std::sin(0.37f * float(x) + 0.21f * float(y * y));
-                    p[0] = base * 2.0f;
-                    p[1] = (x * 7 + y * 13) % 17 == 0 ? 40.0f : base; // fireflies for the Karis weights
-                    p[2] = (x + y) % 11 == 0 ? -0.5f : 0.25f * base;  // negatives for the box clamp
-                    p[3] = 1.0f;
-                }
-            }
-            image.at(5, 7)[0] = std::numeric_limits<float>::quiet_NaN();
+            const ImageF image = fireflyField(k.width, k.height);
             const Texture input = makeTexture(image, "bloom twin input");
             GpuExposureState state;
             state.exposure = 1.5f;
@@ -197,17 +204,7 @@ TEST_F(GlTest, PixelGroupShapesGiveTheSameBloomAndDisplay) {
         ~ByRendererAgain() { forcePixelGroup(std::nullopt); }
     } restore;
     for (const Extent size : {Extent{128, 64}, Extent{97, 61}}) {
-        ImageF image(size.width, size.height);
-        for (int y = 0; y < size.height; ++y) {
-            for (int x = 0; x < size.width; ++x) {
-                float* p = image.at(x, y);
-                const float base = 0.5f + 0.5f * std::sin(0.37f * float(x) + 0.21f * float(y * y));
-                p[0] = base * 3.0f;
-                p[1] = (x * 7 + y * 13) % 17 == 0 ? 40.0f : base;
-                p[2] = 0.25f * base;
-                p[3] = 1.0f;
-            }
-        }
+        const ImageF image = fireflyField(size.width, size.height);
         const Texture input = makeTexture(image, "pixel group input");
         GpuExposureState state;
         state.exposure = 1.5f;
