@@ -179,8 +179,11 @@ void forcePixelGroup(std::optional<PixelGroup> group) {
     gForcedPixelGroup = group;
 }
 
-ShaderDefines pixelGroupDefines(PixelGroup group) {
-    return group == kPixelGroupRow ? ShaderDefines{{"PIXEL_GROUP_ROW", "1"}} : ShaderDefines{};
+ShaderDefines withPixelGroup(ShaderDefines defines, PixelGroup group) {
+    if (group == kPixelGroupRow) {
+        defines.emplace_back("PIXEL_GROUP_ROW", "1");
+    }
+    return defines;
 }
 
 void dispatchPixels(Extent extent, PixelGroup group) noexcept {

@@ -42,14 +42,14 @@ struct PixelGroup {
     int height = 8;
     friend bool operator==(PixelGroup, PixelGroup) = default;
 };
-inline constexpr PixelGroup kPixelGroupSquare{8, 8};
+inline constexpr PixelGroup kPixelGroupSquare{kPixelGroupSize, kPixelGroupSize};
 inline constexpr PixelGroup kPixelGroupRow{64, 1};
 /// The shape for passes built now: by the current context's renderer, unless a test forced one.
 PixelGroup pixelGroup();
 /// Tests: the shape pixelGroup() gives from now on; nullopt: by the renderer again.
 void forcePixelGroup(std::optional<PixelGroup> group);
-/// The #defines that select `group` in passes/common/pixel_group.h.glsl (8x8 or 64x1).
-ShaderDefines pixelGroupDefines(PixelGroup group);
+/// `defines` with those that select `group` in passes/common/pixel_group.h.glsl (8x8 or 64x1).
+ShaderDefines withPixelGroup(ShaderDefines defines, PixelGroup group);
 /// Groups of `group` covering `extent`, one invocation per element.
 void dispatchPixels(Extent extent, PixelGroup group) noexcept;
 /// After a pass's image stores: whatever reads the image next (a sampler, an image load, a blit, a readback

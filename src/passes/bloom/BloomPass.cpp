@@ -17,23 +17,18 @@ constexpr GLenum kFormat = GL_RGBA16F;
 double texelBytes(Extent e, GLenum format) {
     return double(e.width) * double(e.height) * bytesPerTexel(format);
 }
-} // namespace
 
-namespace {
-/// `defines` with the pixel group's.
-ShaderDefines withGroup(ShaderDefines defines, PixelGroup group) {
-    for (auto& define : pixelGroupDefines(group)) {
-        defines.push_back(std::move(define));
-    }
-    return bindingDefines(defines);
+/// The binding #defines and `defines` for a program of the invocation shape `group`.
+ShaderDefines programDefines(ShaderDefines defines, PixelGroup group) {
+    return bindingDefines(withPixelGroup(std::move(defines), group));
 }
 } // namespace
 
 BloomPass::BloomPass()
     : mGroup(pixelGroup())
-    , mPrefilter(makeComputeProgram(kDown, withGroup({{"PREFILTER", "1"}, {"KARIS", "1"}}, mGroup)))
-    , mDownsample(makeComputeProgram(kDown, withGroup({}, mGroup)))
-    , mUpsample(makeComputeProgram(kUp, withGroup({}, mGroup)))
+    , mPrefilter(makeComputeProgram(kDown, programDefines({{"PREFILTER", "1"}, {"KARIS", "1"}}, mGroup)))
+    , mDownsample(makeComputeProgram(kDown, programDefines({}, mGroup)))
+    , mUpsample(makeComputeProgram(kUp, programDefines({}, mGroup)))
     , mSceneSampler(Sampler::linear("bloom scene sampler"))
     , mDownsampleParameters("bloom downsample parameters")
     , mUpsampleParameters("bloom upsample parameters") {
@@ -45,9 +40,9 @@ void BloomPass::setBlockSide(int side) {
         throw std::invalid_argument(fmt::format("bloom block side {}: 2 or 4", side));
     }
     const char* blocks = side == 4 ? "BLOCKS_4X4" : "BLOCKS";
-    mPrefilterBlocks =
-        makeComputeProgram(kDown, withGroup({{"PREFILTER", "1"}, {"KARIS", "1"}, {blocks, "1"}}, mGroup));
-    mDownsampleBlocks = makeComputeProgram(kDown, withGroup({{blocks, "1"}}, mGroup));
+    mPrefilterBlocks = makeComputeProgram(
+        kDown, programDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {blocks, "1"}}, mGroup));
+    mDownsampleBlocks = makeComputeProgram(kDown, programDefines({{blocks, "1"}}, mGroup));
     mBlockSide = side;
 }
 

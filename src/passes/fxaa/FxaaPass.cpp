@@ -39,9 +39,8 @@ void FxaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     mProgram.at(bitDepth).use();
     glBindTextureUnit(0, display.id());
     glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-    glDispatchCompute(GLuint((e.width + 7) / 8), GLuint((e.height + 7) / 8), 1);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                    GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
+    dispatchPixels(e);
+    imageWriteBarrier();
     resources.bind(Resource::DisplayColor, out.texture());
 }
 

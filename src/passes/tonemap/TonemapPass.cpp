@@ -59,9 +59,7 @@ const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool
         if (scene) {
             defines.emplace_back("OUTPUT_SCENE", "1");
         }
-        for (auto& define : pixelGroupDefines(mGroup)) {
-            defines.push_back(std::move(define));
-        }
+        defines = withPixelGroup(std::move(defines), mGroup);
         it = mPrograms.emplace(key, makeComputeProgram(kCompute, bindingDefines(defines))).first;
     }
     return it->second;
