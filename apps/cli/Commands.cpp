@@ -598,6 +598,57 @@ void dropUnavailableAa(Settings& settings, std::size_t inputCount) {
                    : fmt::format("{} runs", antiAliasingNames()[std::size_t(now)]));
 }
 
+/// Where a sequence run's main thread spends each frame, printed at the debug level (-v) once the run ends:
+/// the medians tell a user (and the CLI's throughput work) whether decode, the GPU, the read-back or the PNG
+/// encode bounds the rate.
+class StageClock {
+public:
+    enum Stage { DecodeWait, Upload, Process, ReadBack, WriteWait, kStages };
+
+    StageClock()
+        : mLast(std::chrono::steady_clock::now())
+        , mBegin(mLast) {}
+
+    /// Charges the time since the last mark to `stage`.
+    void mark(Stage stage) {
+        const auto now = std::chrono::steady_clock::now();
+        mSamples[stage].push_back(std::chrono::duration<double, std::milli>(now - mLast).count());
+        mLast = now;
+    }
+
+    /// Restarts the clock without charging anything (the set-up before the first frame).
+    void restart(const char* what) {
+        const auto now = std::chrono::steady_clock::now();
+        logDebug("image: {} {:.1f} ms", what, std::chrono::duration<double, std::milli>(now - mLast).count());
+        mLast = now;
+        mBegin = now;
+    }
+
+    void report(std::size_t frames) const {
+        static constexpr const char* kNames[kStages] = {"waiting for decode", "upload", "process",
+                                                        "read-back", "waiting for encode"};
+        std::string line;
+        for (int s = 0; s < kStages; ++s) {
+            std::vector<double> v = mSamples[s];
+            if (v.empty()) {
+                continue;
+            }
+            std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+            line += fmt::format("{}{} {:.2f}", line.empty() ? "" : ", ", kNames[s], v[v.size() / 2]);
+        }
+        const double total =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mBegin).count();
+        logDebug("image: {} frames in {:.1f} ms ({:.2f} ms a frame, the last encodes included); medians per "
+                 "frame, ms: {}",
+                 frames, total, frames > 0 ? total / double(frames) : 0.0, line);
+    }
+
+private:
+    std::chrono::steady_clock::time_point mLast;
+    std::chrono::steady_clock::time_point mBegin;
+    std::vector<double> mSamples[kStages];
+};
+
 } // namespace
 
 int runImage(const ImageOptions& options) {
@@ -638,8 +689,10 @@ int runImage(const ImageOptions& options) {
     InputDecoder decoder(options.camera.empty() ? std::nullopt
                                                 : std::optional<CameraJson>(loadCameraJson(options.camera)),
                          options.jitter == "halton" ? settings.temporal.jitterCycle : 0, options.maxPixels);
+    StageClock clock;
     FrameReader reader(decoder, inputs, inFlight > 1);
     const DecodedFrame& first = reader.next(); // a bad first input fails before a GL context is made
+    clock.restart("first decode");
 
     HeadlessContext context;
     requireTextureFits(inputs.front(), first.color.width, first.color.height); // before any GL object
@@ -652,8 +705,10 @@ int runImage(const ImageOptions& options) {
     Progress progress("image", inputs.size());
     FrameWriter writer(outputs, pendingWrites(inFlight),
                        {.bitDepth = settings.output.bitDepth, .jpegQuality = options.jpegQuality});
+    clock.restart("GL context and pipeline");
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         const DecodedFrame& frame = reader.next();
+        clock.mark(StageClock::DecodeWait);
         const auto start = std::chrono::steady_clock::now();
         const int width = frame.color.width;
         const int height = frame.color.height;
@@ -677,17 +732,22 @@ int runImage(const ImageOptions& options) {
             outputs.wrote(writeAux(options.writeAux, inputs[i], frame));
         }
         reader.release(); // uploaded: the next frame decodes into its storage while this one is processed
+        clock.mark(StageClock::Upload);
         const Texture& display = pipeline->execute(frameInputs, time);
+        clock.mark(StageClock::Process);
         const fs::path& out = outPaths[i];
         FrameImage image = writer.storage();
         readBack(*pipeline, display, out, settings.output.bitDepth, ocio ? &*ocio : nullptr, image);
         if (telemetry) {
             telemetry->take(*pipeline, i, i + 1 == inputs.size());
         }
+        clock.mark(StageClock::ReadBack);
         writer.write(out, std::move(image),
                      writtenLine(inputs[i], out, {width, height}, start, progress, console));
+        clock.mark(StageClock::WriteWait);
     }
     writer.finish();
+    clock.report(inputs.size());
     progress.clear();
     if (telemetry) {
         telemetry->commit(inputs.size(), pipeline->droppedTelemetry());
