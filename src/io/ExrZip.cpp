@@ -12,8 +12,9 @@
 // plus 128 (modulo 256; the first byte kept). A chunk whose deflated size would not be smaller is stored raw.
 #include "io/ExrDetail.h"
 
+#include "core/HalfFloat.h"
+
 #include <IlmThreadPool.h>
-#include <Imath/half.h>
 #include <ImfChannelList.h>
 #include <libdeflate.h>
 #include <openexr.h>
@@ -93,6 +94,7 @@ struct ZipState {
 
     libdeflate_decompressor* inflater;
     std::vector<std::uint8_t> inflated;
+    std::vector<float> floats; ///< a line's runs widened to float, four channels' worth
 };
 
 /// The pipeline's decompress step for ZIP and ZIPS chunks (decoding_user_data: the thread's ZipState).
@@ -120,12 +122,104 @@ exr_result_t inflateZipChunk(exr_decode_pipeline_t* decode) {
     return EXR_ERR_SUCCESS;
 }
 
+/// A line's run of one channel as floats, in the thread's scratch: half runs widened, float runs copied (a
+/// run may start at any byte offset).
+const float* lineFloats(const exr_coding_channel_info_t& channel, const std::uint8_t* source,
+                        float* scratch) noexcept {
+    const std::size_t width = std::size_t(channel.width);
+    if (channel.bytes_per_element == 4) {
+        std::memcpy(scratch, source, width * sizeof(float));
+        return scratch;
+    }
+    if (reinterpret_cast<std::uintptr_t>(source) % alignof(std::uint16_t) == 0) {
+        halfToFloat(reinterpret_cast<const std::uint16_t*>(source), scratch, width);
+        return scratch;
+    }
+    std::uint16_t halves[256];
+    for (std::size_t x = 0; x < width; x += 256) {
+        const std::size_t n = std::min<std::size_t>(256, width - x);
+        std::memcpy(halves, source + 2 * x, n * 2);
+        halfToFloat(halves, scratch + x, n);
+    }
+    return scratch;
+}
+
+/// The float each of four channels fills in a 16-byte pixel, when the four fill one pixel between them (a
+/// renderer's A, B, G, R into RGBA): lane[c] for channel c, and the pixel at `base`. Else base is null.
+struct FourLanes {
+    std::uint8_t* base = nullptr;
+    int lane[4] = {};
+};
+
+FourLanes fourLanes(const exr_decode_pipeline_t& decode) noexcept {
+    FourLanes four;
+    if (decode.channel_count != 4)
+        return four;
+    std::uint8_t* base = nullptr;
+    for (int c = 0; c < 4; ++c) {
+        const exr_coding_channel_info_t& channel = decode.channels[c];
+        if (channel.decode_to_ptr == nullptr || channel.user_pixel_stride != 16 ||
+            channel.user_line_stride != decode.channels[0].user_line_stride)
+            return four;
+        if (base == nullptr || channel.decode_to_ptr < base)
+            base = channel.decode_to_ptr;
+    }
+    unsigned lanesSeen = 0;
+    for (int c = 0; c < 4; ++c) {
+        const std::ptrdiff_t offset = decode.channels[c].decode_to_ptr - base;
+        if (offset % 4 != 0 || offset > 12 || (lanesSeen & (1u << (offset / 4))) != 0)
+            return four;
+        lanesSeen |= 1u << (offset / 4);
+        four.lane[c] = int(offset / 4);
+    }
+    four.base = base;
+    return four;
+}
+
+/// Interleaves four runs of `width` floats into RGBA pixels, run c into float lane[c] of each pixel.
+void interleaveFour(const float* const runs[4], const int lane[4], std::uint8_t* out,
+                    std::size_t width) noexcept {
+    const float* byLane[4];
+    for (int c = 0; c < 4; ++c)
+        byLane[lane[c]] = runs[c];
+    std::size_t x = 0;
+#if defined(__SSE2__)
+    const bool streaming = reinterpret_cast<std::uintptr_t>(out) % 16 == 0;
+    for (; x + 4 <= width; x += 4) {
+        __m128 r = _mm_loadu_ps(byLane[0] + x);
+        __m128 g = _mm_loadu_ps(byLane[1] + x);
+        __m128 b = _mm_loadu_ps(byLane[2] + x);
+        __m128 a = _mm_loadu_ps(byLane[3] + x);
+        _MM_TRANSPOSE4_PS(r, g, b, a);
+        auto* pixel = reinterpret_cast<float*>(out + 16 * x);
+        if (streaming) {
+            _mm_stream_ps(pixel, r);
+            _mm_stream_ps(pixel + 4, g);
+            _mm_stream_ps(pixel + 8, b);
+            _mm_stream_ps(pixel + 12, a);
+        } else {
+            _mm_storeu_ps(pixel, r);
+            _mm_storeu_ps(pixel + 4, g);
+            _mm_storeu_ps(pixel + 8, b);
+            _mm_storeu_ps(pixel + 12, a);
+        }
+    }
+#endif
+    for (; x < width; ++x) {
+        const float pixel[4] = {byLane[0][x], byLane[1][x], byLane[2][x], byLane[3][x]};
+        std::memcpy(out + 16 * x, pixel, sizeof(pixel));
+    }
+}
+
 /// The pipeline's unpack step: each line of the chunk holds every channel's run of values in the part's
-/// channel order (no subsampling here), little-endian; a channel with a destination is converted to float as
-/// Imf::InputFile converts it (Imath's half), the others are stepped over.
+/// channel order (no subsampling here), little-endian; a channel with a destination is converted to float
+/// exactly as Imf::InputFile converts it (halfToFloat gives Imath's values to the bit), the others are
+/// stepped over. Four channels that make up RGBA pixels are widened a run at a time and written a pixel at
+/// a time, rather than a float at a time at 16-byte steps.
 exr_result_t unpackToFloat(exr_decode_pipeline_t* decode) {
     static_assert(std::endian::native == std::endian::little, "EXR values are little-endian");
     const auto* source = static_cast<const std::uint8_t*>(decode->unpacked_buffer);
+    auto* state = static_cast<ZipState*>(decode->decoding_user_data);
     const int lines = decode->chunk.height;
     std::uint64_t lineBytes = 0;
     for (int c = 0; c < decode->channel_count; ++c) {
@@ -135,30 +229,47 @@ exr_result_t unpackToFloat(exr_decode_pipeline_t* decode) {
             return EXR_ERR_INVALID_ARGUMENT;
         lineBytes += std::uint64_t(channel.width) * std::uint64_t(channel.bytes_per_element);
     }
-    if (source == nullptr || lines < 0 || lineBytes * std::uint64_t(lines) != decode->chunk.unpacked_size)
+    if (source == nullptr || state == nullptr || lines < 0 ||
+        lineBytes * std::uint64_t(lines) != decode->chunk.unpacked_size)
         return EXR_ERR_CORRUPT_CHUNK;
+    const std::size_t width = std::size_t(std::max(decode->chunk.width, 0));
+    try {
+        state->floats.resize(width * 4);
+    } catch (const std::bad_alloc&) {
+        return EXR_ERR_OUT_OF_MEMORY;
+    }
+    const FourLanes four = fourLanes(*decode);
     for (int y = 0; y < lines; ++y) {
+        if (four.base != nullptr) {
+            const float* runs[4];
+            for (int c = 0; c < 4; ++c) {
+                const exr_coding_channel_info_t& channel = decode->channels[c];
+                runs[c] = lineFloats(channel, source, state->floats.data() + std::size_t(c) * width);
+                source += width * std::size_t(channel.bytes_per_element);
+            }
+            interleaveFour(runs, four.lane,
+                           four.base + std::ptrdiff_t(y) * decode->channels[0].user_line_stride, width);
+            continue;
+        }
         for (int c = 0; c < decode->channel_count; ++c) {
             const exr_coding_channel_info_t& channel = decode->channels[c];
-            const std::size_t width = std::size_t(channel.width);
             if (channel.decode_to_ptr != nullptr) {
+                const float* values = lineFloats(channel, source, state->floats.data());
                 std::uint8_t* out = channel.decode_to_ptr + std::ptrdiff_t(y) * channel.user_line_stride;
                 const std::ptrdiff_t step = channel.user_pixel_stride;
-                if (channel.bytes_per_element == 2) {
-                    for (std::size_t x = 0; x < width; ++x) {
-                        Imath::half h;
-                        h.setBits(std::uint16_t(source[2 * x] | (source[2 * x + 1] << 8)));
-                        const float value = h;
-                        std::memcpy(out + std::ptrdiff_t(x) * step, &value, sizeof(float));
-                    }
+                if (step == sizeof(float)) {
+                    std::memcpy(out, values, width * sizeof(float));
                 } else {
                     for (std::size_t x = 0; x < width; ++x)
-                        std::memcpy(out + std::ptrdiff_t(x) * step, source + 4 * x, sizeof(float));
+                        std::memcpy(out + std::ptrdiff_t(x) * step, values + x, sizeof(float));
                 }
             }
             source += width * std::size_t(channel.bytes_per_element);
         }
     }
+#if defined(__SSE2__)
+    _mm_sfence(); // the streamed stores are seen before the task reports done
+#endif
     return EXR_ERR_SUCCESS;
 }
 

@@ -88,25 +88,27 @@ void readBytes(const fs::path& path, Bytes& bytes, std::size_t limit = SIZE_MAX)
     const FilePtr file(std::fopen(path.c_str(), "rb"));
     if (!file)
         throw IoError(path, "cannot open: " + errnoMessage(errno));
-    constexpr std::size_t kChunk = std::size_t(1) << 20;
-    bytes.clear();
-    // One allocation of the file's size, not a doubling series (each step copied, the old block left in
-    // the heap): a frame's file is read into one buffer, which the next frame's reuses.
+    // Sized to the file in one step, not a doubling series (each step copied, the old block left in the
+    // heap), and not cleared first: a sequence reads each frame's file into the buffer the frame before
+    // left, so only what a larger file adds is allocated and zeroed before fread overwrites it.
+    std::size_t size = 0;
     struct stat info {};
     if (::fstat(::fileno(file.get()), &info) == 0 && info.st_size > 0)
-        bytes.reserve(std::min(std::size_t(info.st_size), limit));
-    while (bytes.size() < limit) {
+        size = std::min(std::size_t(info.st_size), limit);
+    bytes.resize(size);
+    std::size_t got = std::fread(bytes.data(), 1, size, file.get());
+    bytes.resize(got);
+    // The rest, should the file have grown since fstat, or have reported no size.
+    constexpr std::size_t kChunk = std::size_t(1) << 20;
+    while (got == size && bytes.size() < limit) {
         const std::size_t old = bytes.size();
-        const std::size_t want = std::min(kChunk, limit - old);
-        bytes.resize(old + want);
-        const std::size_t got = std::fread(bytes.data() + old, 1, want, file.get());
+        size = std::min(kChunk, limit - old);
+        bytes.resize(old + size);
+        got = std::fread(bytes.data() + old, 1, size, file.get());
         bytes.resize(old + got);
-        if (got < want) {
-            if (std::ferror(file.get()))
-                throw IoError(path, "read error: " + errnoMessage(errno));
-            break;
-        }
     }
+    if (std::ferror(file.get()))
+        throw IoError(path, "read error: " + errnoMessage(errno));
 }
 
 Bytes readBytes(const fs::path& path) {
