@@ -2,6 +2,7 @@
 
 #include "Commands.h"
 
+#include "core/HalfFloat.h"
 #include "core/Log.h"
 #include "gl/TextureIo.h"
 #include "io/ImageIO.h"
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <set>
@@ -148,11 +150,11 @@ CameraJson loadCameraJson(const fs::path& path) {
 
 namespace {
 
-/// World-space normals into view space with the view's normal matrix; zero or non-finite normals (no
-/// surface) stay zero.
-std::vector<float> viewSpaceNormals(const std::vector<float>& world, const glm::mat4& view) {
+/// World-space normals into view space with the view's normal matrix, into `out` (its storage kept); zero
+/// or non-finite normals (no surface) stay zero.
+void viewSpaceNormals(const std::vector<float>& world, const glm::mat4& view, std::vector<float>& out) {
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(view)));
-    std::vector<float> out(world.size(), 0.0f);
+    out.assign(world.size(), 0.0f);
     for (std::size_t i = 0; i + 2 < world.size(); i += 3) {
         const glm::vec3 n = normalMatrix * glm::vec3(world[i], world[i + 1], world[i + 2]);
         const float length = glm::length(n);
@@ -162,21 +164,19 @@ std::vector<float> viewSpaceNormals(const std::vector<float>& world, const glm::
         out[i + 1] = n.y / length;
         out[i + 2] = n.z / length;
     }
-    return out;
 }
 
-/// Pixels (x right, y down, current minus previous, samples jittered) -> UV (y up), jitter removed: a
-/// jittered sample of the current frame sits at p + j_current, of the previous frame at p' + j_previous, so
-/// the surface's own motion is m - j_current + j_previous.
-std::vector<float> uvMotion(const std::vector<float>& pixels, int width, int height, glm::vec2 jitter,
-                            glm::vec2 previousJitter) {
+/// Pixels (x right, y down, current minus previous, samples jittered) -> UV (y up), jitter removed, into
+/// `out` (its storage kept): a jittered sample of the current frame sits at p + j_current, of the previous
+/// frame at p' + j_previous, so the surface's own motion is m - j_current + j_previous.
+void uvMotion(const std::vector<float>& pixels, int width, int height, glm::vec2 jitter,
+              glm::vec2 previousJitter, std::vector<float>& out) {
     const glm::vec2 unjitter = previousJitter - jitter;
-    std::vector<float> out(pixels.size());
+    out.resize(pixels.size());
     for (std::size_t i = 0; i + 1 < pixels.size(); i += 2) {
         out[i] = (pixels[i] + unjitter.x) / float(width);
         out[i + 1] = -(pixels[i + 1] + unjitter.y) / float(height);
     }
-    return out;
 }
 
 bool isExr(const fs::path& path) {
@@ -236,7 +236,8 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
     out.depth = std::move(frame.depth);
     if (!frame.normals.empty()) {
         if (out.camera) {
-            out.normals = viewSpaceNormals(frame.normals, out.camera->view);
+            out.normals = std::move(mNormals);
+            viewSpaceNormals(frame.normals, out.camera->view, out.normals);
         } else {
             warnOnce("cli.normalsWithoutCamera",
                      fmt::format("{}: normals skipped: turning world-space normals into view space needs a "
@@ -263,8 +264,9 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
         out.sunDirection = sun;
     }
     if (!frame.motion.empty()) {
-        out.motion = uvMotion(frame.motion, width, height, jitter.value_or(glm::vec2(0.0f)),
-                              mPreviousJitter.value_or(glm::vec2(0.0f)));
+        out.motion = std::move(mMotion);
+        uvMotion(frame.motion, width, height, jitter.value_or(glm::vec2(0.0f)),
+                 mPreviousJitter.value_or(glm::vec2(0.0f)), out.motion);
     }
     out.color = std::move(frame.color);
     out.halfColor = frame.halfColor;
@@ -280,6 +282,10 @@ void InputDecoder::recycle(DecodedFrame&& frame) {
         mFrame.color = std::move(frame.color);
     if (frame.depth.capacity() > mFrame.depth.capacity())
         mFrame.depth = std::move(frame.depth);
+    if (frame.normals.capacity() > mNormals.capacity())
+        mNormals = std::move(frame.normals);
+    if (frame.motion.capacity() > mMotion.capacity())
+        mMotion = std::move(frame.motion);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -287,53 +293,118 @@ void InputDecoder::recycle(DecodedFrame&& frame) {
 
 namespace {
 
-/// Uploads `components` floats per pixel, rows top to bottom, into level 0 of `texture` (rows flipped so
-/// that texel (x, y) is image pixel (x, height - 1 - y), as Texture::uploadRgba32f does). Row by row from
-/// `values` itself: a flipped copy would be a frame-sized allocation (page faults and a memset) every frame.
-void uploadFlipped(const Texture& texture, std::span<const float> values, int components) {
-    const Extent extent = texture.extent();
-    const std::size_t row = std::size_t(extent.width) * std::size_t(components);
-    const GLenum format = components == 1 ? GL_RED : components == 2 ? GL_RG : GL_RGBA;
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    for (int y = 0; y < extent.height; ++y) {
-        glTextureSubImage2D(texture.id(), 0, 0, y, extent.width, 1, format, GL_FLOAT,
-                            values.data() + std::size_t(extent.height - 1 - y) * row);
-    }
-}
-
 /// Makes `texture` `extent` x `format` unless it already is.
 void ensure(Texture& texture, Extent extent, GLenum format, std::string_view name) {
     if (!texture.valid() || texture.extent() != extent || texture.format() != format)
         texture = Texture({.extent = extent, .format = format, .debugName = name});
 }
 
+/// Where each layer's texels sit in an upload slot (offsets in bytes, each on a 256-byte boundary, so that
+/// every layer starts on a cache line and a multiple of any value's size), and the bytes the slot needs.
+struct SlotLayout {
+    std::size_t color = 0;
+    std::size_t depth = 0;
+    std::size_t normals = 0;
+    std::size_t motion = 0;
+    std::size_t bytes = 0;
+};
+
+SlotLayout slotLayout(const DecodedFrame& frame, bool halfColor) {
+    const std::size_t pixels = frame.color.pixelCount();
+    SlotLayout layout;
+    const auto place = [&](std::size_t& offset, std::size_t texelBytes) {
+        offset = layout.bytes;
+        layout.bytes += (pixels * texelBytes + 255) / 256 * 256;
+    };
+    place(layout.color, halfColor ? 4 * sizeof(std::uint16_t) : 4 * sizeof(float));
+    if (!frame.depth.empty())
+        place(layout.depth, sizeof(float));
+    if (!frame.normals.empty())
+        place(layout.normals, 4 * sizeof(float));
+    if (!frame.motion.empty())
+        place(layout.motion, 2 * sizeof(float));
+    return layout;
+}
+
+// The writers below fill slot memory (write-only, front to back) with image rows bottom to top, GL's order,
+// so that texel (x, y) is image pixel (x, height - 1 - y), as Texture::uploadRgba32f has it.
+
+/// `components` floats a pixel as they are. For a 16F texture (normals, motion) GL converts them as it
+/// converted them from client memory: drivers round floats to halves their own way (Mesa's RGBA16F store
+/// rounds toward zero and clamps, its RG16F store rounds to nearest), which a conversion here could not
+/// match on every driver.
+void writeFloatRows(std::byte* out, const float* values, Extent extent, int components) {
+    const std::size_t row = std::size_t(extent.width) * std::size_t(components);
+    for (int y = 0; y < extent.height; ++y) {
+        std::memcpy(out + std::size_t(y) * row * sizeof(float),
+                    values + std::size_t(extent.height - 1 - y) * row, row * sizeof(float));
+    }
+}
+
+/// Four floats a pixel that are halves exactly (a half EXR's colour), stored as halves (RGBA16F): the same
+/// texels whatever the rounding, so the same as GL's own conversion of them.
+void writeHalfRows(std::byte* out, const float* values, Extent extent) {
+    const std::size_t row = std::size_t(extent.width) * 4;
+    auto* halves = reinterpret_cast<std::uint16_t*>(out);
+    for (int y = 0; y < extent.height; ++y) {
+        floatToHalf(values + std::size_t(extent.height - 1 - y) * row, halves + std::size_t(y) * row, row);
+    }
+}
+
+/// Three floats a pixel as four (alpha 0).
+void writeNormalRows(std::byte* out, const float* normals, Extent extent) {
+    const std::size_t width = std::size_t(extent.width);
+    const float zero = 0.0f;
+    for (int y = 0; y < extent.height; ++y) {
+        const float* row = normals + std::size_t(extent.height - 1 - y) * width * 3;
+        std::byte* texel = out + std::size_t(y) * width * 4 * sizeof(float);
+        for (std::size_t x = 0; x < width; ++x, texel += 4 * sizeof(float)) {
+            std::memcpy(texel, row + x * 3, 3 * sizeof(float));
+            std::memcpy(texel + 3 * sizeof(float), &zero, sizeof(float));
+        }
+    }
+}
+
 } // namespace
 
 FrameInputs InputTextures::upload(const DecodedFrame& frame, bool halfTexture) {
     const Extent extent{frame.color.width, frame.color.height};
-    ensure(mColor, extent, halfTexture && frame.halfColor ? GL_RGBA16F : GL_RGBA32F, "cli.input.color");
-    uploadFlipped(mColor, frame.color.rgba, 4);
+    const bool halfColor = halfTexture && frame.halfColor;
+    const SlotLayout layout = slotLayout(frame, halfColor);
+    if (!mRing.valid() || mRing.bytes() < layout.bytes)
+        mRing = UploadRing(layout.bytes, kUploadSlots, "cli.input");
+    std::byte* slot = mRing.begin().data();
     FrameInputs inputs{.color = &mColor};
+
+    ensure(mColor, extent, halfColor ? GL_RGBA16F : GL_RGBA32F, "cli.input.color");
+    if (halfColor) {
+        writeHalfRows(slot + layout.color, frame.color.rgba.data(), extent);
+        mRing.upload(mColor, layout.color, GL_RGBA, GL_HALF_FLOAT);
+    } else {
+        writeFloatRows(slot + layout.color, frame.color.rgba.data(), extent, 4);
+        mRing.upload(mColor, layout.color, GL_RGBA, GL_FLOAT);
+    }
     if (!frame.depth.empty()) {
         ensure(mDepth, extent, GL_R32F, "cli.input.depth");
-        uploadFlipped(mDepth, frame.depth, 1);
+        writeFloatRows(slot + layout.depth, frame.depth.data(), extent, 1);
+        mRing.upload(mDepth, layout.depth, GL_RED, GL_FLOAT);
         inputs.depth = &mDepth;
         inputs.depthKind = DepthKind::LinearView;
     }
     if (!frame.normals.empty()) {
-        std::vector<float> rgba(frame.normals.size() / 3 * 4, 0.0f);
-        for (std::size_t i = 0, j = 0; i < frame.normals.size(); i += 3, j += 4)
-            std::copy_n(frame.normals.data() + i, 3, rgba.data() + j);
         ensure(mNormals, extent, GL_RGBA16F, "cli.input.normals");
-        uploadFlipped(mNormals, rgba, 4);
+        writeNormalRows(slot + layout.normals, frame.normals.data(), extent);
+        mRing.upload(mNormals, layout.normals, GL_RGBA, GL_FLOAT);
         inputs.normals = &mNormals;
         inputs.normalEncoding = NormalEncoding::ViewXyz;
     }
     if (!frame.motion.empty()) {
         ensure(mMotion, extent, GL_RG16F, "cli.input.motion");
-        uploadFlipped(mMotion, frame.motion, 2);
+        writeFloatRows(slot + layout.motion, frame.motion.data(), extent, 2);
+        mRing.upload(mMotion, layout.motion, GL_RG, GL_FLOAT);
         inputs.motion = &mMotion;
     }
+    mRing.end();
     if (frame.camera) {
         mCamera = *frame.camera;
         inputs.camera = &mCamera;

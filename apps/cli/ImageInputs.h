@@ -6,6 +6,7 @@
 #include "core/Camera.h"
 #include "core/Image.h"
 #include "gl/Objects.h"
+#include "gl/UploadRing.h"
 #include "io/ExrFrame.h"
 #include "pipeline/Pipeline.h"
 
@@ -67,6 +68,8 @@ public:
 private:
     ExrFrameReader mReader;
     ExrFrame mFrame; ///< the storage decode() reads into; its colour and depth move out to the caller
+    std::vector<float> mNormals; ///< storage for the next frame's view-space normals (recycle())
+    std::vector<float> mMotion;  ///< storage for the next frame's UV motion (recycle())
     std::optional<CameraJson> mCameraJson;
     std::optional<ExrCameraAttributes> mPrevious;
     std::optional<glm::vec2> mPreviousJitter; ///< pixels, x right, y down
@@ -77,16 +80,23 @@ private:
 };
 
 /// The GL textures frames are uploaded to: created when the extent (or the set of layers) changes, and
-/// re-uploaded every frame otherwise, so a sequence creates textures only for its first frame.
+/// re-uploaded every frame otherwise, so a sequence creates textures only for its first frame. Each frame's
+/// texels go through a ring of two persistently mapped unpack buffers (gl/UploadRing.h): written there in
+/// GL's row order (a half colour texture's as halves, converted here rather than by the driver), then one
+/// glTextureSubImage2D a texture, which the GPU copies while the CPU moves on.
 class InputTextures {
 public:
     /// Uploads `frame` and returns inputs pointing at the textures and camera held here (valid until the
     /// next upload). `halfTexture`: the colour texture is RGBA16F instead of RGBA32F; only for a frame whose
     /// colour is half exactly (halfColor) and a pipeline whose only reader of it fetches texels (the HDR
-    /// path's sanitize pass), which then reads the same values from half the memory.
+    /// path's sanitize pass), which then reads the same values from half the memory. Leaves no unpack
+    /// buffer bound.
     [[nodiscard]] FrameInputs upload(const DecodedFrame& frame, bool halfTexture = false);
 
 private:
+    /// Two: the CPU fills one slot while the GPU copies from the other.
+    static constexpr int kUploadSlots = 2;
+    UploadRing mRing;
     Texture mColor;
     Texture mDepth;
     Texture mNormals;

@@ -1,0 +1,208 @@
+// The CLI's streamed upload (apps/cli/ImageInputs.cpp through gl/UploadRing.h) against GL's own conversion:
+// each texture must hold what uploading the frame's floats row by row with GL_FLOAT (the driver converting
+// them to the texture's format) gives, for a half-float colour frame, a float one, an odd size, and the
+// depth, normals and motion layers; over several frames in a row, so that both slots of the ring and the
+// reuse of the first are exercised; and the unpack buffer binding is left as it was found, unbound.
+
+#include "ImageInputs.h"
+
+#include "GlTest.h"
+
+#include "core/HalfFloat.h"
+#include "gl/Objects.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace photopic {
+namespace {
+
+using test::GlTest;
+
+/// Colour values that are halves exactly (as an EXR of half channels decodes): normal, denormal, zero,
+/// negative, the largest half and infinity.
+float halfValue(std::mt19937& random) {
+    switch (random() % 16u) {
+    case 0:
+        return halfToFloat(std::uint16_t(random() % 0x400u)); // a denormal (or zero)
+    case 1:
+        return -65504.0f;
+    case 2:
+        return std::numeric_limits<float>::infinity();
+    case 3:
+        return -0.0f;
+    default:
+        return halfToFloat(std::uint16_t(random() % 0x7c00u | ((random() & 1u) << 15)));
+    }
+}
+
+/// Values that are not halves: they round, some exactly half-way between two halves (ties go to even).
+float roundedValue(std::mt19937& random) {
+    std::uniform_real_distribution<float> uniform(-2.0f, 2.0f);
+    switch (random() % 8u) {
+    case 0:
+        return 1.0f + std::ldexp(1.0f, -11); // half-way between 1 and the next half: rounds down to 1
+    case 1:
+        return 1.0f + 3.0f * std::ldexp(1.0f, -11); // half-way, rounds up to even
+    case 2:
+        return 70000.0f; // beyond the largest half
+    default:
+        return uniform(random);
+    }
+}
+
+cli::DecodedFrame makeFrame(int width, int height, bool halfColor, unsigned seed) {
+    std::mt19937 random(seed);
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    cli::DecodedFrame frame;
+    frame.color = ImageF(width, height);
+    for (float& v : frame.color.rgba)
+        v = halfColor ? halfValue(random) : std::uniform_real_distribution<float>(-1e6f, 1e6f)(random);
+    frame.halfColor = halfColor;
+    frame.depth.resize(pixels);
+    for (float& v : frame.depth)
+        v = std::uniform_real_distribution<float>(0.1f, 1000.0f)(random);
+    frame.depth[0] = std::numeric_limits<float>::infinity(); // the background
+    frame.normals.resize(pixels * 3);
+    for (float& v : frame.normals)
+        v = roundedValue(random);
+    frame.motion.resize(pixels * 2);
+    for (float& v : frame.motion)
+        v = roundedValue(random) * 0.01f;
+    frame.camera = Camera{};
+    return frame;
+}
+
+/// The upload before the ring: `components` floats a pixel, one glTextureSubImage2D a row from client
+/// memory, rows flipped, GL converting the floats to the texture's format.
+Texture referenceTexture(const Texture& like, std::span<const float> values, int components) {
+    const Extent extent = like.extent();
+    Texture texture({.extent = extent, .format = like.format(), .debugName = "test.reference"});
+    const std::size_t row = std::size_t(extent.width) * std::size_t(components);
+    const GLenum format = components == 1 ? GL_RED : components == 2 ? GL_RG : GL_RGBA;
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    for (int y = 0; y < extent.height; ++y)
+        glTextureSubImage2D(texture.id(), 0, 0, y, extent.width, 1, format, GL_FLOAT,
+                            values.data() + std::size_t(extent.height - 1 - y) * row);
+    return texture;
+}
+
+/// Level 0 as stored: halves for the 16F formats, floats for the 32F ones.
+std::vector<std::uint8_t> texels(const Texture& texture) {
+    const GLenum format = texture.format();
+    const bool half = format == GL_RGBA16F || format == GL_RG16F;
+    const int components = format == GL_R32F ? 1 : format == GL_RG16F ? 2 : 4;
+    const std::size_t bytes = std::size_t(texture.extent().width) * std::size_t(texture.extent().height) *
+                              std::size_t(components) * (half ? 2 : 4);
+    std::vector<std::uint8_t> out(bytes);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(texture.id(), 0,
+                      components == 1   ? GL_RED
+                      : components == 2 ? GL_RG
+                                        : GL_RGBA,
+                      half ? GL_HALF_FLOAT : GL_FLOAT, GLsizei(bytes), out.data());
+    return out;
+}
+
+/// The first texel that differs (NaNs, should any arise, count as equal whatever their payload), or -1.
+long firstDifference(const Texture& actual, const Texture& expected) {
+    const std::vector<std::uint8_t> a = texels(actual);
+    const std::vector<std::uint8_t> e = texels(expected);
+    if (a.size() != e.size())
+        return 0;
+    const bool half = actual.format() == GL_RGBA16F || actual.format() == GL_RG16F;
+    const std::size_t step = half ? 2 : 4;
+    for (std::size_t i = 0; i < a.size(); i += step) {
+        float x = 0.0f;
+        float y = 0.0f;
+        if (half) {
+            std::uint16_t hx = 0;
+            std::uint16_t hy = 0;
+            std::memcpy(&hx, a.data() + i, 2);
+            std::memcpy(&hy, e.data() + i, 2);
+            x = halfToFloat(hx);
+            y = halfToFloat(hy);
+        } else {
+            std::memcpy(&x, a.data() + i, 4);
+            std::memcpy(&y, e.data() + i, 4);
+        }
+        if (std::isnan(x) && std::isnan(y))
+            continue;
+        if (std::memcmp(a.data() + i, e.data() + i, step) != 0)
+            return long(i / step);
+    }
+    return -1;
+}
+
+GLint unpackBufferBinding() {
+    GLint bound = -1;
+    glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &bound);
+    return bound;
+}
+
+void expectSameAsGlConversion(cli::InputTextures& textures, const cli::DecodedFrame& frame, bool halfTexture,
+                              const std::string& what) {
+    const FrameInputs inputs = textures.upload(frame, halfTexture);
+    EXPECT_EQ(unpackBufferBinding(), 0) << what << ": the unpack buffer is left bound";
+    ASSERT_TRUE(inputs.color && inputs.depth && inputs.normals && inputs.motion) << what;
+    EXPECT_EQ(inputs.color->format(), GLenum(halfTexture && frame.halfColor ? GL_RGBA16F : GL_RGBA32F));
+    std::vector<float> normals(frame.normals.size() / 3 * 4, 0.0f);
+    for (std::size_t i = 0, j = 0; i < frame.normals.size(); i += 3, j += 4)
+        std::copy_n(frame.normals.data() + i, 3, normals.data() + j);
+    EXPECT_EQ(firstDifference(*inputs.color, referenceTexture(*inputs.color, frame.color.rgba, 4)), -1)
+        << what << ": colour";
+    EXPECT_EQ(firstDifference(*inputs.depth, referenceTexture(*inputs.depth, frame.depth, 1)), -1)
+        << what << ": depth";
+    EXPECT_EQ(firstDifference(*inputs.normals, referenceTexture(*inputs.normals, normals, 4)), -1)
+        << what << ": normals";
+    EXPECT_EQ(firstDifference(*inputs.motion, referenceTexture(*inputs.motion, frame.motion, 2)), -1)
+        << what << ": motion";
+}
+
+TEST_F(GlTest, CliStreamedUploadMatchesGlConversionOverConsecutiveFrames) {
+    struct Case {
+        int width;
+        int height;
+        bool halfColor;
+        bool halfTexture;
+    };
+    // Odd sizes: rows whose bytes are not a multiple of the converters' eight values or of 16 bytes.
+    for (const Case c : {Case{97, 61, true, true}, Case{97, 61, false, false}, Case{64, 36, true, false},
+                         Case{33, 17, true, true}}) {
+        cli::InputTextures textures;
+        // Three frames: the ring's first slot, its second, and the first again once its fence has passed.
+        for (unsigned frame = 0; frame < 3; ++frame) {
+            const std::string what = std::to_string(c.width) + "x" + std::to_string(c.height) +
+                                     (c.halfColor ? " half" : " float") +
+                                     (c.halfTexture ? " RGBA16F" : " RGBA32F") + " frame " +
+                                     std::to_string(frame);
+            expectSameAsGlConversion(textures, makeFrame(c.width, c.height, c.halfColor, 7u + frame),
+                                     c.halfTexture, what);
+        }
+    }
+}
+
+TEST_F(GlTest, CliStreamedUploadLeavesTheUnpackBufferUnbound) {
+    cli::InputTextures textures;
+    cli::DecodedFrame frame = makeFrame(16, 8, true, 1u);
+    frame.normals.clear();
+    frame.motion.clear();
+    (void)textures.upload(frame, true);
+    EXPECT_EQ(unpackBufferBinding(), 0);
+    // A client-memory upload after it reads client memory, not the ring's buffer.
+    const std::vector<float> texel{0.25f, 0.5f, 0.75f, 1.0f};
+    Texture scratch({.extent = {1, 1}, .format = GL_RGBA32F, .debugName = "test.scratch"});
+    glTextureSubImage2D(scratch.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_FLOAT, texel.data());
+    std::vector<float> back(4);
+    glGetTextureImage(scratch.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(back.size() * sizeof(float)), back.data());
+    EXPECT_EQ(back, texel);
+}
+
+} // namespace
+} // namespace photopic
