@@ -541,11 +541,12 @@ std::function<void()> writtenLine(const fs::path& in, const fs::path& out, Exten
     };
 }
 
-/// Frames in flight between the decode of one and the write of another: 1 is serial, else one frame is
-/// decoded ahead and up to inFlight - 2 (at least one) are being written behind the one on the GPU.
+/// Frames in flight between the decode of one and the write of another: 1 is serial, else
+/// framesDecodedAhead are decoded ahead and the rest (at least one) are being written behind the one on the
+/// GPU.
 std::size_t pendingWrites(int inFlight) {
     inFlight = inFlight > 0 ? inFlight : defaultFramesInFlight();
-    return inFlight <= 1 ? 0 : std::size_t(std::max(inFlight - 2, 1));
+    return inFlight <= 1 ? 0 : std::size_t(std::max(inFlight - 1 - framesDecodedAhead(inFlight), 1));
 }
 
 /// Where the lines a run prints go: standard error when the image or the telemetry goes to standard output
@@ -598,12 +599,13 @@ void dropUnavailableAa(Settings& settings, std::size_t inputCount) {
                    : fmt::format("{} runs", antiAliasingNames()[std::size_t(now)]));
 }
 
-/// Where a sequence run's main thread spends each frame, printed at the debug level (-v) once the run ends:
-/// the medians tell a user (and the CLI's throughput work) whether decode, the GPU, the read-back or the PNG
-/// encode bounds the rate.
+/// Where a sequence run's main thread spends each frame, and how long each frame's decode took on the thread
+/// that decoded it, printed at the debug level (-v) once the run ends: the medians tell a user (and the
+/// CLI's throughput work) whether decode, the upload, the GPU, the read-back or the PNG encode bounds the
+/// rate.
 class StageClock {
 public:
-    enum Stage { DecodeWait, Upload, Process, ReadBack, WriteWait, kStages };
+    enum Stage { DecodeWait, Upload, Process, ReadBack, WriteWait, Decode, kStages };
 
     StageClock()
         : mLast(std::chrono::steady_clock::now())
@@ -616,6 +618,9 @@ public:
         mLast = now;
     }
 
+    /// A time measured elsewhere (`Decode`: on the thread that decoded the frame).
+    void add(Stage stage, double ms) { mSamples[stage].push_back(ms); }
+
     /// Restarts the clock without charging anything (the set-up before the first frame).
     void restart(const char* what) {
         const auto now = std::chrono::steady_clock::now();
@@ -625,8 +630,8 @@ public:
     }
 
     void report(std::size_t frames) const {
-        static constexpr const char* kNames[kStages] = {"waiting for decode", "upload", "process",
-                                                        "read-back", "waiting for encode"};
+        static constexpr const char* kNames[kStages] = {
+            "waiting for decode", "upload", "process", "read-back", "waiting for encode", "decode"};
         std::string line;
         for (int s = 0; s < kStages; ++s) {
             std::vector<double> v = mSamples[s];
@@ -634,12 +639,17 @@ public:
                 continue;
             }
             std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
-            line += fmt::format("{}{} {:.2f}", line.empty() ? "" : ", ", kNames[s], v[v.size() / 2]);
+            // The decode is timed on the thread that decodes (the main thread only in a serial run).
+            line += fmt::format("{}{} {:.2f}",
+                                line.empty()  ? ""
+                                : s == Decode ? "; "
+                                              : ", ",
+                                kNames[s], v[v.size() / 2]);
         }
         const double total =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mBegin).count();
         logDebug("image: {} frames in {:.1f} ms ({:.2f} ms a frame, the last encodes included); medians per "
-                 "frame, ms: {}",
+                 "frame, ms: {} (on the decoding thread)",
                  frames, total, frames > 0 ? total / double(frames) : 0.0, line);
     }
 
@@ -690,7 +700,7 @@ int runImage(const ImageOptions& options) {
                                                 : std::optional<CameraJson>(loadCameraJson(options.camera)),
                          options.jitter == "halton" ? settings.temporal.jitterCycle : 0, options.maxPixels);
     StageClock clock;
-    FrameReader reader(decoder, inputs, inFlight > 1);
+    FrameReader reader(decoder, inputs, framesDecodedAhead(inFlight));
     const DecodedFrame& first = reader.next(); // a bad first input fails before a GL context is made
     clock.restart("first decode");
 
@@ -709,6 +719,7 @@ int runImage(const ImageOptions& options) {
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         const DecodedFrame& frame = reader.next();
         clock.mark(StageClock::DecodeWait);
+        clock.add(StageClock::Decode, reader.decodeMs());
         const auto start = std::chrono::steady_clock::now();
         const int width = frame.color.width;
         const int height = frame.color.height;

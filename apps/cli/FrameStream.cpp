@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <string>
 #include <thread>
 #include <utility>
@@ -64,47 +65,69 @@ void Worker::loop() {
 // ---------------------------------------------------------------------------------------------------------------
 // Reading
 
-FrameReader::FrameReader(InputDecoder& decoder, const std::vector<fs::path>& inputs, bool ahead)
+FrameReader::FrameReader(InputDecoder& decoder, const std::vector<fs::path>& inputs, int ahead)
     : mDecoder(decoder)
     , mInputs(inputs)
-    , mAhead(ahead) {
-    if (mAhead) {
+    , mAhead(std::max(ahead, 0)) {
+    if (mAhead > 0) {
         mWorker = std::make_unique<Worker>();
-        start();
+        for (int i = 0; i < mAhead; ++i) {
+            start({});
+        }
     }
 }
 
 FrameReader::~FrameReader() {
-    if (mPending.valid()) {
-        mPending.wait();
+    for (auto& pending : mPending) {
+        pending.wait();
     }
 }
 
-void FrameReader::start() {
+FrameReader::Decoded FrameReader::decode(const fs::path& path, DecodedFrame storage) {
+    const auto begin = std::chrono::steady_clock::now();
+    mDecoder.recycle(std::move(storage)); // on the decoding thread: no other decode is running
+    Decoded decoded{.frame = mDecoder.decode(path)};
+    decoded.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+    return decoded;
+}
+
+void FrameReader::start(DecodedFrame storage) {
     if (mNext >= mInputs.size()) {
         return;
     }
-    // The decoder keeps the previous frame's camera, so frames are decoded one after another, never two at
-    // once: a decode starts only after the one before it was taken.
+    // The worker runs its tasks in order: each decode starts after the one before it has finished.
     const fs::path& path = mInputs[mNext++];
-    mPending = mWorker->run([this, &path] { return mDecoder.decode(path); });
+    mPending.push_back(mWorker->run(
+        [this, &path, storage = std::move(storage)]() mutable { return decode(path, std::move(storage)); }));
 }
 
 const DecodedFrame& FrameReader::next() {
     if (!mHave) {
-        mCurrent = mAhead ? mPending.get() : mDecoder.decode(mInputs[mNext++]);
+        if (mAhead > 0) {
+            std::future<Decoded> pending = std::move(mPending.front());
+            mPending.pop_front();
+            mCurrent = pending.get();
+        } else {
+            mCurrent = decode(mInputs[mNext++], std::move(mCurrent.frame));
+        }
         mHave = true;
     }
-    return mCurrent;
+    return mCurrent.frame;
 }
 
 void FrameReader::release() {
-    mDecoder.recycle(std::move(mCurrent)); // no decode is running now
-    mCurrent = {};
     mHave = false;
-    if (mAhead) {
-        start();
+    if (mAhead > 0) {
+        start(std::move(mCurrent.frame));
+        mCurrent.frame = {};
     }
+}
+
+int framesDecodedAhead(int framesInFlight) {
+    if (framesInFlight <= 1) {
+        return 0;
+    }
+    return framesInFlight >= 4 ? 2 : 1;
 }
 
 // ---------------------------------------------------------------------------------------------------------------

@@ -57,35 +57,52 @@ private:
     std::thread mThread;
 };
 
-/// Decodes a sequence's frames in order into one frame's storage: the next frame is decoded (on a worker
-/// thread when `ahead`) as soon as the caller has released this one, i.e. uploaded it, so its decode runs
-/// while this frame is on the GPU, and a sequence holds one decoded frame whatever its length. A decode
-/// error (InputError) comes out of next() for the frame it belongs to.
+/// Decodes a sequence's frames in order on a worker thread, `ahead` frames at most beyond the one the caller
+/// holds (0: each on the caller's thread, in next()). At 1 the next frame is decoded as soon as the caller
+/// has released this one, i.e. uploaded it, so its decode runs while this frame is on the GPU, and a sequence
+/// holds one decoded frame whatever its length. At 2 it is decoded while this one is uploaded too, for two
+/// frames' memory. Frames are decoded one after another, never two at once (the decoder carries the previous
+/// frame's camera), and into the storage of frames released. A decode error (InputError) comes out of next()
+/// for the frame it belongs to.
 class FrameReader {
 public:
-    FrameReader(InputDecoder& decoder, const std::vector<std::filesystem::path>& inputs, bool ahead);
-    /// Waits for the decode in flight (its error, if any, goes with it: the run failed already).
+    FrameReader(InputDecoder& decoder, const std::vector<std::filesystem::path>& inputs, int ahead);
+    /// Waits for the decodes in flight (their errors, if any, go with them: the run failed already).
     ~FrameReader();
     FrameReader(const FrameReader&) = delete;
     FrameReader& operator=(const FrameReader&) = delete;
 
     /// The current frame, in input order (waits for its decode); the same frame until release().
     [[nodiscard]] const DecodedFrame& next();
-    /// The caller is done with the frame next() returned: its storage goes back to the decoder, which starts
-    /// on the following frame (at once when `ahead`, else at the next next()).
+    /// The caller is done with the frame next() returned: its storage goes back to the decoder for a frame
+    /// still to decode, whose decode is queued (at once when `ahead` > 0, else at the next next()).
     void release();
+    /// How long the current frame's decode took on the thread that decoded it, ms.
+    [[nodiscard]] double decodeMs() const { return mCurrent.ms; }
 
 private:
-    void start();
+    struct Decoded {
+        DecodedFrame frame;
+        double ms = 0.0;
+    };
+    /// Queues the decode of the next input, into `storage`'s memory.
+    void start(DecodedFrame storage);
+    [[nodiscard]] Decoded decode(const std::filesystem::path& path, DecodedFrame storage);
     InputDecoder& mDecoder;
     const std::vector<std::filesystem::path>& mInputs;
-    bool mAhead;
+    int mAhead;
     std::size_t mNext = 0; ///< the index of the frame decoded next
     bool mHave = false;    ///< mCurrent holds the frame next() returned, not yet released
-    DecodedFrame mCurrent;
-    std::future<DecodedFrame> mPending;
-    std::unique_ptr<Worker> mWorker; ///< last: joined before the members its task uses go
+    Decoded mCurrent;
+    std::deque<std::future<Decoded>> mPending; ///< oldest first
+    std::unique_ptr<Worker> mWorker;           ///< last: joined before the members its tasks use go
 };
+
+/// Frames a sequence decodes ahead of the one being processed, of `framesInFlight` (--frames-in-flight): 0
+/// for 1 (serial); 1 for 2 and 3 (the default with up to four cores, where the cores are busy already: a
+/// software renderer uses them, and a second decoded frame would only add its memory); 2 from 4 on (the
+/// default on more than four cores), where the next frame's decode then overlaps this one's upload too.
+[[nodiscard]] int framesDecodedAhead(int framesInFlight);
 
 /// A frame read back from the GPU: the display image (PNG, TIFF, JPEG outputs; 8 or 16 bits) or the
 /// scene-referred one (EXR outputs).

@@ -214,9 +214,9 @@ void addImageCommand(CLI::App& app, Cli& c) {
         ->add_option(
             "--frames-in-flight", c.imageOptions.inFlight,
             "frames of a sequence between decode and write at once: 1 decodes, processes and writes "
-            "each frame before the next; more decode the next frame and write earlier ones on other "
-            "threads (same outputs, bounded memory); default 3 with up to 4 cores, else half the cores, "
-            "at most 8")
+            "each frame before the next; more decode the next frame (from 4 on, the next two) and write "
+            "earlier ones on other threads (same outputs, bounded memory); default 3 with up to 4 cores, "
+            "else half the cores, at most 8")
         ->check(CLI::Range(1, 16));
     c.image->footer(
         "Examples:\n"
