@@ -18,7 +18,6 @@
 #include <fstream>
 #include <limits>
 #include <set>
-#include <span>
 
 namespace photopic::cli {
 

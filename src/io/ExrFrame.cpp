@@ -388,6 +388,8 @@ void ExrFrameReader::read(const fs::path& path, ExrFrame& frame, const ImageRead
             const Imf::Channel* channel = channels.findChannel(name);
             frame.halfColor = frame.halfColor && (channel == nullptr || channel->type == Imf::HALF);
         }
+        // Other primaries are converted to Rec.709 in float: the values are halves no longer.
+        frame.halfColor = frame.halfColor && !detail::exrToRec709(header);
         // A layer this file lacks is empty, whatever an earlier frame read into the same storage.
         frame.depth.clear();
         frame.normals.clear();

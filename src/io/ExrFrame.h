@@ -68,7 +68,8 @@ struct ExrFrame {
     glm::ivec2 displaySize{0, 0};
     glm::ivec2 dataOrigin{0, 0};
     /// Every colour channel read (R, G, B, A or Y; luminance/chroma, which OpenEXR converts in half) is
-    /// stored as half: each colour value is a half float exactly, so a half-float texture holds it unchanged.
+    /// stored as half, and the file's primaries are Rec.709 (others are converted to it in float): each
+    /// colour value is a half float exactly, so a half-float texture holds it unchanged.
     bool halfColor = false;
 };
 

@@ -72,7 +72,8 @@ Imf::Chromaticities chromaticities(const Primaries& p) {
 const std::vector<glm::vec3> kPixels = {{1, 0, 0},          {0, 1, 0},          {0, 0, 1},
                                         {0.5f, 0.5f, 0.5f}, {0.2f, 0.7f, 0.4f}, {0, 0, 0}};
 
-fs::path writeTaggedExr(const std::string& name, const Primaries* primaries) {
+fs::path writeTaggedExr(const std::string& name, const Primaries* primaries,
+                        Imf::PixelType type = Imf::FLOAT) {
     const fs::path path =
         fs::temp_directory_path() / ("photopic-chroma-" + std::to_string(::getpid()) + name);
     const int width = int(kPixels.size());
@@ -81,17 +82,21 @@ fs::path writeTaggedExr(const std::string& name, const Primaries* primaries) {
         Imf::addChromaticities(header, chromaticities(*primaries));
     }
     for (const char* c : {"R", "G", "B"}) {
-        header.channels().insert(c, Imf::Channel(Imf::FLOAT));
+        header.channels().insert(c, Imf::Channel(type));
     }
     std::vector<float> rgb;
     for (const glm::vec3& p : kPixels) {
         rgb.insert(rgb.end(), {p.r, p.g, p.b});
     }
+    const std::vector<half> halves(rgb.begin(), rgb.end());
+    const bool isHalf = type == Imf::HALF;
+    const std::size_t size = isHalf ? sizeof(half) : sizeof(float);
+    char* base = isHalf ? reinterpret_cast<char*>(const_cast<half*>(halves.data()))
+                        : reinterpret_cast<char*>(rgb.data());
     Imf::FrameBuffer frameBuffer;
     for (int c = 0; c < 3; ++c) {
         frameBuffer.insert(std::string(1, "RGB"[c]),
-                           Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(rgb.data() + c), 3 * sizeof(float),
-                                      rgb.size() * sizeof(float)));
+                           Imf::Slice(type, base + std::size_t(c) * size, 3 * size, rgb.size() * size));
     }
     Imf::OutputFile file(path.c_str(), header);
     file.setFrameBuffer(frameBuffer);
@@ -158,6 +163,19 @@ TEST(ExrChromaticities, Rec709AndAbsentAttributesLeaveThePixelsAsStored) {
         expectConverted(image, glm::dmat3(1.0), p ? "Rec.709" : "no attribute");
         fs::remove(path);
     }
+}
+
+TEST(ExrChromaticities, HalfChannelsAreHalvesExactlyOnlyWhenNotConverted) {
+    // The CLI keeps a half EXR's colour in a half-float texture only while each value is a half exactly.
+    for (const Primaries* p : {&kRec709, &kRec2020, static_cast<const Primaries*>(nullptr)}) {
+        const fs::path path = writeTaggedExr(p ? "half.exr" : "half-none.exr", p, Imf::HALF);
+        const ExrFrame frame = readExrFrame(path);
+        EXPECT_EQ(frame.halfColor, p != &kRec2020) << (p ? "with primaries" : "no attribute");
+        fs::remove(path);
+    }
+    const fs::path path = writeTaggedExr("float.exr", &kRec709);
+    EXPECT_FALSE(readExrFrame(path).halfColor);
+    fs::remove(path);
 }
 
 } // namespace
