@@ -229,6 +229,7 @@ void ShadowMap::render(const RenderInfo& info) {
     DebugGroup group("orbit sun shadow map");
     mTarget.bind();
     setDepthDrawState();
+    glUseProgram(0); // a program current at a clear is checked against it (OrbitRenderer::draw says why)
     const float far = 1.0f;
     glClearNamedFramebufferfv(mTarget.id(), GL_DEPTH, 0, &far);
     mDepthProgram.use();
