@@ -213,6 +213,22 @@ void Ibl::bind() const noexcept {
     mBlock.bind(kIblBlockBinding);
 }
 
+IblStandIn::IblStandIn()
+    : mCube(makeCube(1, 1, "ibl stand-in cube (no environment)"))
+    , mLut({.extent = {1, 1}, .format = GL_RGBA16F, .debugName = "ibl stand-in table (no environment)"})
+    , mBlock("ibl stand-in parameters (no environment)", GpuIblParameters{.intensity = 0.0f}) {
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearTexImage(mCube.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    glClearTexImage(mLut.id(), 0, GL_RGBA, GL_FLOAT, zero);
+}
+
+void IblStandIn::bind() const noexcept {
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    glBindTextureUnit(kIblSpecularUnit, mCube.id());
+    glBindTextureUnit(kIblLutUnit, mLut.id());
+    mBlock.bind(kIblBlockBinding);
+}
+
 ImageF Ibl::proceduralSky(int width, int height) {
     ImageF sky(std::max(width, 2), std::max(height, 1), 1.0f);
     const glm::vec3 sun = glm::normalize(glm::vec3(0.5f, 0.55f, -0.67f));

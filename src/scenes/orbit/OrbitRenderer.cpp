@@ -173,6 +173,8 @@ void OrbitRenderer::draw(const DrawInfo& info) {
         // Stored, never accumulated: the same value always gives the same frame.
         mIbl->setIntensity(info.lights.ibl);
         mIbl->bind();
+    } else {
+        mNoIbl.bind();
     }
     glDisable(GL_BLEND);
 
