@@ -4,7 +4,7 @@
 // lack texture coordinates and tangents, its shadow map, volumetric light marching that map) and of the
 // testbed clears with no graphics program current, draws each program with one vertex-fetch state, and
 // gives every shadow sampler a depth texture with comparison and every block a buffer; so does the orbit
-// renderer with neither a shadow map nor an environment.
+// renderer with neither a shadow map nor an environment. The audit itself is shown to flag each rule.
 
 #include "GlCallAudit.h"
 #include "GlTest.h"
@@ -22,6 +22,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace photopic::test {
@@ -77,7 +78,83 @@ void renderFrames(Scene& scene, const Settings& settings, int frames, GlCallAudi
     glFinish();
 }
 
+/// A program linked from inline sources (the audit's own test), deleted with its GlObject.
+Program linkInline(const char* vertex, const char* fragment) {
+    const GLuint program = glCreateProgram();
+    for (const auto& [stage, source] :
+         {std::pair{GL_VERTEX_SHADER, vertex}, std::pair{GL_FRAGMENT_SHADER, fragment}}) {
+        const GLuint shader = glCreateShader(stage);
+        glShaderSource(shader, 1, &source, nullptr);
+        glCompileShader(shader);
+        glAttachShader(program, shader);
+        glDeleteShader(shader);
+    }
+    glLinkProgram(program);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    EXPECT_EQ(ok, GL_TRUE);
+    glObjectLabel(GL_PROGRAM, program, -1, "audit probe");
+    return Program(program);
+}
+
+bool mentions(const std::vector<std::string>& problems, std::string_view a, std::string_view b) {
+    for (const std::string& p : problems) {
+        if (p.find(a) != std::string::npos && p.find(b) != std::string::npos) {
+            return true;
+        }
+    }
+    return false;
+}
+
 } // namespace
+
+TEST_F(GlTest, GlCallAuditFlagsEachRuleItChecks) {
+    // Every rule broken once on purpose: the scene tests below can then fail.
+    const Program program = linkInline(R"(#version 450 core
+        layout(location = 0) in vec4 aPosition;
+        void main() { gl_Position = aPosition; })",
+                                       R"(#version 450 core
+        layout(binding = 3) uniform sampler2DShadow uShadow;
+        layout(std140, binding = 5) uniform Probe { vec4 uScale; };
+        layout(location = 0) out vec4 oColor;
+        void main() { oColor = uScale * texture(uShadow, vec3(0.5)); })");
+    const Texture target({.extent = {1, 1}, .format = GL_RGBA8, .debugName = "audit probe target"});
+    const Framebuffer fb(target, 0, "audit probe target");
+    const float vertex[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    const Buffer vertices(
+        {.size = sizeof(vertex), .flags = 0, .data = vertex, .debugName = "audit probe vertex"});
+    const VertexArray withArray = VertexArray::create("audit probe: array");
+    glVertexArrayVertexBuffer(withArray.id(), 0, vertices.id(), 0, sizeof(vertex));
+    glEnableVertexArrayAttrib(withArray.id(), 0);
+    glVertexArrayAttribFormat(withArray.id(), 0, 4, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(withArray.id(), 0, 0);
+    const VertexArray withoutArray = VertexArray::create("audit probe: no array");
+
+    GlCallAudit audit;
+    fb.bind();
+    glBindTextureUnit(3, 0);
+    glBindBufferBase(GL_UNIFORM_BUFFER, 5, 0);
+    program.use();
+    glBindVertexArray(withArray.id());
+    glDrawArrays(GL_POINTS, 0, 1);
+    glBindVertexArray(withoutArray.id());
+    glDrawArrays(GL_POINTS, 0, 1);
+    const float zero[4] = {};
+    glClearNamedFramebufferfv(fb.id(), GL_COLOR, 0, zero);
+    float read[4] = {};
+    glGetNamedBufferSubData(vertices.id(), 0, sizeof(read), read);
+    glUseProgram(0);
+    glBindVertexArray(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+    const std::vector<std::string>& p = audit.problems();
+    EXPECT_EQ(audit.directBufferReads(), 1) << listed(p);
+    EXPECT_TRUE(mentions(p, "glGetNamedBufferSubData", "audit probe vertex")) << listed(p);
+    EXPECT_TRUE(mentions(p, "glClearNamedFramebufferfv", "audit probe")) << listed(p);
+    EXPECT_TRUE(mentions(p, "uShadow", "no texture")) << listed(p);
+    EXPECT_TRUE(mentions(p, "Probe", "no buffer")) << listed(p);
+    EXPECT_EQ(refetchingPrograms(audit).size(), 1u) << "one program, two vertex-fetch states";
+}
 
 TEST_F(GlTest, OrbitIblProbeReadsItsResultsThroughAMappedCopy) {
     orbit::IblOptions options;
