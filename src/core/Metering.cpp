@@ -102,15 +102,17 @@ HistogramStats histogramAverage(const Histogram& histogram, float lowPercent, fl
     const float n = float(total);
     const float lo = n * (std::clamp(lowPercent, 0.0f, 100.0f) * 0.01f);
     const float hi = n * (std::clamp(highPercent, 0.0f, 100.0f) * 0.01f);
-    float cumulative = 0.0f;
+    // The running count is kept as an integer: a float one drops counts past 2^24 pixels (an 8K frame).
+    std::uint32_t running = 0;
     float sum = 0.0f;
     float weightSum = 0.0f;
     bool lowFound = false;
     bool highFound = false;
     for (int b = 0; b < kHistogramBins; ++b) {
         const float count = float(histogram.bins[std::size_t(b)]);
-        const float start = cumulative;
-        cumulative += count;
+        const float start = float(running);
+        running += histogram.bins[std::size_t(b)];
+        const float cumulative = float(running);
         const float centre = histogramBinCentreLog2(b, histogram.log2Min, histogram.log2Max);
         const float w = std::max(0.0f, std::min(cumulative, hi) - std::max(start, lo));
         sum += w * centre;

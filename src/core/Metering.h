@@ -97,9 +97,10 @@ struct HistogramStats {
 };
 
 /// Mean log2 luminance of the [lowPercent, highPercent] window of the counted pixels, in float32 exactly as
-/// one shader thread does it (one pass over the bins, in order; percentages clamped to [0, 100]):
-///   n = float(sum(bins)); lo = n * (lowPercent * 0.01); hi = n * (highPercent * 0.01); c = 0; sum = ws = 0
-///   for b in 0..255: start = c; c += float(bins[b]); w = max(0, min(c, hi) - max(start, lo));
+/// the adaptation shader does it (the sums in bin order; percentages clamped to [0, 100]; the running count
+/// k an integer):
+///   n = float(sum(bins)); lo = n * (lowPercent * 0.01); hi = n * (highPercent * 0.01); k = 0; sum = ws = 0
+///   for b in 0..255: start = float(k); k += bins[b]; c = float(k); w = max(0, min(c, hi) - max(start, lo));
 ///                    sum += w * centre(b); ws += w
 ///   average = ws > 0 ? sum / ws : lowLog2      (empty window: lowPercent == highPercent)
 /// lowLog2 / highLog2: centre of the first non-empty bin with c > lo / c >= hi.

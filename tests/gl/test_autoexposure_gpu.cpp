@@ -11,9 +11,12 @@
 
 #include <glm/gtc/packing.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
+#include <utility>
 
 namespace photopic::test {
 
@@ -256,6 +259,44 @@ TEST_F(GlTest, HistogramMeteringIgnoresAHotArea) {
     EXPECT_LT(defaults - bulk, 0.5f * (mean - bulk));
     const float binWidth = (16.0f - -12.0f) / 254.0f;
     EXPECT_NEAR(strict, bulk, binWidth) << "10/80 ignores the hot area";
+}
+
+// The adaptation pass's histogram statistics (one bin per invocation, an integer scan, the float sums in bin
+// order) are the CPU's histogramAverage to the bit: the count, both percentile bins and the window's mean,
+// over a frame whose luminances spread across the histogram's range, for three windows.
+TEST_F(GlTest, HistogramStatisticsOnTheGpuAreTheCpusToTheBit) {
+    const int w = 97, h = 61;
+    ImageF image(w, h);
+    std::uint32_t state = 12345u;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            state = state * 1664525u + 1013904223u;
+            const float l = std::exp2(-13.0f + 28.0f * float(state >> 8) / float(1u << 24)); // finite halves
+            float* p = image.at(x, y);
+            p[0] = p[1] = p[2] = asHalf(l);
+            p[3] = 1.0f;
+        }
+    }
+    const Texture input = makeTexture(image, "histogram spread");
+    for (const auto [low, high] :
+         {std::pair{10.0f, 90.0f}, std::pair{0.0f, 100.0f}, std::pair{37.5f, 62.5f}}) {
+        Settings s = autoSettings();
+        s.autoExposure.metering = MeteringMode::Histogram;
+        s.autoExposure.lowPercent = low;
+        s.autoExposure.highPercent = high;
+        Pipeline pipeline({.settings = s, .keepTelemetryHistory = true});
+        pipeline.execute({.color = &input}, {});
+        const ExposureTelemetry t = pipeline.drainTelemetry().at(0);
+        const Histogram cpu =
+            buildHistogram(image, s.autoExposure.histogramLog2Min, s.autoExposure.histogramLog2Max);
+        ASSERT_EQ(t.histogram, cpu.bins);
+        const HistogramStats stats = histogramAverage(cpu, low, high);
+        EXPECT_EQ(t.histogramCount, stats.counted);
+        EXPECT_EQ(t.histogramLowLog2, stats.lowLog2) << low << "-" << high;
+        EXPECT_EQ(t.histogramHighLog2, stats.highLog2) << low << "-" << high;
+        EXPECT_EQ(t.histogramAverageLog2, stats.averageLog2) << low << "-" << high;
+        EXPECT_NE(stats.lowLog2, stats.highLog2);
+    }
 }
 
 TEST_F(GlTest, NonFiniteFramesLeaveTelemetryFinite) {

@@ -6,6 +6,7 @@
 #include "core/Bloom.h"
 #include "core/Color.h"
 #include "core/ColorGrading.h"
+#include "gl/Capabilities.h"
 #include "gl/ShaderLibrary.h"
 #include "gl/TextureIo.h"
 #include "passes/Bindings.h"
@@ -118,6 +119,35 @@ glm::vec3 cpuDownsample(const ImageF& source, int width, int height, int x, int 
     return color;
 }
 
+/// What a GPU's filtering may add to a target texel's error: bilinear weights are fixed point on GPUs (8
+/// fractional bits under D3D's rules, which their GL drivers follow), so a tap between texel centres can be
+/// off by 2^-9 of the spread of the texels it reads; summed over the 13 taps, at most 2^-8 of the spread of
+/// the texel's footprint (half its taps' weight is in the centre box). Taps on texel corners (levels that
+/// halve exactly) have weights of 1/2, exact in any fixed point, so only the other levels use this. A
+/// software renderer filters in float and gets no slack.
+glm::vec3 filterWeightSlack(const ImageF& source, int width, int height, int x, int y, float step) {
+    if (isSoftwareRenderer() || (source.width == 2 * width && source.height == 2 * height && step == 1.0f)) {
+        return glm::vec3(0.0f);
+    }
+    const float cx = (float(x) + 0.5f) * float(source.width) / float(width);
+    const float cy = (float(y) + 0.5f) * float(source.height) / float(height);
+    const float reach =
+        2.0f * step + 1.0f; // the outer taps' centres, and the texel each tap reaches past them
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (int sy = int(std::floor(cy - reach)); sy <= int(std::ceil(cy + reach)); ++sy) {
+        for (int sx = int(std::floor(cx - reach)); sx <= int(std::ceil(cx + reach)); ++sx) {
+            const float* t =
+                source.at(std::clamp(sx, 0, source.width - 1), std::clamp(sy, 0, source.height - 1));
+            for (int c = 0; c < 3; ++c) {
+                const float v = std::isfinite(t[c]) ? std::clamp(t[c], 0.0f, 65000.0f) : 0.0f;
+                lo[c] = std::min(lo[c], v);
+                hi[c] = std::max(hi[c], v);
+            }
+        }
+    }
+    return (hi - lo) * (1.0f / 256.0f);
+}
+
 /// A wavy field with fireflies (for the Karis weights), negative blue values (for the box clamp) and a NaN at
 /// (5, 7): what the prefilter must handle.
 ImageF fireflyField(int width, int height) {
@@ -180,14 +210,18 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
                     for (int x = 0; x < gpu.width; ++x) {
                         const glm::vec3 want = cpuDownsample(source, gpu.width, gpu.height, x, y, step,
                                                              level == 0, state.exposure, settings);
+                        const glm::vec3 spread =
+                            filterWeightSlack(source, gpu.width, gpu.height, x, y, step) *
+                            (level == 0 ? state.exposure : 1.0f);
                         for (int c = 0; c < 3; ++c) {
-                            const float d = std::abs(gpu.at(x, y)[c] - want[c]) / (std::abs(want[c]) + 1e-3f);
+                            // A half float holds 11 significant bits (relative step 2^-11, about 5e-4).
+                            const float allowed = 2e-3f * (std::abs(want[c]) + 1e-3f) + spread[c];
+                            const float d = std::abs(gpu.at(x, y)[c] - want[c]) / allowed;
                             worst = std::max(worst, std::isfinite(gpu.at(x, y)[c]) ? d : 1e9f);
                         }
                     }
                 }
-                // A half float holds 11 significant bits (relative step 2^-11, about 5e-4).
-                EXPECT_LT(worst, 2e-3f)
+                EXPECT_LT(worst, 1.0f)
                     << k.width << "x" << k.height << " divisor " << k.divisor << " level " << level << " ("
                     << gpu.width << "x" << gpu.height << "), blocks of " << side;
             }

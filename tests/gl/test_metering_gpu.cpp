@@ -5,6 +5,7 @@
 #include "GlTest.h"
 
 #include "core/Metering.h"
+#include "gl/Capabilities.h"
 #include "gl/ReadbackRing.h"
 #include "gl/TextureIo.h"
 #include "passes/Bindings.h"
@@ -226,7 +227,9 @@ TEST_F(GlTest, GpuSpotFollowsItsDisc) {
 namespace photopic::test {
 
 // Without a histogram, a software renderer meters with the barrier-free row shader and a GPU with the block
-// shader: the same reading, bit for bit, in every weighted mode (odd size: partial blocks at two edges).
+// shader: the same reading in every weighted mode (odd size: partial blocks at two edges). Bit for bit on a
+// software renderer, where the row shader runs; a GPU's compiler may fuse the two shaders' multiply-adds
+// differently (an NVIDIA H200 differed in the last bits), so there within a few float steps.
 TEST_F(GlTest, RowAndBlockMeteringShadersGiveTheSameReading) {
     const ImageF image = randomImage(157, 93, 7u);
     ImageF mask(157, 93, 0.0f);
@@ -242,8 +245,13 @@ TEST_F(GlTest, RowAndBlockMeteringShadersGiveTheSameReading) {
         const GpuMetering rows = meterOnGpu(image, settings, weights, false, m, true);
         const GpuMetering block = meterOnGpu(image, settings, weights, false, m, false);
         EXPECT_GT(rows.header.reading, 0.0f);
-        EXPECT_EQ(rows.header.reading, block.header.reading) << int(weights);
-        EXPECT_EQ(rows.header.weightSum, block.header.weightSum) << int(weights);
+        if (isSoftwareRenderer()) {
+            EXPECT_EQ(rows.header.reading, block.header.reading) << int(weights);
+            EXPECT_EQ(rows.header.weightSum, block.header.weightSum) << int(weights);
+        } else {
+            EXPECT_NEAR(rows.header.reading / block.header.reading, 1.0f, 1e-6f) << int(weights);
+            EXPECT_NEAR(rows.header.weightSum / block.header.weightSum, 1.0f, 1e-6f) << int(weights);
+        }
         EXPECT_EQ(rows.header.minBits, block.header.minBits);
         EXPECT_EQ(rows.header.maxBits, block.header.maxBits);
     }

@@ -5,9 +5,9 @@
 #include "EyeLagChecks.h"
 #include "GlTest.h"
 
+#include "common/TransitionAnalysis.h"
 #include "core/ExposureController.h"
 #include "core/Subjects.h"
-#include "common/TransitionAnalysis.h"
 #include "gl/ReadbackRing.h"
 #include "gl/TextureIo.h"
 #include "pipeline/Pipeline.h"
@@ -200,7 +200,9 @@ TEST_F(GlTest, SubjectMeteringDrivesExposureOnTheGpu) {
     for (std::size_t i = k + 1; i < toBright.size(); ++i) {
         EXPECT_LT(toBright[i].appliedLog2, toBright[i - 1].appliedLog2 - 1e-4f) << "frame " << i;
     }
-    const double gap0 = toBright[k - (k > 0 ? 1 : 0)].appliedLog2 - brightTarget;
+    // The gap before the frame whose target moved (that frame already took its step): the frame before it,
+    // the last of the dark run when the probe landed in the first frame (a GPU's reading can).
+    const double gap0 = (k > 0 ? toBright[k - 1] : inDark.back()).appliedLog2 - brightTarget;
     const double steps = double(toBright.size() - k);
     EXPECT_NEAR(toBright.back().appliedLog2, brightTarget + gap0 * std::exp(-steps * kDt / 0.3), 0.02);
     // Back into the dark: it rises, with tauBrighten.

@@ -67,5 +67,5 @@ void main() {
             c = vec3(1.0, 0.15, 0.1);
         }
     }
-    imageStore(uOutput, p, vec4(c, 1.0));
+    imageStore(uOutput, p, vec4(onDisplayCode(c), 1.0));
 }

@@ -114,5 +114,5 @@ void main() {
         // composite adds it (a texel fetch at the frame's pixel would read past its edge).
         c = srgbEncode(sanitize(textureLod(uBloom, (vec2(p) + 0.5) / vec2(size), 0.0).rgb));
     }
-    imageStore(uOutput, p, vec4(c, 1.0));
+    imageStore(uOutput, p, vec4(onDisplayCode(c), 1.0));
 }

@@ -78,5 +78,5 @@ void main() {
         float y = luma709(encoded);
         encoded += vec3(triangularNoise(p, uFrame, 11u) * uGrainIntensity * 4.0 * y * (1.0 - y));
     }
-    imageStore(uOutput, p, vec4(clamp(encoded, 0.0, 1.0), 1.0));
+    imageStore(uOutput, p, vec4(onDisplayCode(encoded), 1.0));
 }

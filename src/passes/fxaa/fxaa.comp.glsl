@@ -124,5 +124,5 @@ void main() {
     float offset = max(pixelOffset, subpixH);
 
     vec2 finalUv = uv + (horzSpan ? vec2(0.0, offset * lengthSign) : vec2(offset * lengthSign, 0.0));
-    imageStore(uOutput, p, vec4(textureLod(uInput, finalUv, 0.0).rgb, 1.0));
+    imageStore(uOutput, p, vec4(onDisplayCode(textureLod(uInput, finalUv, 0.0).rgb), 1.0));
 }

@@ -49,5 +49,5 @@ void main() {
     vec3 minusSide = mix(c, linearAt(p - step1, size), pair.x);
     vec3 plusSide = mix(c, linearAt(p + step1, size), pair.y);
     vec3 blended = (pair.x * minusSide + pair.y * plusSide) / (pair.x + pair.y);
-    imageStore(uOutput, p, vec4(fromLinear(blended), centre.a));
+    imageStore(uOutput, p, vec4(onDisplayCode(fromLinear(blended)), centre.a));
 }

@@ -120,6 +120,6 @@ void main() {
     if (uDither != 0) {
         display += triangularNoise3(p, uDitherSeeds.x, uDitherSeeds.y) * (1.0 / 255.0);
     }
-    imageStore(uOutput, p, vec4(clamp(display, 0.0, 1.0), 1.0));
+    imageStore(uOutput, p, vec4(onDisplayCode(display), 1.0));
 #endif
 }
