@@ -4,6 +4,9 @@
 #include "gl/Gl.h"
 
 #include <atomic>
+#include <charconv>
+#include <mutex>
+#include <set>
 #include <string_view>
 
 namespace photopic {
@@ -12,6 +15,33 @@ namespace {
 
 std::atomic<std::uint64_t> gErrors{0};
 std::atomic<std::uint64_t> gPerformanceWarnings{0};
+std::atomic<std::uint64_t> gUndefinedBehaviour{0};
+std::mutex gRecompiledMutex;
+std::set<std::uint64_t> gRecompiledPrograms; ///< programs NVIDIA said it compiled for the draw state
+
+/// NVIDIA compiles a graphics program's final code at its first draw, for that draw's state, and says so
+/// ("Vertex shader in program 3 is being recompiled based on GL state") when its disk cache lacks it: once
+/// per program on a cold cache, whatever the program does, so that first time is not counted. The same
+/// program compiled again is: its draws change state it was compiled for, a cost every time they do.
+bool firstCompileForDrawState(std::string_view text) {
+    static constexpr std::string_view kMarker = " in program ";
+    if (text.find("recompiled based on GL state") == std::string_view::npos) {
+        return false;
+    }
+    const std::size_t at = text.find(kMarker);
+    if (at == std::string_view::npos) {
+        return false;
+    }
+    std::uint64_t program = 0;
+    const char* first = text.data() + at + kMarker.size();
+    if (std::from_chars(first, text.data() + text.size(), program).ec != std::errc()) {
+        return false;
+    }
+    // Keyed by the stage's name too: each stage of a program is compiled once.
+    const std::uint64_t key = (program << 8) | std::uint64_t(static_cast<unsigned char>(text.front()));
+    const std::lock_guard lock(gRecompiledMutex);
+    return gRecompiledPrograms.insert(key).second;
+}
 
 void GLAPIENTRY onMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
                           const GLchar* message, const void*) {
@@ -22,9 +52,12 @@ void GLAPIENTRY onMessage(GLenum source, GLenum type, GLuint id, GLenum severity
     const std::string_view text(message,
                                 length < 0 ? std::char_traits<char>::length(message) : std::size_t(length));
     const bool error = type == GL_DEBUG_TYPE_ERROR || severity == GL_DEBUG_SEVERITY_HIGH;
-    if (type == GL_DEBUG_TYPE_PERFORMANCE &&
-        (severity == GL_DEBUG_SEVERITY_MEDIUM || severity == GL_DEBUG_SEVERITY_HIGH)) {
+    const bool notable = severity == GL_DEBUG_SEVERITY_MEDIUM || severity == GL_DEBUG_SEVERITY_HIGH;
+    if (type == GL_DEBUG_TYPE_PERFORMANCE && notable && !firstCompileForDrawState(text)) {
         ++gPerformanceWarnings;
+    }
+    if (type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR && notable) {
+        ++gUndefinedBehaviour;
     }
     if (error) {
         ++gErrors;
@@ -56,9 +89,15 @@ std::uint64_t glDebugErrorCount() {
 std::uint64_t glDebugPerformanceWarningCount() {
     return gPerformanceWarnings.load();
 }
+std::uint64_t glDebugUndefinedBehaviourCount() {
+    return gUndefinedBehaviour.load();
+}
 void resetGlDebugErrorCount() {
     gErrors = 0;
     gPerformanceWarnings = 0;
+    gUndefinedBehaviour = 0;
+    const std::lock_guard lock(gRecompiledMutex);
+    gRecompiledPrograms.clear();
 }
 
 } // namespace photopic

@@ -29,6 +29,8 @@ protected:
     void TearDown() override {
         if (glContext()) {
             EXPECT_EQ(glDebugErrorCount(), 0u) << "GL debug errors were raised during the test (see log)";
+            EXPECT_EQ(glDebugUndefinedBehaviourCount(), 0u)
+                << "the driver reported undefined behaviour during the test (see log)";
             if (glContext()->info().vendor.find("NVIDIA") != std::string::npos) {
                 EXPECT_EQ(glDebugPerformanceWarningCount(), 0u)
                     << "the driver raised performance warnings during the test (see log)";

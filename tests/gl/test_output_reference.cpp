@@ -14,6 +14,8 @@
 
 #include "GlTest.h"
 
+#include "gl/Capabilities.h"
+
 #include "gl/TextureIo.h"
 #include "io/ImageIO.h"
 #include "pipeline/Pipeline.h"
@@ -108,8 +110,12 @@ void expectMatchesReference(const Settings& settings, std::uint64_t frameIndex, 
                                 << " samples differ";
     EXPECT_LE(worstNearBad, 4) << name << ", next to the non-finite texels";
     if (countLimit) {
-        // Rounding moves a sample across an 8-bit step now and then, not the image.
-        EXPECT_LT(double(differing), 0.01 * double(out.rgba.size())) << name;
+        // Rounding moves a sample across an 8-bit step now and then, not the image. The references come from
+        // a software renderer, which filters in float; a GPU's bilinear weights are fixed point (the bloom
+        // chain's taps), which moves more samples by a step: an NVIDIA H200 moved 1.7% of them (before the
+        // display passes rounded to their code themselves).
+        const double share = isSoftwareRenderer() ? 0.01 : 0.03;
+        EXPECT_LT(double(differing), share * double(out.rgba.size())) << name;
     }
 }
 

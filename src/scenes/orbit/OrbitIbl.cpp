@@ -1,12 +1,14 @@
 #include "scenes/orbit/OrbitIbl.h"
 
 #include "core/Log.h"
+#include "gl/ReadbackRing.h"
 #include "io/DataPath.h"
 #include "io/ImageIO.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <exception>
 #include <numbers>
 #include <stdexcept>
@@ -211,6 +213,22 @@ void Ibl::bind() const noexcept {
     mBlock.bind(kIblBlockBinding);
 }
 
+IblStandIn::IblStandIn()
+    : mCube(makeCube(1, 1, "ibl stand-in cube (no environment)"))
+    , mLut({.extent = {1, 1}, .format = GL_RGBA16F, .debugName = "ibl stand-in table (no environment)"})
+    , mBlock("ibl stand-in parameters (no environment)", GpuIblParameters{.intensity = 0.0f}) {
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearTexImage(mCube.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    glClearTexImage(mLut.id(), 0, GL_RGBA, GL_FLOAT, zero);
+}
+
+void IblStandIn::bind() const noexcept {
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    glBindTextureUnit(kIblSpecularUnit, mCube.id());
+    glBindTextureUnit(kIblLutUnit, mLut.id());
+    mBlock.bind(kIblBlockBinding);
+}
+
 ImageF Ibl::proceduralSky(int width, int height) {
     ImageF sky(std::max(width, 2), std::max(height, 1), 1.0f);
     const glm::vec3 sun = glm::normalize(glm::vec3(0.5f, 0.55f, -0.67f));
@@ -273,10 +291,12 @@ std::vector<glm::vec3> iblProbe(const Ibl& ibl, std::span<const GpuIblProbeQuery
     const Program program = makeComputeProgram("scenes/orbit/orbit_ibl_probe.comp.glsl", iblShaderDefines());
     const Buffer in(
         {.size = queries.size_bytes(), .flags = 0, .data = queries.data(), .debugName = "ibl probe in"});
-    const Buffer out({.size = queries.size() * sizeof(glm::vec4),
-                      .flags = GL_DYNAMIC_STORAGE_BIT,
-                      .data = nullptr,
-                      .debugName = "ibl probe out"});
+    // GPU-only storage, read through a copy into a mapped read-back buffer: reading a buffer the GPU wrote
+    // with glGetNamedBufferSubData makes a driver move it to host memory (NVIDIA says so in a performance
+    // warning).
+    const std::size_t bytes = queries.size() * sizeof(glm::vec4);
+    const Buffer out({.size = bytes, .flags = 0, .data = nullptr, .debugName = "ibl probe out"});
+    ReadbackRing readback(bytes, 1, "ibl probe");
     program.use();
     glUniform1ui(glGetUniformLocation(program.id(), "uCount"), GLuint(queries.size()));
     ibl.bind();
@@ -284,8 +304,11 @@ std::vector<glm::vec3> iblProbe(const Ibl& ibl, std::span<const GpuIblProbeQuery
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
     glDispatchCompute(GLuint((queries.size() + 63) / 64), 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    readback.enqueue(out, 0, 0);
     std::vector<glm::vec4> rgba(queries.size());
-    glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(rgba.size() * sizeof(glm::vec4)), rgba.data());
+    for (const ReadbackRing::Result& r : readback.drain()) {
+        std::memcpy(rgba.data(), r.bytes.data(), bytes);
+    }
     std::vector<glm::vec3> rgb(rgba.size());
     std::transform(rgba.begin(), rgba.end(), rgb.begin(), [](glm::vec4 v) { return glm::vec3(v); });
     return rgb;

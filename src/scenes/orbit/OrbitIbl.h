@@ -100,6 +100,23 @@ private:
     double mBuildMilliseconds = 0.0;
 };
 
+/// What a program that includes orbit_pbr.h.glsl finds bound when there is no environment: a black 1x1
+/// cube, a 1x1 table of zeros and a block of zero light and intensity. The block then has a buffer (a shader
+/// reading a block with none bound is undefined behaviour), every sampler a complete texture of its kind,
+/// and the image-based light is 0.
+class IblStandIn {
+public:
+    /// Needs a current GL 4.5 context.
+    IblStandIn();
+    /// Binds to the units and block binding Ibl::bind() uses.
+    void bind() const noexcept;
+
+private:
+    GlObject<detail::TextureDeleter> mCube;
+    photopic::Texture mLut;
+    ParameterBlock<GpuIblParameters> mBlock;
+};
+
 // --- Evaluating the shading at chosen points (tests, calibration) ---
 
 enum class IblProbeMode : int {

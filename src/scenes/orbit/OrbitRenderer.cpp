@@ -155,6 +155,11 @@ void OrbitRenderer::renderShadowMap(const DrawInfo& info) {
 }
 
 void OrbitRenderer::draw(const DrawInfo& info) {
+    // No program is current at a clear: NVIDIA's driver checks the current program against the state at a
+    // clear as at a draw, and recompiles its vertex shader when that state (the framebuffer, the vertex
+    // array) differs from the one it was drawn with; a program left current by the last draw would be
+    // recompiled for a clear it takes no part in.
+    glUseProgram(0);
     if (mMeshes && info.shadow != nullptr) {
         renderShadowMap(info);
     }
@@ -168,6 +173,8 @@ void OrbitRenderer::draw(const DrawInfo& info) {
         // Stored, never accumulated: the same value always gives the same frame.
         mIbl->setIntensity(info.lights.ibl);
         mIbl->bind();
+    } else {
+        mNoIbl.bind();
     }
     glDisable(GL_BLEND);
 
@@ -186,6 +193,7 @@ void OrbitRenderer::draw(const DrawInfo& info) {
     }
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
+    glUseProgram(0); // the same at the host's next clear
     glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);

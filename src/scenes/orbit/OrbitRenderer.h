@@ -101,6 +101,7 @@ private:
     glm::mat4 mShadowModel{0.0f};
     ShadowSettings mShadowSettings;
     std::unique_ptr<Ibl> mIbl;
+    IblStandIn mNoIbl; ///< bound in its place while there is no environment
     // 1x1 stand-ins for absent material textures: white colour (sRGB), white data, flat normal.
     photopic::Texture mWhiteSrgb;
     photopic::Texture mWhiteLinear;

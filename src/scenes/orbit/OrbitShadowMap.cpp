@@ -82,6 +82,26 @@ void setDepthDrawState() {
     glDisable(GL_SCISSOR_TEST);
 }
 
+/// Depth comparison against the stored depth (reference <= stored: lit), as orbit_shadow.h.glsl's
+/// sampler2DShadow reads it; outside the map the border's depth 1 compares as lit.
+void setDepthCompare(GLuint texture) {
+    glTextureParameteri(texture, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(texture, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glTextureParameterfv(texture, GL_TEXTURE_BORDER_COLOR, border);
+}
+
+photopic::Texture depthTexture(int size, std::string_view debugName) {
+    photopic::Texture t({.extent = {size, size},
+                         .format = GL_DEPTH_COMPONENT32F,
+                         .minFilter = GL_LINEAR,
+                         .magFilter = GL_LINEAR,
+                         .wrap = GL_CLAMP_TO_BORDER,
+                         .debugName = debugName});
+    setDepthCompare(t.id());
+    return t;
+}
+
 ShaderDefines visibilityDefines() {
     ShaderDefines defines = ShadowMap::shaderDefines();
     defines.emplace_back("ORBIT_SHADOW_WORLD_OUT", "1");
@@ -173,7 +193,14 @@ ShadowMap::ShadowMap()
     , mVisibilityProgram(makeGraphicsProgram("scenes/orbit/orbit_shadow_depth.vert.glsl",
                                              "scenes/orbit/orbit_shadow_visibility.frag.glsl",
                                              visibilityDefines()))
-    , mBlock("orbit sun shadow") {}
+    , mStandIn(depthTexture(1, "orbit sun shadow map (none yet)"))
+    , mBlock("orbit sun shadow") {
+    // A program with a shadow sampler must find a depth texture with comparison on its unit at every draw,
+    // also before the first map or with shadows off (where the block's enabled flag keeps it unread): a
+    // unit with no texture is undefined behaviour (NVIDIA reports it). Depth 1: everything lit.
+    const float far = 1.0f;
+    glClearTexImage(mStandIn.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
+}
 
 void ShadowMap::render(const RenderInfo& info) {
     if (info.settings == nullptr || !info.drawCasters) {
@@ -188,18 +215,8 @@ void ShadowMap::render(const RenderInfo& info) {
     }
     const ShadowSettings& s = *info.settings;
     if (!mDepth.valid() || mDepth.extent().width != s.resolution) {
-        mDepth = Texture({.extent = {s.resolution, s.resolution},
-                          .format = GL_DEPTH_COMPONENT32F,
-                          .minFilter = GL_LINEAR,
-                          .magFilter = GL_LINEAR,
-                          .wrap = GL_CLAMP_TO_BORDER,
-                          .debugName = "orbit sun shadow map"});
-        // Hardware comparison: each fetch is a bilinear 2x2 PCF of (reference <= stored). Outside the map
-        // the border's depth 1 compares as lit.
-        glTextureParameteri(mDepth.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glTextureParameteri(mDepth.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-        const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-        glTextureParameterfv(mDepth.id(), GL_TEXTURE_BORDER_COLOR, border);
+        // Hardware comparison: each fetch is a bilinear 2x2 PCF of (reference <= stored).
+        mDepth = depthTexture(s.resolution, "orbit sun shadow map");
         mTarget = Framebuffer({.color = {}, .depth = &mDepth, .debugName = "orbit sun shadow map"});
     }
     mProjection = fitShadowProjection(info.sunDirection, info.bounds, s.resolution, info.snap);
@@ -229,6 +246,7 @@ void ShadowMap::render(const RenderInfo& info) {
     DebugGroup group("orbit sun shadow map");
     mTarget.bind();
     setDepthDrawState();
+    glUseProgram(0); // a program current at a clear is checked against it (OrbitRenderer::draw says why)
     const float far = 1.0f;
     glClearNamedFramebufferfv(mTarget.id(), GL_DEPTH, 0, &far);
     mDepthProgram.use();
@@ -240,7 +258,7 @@ void ShadowMap::render(const RenderInfo& info) {
 }
 
 void ShadowMap::bind(GLuint unit, GLuint blockBinding) const {
-    glBindTextureUnit(unit, mDepth.id());
+    glBindTextureUnit(unit, mDepth.valid() ? mDepth.id() : mStandIn.id());
     glBindSampler(unit, 0); // a sampler object would override the comparison mode
     mBlock.bind(blockBinding);
 }

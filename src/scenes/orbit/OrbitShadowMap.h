@@ -140,7 +140,8 @@ public:
     void render(const RenderInfo& info);
 
     /// Binds the map (with depth comparison) to texture unit `unit` and the parameter block to uniform
-    /// block `blockBinding`, as orbit_shadow.h.glsl reads them.
+    /// block `blockBinding`, as orbit_shadow.h.glsl reads them. Before the first map, a 1x1 depth texture
+    /// with comparison stands in, so the unit always holds what a shadow sampler needs.
     void bind(GLuint unit = kDefaultTextureUnit, GLuint blockBinding = kDefaultBlockBinding) const;
 
     /// Debug view and measurement: draws the casters (the same callback) with `viewProjection` into the
@@ -170,6 +171,7 @@ private:
     Program mDepthProgram;
     Program mVisibilityProgram;
     photopic::Texture mDepth;
+    photopic::Texture mStandIn; ///< 1x1, depth 1, comparison on: what bind() binds before the first map
     Framebuffer mTarget;
     ParameterBlock<Block> mBlock;
     ShadowProjection mProjection;

@@ -97,6 +97,10 @@ void TestbedRenderer::draw(const DrawInfo& info) {
     mFrame.update(&f, sizeof(f));
 
     DebugGroup group("testbed scene");
+    // No program is current at a clear: NVIDIA's driver checks the current program against the state at a
+    // clear as at a draw and recompiles its vertex shader when that state differs from the one it was drawn
+    // with (the orbit renderer does the same).
+    glUseProgram(0);
     mTargets.bindAndClear();
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, mFrame.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mPrimitives.id());
@@ -121,6 +125,7 @@ void TestbedRenderer::draw(const DrawInfo& info) {
     mObjects.use();
     glDrawArraysInstanced(GL_TRIANGLES, 0, 36, GLsizei(prims.size()));
     glDisable(GL_DEPTH_TEST);
+    glUseProgram(0); // the same at the host's next clear
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 }
