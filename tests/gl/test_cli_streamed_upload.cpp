@@ -2,10 +2,12 @@
 // each texture must hold what uploading the frame's floats row by row with GL_FLOAT (the driver converting
 // them to the texture's format) gives, for a half-float colour frame, a float one, an odd size, and the
 // depth, normals and motion layers; over several frames in a row, so that both slots of the ring and the
-// reuse of the first are exercised; and the unpack buffer binding is left as it was found, unbound.
+// reuse of the first are exercised; the unpack buffer binding is left as it was found, unbound; and the
+// upload's calls pass the audit of what NVIDIA's driver reports (GlCallAudit.h: no CPU read of a buffer).
 
 #include "ImageInputs.h"
 
+#include "GlCallAudit.h"
 #include "GlTest.h"
 
 #include "core/HalfFloat.h"
@@ -15,6 +17,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <random>
 #include <span>
 #include <string>
@@ -148,7 +151,15 @@ GLint unpackBufferBinding() {
 
 void expectSameAsGlConversion(cli::InputTextures& textures, const cli::DecodedFrame& frame, bool halfTexture,
                               const std::string& what) {
-    const FrameInputs inputs = textures.upload(frame, halfTexture);
+    std::optional<FrameInputs> uploaded;
+    {
+        // What NVIDIA's driver would report and llvmpipe does not: the mapping is for writing only.
+        test::GlCallAudit audit;
+        uploaded = textures.upload(frame, halfTexture);
+        EXPECT_EQ(audit.directBufferReads(), 0) << what;
+        EXPECT_TRUE(audit.problems().empty()) << what << ": " << audit.problems().front();
+    }
+    const FrameInputs& inputs = *uploaded;
     EXPECT_EQ(unpackBufferBinding(), 0) << what << ": the unpack buffer is left bound";
     ASSERT_TRUE(inputs.color && inputs.depth && inputs.normals && inputs.motion) << what;
     EXPECT_EQ(inputs.color->format(), GLenum(halfTexture && frame.halfColor ? GL_RGBA16F : GL_RGBA32F));
