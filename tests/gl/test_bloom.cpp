@@ -229,6 +229,104 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
     }
 }
 
+namespace {
+
+/// CPU twin of one texel of bloom_upsample.comp.glsl: mix(fine, tent(coarse), radius), the 3x3 tent over the
+/// coarser level at the texel's centre as four texels per axis with weights (1 - f) / 4, 1/2 - f/4, 1/4 + f/4
+/// and f/4 (clamp to edge).
+glm::vec3 cpuUpsample(const ImageF& coarse, const ImageF& fine, int x, int y, float radius) {
+    auto axis = [](int p, int fineSize, int coarseSize, int(&texels)[4], float(&w)[4]) {
+        const float c = (float(p) + 0.5f) * float(coarseSize) / float(fineSize) - 0.5f;
+        const int i = int(std::floor(c));
+        const float f = c - float(i);
+        const float weights[4] = {(1.0f - f) * 0.25f, 0.5f - f * 0.25f, 0.25f + f * 0.25f, f * 0.25f};
+        for (int k = 0; k < 4; ++k) {
+            texels[k] = std::clamp(i - 1 + k, 0, coarseSize - 1);
+            w[k] = weights[k];
+        }
+    };
+    int tx[4], ty[4];
+    float wx[4], wy[4];
+    axis(x, fine.width, coarse.width, tx, wx);
+    axis(y, fine.height, coarse.height, ty, wy);
+    glm::vec3 tent(0.0f);
+    for (int j = 0; j < 4; ++j) {
+        for (int i = 0; i < 4; ++i) {
+            const float* t = coarse.at(tx[i], ty[j]);
+            tent += glm::vec3(t[0], t[1], t[2]) * (wx[i] * wy[j]);
+        }
+    }
+    const float* f = fine.at(x, y);
+    return glm::mix(glm::vec3(f[0], f[1], f[2]), tent, radius);
+}
+
+/// The spread of the coarse texels a fine texel's tent reads, over 256: a GPU's fixed-point bilinear weights
+/// on the pair taps (filterWeightSlack). Levels that upsample in 4x4 blocks fetch texels and weigh them in
+/// float; a software renderer filters in float too.
+glm::vec3 tentWeightSlack(const ImageF& coarse, const ImageF& fine, int x, int y) {
+    if (isSoftwareRenderer()) {
+        return glm::vec3(0.0f);
+    }
+    const int cx = int(std::floor((float(x) + 0.5f) * float(coarse.width) / float(fine.width)));
+    const int cy = int(std::floor((float(y) + 0.5f) * float(coarse.height) / float(fine.height)));
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (int j = cy - 2; j <= cy + 2; ++j) {
+        for (int i = cx - 2; i <= cx + 2; ++i) {
+            const float* t =
+                coarse.at(std::clamp(i, 0, coarse.width - 1), std::clamp(j, 0, coarse.height - 1));
+            lo = glm::min(lo, glm::vec3(t[0], t[1], t[2]));
+            hi = glm::max(hi, glm::vec3(t[0], t[1], t[2]));
+        }
+    }
+    return (hi - lo) * (1.0f / 256.0f);
+}
+
+} // namespace
+
+// Every upsampled level against the CPU tent, each from the GPU's own coarser level and downsampled level, on
+// sizes whose levels double exactly (the 4x4-block upsample where the block side is 4) and sizes whose levels
+// do not, with both block sides and the scene's fireflies.
+TEST_F(GlTest, BloomUpsampleLevelsMatchTheCpuTent) {
+    for (const int side : {2, 4}) {
+        for (const Extent size : {Extent{64, 48}, Extent{72, 40}, Extent{70, 46}, Extent{61, 37}}) {
+            const ImageF image = fireflyField(size.width, size.height);
+            const Texture input = makeTexture(image, "bloom upsample twin input");
+            GpuExposureState state;
+            state.exposure = 1.5f;
+            const Buffer exposure(
+                {.size = sizeof(state), .data = &state, .debugName = "bloom upsample twin exposure"});
+            BloomSettings settings;
+            settings.radius = 0.7f;
+            BloomPass pass;
+            pass.setBlockSide(side);
+            pass.resize(size);
+            pass.execute({.scene = &input, .exposureState = &exposure, .settings = &settings, .mipCount = 5});
+            ASSERT_GE(pass.levels(), 3);
+            for (int level = pass.levels() - 2; level >= 0; --level) {
+                const ImageF coarse = readTextureF(level == pass.levels() - 2 ? pass.downsampled(level + 1)
+                                                                              : pass.upsampled(level + 1));
+                const ImageF fine = readTextureF(pass.downsampled(level));
+                const ImageF gpu = readTextureF(pass.upsampled(level));
+                float worst = 0.0f;
+                for (int y = 0; y < gpu.height; ++y) {
+                    for (int x = 0; x < gpu.width; ++x) {
+                        const glm::vec3 want = cpuUpsample(coarse, fine, x, y, settings.radius);
+                        const glm::vec3 slack = tentWeightSlack(coarse, fine, x, y);
+                        for (int c = 0; c < 3; ++c) {
+                            // Half floats: a relative step of 2^-11.
+                            const float allowed = 2e-3f * (std::abs(want[c]) + 1e-3f) + slack[c];
+                            const float d = std::abs(gpu.at(x, y)[c] - want[c]) / allowed;
+                            worst = std::max(worst, std::isfinite(gpu.at(x, y)[c]) ? d : 1e9f);
+                        }
+                    }
+                }
+                EXPECT_LT(worst, 1.0f) << size.width << "x" << size.height << " level " << level << " ("
+                                       << gpu.width << "x" << gpu.height << "), blocks of " << side;
+            }
+        }
+    }
+}
+
 // The bloom chain and the tone-map pass take their invocation shape from pixelGroup(): rows of 64 on a
 // software renderer, 8x8 on a GPU. Results must not depend on it: with either shape forced, every bloom level
 // (both block sizes) and the display image, dithered, are the same to the bit, on a size whose levels halve

@@ -43,6 +43,8 @@ void BloomPass::setBlockSide(int side) {
     mPrefilterBlocks = makeComputeProgram(
         kDown, programDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {blocks, "1"}}, mGroup));
     mDownsampleBlocks = makeComputeProgram(kDown, programDefines({{blocks, "1"}}, mGroup));
+    mUpsampleBlocks =
+        side == 4 ? makeComputeProgram(kUp, programDefines({{"BLOCKS_4X4", "1"}}, mGroup)) : Program();
     mBlockSide = side;
 }
 
@@ -145,11 +147,13 @@ const Texture& BloomPass::execute(const Inputs& in) {
                                     .coarseTexel = {1.0f / float(ce.width), 1.0f / float(ce.height)},
                                     .radius = in.settings->radius});
         mUpsampleParameters.bind(kBindingParameters);
-        mUpsample.use();
+        // 4x4 blocks where the level is exactly twice the coarser one: their tent weights are constants.
+        const bool blocks = mUpsampleBlocks.valid() && te.width == 2 * ce.width && te.height == 2 * ce.height;
+        (blocks ? mUpsampleBlocks : mUpsample).use();
         glBindTextureUnit(0, coarse.id());
         glBindTextureUnit(1, fine.id());
         glBindImageTexture(0, mUp[std::size_t(i)].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
-        dispatchPixels(te, mGroup);
+        dispatchPixels(blocks ? Extent{(te.width + 3) / 4, (te.height + 3) / 4} : te, mGroup);
         imageWriteBarrier();
     }
     return levels == 1 ? mDown[0] : mUp[0];

@@ -54,7 +54,8 @@ public:
     BloomPass();
     /// Target texels per side of an invocation's block where a level is exactly half its source: 4 (16 texels
     /// from 61 shared taps) on a software renderer, 2 (4 texels from 25) on a GPU, where holding 61 taps at
-    /// once would cost occupancy. Tests run both.
+    /// once would cost occupancy. With 4, upsampled levels exactly twice the coarser one are computed in 4x4
+    /// blocks too (36 fetched texels, constant tent weights); with 2 by filtered taps. Tests run both.
     void setBlockSide(int side);
     [[nodiscard]] int blockSide() const { return mBlockSide; }
     /// The invocation shape the programs were built with (pixelGroup() when the pass was made).
@@ -74,6 +75,8 @@ public:
     [[nodiscard]] int levels() const { return mLevels; }
     /// Downsampled level `level` (0: the prefilter's output) of the last execute, before the upsamples.
     [[nodiscard]] const Texture& downsampled(int level) const { return mDown.at(std::size_t(level)); }
+    /// Upsampled level `level` of the last execute (levels() - 1 of them; 0 is the result).
+    [[nodiscard]] const Texture& upsampled(int level) const { return mUp.at(std::size_t(level)); }
 
 private:
     void ensureChain(int firstDivisor, int levels);
@@ -85,6 +88,8 @@ private:
     Program mDownsample, mDownsampleBlocks;
     int mBlockSide = 2;
     Program mUpsample;
+    /// 4x4 blocks of a level exactly twice the coarser one (with block side 4 only; else not made).
+    Program mUpsampleBlocks;
     /// The prefilter's: the scene may be the host's own texture, with its own filtering.
     Sampler mSceneSampler;
     ParameterBlock<BloomDownsampleParameters> mDownsampleParameters;
