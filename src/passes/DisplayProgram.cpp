@@ -1,5 +1,6 @@
 #include "passes/DisplayProgram.h"
 
+#include "gl/Capabilities.h"
 #include "passes/Bindings.h"
 
 #include <utility>
@@ -8,6 +9,28 @@ namespace photopic {
 
 GLenum displayFormat(int bitDepth) noexcept {
     return bitDepth == 16 ? GL_RGBA16 : GL_RGBA8;
+}
+
+namespace {
+std::optional<bool> gForcedRounding;
+} // namespace
+
+bool displayStoresRound() {
+    return gForcedRounding.value_or(!isSoftwareRenderer());
+}
+
+void forceDisplayRounding(std::optional<bool> round) {
+    gForcedRounding = round;
+}
+
+ShaderDefines withDisplayStore(ShaderDefines defines, int bitDepth) {
+    if (bitDepth == 16) {
+        defines.emplace_back("DISPLAY_16", "1");
+    }
+    if (displayStoresRound()) {
+        defines.emplace_back("DISPLAY_ROUNDING", "1");
+    }
+    return defines;
 }
 
 DisplayProgram::DisplayProgram(std::string computeName, ShaderDefines defines)
@@ -21,11 +44,7 @@ void DisplayProgram::prepare(int bitDepth) {
     if (program.valid()) {
         return;
     }
-    ShaderDefines defines = mDefines;
-    if (bitDepth == 16) {
-        defines.emplace_back("DISPLAY_16", "1");
-    }
-    program = makeComputeProgram(mName, defines);
+    program = makeComputeProgram(mName, withDisplayStore(mDefines, bitDepth));
 }
 
 const Program& DisplayProgram::at(int bitDepth) {

@@ -6,12 +6,23 @@
 
 #include "gl/ShaderLibrary.h"
 
+#include <optional>
 #include <string>
 
 namespace photopic {
 
 /// GL_RGBA8 at 8 bits, GL_RGBA16 at 16: the format of displayColor and debugColor.
 [[nodiscard]] GLenum displayFormat(int bitDepth) noexcept;
+
+/// Whether the display passes put each value on its code themselves before the image store
+/// (passes/common/display_format.h.glsl onDisplayCode): on a GPU, whose store may round a value near a half
+/// code either way; not on a software renderer, whose store rounds to nearest even itself (the same bits, and
+/// the tone-map pass's rounding was 1.5% of a 1080p chain there). Programs read it when they are built; tests
+/// force either value (nullopt: by the renderer again).
+[[nodiscard]] bool displayStoresRound();
+void forceDisplayRounding(std::optional<bool> round);
+/// `defines` plus the display store's: DISPLAY_16 at 16 bits, DISPLAY_ROUNDING where displayStoresRound().
+[[nodiscard]] ShaderDefines withDisplayStore(ShaderDefines defines, int bitDepth);
 
 /// One display-domain compute program, built for each storage depth it is asked for: the 8-bit program at
 /// construction (a set-up boundary: throws GlError with the log), the 16-bit one by prepare(16) (called from

@@ -4,8 +4,10 @@
 
 #include "GlTest.h"
 
+#include "gl/Capabilities.h"
 #include "gl/StateScope.h"
 #include "gl/TextureIo.h"
+#include "passes/DisplayProgram.h"
 #include "pipeline/Pipeline.h"
 
 #include <algorithm>
@@ -170,6 +172,64 @@ TEST_F(GlTest, SixteenBitSceneDebugViewIsSixteenBits) {
     const Texture& display = pipeline.execute({.color = &texture}, {});
     EXPECT_EQ(display.format(), GLenum(GL_RGBA16));
     EXPECT_GT(distinctRedLevels(readTexture16(display)), 1000u); // luma as grey: the ramp again
+}
+
+} // namespace photopic::test
+
+namespace photopic::test {
+
+// The display passes round to their code themselves only where the store might not (displayStoresRound: on
+// GPUs). A software renderer's store rounds to nearest even, so forcing the rounding on there must change no
+// bit of any display pass's output, at 8 and 16 bits, dithered or not: what lets it skip the instructions.
+TEST_F(GlTest, DisplayRoundingChangesNoBitWhereTheStoreRoundsItself) {
+    if (!isSoftwareRenderer()) {
+        GTEST_SKIP() << "a GPU's store need not round to nearest even; the rounding is on there";
+    }
+    struct Case {
+        std::string name;
+        Settings settings;
+    };
+    std::vector<Case> cases(5);
+    cases[0].name = "default";
+    cases[1].name = "fxaa, grain, vignette";
+    cases[1].settings.aa.mode = AntiAliasing::Fxaa;
+    cases[1].settings.grain.enabled = true;
+    cases[1].settings.vignette.enabled = true;
+    cases[2].name = "smaa, agx";
+    cases[2].settings.aa.mode = AntiAliasing::Smaa;
+    cases[2].settings.tonemapping.mode = ToneMapper::Agx;
+    cases[3].name = "histogram overlay";
+    cases[3].settings.debug.view = DebugView::Histogram;
+    cases[4].name = "ev view";
+    cases[4].settings.debug.view = DebugView::Ev;
+    ImageF input = greyRamp();
+    for (std::size_t i = 0; i < input.pixelCount(); ++i) { // 0 to 8, past white, so bloom and curves bite
+        for (int c = 0; c < 3; ++c) {
+            input.rgba[i * 4 + std::size_t(c)] *= 8.0f * float(c + 1) / 3.0f;
+        }
+    }
+    for (const Case& c : cases) {
+        for (const int bits : {8, 16}) {
+            Settings settings = c.settings;
+            settings.output.bitDepth = bits;
+            std::vector<std::uint16_t> images[2];
+            for (const bool round : {false, true}) {
+                forceDisplayRounding(round);
+                Pipeline pipeline({.settings = settings});
+                const Texture texture = makeTexture(input, "ramp past white");
+                const Texture& display = pipeline.execute({.color = &texture}, {.dt = 0.1f, .frameIndex = 3});
+                if (bits == 16) {
+                    images[round ? 1 : 0] = readTexture16(display).rgba;
+                } else {
+                    const Image8 image = readTexture8(display);
+                    images[round ? 1 : 0].assign(image.rgba.begin(), image.rgba.end());
+                }
+            }
+            forceDisplayRounding(std::nullopt);
+            EXPECT_FALSE(images[0].empty());
+            EXPECT_EQ(images[0], images[1]) << c.name << ", " << bits << " bits";
+        }
+    }
 }
 
 } // namespace photopic::test

@@ -43,10 +43,8 @@ const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool
                     (scene ? 1 : 0);
     auto it = mPrograms.find(key);
     if (it == mPrograms.end()) {
-        ShaderDefines defines{{"TONEMAP_MODE", std::to_string(curve)}};
-        if (display16) {
-            defines.emplace_back("DISPLAY_16", "1");
-        }
+        ShaderDefines defines =
+            withDisplayStore({{"TONEMAP_MODE", std::to_string(curve)}}, display16 ? 16 : 8);
         if (bloom) {
             defines.emplace_back("BLOOM", "1");
         }
