@@ -4,6 +4,7 @@
 // degradation, motion vectors with the ship's own motion, and warning-free shaders.
 
 #include "GlTest.h"
+#include "OrbitQuad.h"
 
 #include "core/Color.h"
 #include "core/Log.h"
@@ -120,23 +121,12 @@ TEST_F(GlTest, OrbitColourTexturesDecodeSrgbAndDataTexturesStayLinear) {
     m.emissiveTexture = 0;
     m.metallicRoughnessTexture = 1;
     model.materials.push_back(m);
-    orbit::MeshInstance quad;
-    orbit::Primitive p;
-    for (const glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
-        p.vertices.push_back(
-            {.position = glm::vec3(c, 0.0f), .normal = {0, 0, 1}, .texCoord = c * 0.5f + 0.5f});
-    }
-    p.indices = {0, 1, 2, 0, 2, 3};
-    quad.primitives.push_back(p);
-    model.meshes.push_back(quad);
+    model.meshes.push_back(orbitQuad());
 
     orbit::OrbitRenderer renderer;
     renderer.resize({32, 32});
     renderer.setModel(model, glm::mat4(1.0f));
-    Camera camera;
-    camera.view = glm::lookAt(glm::vec3(0.0f, 0.0f, 2.0f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-    camera.projection = perspectiveProjection(0.6f, 1.0f, 0.1f, 100.0f);
-    camera.prevViewProjection = camera.viewProjection();
+    const Camera camera = orbitQuadCamera();
     orbit::OrbitRenderer::DrawInfo draw{.camera = &camera};
     draw.lights = {.sun = 0.0f, .ambient = 0.0f, .hemi = 0.0f, .ibl = 0.0f};
     renderer.draw(draw);

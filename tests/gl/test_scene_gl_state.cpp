@@ -8,6 +8,7 @@
 
 #include "GlCallAudit.h"
 #include "GlTest.h"
+#include "OrbitQuad.h"
 #include "io/TestData.h"
 
 #include "core/Ibl.h"
@@ -225,21 +226,11 @@ TEST_F(GlTest, OrbitRendererWithoutShadowMapOrEnvironmentBindsWhatItsProgramsRea
     // sampler still finds a depth texture with comparison, every block a buffer.
     orbit::Model model;
     model.materials.push_back({.name = "grey", .doubleSided = true});
-    orbit::MeshInstance quad;
-    orbit::Primitive p;
-    for (const glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
-        p.vertices.push_back({.position = glm::vec3(c, 0.0f), .normal = {0, 0, 1}});
-    }
-    p.indices = {0, 1, 2, 0, 2, 3};
-    quad.primitives.push_back(p);
-    model.meshes.push_back(quad);
+    model.meshes.push_back(orbitQuad());
     orbit::OrbitRenderer renderer;
     renderer.resize({32, 32});
     renderer.setModel(model, glm::mat4(1.0f));
-    Camera camera;
-    camera.view = glm::lookAt(glm::vec3(0.0f, 0.0f, 2.0f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-    camera.projection = perspectiveProjection(0.6f, 1.0f, 0.1f, 100.0f);
-    camera.prevViewProjection = camera.viewProjection();
+    const Camera camera = orbitQuadCamera();
 
     GlCallAudit audit;
     renderer.draw({.camera = &camera});
