@@ -29,13 +29,13 @@ vec2 pairOffset(vec2 w0, vec2 w1) {
 
 #ifdef BLOCKS_4X4
 // Each invocation upsamples a 4x4 block of target texels where the target is exactly twice the coarser level
-// (the host checks): the block's texels sit at coarse positions 2m - 0.25, 2m + 0.25, 2m + 0.75 and
-// 2m + 1.25 along each axis (m: the block's index), so their fractions alternate 3/4, 1/4 and the tent's four
-// weights per axis are constants, and the 16 texels read a 6x6 square of coarse texels between them: 36
-// fetches and separable sums instead of 64 filtered taps. The same filter; its float sums round in another
-// order. The host picks it on a software renderer, where texture reads are what a pass pays for (bloom up 0 at
-// 1920x1080 on llvmpipe: 6.2 -> 3.3 ms); a GPU's filtered taps cost it little. Stores past an odd target's
-// edge have no effect.
+// (the host checks): the block's texels sit at coarse positions 2m - 0.25, 2m + 0.25, 2m + 0.75 and 2m + 1.25
+// along each axis (m: the block's index), so their fractions alternate 3/4, 1/4 and the tent's four weights
+// per axis are constants, and the 16 texels read a 6x6 square of coarse texels between them: 36 fetches and
+// separable sums instead of 64 filtered taps. The same filter; its float sums round in another order. The
+// host picks it on a software renderer, where texture reads are what a pass pays for (bloom up 0 at 1920x1080
+// on llvmpipe: 6.2 -> 3.3 ms); a GPU's filtered taps cost it little. Stores past an odd target's edge have no
+// effect.
 const vec4 kTentThreeQuarters = vec4(0.0625, 0.3125, 0.4375, 0.1875); // f = 3/4, texels i - 1 .. i + 2
 const vec4 kTentOneQuarter = vec4(0.1875, 0.4375, 0.3125, 0.0625);    // f = 1/4
 
