@@ -1,6 +1,7 @@
 #include "passes/tonemap/TonemapPass.h"
 
 #include "core/ColorGrading.h"
+#include "gl/Capabilities.h"
 #include "passes/Bindings.h"
 #include "passes/DisplayProgram.h"
 
@@ -24,7 +25,20 @@ std::uint32_t pcgHash(std::uint32_t v) {
 TonemapPass::TonemapPass(const Capabilities& caps)
     : mParameters("tonemap parameters")
     , mCaps(caps)
-    , mGroup(pixelGroup()) {}
+    , mGroup(pixelGroup())
+    , mBloomBlocks(isSoftwareRenderer()) {}
+
+void TonemapPass::setBloomBlocks(bool on) {
+    mBloomBlocks = on;
+}
+
+bool TonemapPass::bloomBlocks(const Inputs& in, Extent target) const {
+    if (!mBloomBlocks || in.bloom == nullptr) {
+        return false;
+    }
+    const Extent b = in.bloom->extent();
+    return target.width == 2 * b.width && target.height == 2 * b.height;
+}
 
 std::span<const ResourceUse> TonemapPass::uses() const {
     static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
@@ -35,18 +49,22 @@ std::span<const ResourceUse> TonemapPass::uses() const {
 }
 
 const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene,
-                                    bool display16) {
+                                    bool display16, bool blocks) {
     // The scene-referred output stops before the curve: one program serves every mode and depth.
     const int curve = scene ? 0 : int(mode);
     display16 = display16 && !scene;
-    const int key = (display16 ? 256 : 0) + curve * 16 + (glow ? 8 : 0) + (bloom ? 4 : 0) + (grade ? 2 : 0) +
-                    (scene ? 1 : 0);
+    blocks = blocks && bloom;
+    const int key = (blocks ? 512 : 0) + (display16 ? 256 : 0) + curve * 16 + (glow ? 8 : 0) +
+                    (bloom ? 4 : 0) + (grade ? 2 : 0) + (scene ? 1 : 0);
     auto it = mPrograms.find(key);
     if (it == mPrograms.end()) {
         ShaderDefines defines =
             withDisplayStore({{"TONEMAP_MODE", std::to_string(curve)}}, display16 ? 16 : 8);
         if (bloom) {
             defines.emplace_back("BLOOM", "1");
+        }
+        if (blocks) {
+            defines.emplace_back("BLOOM_BLOCKS", "1");
         }
         if (glow) {
             defines.emplace_back("GLOW", "1");
@@ -72,11 +90,11 @@ void TonemapPass::configure(const Settings& settings) {
         return;
     }
     for (const bool bloom : {false, true}) {
-        variant(tonemapping.mode, bloom, false, grading.enabled, false, display16);
+        variant(tonemapping.mode, bloom, false, grading.enabled, false, display16, bloom && mBloomBlocks);
     }
 }
 
-void TonemapPass::dispatch(const Program& program, const Inputs& in, const Texture& target) {
+void TonemapPass::dispatch(const Program& program, const Inputs& in, const Texture& target, bool blocks) {
     const Extent extent = target.extent();
     // The dither hides 8-bit steps (1/255 apart). At 16 bits a step is 1/257 of that, far below what a
     // display or an eye resolves, so there is no banding to hide; noise scaled to that step would only make
@@ -127,7 +145,7 @@ void TonemapPass::dispatch(const Program& program, const Inputs& in, const Textu
     glBindTextureUnit(0, in.scene->id());
     bindExposureStateForReading(*in.exposureState);
     glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, target.format());
-    dispatchPixels(extent, mGroup);
+    dispatchPixels(blocks ? Extent{(extent.width + 3) / 4, (extent.height + 3) / 4} : extent, mGroup);
     imageWriteBarrier();
 }
 
@@ -154,8 +172,10 @@ void TonemapPass::execute(FrameContext& ctx, FrameResources& resources) {
     }
     ScopedGpuTimer timer(in.timers, "composite + grade + tonemap", bytes);
     const bool grade = in.grading && in.grading->enabled;
-    dispatch(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, false, bitDepth == 16), in,
-             out.texture());
+    const bool blocks = bloomBlocks(in, out.texture().extent());
+    dispatch(
+        variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, false, bitDepth == 16, blocks), in,
+        out.texture(), blocks);
     resources.bind(Resource::DisplayColor, out.texture());
 }
 
@@ -166,7 +186,9 @@ const Texture& TonemapPass::renderScene(const Inputs& in) {
     }
     DebugGroup group("scene-referred output");
     const bool grade = in.grading && in.grading->enabled;
-    dispatch(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, true, false), in, mScene);
+    const bool blocks = bloomBlocks(in, e);
+    dispatch(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, true, false, blocks), in,
+             mScene, blocks);
     return mScene;
 }
 

@@ -73,21 +73,30 @@ public:
     void execute(FrameContext& ctx, FrameResources& resources) override;
     /// The composited and graded scene-referred image just before the curve (RGBA32F), for EXR output.
     const Texture& renderScene(const Inputs& in);
+    /// Where the bloom image is exactly half the frame, composite 4x4 pixels per invocation from the 4x4
+    /// bloom texels their bilinear taps share (fetched once) instead of one filtered tap per pixel: on by
+    /// default on a software renderer, where texture reads are what the pass pays for. The same filter, its
+    /// sums rounded in another order. Tests set either.
+    void setBloomBlocks(bool on);
 
 private:
     /// One dispatch of `program` over `target` (RGBA8 or RGBA16 display, or RGBA32F scene-referred output).
-    void dispatch(const Program& program, const Inputs& in, const Texture& target);
+    void dispatch(const Program& program, const Inputs& in, const Texture& target, bool blocks = false);
+    /// Whether this dispatch takes the bloom in 4x4 blocks (setBloomBlocks, and the bloom half of `target`).
+    [[nodiscard]] bool bloomBlocks(const Inputs& in, Extent target) const;
     /// One program per (curve, bloom, grading, scene output, display depth): the curve and the switches are
     /// #defines, not
     /// uniforms. Mesa llvmpipe executes every case of a switch on a uniform under a SIMD mask, so a runtime
     /// curve switch cost all eleven curves per pixel (1920x1080, --sync wall time: 280 ms against 49 ms for
     /// a fixed curve); on a GPU the branch is uniform but registers are allocated for the costliest case.
-    const Program& variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene, bool display16);
+    const Program& variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene, bool display16,
+                           bool blocks = false);
 
     std::map<int, Program> mPrograms; ///< by variant key (see variant())
     ParameterBlock<TonemapParameters> mParameters;
     const Capabilities& mCaps;
     PixelGroup mGroup; ///< the programs' invocation shape (gl/ShaderLibrary.h pixelGroup)
+    bool mBloomBlocks = false;
     Texture mScene;
 };
 

@@ -98,13 +98,13 @@ vec3 grade(vec3 c) {
     return pow(c, uInvGamma);
 }
 
-void main() {
-    ivec2 p = clampedInvocationPixel(imageSize(uOutput));
+// One pixel: the scene's colour at `source` (the pixel itself, or the edge pixel for a block's pixels past the
+// edge), exposed, with `bloom` composited, graded, tone mapped and stored at `p`.
+void shade(ivec2 p, ivec2 source, vec3 bloom) {
     vec2 fragCoord = vec2(p) + 0.5;
     // Sanitised here as well: on the LDR path this is where the pipeline first reads the host's colour.
-    vec3 c = sanitize(texelFetch(uScene, p, 0).rgb) * gExposure.exposure;
+    vec3 c = sanitize(texelFetch(uScene, source, 0).rgb) * gExposure.exposure;
 #ifdef BLOOM
-    vec3 bloom = bloomAt(fragCoord / vec2(textureSize(uScene, 0)));
     c = uBloomAdditive != 0 ? c + uBloomIntensity * bloom : mix(c, bloom, uBloomIntensity);
 #endif
 #ifdef GLOW
@@ -123,3 +123,46 @@ void main() {
     imageStore(uOutput, p, vec4(onDisplayCode(display), 1.0));
 #endif
 }
+
+#ifdef BLOOM_BLOCKS
+// 4x4 pixels per invocation where the bloom image is exactly half the frame (the host checks; software
+// renderers only): pixel 4n + k of a row sits at bloom texel 2n + k/2 - 1/4, between the texels 2n - 1 + kLow[k]
+// and the next at the fraction kFraction[k], so the block's 16 bilinear taps read 4x4 bloom texels between them,
+// fetched once: 16 fetches instead of 16 filtered taps. The same filter; its float sums may round otherwise.
+// Stores past an odd-sized frame's edge have no effect; their scene reads are clamped onto it.
+const int kLow[4] = int[](0, 1, 1, 2);
+const float kFraction[4] = float[](0.75, 0.25, 0.75, 0.25);
+
+void main() {
+    ivec2 block = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = imageSize(uOutput);
+    ivec2 bloomSize = textureSize(uBloom, 0);
+    ivec2 first = block * 2 - 1;
+    vec3 b[16]; // b[4 * row + column]: the bloom texels the block reads
+    for (int row = 0; row < 4; ++row) {
+        for (int column = 0; column < 4; ++column) {
+            ivec2 t = clamp(first + ivec2(column, row), ivec2(0), bloomSize - 1); // clamp to edge
+            b[4 * row + column] = texelFetch(uBloom, t, 0).rgb;
+        }
+    }
+    for (int l = 0; l < 4; ++l) {
+        for (int k = 0; k < 4; ++k) {
+            int i = 4 * kLow[l] + kLow[k];
+            vec3 bloom = mix(mix(b[i], b[i + 1], kFraction[k]), mix(b[i + 4], b[i + 5], kFraction[k]),
+                             kFraction[l]);
+            ivec2 p = block * 4 + ivec2(k, l);
+            shade(p, min(p, size - 1), bloom);
+        }
+    }
+}
+#else
+void main() {
+    ivec2 p = clampedInvocationPixel(imageSize(uOutput));
+#ifdef BLOOM
+    vec3 bloom = bloomAt((vec2(p) + 0.5) / vec2(textureSize(uScene, 0)));
+#else
+    vec3 bloom = vec3(0.0);
+#endif
+    shade(p, p, bloom);
+}
+#endif
