@@ -42,16 +42,16 @@ namespace photopic::cli {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-double median(std::vector<double> v) {
-    if (v.empty()) {
+double median(std::vector<double> values) {
+    if (values.empty()) {
         return 0;
     }
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
+
+namespace {
 
 bool isSoftwareRenderer(const std::string& renderer) {
     return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos ||

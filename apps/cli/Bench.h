@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace photopic::cli {
 
@@ -25,5 +26,9 @@ struct BenchOptions {
 };
 
 int runBench(const BenchOptions& options);
+
+/// The median of `values` (the mean of the middle two for an even count), 0 for none: what the bench and the
+/// image command's stage report print.
+[[nodiscard]] double median(std::vector<double> values);
 
 } // namespace photopic::cli

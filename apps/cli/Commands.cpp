@@ -1,5 +1,6 @@
 #include "Commands.h"
 
+#include "Bench.h"
 #include "Progress.h"
 
 #include "FrameStream.h"
@@ -634,17 +635,15 @@ public:
             "waiting for decode", "upload", "process", "read-back", "waiting for encode", "decode"};
         std::string line;
         for (int s = 0; s < kStages; ++s) {
-            std::vector<double> v = mSamples[s];
-            if (v.empty()) {
+            if (mSamples[s].empty()) {
                 continue;
             }
-            std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
             // The decode is timed on the thread that decodes (the main thread only in a serial run).
             line += fmt::format("{}{} {:.2f}",
                                 line.empty()  ? ""
                                 : s == Decode ? "; "
                                               : ", ",
-                                kNames[s], v[v.size() / 2]);
+                                kNames[s], median(mSamples[s]));
         }
         const double total =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mBegin).count();
