@@ -18,6 +18,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace photopic::test {
@@ -120,6 +121,32 @@ glm::vec3 cpuDownsample(const ImageF& source, int width, int height, int x, int 
     return color;
 }
 
+/// Per channel, the largest minus the smallest sanitised value (non-finite as 0, clamped to [0, 65000]) of
+/// the texels in [x0, x1] x [y0, y1], clamped to the image as the samplers clamp.
+glm::vec3 spread(const ImageF& image, int x0, int y0, int x1, int y1) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+            const float* t = image.at(std::clamp(x, 0, image.width - 1), std::clamp(y, 0, image.height - 1));
+            for (int c = 0; c < 3; ++c) {
+                const float v = std::isfinite(t[c]) ? std::clamp(t[c], 0.0f, 65000.0f) : 0.0f;
+                lo[c] = std::min(lo[c], v);
+                hi[c] = std::max(hi[c], v);
+            }
+        }
+    }
+    return hi - lo;
+}
+
+/// An exposure state of `exposure` in a buffer, as the bloom and tone-map passes read it.
+Buffer exposureState(float exposure, std::string_view name) {
+    GpuExposureState state;
+    state.exposure = exposure;
+    return Buffer({.size = sizeof(state), .data = &state, .debugName = name});
+}
+
+constexpr float kExposure = 1.5f; ///< the exposure the bloom tests run at
+
 /// What a GPU's filtering may add to a target texel's error: bilinear weights are fixed point on GPUs (8
 /// fractional bits under D3D's rules, which their GL drivers follow), so a tap between texel centres can be
 /// off by 2^-9 of the spread of the texels it reads; summed over the 13 taps, at most 2^-8 of the spread of
@@ -134,19 +161,9 @@ glm::vec3 filterWeightSlack(const ImageF& source, int width, int height, int x, 
     const float cy = (float(y) + 0.5f) * float(source.height) / float(height);
     const float reach =
         2.0f * step + 1.0f; // the outer taps' centres, and the texel each tap reaches past them
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-    for (int sy = int(std::floor(cy - reach)); sy <= int(std::ceil(cy + reach)); ++sy) {
-        for (int sx = int(std::floor(cx - reach)); sx <= int(std::ceil(cx + reach)); ++sx) {
-            const float* t =
-                source.at(std::clamp(sx, 0, source.width - 1), std::clamp(sy, 0, source.height - 1));
-            for (int c = 0; c < 3; ++c) {
-                const float v = std::isfinite(t[c]) ? std::clamp(t[c], 0.0f, 65000.0f) : 0.0f;
-                lo[c] = std::min(lo[c], v);
-                hi[c] = std::max(hi[c], v);
-            }
-        }
-    }
-    return (hi - lo) * (1.0f / 256.0f);
+    return spread(source, int(std::floor(cx - reach)), int(std::floor(cy - reach)),
+                  int(std::ceil(cx + reach)), int(std::ceil(cy + reach))) *
+           (1.0f / 256.0f);
 }
 
 /// A wavy field with fireflies (for the Karis weights), negative blue values (for the box clamp) and a NaN at
@@ -187,10 +204,7 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
         for (const Case& k : cases) {
             const ImageF image = fireflyField(k.width, k.height);
             const Texture input = makeTexture(image, "bloom twin input");
-            GpuExposureState state;
-            state.exposure = 1.5f;
-            const Buffer exposure(
-                {.size = sizeof(state), .data = &state, .debugName = "bloom twin exposure"});
+            const Buffer exposure = exposureState(kExposure, "bloom twin exposure");
             BloomSettings settings;
             settings.mode = k.mode;
             BloomPass pass;
@@ -210,10 +224,10 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
                 for (int y = 0; y < gpu.height; ++y) {
                     for (int x = 0; x < gpu.width; ++x) {
                         const glm::vec3 want = cpuDownsample(source, gpu.width, gpu.height, x, y, step,
-                                                             level == 0, state.exposure, settings);
+                                                             level == 0, kExposure, settings);
                         const glm::vec3 spread =
                             filterWeightSlack(source, gpu.width, gpu.height, x, y, step) *
-                            (level == 0 ? state.exposure : 1.0f);
+                            (level == 0 ? kExposure : 1.0f);
                         for (int c = 0; c < 3; ++c) {
                             // A half float holds 11 significant bits (relative step 2^-11, about 5e-4).
                             const float allowed = 2e-3f * (std::abs(want[c]) + 1e-3f) + spread[c];
@@ -270,16 +284,7 @@ glm::vec3 tentWeightSlack(const ImageF& coarse, const ImageF& fine, int x, int y
     }
     const int cx = int(std::floor((float(x) + 0.5f) * float(coarse.width) / float(fine.width)));
     const int cy = int(std::floor((float(y) + 0.5f) * float(coarse.height) / float(fine.height)));
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-    for (int j = cy - 2; j <= cy + 2; ++j) {
-        for (int i = cx - 2; i <= cx + 2; ++i) {
-            const float* t =
-                coarse.at(std::clamp(i, 0, coarse.width - 1), std::clamp(j, 0, coarse.height - 1));
-            lo = glm::min(lo, glm::vec3(t[0], t[1], t[2]));
-            hi = glm::max(hi, glm::vec3(t[0], t[1], t[2]));
-        }
-    }
-    return (hi - lo) * (1.0f / 256.0f);
+    return spread(coarse, cx - 2, cy - 2, cx + 2, cy + 2) * (1.0f / 256.0f);
 }
 
 } // namespace
@@ -292,10 +297,7 @@ TEST_F(GlTest, BloomUpsampleLevelsMatchTheCpuTent) {
         for (const Extent size : {Extent{64, 48}, Extent{72, 40}, Extent{70, 46}, Extent{61, 37}}) {
             const ImageF image = fireflyField(size.width, size.height);
             const Texture input = makeTexture(image, "bloom upsample twin input");
-            GpuExposureState state;
-            state.exposure = 1.5f;
-            const Buffer exposure(
-                {.size = sizeof(state), .data = &state, .debugName = "bloom upsample twin exposure"});
+            const Buffer exposure = exposureState(kExposure, "bloom upsample twin exposure");
             BloomSettings settings;
             settings.radius = 0.7f;
             BloomPass pass;
@@ -339,9 +341,7 @@ TEST_F(GlTest, PixelGroupShapesGiveTheSameBloomAndDisplay) {
     for (const Extent size : {Extent{128, 64}, Extent{97, 61}}) {
         const ImageF image = fireflyField(size.width, size.height);
         const Texture input = makeTexture(image, "pixel group input");
-        GpuExposureState state;
-        state.exposure = 1.5f;
-        const Buffer exposure({.size = sizeof(state), .data = &state, .debugName = "pixel group exposure"});
+        const Buffer exposure = exposureState(kExposure, "pixel group exposure");
         const BloomSettings settings;
         std::vector<std::vector<ImageF>> levels;
         std::vector<Image8> displays;
@@ -541,10 +541,7 @@ TEST_F(GlTest, TonemapBloomBlocksCompositeTheSameAsTheTaps) {
         const ImageF bloom = fireflyField(size.width / 2, size.height / 2);
         const Texture sceneTexture = makeTexture(scene, "tonemap blocks scene");
         const Texture bloomTexture = makeTexture(bloom, "tonemap blocks bloom");
-        GpuExposureState state;
-        state.exposure = 1.5f;
-        const Buffer exposure(
-            {.size = sizeof(state), .data = &state, .debugName = "tonemap blocks exposure"});
+        const Buffer exposure = exposureState(kExposure, "tonemap blocks exposure");
         for (const BloomMode mode : {BloomMode::EnergyConserving, BloomMode::Threshold}) {
             const ToneMappingSettings tonemapping;
             const OutputSettings output;
