@@ -67,8 +67,10 @@ public:
     [[nodiscard]] std::string_view name() const override { return "composite + grade + tonemap"; }
     [[nodiscard]] bool sanitizesSceneReads() const override { return true; }
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
-    /// Compiles the programs the settings select (with and without bloom) ahead of the first frame: a
-    /// set-up boundary, throws GlError with the log. execute() compiles any still missing.
+    /// Compiles the programs the settings select (with and without bloom; the bloom one in 4x4 blocks where
+    /// those are on) ahead of the first frame: a set-up boundary, throws GlError with the log. execute()
+    /// compiles any still missing, such as the per-pixel bloom variant for a frame whose bloom is not half of
+    /// it while the blocks are on.
     void configure(const Settings& settings) override;
     void execute(FrameContext& ctx, FrameResources& resources) override;
     /// The composited and graded scene-referred image just before the curve (RGBA32F), for EXR output.
