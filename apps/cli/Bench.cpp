@@ -37,6 +37,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 
 namespace photopic::cli {
 
@@ -347,24 +348,112 @@ private:
     Camera mCamera;
 };
 
+/// `--queue-ahead`: untimed GPU work (gl/gpu_busy.comp.glsl) submitted before each timed frame and lasting
+/// longer than the CPU takes to submit the frame, so the GPU reaches the frame with all of its commands
+/// queued and the frame's timestamps hold the GPU's own work, not the gaps where it waited for the CPU (a
+/// frame submitted to an idle GPU runs as fast as the CPU hands it over). Whether that held is checked on
+/// every timed frame: the GPU clock when the CPU had submitted the whole frame
+/// (glGetInteger64v(GL_TIMESTAMP), which waits for nothing) must be earlier than the busy work's end
+/// timestamp.
+class QueueAhead {
+public:
+    QueueAhead()
+        : mProgram(makeComputeProgram("gl/gpu_busy.comp.glsl"))
+        , mSink({.size = kInvocations * sizeof(float), .flags = 0, .debugName = "bench busy sink"})
+        , mEnd(GL_TIMESTAMP) {}
+
+    /// Lengthens the busy work until one run, submitted and waited for, takes at least `ms` of wall time (or
+    /// the 50 ms cap): it must outlast the CPU's submission of a frame, which runs on the wall clock. The
+    /// chain grows to kMaxIterations, then the number of groups (Mesa's llvmpipe ends a shader loop after
+    /// 65535 iterations).
+    void calibrate(double ms) {
+        for (;;) {
+            glFinish();
+            const auto start = std::chrono::steady_clock::now();
+            submit();
+            glFinish();
+            mBusyMs =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            if (mBusyMs >= ms || mBusyMs >= kMaxMs || mGroups >= kMaxGroups) {
+                return;
+            }
+            const double scale = std::clamp(mBusyMs > 0 ? 1.25 * ms / mBusyMs : 16.0, 2.0, 16.0);
+            if (mIterations < kMaxIterations) {
+                mIterations = GLuint(std::min(double(mIterations) * scale, double(kMaxIterations)));
+            } else {
+                mGroups = GLuint(std::min(double(mGroups) * scale, double(kMaxGroups)));
+            }
+        }
+    }
+    /// The busy work and a timestamp at its end, after a barrier (so the frame's first pass cannot overlap
+    /// it), then a flush (so the GPU starts on it while the CPU submits the frame).
+    void submit() {
+        mProgram.use();
+        glProgramUniform1ui(mProgram.id(), 0, mIterations);
+        glProgramUniform1f(mProgram.id(), 1, -1.0f);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mSink.id());
+        glDispatchCompute(mGroups, 1, 1);
+        glMemoryBarrier(GL_ALL_BARRIER_BITS);
+        glQueryCounter(mEnd.id(), GL_TIMESTAMP);
+        glFlush();
+    }
+    /// Right after the CPU has submitted the timed work.
+    void markSubmitted() { glGetInteger64v(GL_TIMESTAMP, &mSubmittedAt); }
+    /// After the timed work has finished on the GPU: counts whether the GPU was still on the busy work when
+    /// the CPU had submitted it.
+    void settle() {
+        GLuint64 end = 0;
+        glGetQueryObjectui64v(mEnd.id(), GL_QUERY_RESULT, &end);
+        mHeld += mSubmittedAt >= 0 && GLuint64(mSubmittedAt) < end ? 1 : 0;
+        ++mTimed;
+    }
+    [[nodiscard]] double busyMs() const { return mBusyMs; }
+    [[nodiscard]] int held() const { return mHeld; }
+    [[nodiscard]] int timed() const { return mTimed; }
+
+private:
+    static constexpr std::size_t kInvocations = 64; // one group's (gl/gpu_busy.comp.glsl)
+    static constexpr double kMaxMs = 50.0;
+    static constexpr GLuint kMaxIterations = 65535;
+    static constexpr GLuint kMaxGroups = 1u << 20;
+    Program mProgram;
+    Buffer mSink;
+    Query mEnd;
+    GLuint mIterations = 4096;
+    GLuint mGroups = 1;
+    double mBusyMs = 0;
+    GLint64 mSubmittedAt = -1;
+    int mHeld = 0, mTimed = 0;
+};
+
 /// The median time of `work` over `frames` runs, each between one pair of GPU timestamps collected before the
 /// next run (the wall time around it with --sync); `afterEach` runs between runs, outside the timestamps.
+/// With `ahead`, its busy work precedes each run, outside the timestamps.
 template <class Work, class AfterEach>
-double medianTimed(const BenchOptions& options, Work&& work, AfterEach&& afterEach) {
+double medianTimed(const BenchOptions& options, QueueAhead* ahead, Work&& work, AfterEach&& afterEach) {
     GpuTimers timers;
     timers.setSynchronous(options.sync);
     std::vector<double> ms;
     for (int i = 0; i < options.frames; ++i) {
+        if (ahead) {
+            ahead->submit();
+        }
         timers.beginFrame();
         {
             ScopedGpuTimer timer(&timers, "timed");
             work();
         }
         timers.endFrame();
+        if (ahead) {
+            ahead->markSubmitted();
+        }
         for (const auto& frame : timers.drain()) {
             for (const PassTiming& t : frame) {
                 ms.push_back(options.sync ? t.wallMs : t.gpuMs);
             }
+        }
+        if (ahead) {
+            ahead->settle();
         }
         afterEach();
     }
@@ -393,7 +482,8 @@ std::string imageFormatName(GLenum format) {
     }
 }
 
-CopyReference measureCopy(int width, int height, GLenum format, const BenchOptions& options) {
+CopyReference measureCopy(int width, int height, GLenum format, const BenchOptions& options,
+                          QueueAhead* ahead) {
     const GLenum kFormat = format == GL_RGBA32F || format == GL_RGBA8 ? format : GL_RGBA16F;
     const std::string name = imageFormatName(kFormat);
     const Program program = makeComputeProgram("gl/bandwidth_copy.comp.glsl", {{"FORMAT", name}});
@@ -412,7 +502,7 @@ CopyReference measureCopy(int width, int height, GLenum format, const BenchOptio
     for (int i = 0; i < options.warmup; ++i) {
         copy();
     }
-    r.medianMs = medianTimed(options, copy, [] {});
+    r.medianMs = medianTimed(options, ahead, copy, [] {});
     // A copy that did not copy would make every fraction meaningless.
     const ImageF out = readTextureF(target);
     const auto near = [](float a, float b) { return std::abs(a - b) <= 0.5f / 255.0f; }; // RGBA8 rounding
@@ -503,6 +593,9 @@ int runBench(const BenchOptions& options) {
         RunOutputs::requireFile(options.json); // before the minutes of timing, not after
     }
     if (!options.scene.empty()) {
+        if (options.queueAhead) {
+            throw InputError("bench --scene canvas: --queue-ahead times the pipeline's chain only");
+        }
         if (options.scene != "canvas") {
             throw InputError(
                 fmt::format("bench --scene {}: the only scene with a benchmark is 'canvas'", options.scene));
@@ -536,19 +629,41 @@ int runBench(const BenchOptions& options) {
     std::uint64_t frame = 0;
     // The line is drawn between frames, never inside a timed pass or the whole-frame pair of timestamps.
     Progress progress("bench", std::size_t(options.warmup) + 2 * std::size_t(options.frames));
-    for (int i = 0; i < options.warmup; ++i) {
+    // One frame's submission; returns the CPU's milliseconds from beginFrame to execute's return.
+    const auto submitFrame = [&] {
+        const auto start = std::chrono::steady_clock::now();
         pipeline.beginFrame({.frameIndex = frame});
         pipeline.renderLighting(inputs, {.frameIndex = frame});
         pipeline.execute(inputs, {.frameIndex = frame++});
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    };
+    std::vector<double> warmupSubmitMs;
+    for (int i = 0; i < options.warmup; ++i) {
+        warmupSubmitMs.push_back(submitFrame());
         pipeline.timers().drain();
         progress.advance();
     }
+    std::optional<QueueAhead> ahead;
+    if (options.queueAhead) {
+        // Four times what a warm frame took the CPU to submit, at least half a millisecond.
+        ahead.emplace();
+        ahead->calibrate(std::max(0.5, 4.0 * median(warmupSubmitMs)));
+    }
+    QueueAhead* const aheadOrNull = ahead ? &*ahead : nullptr;
     PassSamples samples;
+    std::vector<double> submitMs;
     for (int i = 0; i < options.frames; ++i) {
-        pipeline.beginFrame({.frameIndex = frame});
-        pipeline.renderLighting(inputs, {.frameIndex = frame});
-        pipeline.execute(inputs, {.frameIndex = frame++});
+        if (ahead) {
+            ahead->submit();
+        }
+        submitMs.push_back(submitFrame());
+        if (ahead) {
+            ahead->markSubmitted();
+        }
         samples.add(pipeline.timers().drain());
+        if (ahead) {
+            ahead->settle();
+        }
         progress.advance();
     }
 
@@ -556,14 +671,9 @@ int runBench(const BenchOptions& options) {
     // loop runs it, gaps between passes included and no per-pass timestamps.
     pipeline.timers().setEnabled(false);
     const double wholeFrameMs = medianTimed(
-        options,
-        [&] {
-            pipeline.beginFrame({.frameIndex = frame});
-            pipeline.renderLighting(inputs, {.frameIndex = frame});
-            pipeline.execute(inputs, {.frameIndex = frame++});
-        },
-        [&] { progress.advance(); });
+        options, aheadOrNull, [&] { submitFrame(); }, [&] { progress.advance(); });
     pipeline.timers().setEnabled(true);
+    const double submitMedianMs = median(submitMs);
 
     const PipelineStatus t = pipeline.status();
     const ContextInfo& info = context.info();
@@ -580,10 +690,20 @@ int runBench(const BenchOptions& options) {
                     "timestamps and into a later pass's: run with --sync for per-pass wall times\n",
                     info.renderer.c_str());
     }
-    const CopyReference copy = measureCopy(image.width, image.height, input.format(), options);
+    const CopyReference copy = measureCopy(image.width, image.height, input.format(), options, aheadOrNull);
     std::printf("bandwidth reference: %s copy %dx%d, %.3f ms, %.2f MB, %.2f GB/s (%s)\n", copy.format.c_str(),
                 image.width, image.height, copy.medianMs, copy.bytes / 1e6, copy.gbPerSecond(),
                 options.sync ? "wall ms with glFinish" : "GPU timestamps");
+    std::printf("CPU: %.3f ms to submit a frame (median, beginFrame to execute's return)\n", submitMedianMs);
+    if (ahead) {
+        std::printf(
+            "--queue-ahead: %.3f ms of untimed GPU work before each timed frame and copy; the GPU was "
+            "still on it when the CPU had submitted the frame on %d of %d%s\n",
+            ahead->busyMs(), ahead->held(), ahead->timed(),
+            ahead->held() < ahead->timed()
+                ? " (on the others the timestamps also hold time the GPU waited for the CPU)"
+                : "");
+    }
     const PassTable table = printPassTable(options, samples, copy);
     std::printf("%-36s %12.3f   (one timestamp pair around each frame, the passes' timers off)\n",
                 "whole frame", wholeFrameMs);
@@ -613,7 +733,12 @@ int runBench(const BenchOptions& options) {
             {"frameMedianGpuMs", wholeFrameMs},
             {"totalBytesMoved", totalBytes},
             {"sync", options.sync},
+            {"cpuSubmitMedianMs", submitMedianMs},
         };
+        if (ahead) {
+            doc["queueAhead"] = {
+                {"busyMs", ahead->busyMs()}, {"framesHeld", ahead->held()}, {"framesTimed", ahead->timed()}};
+        }
         if (options.sync) {
             doc["totalMedianWallMs"] = totalWallMs;
         }

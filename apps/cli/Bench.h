@@ -22,6 +22,9 @@ struct BenchOptions {
     /// Debug: glFinish() around every pass and report its wall time beside the timer query (stalls every
     /// pass; for drivers whose timestamps miss deferred work, such as Mesa llvmpipe).
     bool sync = false;
+    /// Untimed GPU work before each timed frame, longer than the CPU takes to submit one, so the timestamps
+    /// hold the GPU's own work and not its waits for the CPU (Bench.cpp QueueAhead).
+    bool queueAhead = false;
     std::string scene; ///< "" (the pipeline on a synthetic or --input frame) or "canvas" (its shading paths)
 };
 

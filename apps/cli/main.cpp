@@ -354,9 +354,15 @@ void addBenchCommand(CLI::App& app, Cli& c) {
         ->check(CLI::ExistingFile);
     c.bench->add_option("--json", c.benchOptions.json, "also write the table as JSON to FILE (atomically)");
     c.bench->add_flag("--force-ldr", c.benchOptions.forceLdr, "run the LDR (RGBA8) path");
-    c.bench->add_flag("--sync", c.benchOptions.sync,
-                      "debug: glFinish() around every pass and report its wall time too (stalls each pass; "
-                      "for drivers whose timer queries miss deferred work, e.g. llvmpipe)");
+    CLI::Option* sync = c.bench->add_flag(
+        "--sync", c.benchOptions.sync,
+        "debug: glFinish() around every pass and report its wall time too (stalls each pass; for drivers "
+        "whose timer queries miss deferred work, e.g. llvmpipe)");
+    c.bench
+        ->add_flag("--queue-ahead", c.benchOptions.queueAhead,
+                   "keep the GPU busy with untimed work while the CPU submits each timed frame, so the "
+                   "timestamps hold the GPU's own work and not its waits for the CPU (a GPU's figure)")
+        ->excludes(sync);
     c.bench->add_option("--scene", c.benchOptions.scene,
                         "canvas (the only one): time the canvas scene's tiled and full-screen shading paths "
                         "instead (--set canvas.KEY=VALUE, e.g. canvas.occupancy=0.3, the default)");

@@ -26,6 +26,17 @@ expect 0 "bench of the default chain" -- "$PHOTOPIC" bench --size 64x64 --frames
 # Nothing is metered with auto exposure off: the metering line must not claim the image's bytes.
 check "unmetered frame moves no metering bytes" python3 -c "import json,sys; d=json.load(open('$S/default.json')); \
 m=[p for p in d['passes'] if p['name']=='metering']; sys.exit(0 if m and m[0]['bytesMoved']==0 else 1)"
+check "bench reports the CPU's submission time" contains "ms to submit a frame"
+check "JSON has the CPU's submission time" grep -q '"cpuSubmitMedianMs"' "$S/default.json"
+# --queue-ahead: untimed busy work before each timed frame; the report says on how many frames the GPU was
+# still on it when the frame had been submitted (none on llvmpipe, which runs a dispatch when it is issued).
+expect 0 "bench with the queue kept ahead" -- "$PHOTOPIC" bench --size 64x64 --frames 3 --warmup 1 --queue-ahead \
+    --json "$S/ahead.json"
+check "bench says how long the busy work ran and where it held" contains "of untimed GPU work before each timed frame"
+check "JSON has the busy work and the frames it held on" python3 -c "import json,sys; q=json.load(open('$S/ahead.json'))['queueAhead']; \
+sys.exit(0 if q['busyMs'] >= 0.5 and q['framesTimed'] == 3 + 3 + 3 and 0 <= q['framesHeld'] <= q['framesTimed'] else 1)"
+expect 2 "--queue-ahead and --sync exclude each other" -- "$PHOTOPIC" bench --size 64x64 --queue-ahead --sync
+expect 2 "--queue-ahead does not time the canvas scene" -- "$PHOTOPIC" bench --scene canvas --queue-ahead
 expect 2 "bad size is bad input" -- "$PHOTOPIC" bench --size 12by3
 expect 0 "bench on the legacy tier" -- "$PHOTOPIC" bench --size 64x64 --frames 2 --set quality=legacy
 check "legacy bench reports the LDR path" contains "LDR"
