@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -187,7 +188,8 @@ ImageF fireflyField(int width, int height) {
 } // namespace
 
 // Every downsampled level against the CPU filter, on sizes whose levels halve exactly (2x2 and 4x4 blocks
-// of target texels sharing their taps, odd-sized targets among them) and sizes whose levels do not (one texel
+// of target texels sharing their taps, and the prefilter from shared-memory tiles; odd-sized targets among
+// them) and sizes whose levels do not (one texel
 // per invocation), with both first divisors, both modes, and fireflies, negative values and a NaN in the
 // scene.
 // Each level is checked from the GPU's own level above, so rounding to half floats does not accumulate.
@@ -200,7 +202,12 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
                           {70, 46, 2, BloomMode::Threshold},
                           {64, 48, 4, BloomMode::Threshold},
                           {61, 37, 2, BloomMode::EnergyConserving}};
-    for (const int side : {2, 4}) {
+    struct Kernels {
+        int side;
+        bool tiles; // the prefilter from shared-memory tiles where level 0 is half the scene
+    };
+    for (const Kernels kernels : {Kernels{2, false}, Kernels{4, false}, Kernels{2, true}}) {
+        const int side = kernels.side;
         for (const Case& k : cases) {
             const ImageF image = fireflyField(k.width, k.height);
             const Texture input = makeTexture(image, "bloom twin input");
@@ -209,6 +216,7 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
             settings.mode = k.mode;
             BloomPass pass;
             pass.setBlockSide(side);
+            pass.setPrefilterTiles(kernels.tiles);
             pass.resize({k.width, k.height});
             pass.execute({.scene = &input,
                           .exposureState = &exposure,
@@ -236,12 +244,86 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
                         }
                     }
                 }
-                EXPECT_LT(worst, 1.0f)
-                    << k.width << "x" << k.height << " divisor " << k.divisor << " level " << level << " ("
-                    << gpu.width << "x" << gpu.height << "), blocks of " << side;
+                EXPECT_LT(worst, 1.0f) << k.width << "x" << k.height << " divisor " << k.divisor << " level "
+                                       << level << " (" << gpu.width << "x" << gpu.height << "), blocks of "
+                                       << side << (kernels.tiles ? ", tiled prefilter" : "");
             }
         }
     }
+}
+
+// The tiled prefilter (unfiltered texels in shared memory, boxes built in arithmetic) gives the filtered
+// taps' level 0 on scenes a host may hand over raw: NaN, infinities of both signs, negative values, 1e30 and
+// a 4x4 block of 3e38, whose plain sum in a box would overflow; on sizes with partial tiles at the right and
+// bottom.
+TEST_F(GlTest, TiledPrefilterMatchesTheFilteredTapsOnHostileScenes) {
+    for (const Extent size : {Extent{64, 48}, Extent{100, 70}, Extent{162, 98}}) {
+        ImageF image = fireflyField(size.width, size.height);
+        image.at(20, 9)[1] = std::numeric_limits<float>::infinity();
+        image.at(33, 17)[0] = -std::numeric_limits<float>::infinity();
+        image.at(40, 30)[2] = 1e30f;
+        image.at(size.width - 1, size.height - 1)[0] = std::numeric_limits<float>::quiet_NaN();
+        for (int y = 12; y < 16; ++y) {
+            for (int x = 24; x < 28; ++x) {
+                image.at(x, y)[1] = 3e38f;
+            }
+        }
+        const Texture input = makeTexture(image, "tiled prefilter input");
+        const Buffer exposure = exposureState(kExposure, "tiled prefilter exposure");
+        for (const BloomMode mode : {BloomMode::EnergyConserving, BloomMode::Threshold}) {
+            BloomSettings settings;
+            settings.mode = mode;
+            std::vector<ImageF> level0;
+            for (const bool tiles : {false, true}) {
+                BloomPass pass;
+                pass.setBlockSide(2);
+                pass.setPrefilterTiles(tiles);
+                ASSERT_EQ(pass.prefilterTiles(), tiles);
+                pass.resize(size);
+                pass.execute(
+                    {.scene = &input, .exposureState = &exposure, .settings = &settings, .mipCount = 3});
+                level0.push_back(readTextureF(pass.downsampled(0)));
+            }
+            const ImageF& taps = level0[0];
+            const ImageF& tiled = level0[1];
+            ASSERT_EQ(tiled.width, size.width / 2);
+            float worst = 0.0f, largest = 0.0f;
+            for (std::size_t i = 0; i < taps.rgba.size(); ++i) {
+                ASSERT_TRUE(std::isfinite(tiled.rgba[i])) << i;
+                // Half floats: a relative step of 2^-11, twice over (the two sums round apart).
+                const float allowed = 2e-3f * (std::abs(taps.rgba[i]) + 1e-3f);
+                worst = std::max(worst, std::abs(tiled.rgba[i] - taps.rgba[i]) / allowed);
+                largest = std::max(largest, tiled.rgba[i]);
+            }
+            EXPECT_LT(worst, 1.0f) << size.width << "x" << size.height;
+            // The 3e38 block's boxes are clamped, not dropped as an overflow would make them.
+            EXPECT_GT(largest, 1000.0f) << size.width << "x" << size.height;
+        }
+    }
+}
+
+// PHOTOPIC_BLOOM_BLOCK_SIDE and PHOTOPIC_BLOOM_PREFILTER pick the kernels of a pass made while they are set
+// (for measuring them against each other on one device); a bad value leaves the renderer's defaults.
+TEST_F(GlTest, BloomEnvironmentOverridesPickTheKernels) {
+    struct Unset {
+        ~Unset() {
+            unsetenv("PHOTOPIC_BLOOM_BLOCK_SIDE");
+            unsetenv("PHOTOPIC_BLOOM_PREFILTER");
+        }
+    } unset;
+    const BloomPass defaults;
+    EXPECT_FALSE(defaults.prefilterTiles());
+    const int otherSide = defaults.blockSide() == 2 ? 4 : 2;
+    setenv("PHOTOPIC_BLOOM_BLOCK_SIDE", otherSide == 2 ? "2" : "4", 1);
+    setenv("PHOTOPIC_BLOOM_PREFILTER", "tiles", 1);
+    const BloomPass overridden;
+    EXPECT_EQ(overridden.blockSide(), otherSide);
+    EXPECT_TRUE(overridden.prefilterTiles());
+    setenv("PHOTOPIC_BLOOM_BLOCK_SIDE", "3", 1);
+    setenv("PHOTOPIC_BLOOM_PREFILTER", "fast", 1);
+    const BloomPass ignored;
+    EXPECT_EQ(ignored.blockSide(), defaults.blockSide());
+    EXPECT_FALSE(ignored.prefilterTiles());
 }
 
 namespace {

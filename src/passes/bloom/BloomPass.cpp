@@ -1,11 +1,14 @@
 #include "passes/bloom/BloomPass.h"
 
 #include "core/Bloom.h"
+#include "core/Log.h"
 #include "gl/Capabilities.h"
 #include "passes/Bindings.h"
 
+#include <cstdlib>
 #include <fmt/format.h>
 #include <stdexcept>
+#include <string_view>
 
 namespace photopic {
 
@@ -13,6 +16,7 @@ namespace {
 constexpr const char* kDown = "passes/bloom/bloom_downsample.comp.glsl";
 constexpr const char* kUp = "passes/bloom/bloom_upsample.comp.glsl";
 constexpr GLenum kFormat = GL_RGBA16F;
+constexpr int kTile = 16; // target texels per side of a tiled prefilter's group (bloom_downsample.comp.glsl)
 
 double texelBytes(Extent e, GLenum format) {
     return double(e.width) * double(e.height) * bytesPerTexel(format);
@@ -33,6 +37,40 @@ BloomPass::BloomPass()
     , mDownsampleParameters("bloom downsample parameters")
     , mUpsampleParameters("bloom upsample parameters") {
     setBlockSide(isSoftwareRenderer() ? 4 : 2);
+    applyEnvironmentOverrides();
+}
+
+void BloomPass::applyEnvironmentOverrides() {
+    if (const char* side = std::getenv("PHOTOPIC_BLOOM_BLOCK_SIDE"); side != nullptr && *side != '\0') {
+        const std::string_view value(side);
+        if (value == "2" || value == "4") {
+            setBlockSide(value == "2" ? 2 : 4);
+            warnOnce("bloom-block-side", fmt::format("PHOTOPIC_BLOOM_BLOCK_SIDE={}: the bloom downsample "
+                                                     "filters blocks of {} x {} target texels",
+                                                     value, value, value));
+        } else {
+            warnOnce("bloom-block-side-bad",
+                     fmt::format("PHOTOPIC_BLOOM_BLOCK_SIDE={}: not 2 or 4; ignored", value));
+        }
+    }
+    if (const char* kernel = std::getenv("PHOTOPIC_BLOOM_PREFILTER"); kernel != nullptr && *kernel != '\0') {
+        const std::string_view value(kernel);
+        if (value == "taps" || value == "tiles") {
+            setPrefilterTiles(value == "tiles");
+            warnOnce("bloom-prefilter",
+                     fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: the bloom prefilter reads {}", value,
+                                 value == "tiles" ? "tiles of unfiltered scene texels" : "filtered taps"));
+        } else {
+            warnOnce("bloom-prefilter-bad",
+                     fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: not 'taps' or 'tiles'; ignored", value));
+        }
+    }
+}
+
+void BloomPass::setPrefilterTiles(bool on) {
+    mPrefilterTiles =
+        on ? makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {"TILES", "1"}}))
+           : Program();
 }
 
 void BloomPass::setBlockSide(int side) {
@@ -113,8 +151,11 @@ const Texture& BloomPass::execute(const Inputs& in) {
         const float span = 2.0f * step;
         const bool blocks =
             float(se.width) == span * float(te.width) && float(se.height) == span * float(te.height);
-        const Program& program =
-            i == 0 ? (blocks ? mPrefilterBlocks : mPrefilter) : (blocks ? mDownsampleBlocks : mDownsample);
+        // Tiles read every scene texel of a half-size level 0 (taps one texel apart).
+        const bool tiles = i == 0 && blocks && step == 1.0f && mPrefilterTiles.valid();
+        const Program& program = tiles    ? mPrefilterTiles
+                                 : i == 0 ? (blocks ? mPrefilterBlocks : mPrefilter)
+                                          : (blocks ? mDownsampleBlocks : mDownsample);
         ScopedGpuTimer timer(in.timers, i == 0 ? "bloom prefilter" : fmt::format("bloom down {}", i),
                              texelBytes(se, source.format()) + texelBytes(te, kFormat));
         BloomDownsampleParameters parameters{.targetTexel = {1.0f / float(te.width), 1.0f / float(te.height)},
@@ -130,8 +171,13 @@ const Texture& BloomPass::execute(const Inputs& in) {
         glBindSampler(0, i == 0 ? mSceneSampler.id() : 0);
         glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
         const int side = mBlockSide;
-        dispatchPixels(blocks ? Extent{(te.width + side - 1) / side, (te.height + side - 1) / side} : te,
-                       mGroup);
+        if (tiles) {
+            glDispatchCompute(GLuint((te.width + kTile - 1) / kTile), GLuint((te.height + kTile - 1) / kTile),
+                              1);
+        } else {
+            dispatchPixels(blocks ? Extent{(te.width + side - 1) / side, (te.height + side - 1) / side} : te,
+                           mGroup);
+        }
         imageWriteBarrier();
     }
     glBindSampler(0, 0);

@@ -51,6 +51,10 @@ public:
         int mipCount = 6;     ///< levels wanted (fewer when the image is small)
         GpuTimers* timers = nullptr;
     };
+    /// The kernels are the renderer's defaults (setBlockSide, setPrefilterTiles) unless the environment says
+    /// otherwise, for measuring them against each other on one device: PHOTOPIC_BLOOM_BLOCK_SIDE=2|4,
+    /// PHOTOPIC_BLOOM_PREFILTER=taps|tiles (an override in force is reported once; a bad value is reported
+    /// and ignored).
     BloomPass();
     /// Target texels per side of an invocation's block where a level is exactly half its source: 4 (16 texels
     /// from 61 shared taps) on a software renderer, 2 (4 texels from 25) on a GPU, where holding 61 taps at
@@ -58,6 +62,11 @@ public:
     /// blocks too (36 fetched texels, constant tent weights); with 2 by filtered taps. Tests run both.
     void setBlockSide(int side);
     [[nodiscard]] int blockSide() const { return mBlockSide; }
+    /// The prefilter from shared-memory tiles of unfiltered scene texels, 16x16 targets per group (each scene
+    /// texel fetched once, the boxes built in arithmetic), where level 0 is exactly half the scene; else from
+    /// filtered taps in blocks. Off by default. Tests run both.
+    void setPrefilterTiles(bool on);
+    [[nodiscard]] bool prefilterTiles() const { return mPrefilterTiles.valid(); }
     /// The invocation shape the programs were built with (pixelGroup() when the pass was made).
     [[nodiscard]] PixelGroup group() const { return mGroup; }
     [[nodiscard]] std::string_view name() const override { return "bloom"; }
@@ -80,11 +89,13 @@ public:
 
 private:
     void ensureChain(int firstDivisor, int levels);
+    void applyEnvironmentOverrides();
 
     PixelGroup mGroup; ///< the invocation shape of every program here (gl/ShaderLibrary.h pixelGroup)
     /// Level 0 (exposure, Karis average, threshold) and the later levels; `Blocks`: blocks of mBlockSide x
     /// mBlockSide target texels per invocation sharing their taps, for a target exactly half its source.
     Program mPrefilter, mPrefilterBlocks;
+    Program mPrefilterTiles; ///< made only while setPrefilterTiles(true)
     Program mDownsample, mDownsampleBlocks;
     int mBlockSide = 2;
     Program mUpsample;

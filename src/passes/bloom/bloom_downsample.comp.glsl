@@ -11,11 +11,13 @@
 // sanitised: over finite texels in [0, kSanitizeMax] that is the box of the sanitised texels (up to rounding;
 // a 32-bit colour is no longer rounded to half first), and a box holding a NaN or an infinity counts as 0, a
 // negative texel is clamped with its box instead of alone. Sanitising each tap, or re-reading a non-finite
-// tap texel by texel, cost about 4 and 29 ms more at 1920x1080 on llvmpipe (which runs both sides of a branch).
+// tap texel by texel, cost about 4 and 29 ms more at 1920x1080 on llvmpipe (which runs both sides of a
+// branch).
 // A compute pass (8x8 groups, rows of 64 on a software renderer; image stores): on GPUs whose raster units
 // are a small part of the chip a full-screen triangle runs far below the memory's pace. With BLOCKS each
 // invocation filters a 2x2 block of target texels whose taps it shares (BLOCKS_4X4: a 4x4 block): texture
-// reads are what a CPU rasteriser pays for, and a GPU issues half the texture instructions.
+// reads are what a CPU rasteriser pays for, and a GPU issues half the texture instructions. With TILES (the
+// prefilter only, 16x16 groups) the boxes come from scene texels fetched once into shared memory.
 #include "passes/common/color.h.glsl"
 #include "passes/common/invocation.h.glsl"
 #ifdef PREFILTER
@@ -23,7 +25,11 @@
 #include "passes/common/sanitize.h.glsl"
 #endif
 
+#ifdef TILES
+layout(local_size_x = 16, local_size_y = 16) in; // one target texel per invocation, a 16x16 tile per group
+#else
 #include "passes/common/pixel_group.h.glsl"
+#endif
 
 layout(binding = 0) uniform sampler2D uSource;
 layout(binding = 0, rgba16f) uniform writeonly image2D uTarget;
@@ -44,9 +50,18 @@ vec3 tap(vec2 uv) {
 // the Karis weights, which must see the luma the viewer will see). Each tap is quartered before the sum, the
 // same value to the bit (a power of two), so finite raw values near the float maximum cannot overflow to an
 // infinity that sanitize would make 0.
+#ifdef PREFILTER
+// A box's mean of its 16 scene texels, sanitised and exposed.
+vec3 exposedBox(vec3 mean) {
+    return sanitize(mean) * gExposure.exposure;
+}
+#endif
+
 vec3 box(vec3 a, vec3 b, vec3 c, vec3 d) {
 #ifdef PREFILTER
-    return sanitize(a * 0.25 + b * 0.25 + c * 0.25 + d * 0.25) * gExposure.exposure;
+    // precise: a compiler may not factor the quarters out of the sum (that sum could overflow).
+    precise vec3 mean = a * 0.25 + b * 0.25 + c * 0.25 + d * 0.25;
+    return exposedBox(mean);
 #else
     return (a + b + c + d) * 0.25;
 #endif
@@ -58,16 +73,8 @@ float karisWeight(vec3 box) {
 }
 #endif
 
-// The filter of one target texel from its 13 taps: a, b, c on the row two steps up, d, e one up, f, g, h on
-// its own row, i, j one down, k, l, m two down (g at its centre).
-vec3 downsample(vec3 a, vec3 b, vec3 c, vec3 d, vec3 e, vec3 f, vec3 g, vec3 h, vec3 i, vec3 j, vec3 k,
-                vec3 l, vec3 m) {
-    vec3 centre = box(d, e, i, j);
-    vec3 topLeft = box(a, b, f, g);
-    vec3 topRight = box(b, c, g, h);
-    vec3 bottomLeft = box(f, g, k, l);
-    vec3 bottomRight = box(g, h, l, m);
-
+// The filter of one target texel from its five boxes (each already sanitised and exposed with PREFILTER).
+vec3 combine(vec3 centre, vec3 topLeft, vec3 topRight, vec3 bottomLeft, vec3 bottomRight) {
 #ifdef KARIS
     float wc = 0.5 * karisWeight(centre);
     float w0 = 0.125 * karisWeight(topLeft);
@@ -89,6 +96,13 @@ vec3 downsample(vec3 a, vec3 b, vec3 c, vec3 d, vec3 e, vec3 f, vec3 g, vec3 h, 
     }
 #endif
     return color;
+}
+
+// The filter of one target texel from its 13 taps: a, b, c on the row two steps up, d, e one up, f, g, h on
+// its own row, i, j one down, k, l, m two down (g at its centre).
+vec3 downsample(vec3 a, vec3 b, vec3 c, vec3 d, vec3 e, vec3 f, vec3 g, vec3 h, vec3 i, vec3 j, vec3 k,
+                vec3 l, vec3 m) {
+    return combine(box(d, e, i, j), box(a, b, f, g), box(b, c, g, h), box(f, g, k, l), box(g, h, l, m));
 }
 
 #ifdef BLOCKS_4X4
@@ -161,6 +175,61 @@ void main() {
                vec4(downsample(e25, e35, e45, o24, o34, e24, e34, e44, o23, o33, e23, e33, e43), 1.0));
     imageStore(uTarget, p + ivec2(3, 3),
                vec4(downsample(e35, e45, e55, o34, o44, e34, e44, e54, o33, o43, e33, e43, e53), 1.0));
+}
+#elif defined(TILES)
+// The prefilter from a tile of scene texels in shared memory (with PREFILTER, where level 0 is exactly half
+// the scene): each group fetches the 36x36 texels under its 16x16 targets once, unfiltered, and builds the
+// boxes in arithmetic, so no filtered fetch of the scene's (often 128-bit) texels is made and none is read
+// twice from memory. The 13 taps fall on texel corners, so each box of four taps is the mean of a 4x4 block
+// of texels: the corner boxes of target x start at source texels 2x - 2 and 2x, which the next target
+// shares, and the centre box at 2x - 1. Means are built from halves and eighths (precise, as in box()) so
+// that finite texels up to the float maximum cannot overflow, and a NaN or an infinity still removes its
+// box. Clamping the texel coordinates is the taps' clamp to edge.
+const int kTile = 16;            // target texels per side of a group's tile
+const int kSpan = 2 * kTile + 4; // scene texels per side under it: two past each edge
+// [row][column]: the mean of tile texels (column, row) and (column + 1, row).
+shared vec3 sPairs[kSpan][kSpan - 1];
+// Boxes of 4x4 texels, sanitised and exposed: [j][i] starts at tile texel (2i, 2j), or (2i + 1, 2j + 1).
+shared vec3 sCorner[kTile + 1][kTile + 1];
+shared vec3 sCentre[kTile][kTile];
+
+void main() {
+    ivec2 tile = ivec2(gl_WorkGroupID.xy) * kTile;
+    ivec2 origin = 2 * tile - 2;
+    ivec2 last = textureSize(uSource, 0) - 1;
+    int invocation = int(gl_LocalInvocationIndex);
+    const int kInvocations = kTile * kTile;
+    for (int k = invocation; k < kSpan * (kSpan - 1); k += kInvocations) {
+        int row = k / (kSpan - 1), column = k % (kSpan - 1);
+        ivec2 p = origin + ivec2(column, row);
+        vec3 a = texelFetch(uSource, clamp(p, ivec2(0), last), 0).rgb;
+        vec3 b = texelFetch(uSource, clamp(p + ivec2(1, 0), ivec2(0), last), 0).rgb;
+        precise vec3 pair = a * 0.5 + b * 0.5; // precise: no factoring the halves out (see box())
+        sPairs[row][column] = pair;
+    }
+    barrier();
+    const int kCorners = (kTile + 1) * (kTile + 1);
+    for (int k = invocation; k < kCorners + kTile * kTile; k += kInvocations) {
+        bool corner = k < kCorners;
+        int n = corner ? kTile + 1 : kTile, q = corner ? k : k - kCorners;
+        ivec2 ij = ivec2(q % n, q / n);
+        ivec2 first = 2 * ij + (corner ? 0 : 1);
+        precise vec3 sum = vec3(0.0);
+        for (int r = 0; r < 4; ++r) {
+            sum += sPairs[first.y + r][first.x] * 0.125 + sPairs[first.y + r][first.x + 2] * 0.125;
+        }
+        if (corner) {
+            sCorner[ij.y][ij.x] = exposedBox(sum);
+        } else {
+            sCentre[ij.y][ij.x] = exposedBox(sum);
+        }
+    }
+    barrier();
+    // The top boxes (+y) cover source rows 2y..2y+3, the bottom ones 2y-2..2y+1.
+    ivec2 l = ivec2(gl_LocalInvocationID.xy);
+    vec3 color = combine(sCentre[l.y][l.x], sCorner[l.y + 1][l.x], sCorner[l.y + 1][l.x + 1],
+                         sCorner[l.y][l.x], sCorner[l.y][l.x + 1]);
+    imageStore(uTarget, tile + l, vec4(color, 1.0)); // past the target's edge: no effect
 }
 #elif defined(BLOCKS)
 // Each invocation filters a 2x2 block of target texels. Neighbouring target texels share taps (the corner
