@@ -33,8 +33,10 @@ check "JSON has the CPU's submission time" grep -q '"cpuSubmitMedianMs"' "$S/def
 expect 0 "bench with the queue kept ahead" -- "$PHOTOPIC" bench --size 64x64 --frames 3 --warmup 1 --queue-ahead \
     --json "$S/ahead.json"
 check "bench says how long the busy work ran and where it held" contains "of untimed GPU work before each timed frame"
+check "bench also times the frame as submitted to an idle GPU" contains "whole frame, as submitted"
 check "JSON has the busy work and the frames it held on" python3 -c "import json,sys; q=json.load(open('$S/ahead.json'))['queueAhead']; \
-sys.exit(0 if q['busyMs'] >= 0.5 and q['framesTimed'] == 3 + 3 + 3 and 0 <= q['framesHeld'] <= q['framesTimed'] else 1)"
+sys.exit(0 if q['busyMs'] >= 0.5 and q['framesTimed'] == 3 + 3 + 3 and 0 <= q['framesHeld'] <= q['framesTimed'] \
+and q['frameAsSubmittedMedianGpuMs'] > 0 else 1)"
 expect 2 "--queue-ahead and --sync exclude each other" -- "$PHOTOPIC" bench --size 64x64 --queue-ahead --sync
 expect 2 "--queue-ahead does not time the canvas scene" -- "$PHOTOPIC" bench --scene canvas --queue-ahead
 expect 2 "bad size is bad input" -- "$PHOTOPIC" bench --size 12by3
