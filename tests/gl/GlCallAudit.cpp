@@ -107,6 +107,12 @@ PHOTOPIC_AUDIT_HOOK(void, glDispatchCompute, (GLuint x, GLuint y, GLuint z), (x,
 PHOTOPIC_AUDIT_HOOK(void, glDispatchComputeIndirect, (GLintptr i), (i),
                     gAudit->onDispatch("glDispatchComputeIndirect"))
 
+PHOTOPIC_AUDIT_HOOK(void, glClearNamedBufferData, (GLuint b, GLenum f, GLenum fm, GLenum t, const void* d),
+                    (b, f, fm, t, d), gAudit->onBufferClear())
+PHOTOPIC_AUDIT_HOOK(void, glCopyNamedBufferSubData,
+                    (GLuint r, GLuint w, GLintptr ro, GLintptr wo, GLsizeiptr s), (r, w, ro, wo, s),
+                    gAudit->onBufferCopy())
+
 #undef PHOTOPIC_AUDIT_HOOK
 
 #define PHOTOPIC_AUDITED(X)                                                                                  \
@@ -132,7 +138,9 @@ PHOTOPIC_AUDIT_HOOK(void, glDispatchComputeIndirect, (GLintptr i), (i),
     X(glDrawElementsInstanced)                                                                               \
     X(glDrawElementsInstancedBaseVertex)                                                                     \
     X(glDispatchCompute)                                                                                     \
-    X(glDispatchComputeIndirect)
+    X(glDispatchComputeIndirect)                                                                             \
+    X(glClearNamedBufferData)                                                                                \
+    X(glCopyNamedBufferSubData)
 
 std::string label(GLenum kind, GLuint id) {
     std::array<char, 256> text{};

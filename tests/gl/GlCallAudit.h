@@ -44,12 +44,17 @@ public:
     [[nodiscard]] int draws() const { return mDraws; }
     [[nodiscard]] int dispatches() const { return mDispatches; }
     [[nodiscard]] int clears() const { return mClears; }
+    /// Buffer clears (glClearNamedBufferData) and GPU-side buffer copies (glCopyNamedBufferSubData).
+    [[nodiscard]] int bufferClears() const { return mBufferClears; }
+    [[nodiscard]] int bufferCopies() const { return mBufferCopies; }
 
     // Called by the hooks.
     void onBufferRead(const char* call, GLuint buffer);
     void onClear(const char* call);
     void onDraw(const char* call);
     void onDispatch(const char* call);
+    void onBufferClear() { ++mBufferClears; }
+    void onBufferCopy() { ++mBufferCopies; }
 
 private:
     void checkSamplers(GLuint program, const char* call);
@@ -60,6 +65,8 @@ private:
     int mDraws = 0;
     int mDispatches = 0;
     int mClears = 0;
+    int mBufferClears = 0;
+    int mBufferCopies = 0;
     std::vector<std::string> mProblems;
     std::map<std::string, std::set<std::string>> mFetchStates;
     std::set<GLuint> mDrawn;

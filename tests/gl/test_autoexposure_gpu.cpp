@@ -2,6 +2,7 @@
 // CPU ExposureController over a scripted sequence, histogram metering, non-finite input, and three
 // readback tests (caching and continuity, auto trigger with auto exposure off, no accumulation).
 
+#include "GlCallAudit.h"
 #include "GlTest.h"
 
 #include "core/ExposureController.h"
@@ -408,6 +409,73 @@ TEST_F(GlTest, TelemetryHistogramRunsForTheDebugViewWithAutoExposureOff) {
     EXPECT_FALSE(t.autoEnabled);
     EXPECT_FLOAT_EQ(t.exposure, std::exp2(1.5f)) << "auto exposure stays off";
     EXPECT_GT(t.maxLuminance, 0.0f);
+}
+
+// With auto exposure off and nothing metered, a frame's metering clears and adaptation dispatch write what
+// the buffers already hold when the frame before was such a frame with the same manual EV: they are skipped
+// then, and only then. After a metered frame the bins are cleared once; a new EV (or a reset) runs the
+// adaptation.
+TEST_F(GlTest, ManualExposureFramesSkipTheMeteringAndAdaptationThatWouldChangeNothing) {
+    Settings s = autoSettings();
+    s.autoExposure.metering = MeteringMode::Histogram;
+    Pipeline p({.settings = s});
+    const Texture input = makeTexture(greyImage(kSize, kSize, 0.3f), "grey");
+    struct Frame {
+        int dispatches, bufferClears, bufferCopies;
+        ExposureTelemetry telemetry;
+        Image8 display;
+    };
+    std::uint64_t index = 0;
+    const auto frame = [&](float ev) {
+        s.autoExposure.enabled = false;
+        s.tonemapping.exposure = ev;
+        p.setSettings(s);
+        GlCallAudit audit;
+        const Texture& out = p.execute({.color = &input}, {.frameIndex = index++});
+        Frame f{audit.dispatches(), audit.bufferClears(), audit.bufferCopies(), {}, readTexture8(out)};
+        glFinish();
+        f.telemetry = p.telemetry();
+        return f;
+    };
+    p.execute({.color = &input}, {.frameIndex = index++}); // metered: the bins hold the frame's histogram
+    glFinish();
+    ASSERT_GT(p.telemetry().histogramCount, 0u);
+
+    const Frame first = frame(1.5f); // after a metered frame: clears, and adapts to the manual EV
+    const Frame again = frame(1.5f); // nothing to change
+    const Frame other = frame(0.5f); // a new EV: the adaptation runs
+    const Frame settled = frame(0.5f);
+
+    for (const Frame* f : {&first, &again, &other, &settled}) {
+        ASSERT_TRUE(f->telemetry.valid);
+        EXPECT_EQ(f->telemetry.histogramCount, 0u);
+        EXPECT_EQ(f->telemetry.maxLuminance, 0.0f);
+        EXPECT_EQ(f->telemetry.frameLuminance, 0.0f);
+        EXPECT_TRUE(std::all_of(f->telemetry.histogram.begin(), f->telemetry.histogram.end(),
+                                [](std::uint32_t c) { return c == 0; }))
+            << "the metered frame's bins are cleared";
+    }
+    EXPECT_FLOAT_EQ(first.telemetry.exposure, std::exp2(1.5f));
+    EXPECT_FLOAT_EQ(again.telemetry.exposure, std::exp2(1.5f));
+    EXPECT_FLOAT_EQ(other.telemetry.exposure, std::exp2(0.5f));
+    EXPECT_FLOAT_EQ(settled.telemetry.exposure, std::exp2(0.5f));
+    EXPECT_EQ(again.display.rgba, first.display.rgba);
+    EXPECT_EQ(settled.display.rgba, other.display.rgba);
+    EXPECT_NE(other.display.rgba, first.display.rgba);
+
+    // One adaptation dispatch, one bin clear and one header copy fewer than in a frame that needs them.
+    EXPECT_EQ(again.dispatches, first.dispatches - 1);
+    EXPECT_EQ(again.bufferClears, first.bufferClears - 1);
+    EXPECT_EQ(again.bufferCopies, first.bufferCopies - 1);
+    EXPECT_EQ(other.dispatches, first.dispatches);
+    EXPECT_EQ(other.bufferClears, again.bufferClears) << "the bins stayed clear";
+    EXPECT_EQ(settled.dispatches, again.dispatches);
+
+    // A reset runs the adaptation again.
+    p.reset();
+    const Frame afterReset = frame(0.5f);
+    EXPECT_EQ(afterReset.dispatches, first.dispatches);
+    EXPECT_FLOAT_EQ(afterReset.telemetry.exposure, std::exp2(0.5f));
 }
 
 // Each frame's histogram starts empty: counts never climb over frames.

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstring>
 #include <span>
 
@@ -147,8 +148,21 @@ std::vector<ExposureTelemetry> ExposurePass::drainTelemetry() {
 
 void ExposurePass::execute(const Inputs& in) noexcept {
     DebugGroup group("exposure adaptation");
-    ScopedGpuTimer timer(in.timers, "exposure adaptation", double(sizeof(GpuExposureState)) * 2 + 1024);
     const AutoExposureSettings& s = *in.settings;
+    // Auto exposure off, nothing metered, no reset: the kernel writes the manual exposure and zeros, from the
+    // manual EV alone. When the last dispatch was such a frame on this buffer with this EV, the buffer
+    // already holds what this one would write, and the dispatch is skipped (the bracket stays, empty, for the
+    // timings' table).
+    const bool idle = !s.enabled && !in.metered && !in.histogramBuilt && !in.reset;
+    const std::uint32_t evBits = std::bit_cast<std::uint32_t>(in.manualEV);
+    const bool unchanged = idle && mIdleBuffer == in.exposureState->id() && mIdleManualEvBits == evBits;
+    ScopedGpuTimer timer(in.timers, "exposure adaptation",
+                         unchanged ? 0.0 : double(sizeof(GpuExposureState)) * 2 + 1024);
+    if (unchanged) {
+        return;
+    }
+    mIdleBuffer = idle ? in.exposureState->id() : 0;
+    mIdleManualEvBits = evBits;
     // Settings validation caps the curve at kMaxCompensationCurvePoints; the clamp keeps an unvalidated
     // struct from overrunning the shader's array.
     const std::size_t curveCount = std::min(s.compensationCurve.size(), kMaxCompensationCurvePoints);

@@ -131,6 +131,11 @@ private:
     ExposureTelemetry mTelemetry;
     std::deque<ExposureTelemetry> mHistory;
     bool mKeepHistory = false;
+    /// The state buffer and manual EV (its bits) of the last dispatch that metered nothing with auto exposure
+    /// off and no reset: such a dispatch writes a state that depends on the manual EV alone, so the next one
+    /// with the same EV on the same buffer would write what the buffer holds, and is skipped.
+    GLuint mIdleBuffer = 0;
+    std::uint32_t mIdleManualEvBits = 0;
 };
 
 } // namespace photopic

@@ -134,6 +134,7 @@ void MeteringPass::execute(FrameContext& ctx, FrameResources& resources) {
                  .settings = &ae,
                  .histogram = histogramWanted(ctx.settings, mMeterForTelemetry),
                  .weights = weightsFor(ae, metered(ctx.settings, mMeterForTelemetry), mask != nullptr),
+                 .metered = metered(ctx.settings, mMeterForTelemetry),
                  .timers = ctx.timers});
     resources.bind(Resource::Histogram, *out.histogram);
     resources.bind(Resource::Metering, *out.metering);
@@ -147,6 +148,7 @@ void MeteringPass::resize(Extent extent) {
         return;
     }
     mExtent = extent;
+    mCleared = false; // the new partials buffer holds nothing defined
     mGroupsX = (extent.width + kGroupSize - 1) / kGroupSize;
     mGroupsY = (extent.height + kGroupSize - 1) / kGroupSize;
     const std::size_t bytes = sizeof(GpuMeteringHeader) + std::size_t(mGroupsX) * std::size_t(mGroupsY) *
@@ -163,10 +165,15 @@ MeteringPass::Outputs MeteringPass::execute(const Inputs& in) noexcept {
     DebugGroup group("metering");
     ScopedGpuTimer timer(in.timers, "metering", bytes);
 
-    // Every frame starts from empty bins (nothing carries over between frames) and an empty min/max.
-    const std::uint32_t zero = 0;
-    glClearNamedBufferData(mHistogram.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    glCopyNamedBufferSubData(mMeteringReset.id(), mMetering.id(), 0, 0, sizeof(GpuMeteringHeader));
+    // Every frame starts from empty bins (nothing carries over between frames) and an empty min/max, which a
+    // frame that writes nothing into them finds there if the frame before wrote nothing either.
+    const bool idle = !meters && !in.metered;
+    if (!(idle && mCleared)) {
+        const std::uint32_t zero = 0;
+        glClearNamedBufferData(mHistogram.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+        glCopyNamedBufferSubData(mMeteringReset.id(), mMetering.id(), 0, 0, sizeof(GpuMeteringHeader));
+    }
+    mCleared = idle;
 
     if (!meters) {
         return outputs(); // nothing is metered: the bins stay empty
