@@ -229,7 +229,7 @@ int runCanvasBench(const BenchOptions& options) {
     const CanvasSceneSettings cs = canvasBenchSettings(options.settings);
     const auto [width, height] = parseSize(options.size, 8);
 
-    HeadlessContext context;
+    HeadlessContext context(commandContext());
     if (!detectCapabilities(false).timerQueries) {
         throw std::runtime_error("this GL implementation has no timer queries; nothing to measure");
     }
@@ -608,7 +608,7 @@ int runBench(const BenchOptions& options) {
     }
     const ImageF image = benchInput(options);
 
-    HeadlessContext context;
+    HeadlessContext context(commandContext());
     if (!options.input.empty()) {
         requireTextureFits(options.input, image.width, image.height);
     }

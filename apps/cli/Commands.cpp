@@ -23,6 +23,7 @@
 #include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -105,9 +106,23 @@ Settings resolveSettings(const SettingsSources& sources, Settings base) {
     return settings;
 }
 
+namespace {
+bool gGlDebug = false;
+} // namespace
+
+void setGlDebug(bool on) {
+    gGlDebug = on;
+}
+
+HeadlessContextCreateInfo commandContext() {
+    const char* env = std::getenv("PHOTOPIC_GL_DEBUG");
+    const bool fromEnv = env != nullptr && std::string_view(env) != "" && std::string_view(env) != "0";
+    return {.debug = gGlDebug || fromEnv};
+}
+
 int runInfo(bool forceLdr, const SettingsSources& sources) {
     const Settings settings = resolveSettings(sources);
-    HeadlessContext context;
+    HeadlessContext context(commandContext());
     const ContextInfo& info = context.info();
     const Capabilities caps = detectCapabilities(forceLdr);
     std::printf("GL vendor:    %s\n", info.vendor.c_str());
@@ -115,6 +130,9 @@ int runInfo(bool forceLdr, const SettingsSources& sources) {
     std::printf("GL version:   %s\n", info.version.c_str());
     std::printf("GLSL version: %s\n", info.glslVersion.c_str());
     std::printf("platform:     %s\n", info.platform.c_str());
+    std::printf("GL debug:     %s\n", info.debugOutput
+                                          ? "on (driver messages to the log)"
+                                          : "off (--gl-debug or PHOTOPIC_GL_DEBUG=1 turns it on)");
     std::printf("colour path:  %s (%s)\n", caps.path == ColorPath::Hdr ? "HDR, RGBA16F" : "LDR, RGBA8",
                 caps.pathReason.c_str());
     std::printf("RGBA16F renderable: %s, RGBA32F renderable: %s, compute: %s, timer queries: %s\n",
@@ -703,7 +721,7 @@ int runImage(const ImageOptions& options) {
     const DecodedFrame& first = reader.next(); // a bad first input fails before a GL context is made
     clock.restart("first decode");
 
-    HeadlessContext context;
+    HeadlessContext context(commandContext());
     requireTextureFits(inputs.front(), first.color.width, first.color.height); // before any GL object
     const std::unique_ptr<Pipeline> pipeline = makeImagePipeline(
         {.settings = settings, .forceLdr = options.forceLdr, .keepTelemetryHistory = telemetry.has_value()});

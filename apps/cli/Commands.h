@@ -5,6 +5,7 @@
 #include "OcioDisplay.h"
 
 #include "core/Settings.h"
+#include "gl/Context.h"
 #include "io/DisplayImageIO.h"
 #include "io/ImageIO.h"
 #include "pipeline/Pipeline.h"
@@ -133,6 +134,12 @@ ImageF readInput(const std::filesystem::path& path, std::int64_t maxPixels);
 /// (needs a current context; creates no GL object). Such an image is refused, not split into tiles: bloom
 /// and metering are whole-image operations.
 void requireTextureFits(const std::filesystem::path& path, int width, int height);
+
+/// The headless context every command makes: a production context, or with --gl-debug (or
+/// PHOTOPIC_GL_DEBUG=1 in the environment) a KHR_debug context whose driver messages reach the log.
+HeadlessContextCreateInfo commandContext();
+/// --gl-debug, before a command runs.
+void setGlDebug(bool on);
 
 /// Frames in flight when `--frames-in-flight` is not given: 3 with up to 4 cores (the 2-core figure: flat at
 /// about 230 MB for a 1080p sequence), else half the cores, at most 8. On a 16-core machine a 1080p sequence

@@ -44,7 +44,7 @@ int runDemo(const fs::path& dataDir, const fs::path& outDir, std::int64_t maxPix
     RunOutputs::requireFile(out);
     std::printf("reading %zu images from %s\n", files.size(), dataDir.string().c_str());
 
-    HeadlessContext context;
+    HeadlessContext context(commandContext());
     Pipeline pipeline;
     const ToneMapper curves[] = {ToneMapper::Aces, ToneMapper::Agx, ToneMapper::Neutral};
     std::vector<std::pair<std::string, Image8>> tiles;

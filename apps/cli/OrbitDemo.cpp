@@ -57,7 +57,7 @@ struct OrbitRun {
 
 /// Renders every frame through the pipeline, writes every `every`th as PNG and the telemetry CSV.
 OrbitRun renderOrbit(const OrbitDemoOptions& options, RunOutputs& outputs) {
-    HeadlessContext context;
+    HeadlessContext context(commandContext());
     OrbitScene scene;
     Settings settings = scene.defaultSettings();
     if (!options.preset.empty()) {

@@ -214,7 +214,7 @@ int runScene(const SceneOptions& options) {
     if (options.frames < 1) {
         throw InputError(fmt::format("--frames {} must be at least 1", options.frames));
     }
-    HeadlessContext context;
+    HeadlessContext context(commandContext());
     std::unique_ptr<Scene> scene;
     try {
         scene = makeScene(options.name);

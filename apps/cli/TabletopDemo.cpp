@@ -104,7 +104,7 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     const DemoFiles files = prepareDemoFiles(outputs, options.output, options.width, options.height,
                                              options.fps, options.seconds);
 
-    HeadlessContext context;
+    HeadlessContext context(commandContext());
     TabletopScene scene;
     Settings settings = scene.defaultSettings(); // subject metering, the eye-lag defaults
     if (look) {

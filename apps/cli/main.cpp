@@ -117,6 +117,7 @@ struct Cli {
     CLI::App* bench = nullptr;
     BenchOptions benchOptions;
     Verbosity verbosity;
+    bool glDebug = false;
 };
 
 void addInfoCommand(CLI::App& app, Cli& c) {
@@ -458,6 +459,16 @@ int main(int argc, char** argv) {
     for (CLI::App* sub : {c.info, c.image, c.settings, c.scene, c.demo, c.bench}) {
         addVerbosityOptions(*sub, c.verbosity);
     }
+    // A KHR_debug context costs CPU time in every GL call on some drivers: only when asked for.
+    const auto addGlDebug = [&c](CLI::App& a) {
+        a.add_flag("--gl-debug", c.glDebug,
+                   "a KHR_debug context whose driver messages (errors, performance warnings) reach the log; "
+                   "also PHOTOPIC_GL_DEBUG=1");
+    };
+    addGlDebug(app);
+    for (CLI::App* sub : {c.info, c.image, c.scene, c.demo, c.bench}) {
+        addGlDebug(*sub);
+    }
     app.footer("Examples:\n"
                "  photopic image in.exr -o out.png --tonemap agx\n"
                "  photopic scene canvas -o out/canvas --motion examples/canvas-motion/tilt.csv\n"
@@ -470,6 +481,7 @@ int main(int argc, char** argv) {
         return code == 0 ? kOk : kBadInput;
     }
     applyVerbosity(c.verbosity);
+    setGlDebug(c.glDebug);
     Progress::setEnabled(!c.verbosity.quiet);
     try {
         return runCommand(c);

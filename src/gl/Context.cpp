@@ -165,6 +165,7 @@ HeadlessContext::HeadlessContext(const HeadlessContextCreateInfo& info)
     if (info.debug) {
         installDebugOutput();
     }
+    mInfo.debugOutput = glIsEnabled(GL_DEBUG_OUTPUT) == GL_TRUE;
 }
 
 HeadlessContext::~HeadlessContext() {

@@ -10,7 +10,9 @@
 namespace photopic {
 
 struct HeadlessContextCreateInfo {
-    bool debug = true;          ///< KHR_debug context, messages routed to the log (see gl/Debug.h)
+    /// A KHR_debug context with synchronous debug output routed to the log (gl/Debug.h): for tests and
+    /// diagnosis. It costs CPU time in every GL call on some drivers, so a production context has none.
+    bool debug = false;
     bool preferHardware = true; ///< try EGL devices that are not software rasterisers first
 };
 
@@ -19,7 +21,8 @@ struct ContextInfo {
     std::string renderer;
     std::string version;
     std::string glslVersion;
-    std::string platform; ///< "EGL device N (hardware)", "EGL device N (software)" or "Mesa surfaceless"
+    std::string platform;     ///< "EGL device N (hardware)", "EGL device N (software)" or "Mesa surfaceless"
+    bool debugOutput = false; ///< the driver's debug messages reach the log (a debug context)
 };
 
 class HeadlessContext {

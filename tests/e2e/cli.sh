@@ -8,6 +8,15 @@ check "info names the renderer and colour path" contains "GL renderer:"
 check "info says HDR or LDR and why" contains "colour path:"
 expect 0 "info --force-ldr" -- "$PHOTOPIC" info --force-ldr
 check "forced LDR is reported" contains "LDR, RGBA8"
+# A production context unless asked: --gl-debug (before or after the command) or PHOTOPIC_GL_DEBUG=1.
+expect 0 "info without a debug context" -- env -u PHOTOPIC_GL_DEBUG "$PHOTOPIC" info
+check "info says GL debug output is off" contains "GL debug:     off"
+expect 0 "info --gl-debug" -- "$PHOTOPIC" info --gl-debug
+check "--gl-debug makes a debug context" contains "GL debug:     on"
+expect 0 "--gl-debug before the command" -- "$PHOTOPIC" --gl-debug info
+check "--gl-debug before the command too" contains "GL debug:     on"
+expect 0 "PHOTOPIC_GL_DEBUG=1" -- env PHOTOPIC_GL_DEBUG=1 "$PHOTOPIC" info
+check "PHOTOPIC_GL_DEBUG=1 makes a debug context" contains "GL debug:     on"
 
 expect 2 "no subcommand is bad usage" -- "$PHOTOPIC"
 expect 2 "unknown option is bad usage" -- "$PHOTOPIC" image --bogus

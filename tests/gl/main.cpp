@@ -23,7 +23,8 @@ int main(int argc, char** argv) {
     // gtest_discover_tests lists tests without running them: no context needed for that.
     if (!::testing::GTEST_FLAG(list_tests)) {
         try {
-            photopic::test::gContext = std::make_unique<photopic::HeadlessContext>();
+            photopic::test::gContext = std::make_unique<photopic::HeadlessContext>(
+                photopic::HeadlessContextCreateInfo{.debug = true});
         } catch (const std::exception& e) {
             photopic::test::gReason = e.what();
         }
