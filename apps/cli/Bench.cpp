@@ -362,11 +362,12 @@ public:
         , mSink({.size = kInvocations * sizeof(float), .flags = 0, .debugName = "bench busy sink"})
         , mEnd(GL_TIMESTAMP) {}
 
-    /// Lengthens the busy work until one run, submitted and waited for, takes at least `ms` of wall time (or
-    /// the 50 ms cap): it must outlast the CPU's submission of a frame, which runs on the wall clock. The
-    /// chain grows to kMaxIterations, then the number of groups (Mesa's llvmpipe ends a shader loop after
-    /// 65535 iterations).
+    /// Lengthens the busy work until one run, submitted and waited for, takes at least `ms` of wall time (at
+    /// most kMaxMs): it must outlast the CPU's submission of a frame, which runs on the wall clock. Each step
+    /// aims a quarter past the target, so the last run stays under 1.25 times it. The chain grows to
+    /// kMaxIterations, then the number of groups (Mesa's llvmpipe ends a shader loop after 65535 iterations).
     void calibrate(double ms) {
+        const double target = std::min(ms, kMaxMs);
         for (;;) {
             glFinish();
             const auto start = std::chrono::steady_clock::now();
@@ -374,10 +375,10 @@ public:
             glFinish();
             mBusyMs =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-            if (mBusyMs >= ms || mBusyMs >= kMaxMs || mGroups >= kMaxGroups) {
+            if (mBusyMs >= target || mGroups >= kMaxGroups) {
                 return;
             }
-            const double scale = std::clamp(mBusyMs > 0 ? 1.25 * ms / mBusyMs : 16.0, 2.0, 16.0);
+            const double scale = std::clamp(mBusyMs > 0 ? 1.25 * target / mBusyMs : 16.0, 1.1, 16.0);
             if (mIterations < kMaxIterations) {
                 mIterations = GLuint(std::min(double(mIterations) * scale, double(kMaxIterations)));
             } else {
@@ -413,7 +414,7 @@ public:
 
 private:
     static constexpr std::size_t kInvocations = 64; // one group's (gl/gpu_busy.comp.glsl)
-    static constexpr double kMaxMs = 50.0;
+    static constexpr double kMaxMs = 40.0;
     static constexpr GLuint kMaxIterations = 65535;
     static constexpr GLuint kMaxGroups = 1u << 20;
     Program mProgram;
