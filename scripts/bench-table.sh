@@ -3,7 +3,8 @@
 # bench --json written to out/bench/SIZE.json and the console table to out/bench/SIZE.txt), then one summary
 # table of the chain's time (the sum of the passes' GPU times, and the whole frame between one pair of
 # timestamps) per frame and per megapixel (out/bench/scaling.md): the cost should grow linearly
-# with pixels. Usage: scripts/bench-table.sh PHOTOPIC FRAMES [SIZES...] [-- bench options]
+# with pixels. Usage: scripts/bench-table.sh PHOTOPIC FRAMES [SIZES...] [-- bench options]; on a GPU,
+# `-- --queue-ahead` times the GPU's own work (each JSON then carries the frame as submitted too).
 set -euo pipefail
 photopic=$1 frames=$2
 shift 2
