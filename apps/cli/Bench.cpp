@@ -684,9 +684,10 @@ int runBench(const BenchOptions& options) {
     const ContextInfo& info = context.info();
     std::printf("photopic bench: %dx%d, %d frames after %d warm-up, %s\n", image.width, image.height,
                 options.frames, options.warmup, info.renderer.c_str());
-    std::printf("colour path: %s (%s), quality %s, bloom levels %d\n",
+    std::printf("colour path: %s (%s), quality %s, bloom levels %d (prefilter %s, blocks of %d)\n",
                 t.path == ColorPath::Hdr ? "HDR" : "LDR", t.pathReason.c_str(),
-                std::string(qualityNames()[std::size_t(t.quality)]).c_str(), t.bloomLevels);
+                std::string(qualityNames()[std::size_t(t.quality)]).c_str(), t.bloomLevels,
+                t.bloomPrefilterTiles ? "tiles" : "taps", t.bloomBlockSide);
     if (options.sync) {
         std::printf("--sync: glFinish() around every pass; 'wall ms' holds the pass's own work and nothing "
                     "else\n");
@@ -737,6 +738,8 @@ int runBench(const BenchOptions& options) {
             {"colourPath", t.path == ColorPath::Hdr ? "hdr" : "ldr"},
             {"colourPathReason", t.pathReason},
             {"quality", std::string(qualityNames()[std::size_t(t.quality)])},
+            {"bloomKernels",
+             {{"prefilter", t.bloomPrefilterTiles ? "tiles" : "taps"}, {"blockSide", t.bloomBlockSide}}},
             {"passes", passesJson},
             {"totalMedianGpuMs", totalMs},
             {"frameMedianGpuMs", wholeFrameMs},

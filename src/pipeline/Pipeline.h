@@ -39,7 +39,10 @@ struct PipelineStatus {
     ColorPath path = ColorPath::Hdr; ///< the path frames take now (quality=legacy forces LDR)
     std::string pathReason;          ///< why
     Quality quality = Quality::High;
-    int bloomLevels = 0;              ///< levels the last frame's bloom chain ran (0: no bloom)
+    int bloomLevels = 0; ///< levels the last frame's bloom chain ran (0: no bloom)
+    // The bloom chain's kernels (BloomPass): the renderer's defaults unless the environment overrides them.
+    int bloomBlockSide = 0;           ///< target texels per side of a downsample block (2 or 4)
+    bool bloomPrefilterTiles = false; ///< the prefilter from shared-memory tiles instead of filtered taps
     std::vector<PassTiming> passes;   ///< the most recent frame with GPU timings available
     std::vector<std::string> ran;     ///< the passes the last frame ran, in order (both stages)
     std::vector<SkippedPass> skipped; ///< passes the last frame needed but could not run, and why

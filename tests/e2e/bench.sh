@@ -28,6 +28,13 @@ check "unmetered frame moves no metering bytes" python3 -c "import json,sys; d=j
 m=[p for p in d['passes'] if p['name']=='metering']; sys.exit(0 if m and m[0]['bytesMoved']==0 else 1)"
 check "bench reports the CPU's submission time" contains "ms to submit a frame"
 check "JSON has the CPU's submission time" grep -q '"cpuSubmitMedianMs"' "$S/default.json"
+check "bench names the bloom kernels" contains "(prefilter taps, blocks of"
+check "JSON names the bloom kernels" python3 -c "import json,sys; k=json.load(open('$S/default.json'))['bloomKernels']; \
+sys.exit(0 if k['prefilter'] == 'taps' and k['blockSide'] in (2, 4) else 1)"
+expect 0 "bench with the tiled prefilter" -- env PHOTOPIC_BLOOM_PREFILTER=tiles PHOTOPIC_BLOOM_BLOCK_SIDE=2 \
+    "$PHOTOPIC" bench --size 64x64 --frames 2 --warmup 1 --json "$S/tiles.json"
+check "the override is reported and named in the table" contains "(prefilter tiles, blocks of 2)"
+check "the override is named in the JSON" grep -q '"prefilter": "tiles"' "$S/tiles.json"
 # --queue-ahead: untimed busy work before each timed frame; the report says on how many frames the GPU was
 # still on it when the frame had been submitted (none on llvmpipe, which runs a dispatch when it is issued).
 expect 0 "bench with the queue kept ahead" -- "$PHOTOPIC" bench --size 64x64 --frames 3 --warmup 1 --queue-ahead \
