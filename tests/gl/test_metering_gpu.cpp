@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <random>
 
@@ -109,6 +110,41 @@ TEST_F(GlTest, GpuHistogramMatchesCoreBinCounts) {
         EXPECT_LE(moved, std::uint64_t(w) * std::uint64_t(h) / 500 + 1) << "too many boundary flips";
         EXPECT_GT(gpu.histogram.bins[0], 0u);
         EXPECT_GT(gpu.histogram.bins[255], 0u);
+    }
+}
+
+// A histogram without a weighted mean runs the run-length kernel (metering_histogram.comp.glsl); with a mean,
+// the one-pixel-per-invocation kernel. Both must give the same bins and extremes to the bit, on widths that
+// end inside a group's span, with non-finite, negative, zero and denormal pixels, and with long runs of one
+// bin (a smooth ramp) beside pixels that change bin at every step.
+TEST_F(GlTest, HistogramKernelGivesTheSameBinsAndExtremesAsTheMeanKernel) {
+    AutoExposureSettings settings;
+    settings.histogramLog2Min = -10.0f;
+    settings.histogramLog2Max = 12.0f;
+    for (const auto [w, h] : {std::pair{61, 37}, std::pair{300, 50}, std::pair{129, 17}}) {
+        ImageF image = randomImage(w, h, 11u + unsigned(w));
+        for (int y = 0; y < h / 2; ++y) { // the upper half: a smooth ramp, a bin held over many pixels
+            for (int x = 0; x < w; ++x) {
+                const float v = std::exp2(-12.0f + 26.0f * float(x) / float(w));
+                image.at(x, y)[0] = image.at(x, y)[1] = image.at(x, y)[2] = v;
+            }
+        }
+        image.at(1, h - 1)[1] = std::numeric_limits<float>::quiet_NaN();
+        image.at(2, h - 1)[0] = std::numeric_limits<float>::infinity();
+        image.at(3, h - 1)[2] = -std::numeric_limits<float>::infinity();
+        image.at(4, h - 1)[1] = -3.0f;
+        image.at(5, h - 1)[1] = 1e-40f; // denormal
+        image.at(w - 1, h - 1)[1] = 3e38f;
+        const GpuMetering runs = meterOnGpu(image, settings, MeteringPass::Weights::None, true);
+        const GpuMetering mean = meterOnGpu(image, settings, MeteringPass::Weights::Average, true);
+        EXPECT_EQ(runs.histogram.bins, mean.histogram.bins) << w << "x" << h;
+        EXPECT_EQ(runs.header.minBits, mean.header.minBits) << w << "x" << h;
+        EXPECT_EQ(runs.header.maxBits, mean.header.maxBits) << w << "x" << h;
+        std::uint64_t total = 0;
+        for (const auto c : runs.histogram.bins) {
+            total += c;
+        }
+        EXPECT_EQ(total, std::uint64_t(w) * std::uint64_t(h)) << "sanitised, every pixel has a bin";
     }
 }
 

@@ -61,6 +61,7 @@ MeteringPass::MeteringPass()
     : mMeter(makeComputeProgram("passes/metering/metering.comp.glsl", bindingDefines()))
     , mMeterRows{rowsProgram(-1), rowsProgram(int(MeteringMode::Average)),
                  rowsProgram(int(MeteringMode::Center)), rowsProgram(int(MeteringMode::Mask))}
+    , mMeterHistogram(makeComputeProgram("passes/metering/metering_histogram.comp.glsl", bindingDefines()))
     , mReduce(makeComputeProgram("passes/metering/metering_reduce.comp.glsl", bindingDefines()))
     , mMeterParameters("metering parameters")
     , mReduceParameters("metering reduce parameters")
@@ -193,8 +194,15 @@ MeteringPass::Outputs MeteringPass::execute(const Inputs& in) noexcept {
     mMeterParameters.bind(kBindingParameters);
     const bool rows = !in.histogram && mRowsWithoutHistogram;
     const int rowsPerGroup = rows ? kGroupSize : 1;
-    (rows ? mMeterRows[rowsVariant(weightsIndex)] : mMeter).use();
-    glDispatchCompute(GLuint(mGroupsX), GLuint(mGroupsY), 1);
+    if (in.histogram && weightsIndex < 0) {
+        // No partial sums wanted: runs of pixels per invocation, a group kHistogramRun times as wide.
+        mMeterHistogram.use();
+        const int span = kGroupSize * kHistogramRun;
+        glDispatchCompute(GLuint((e.width + span - 1) / span), GLuint(mGroupsY), 1);
+    } else {
+        (rows ? mMeterRows[rowsVariant(weightsIndex)] : mMeter).use();
+        glDispatchCompute(GLuint(mGroupsX), GLuint(mGroupsY), 1);
+    }
 
     if (in.weights != Weights::None) {
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

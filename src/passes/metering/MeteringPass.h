@@ -102,12 +102,17 @@ public:
     [[nodiscard]] Outputs outputs() const { return {&mHistogram, &mMetering}; }
 
     static constexpr int kGroupSize = 16;
+    /// Pixels each invocation of the histogram-only kernel bins (metering_histogram.comp.glsl kRun).
+    static constexpr int kHistogramRun = 8;
 
 private:
     Program mMeter;
     /// No histogram: one invocation per block row, no barriers; one variant per weighting (WEIGHTS: -1 none,
     /// or the mode's index), since a CPU rasteriser computes every weight a uniform branch could choose.
     std::array<Program, 4> mMeterRows;
+    /// The histogram and the extremes without a weighted mean: runs of pixels per invocation, the same bins
+    /// and extremes as mMeter (metering_histogram.comp.glsl).
+    Program mMeterHistogram;
     Program mReduce;
     ParameterBlock<MeteringParameters> mMeterParameters;
     ParameterBlock<MeteringReduceParameters> mReduceParameters;
