@@ -114,7 +114,8 @@ TEST_F(GlTest, GpuHistogramMatchesCoreBinCounts) {
 }
 
 // A histogram without a weighted mean runs the run-length kernel (metering_histogram.comp.glsl); with a mean,
-// the one-pixel-per-invocation kernel. Both must give the same bins and extremes to the bit, on widths that
+// the one-pixel-per-invocation block shader, or on a software renderer the row shader beside the run-length
+// kernel. All must give the same bins, extremes (and reading) to the bit, on widths that
 // end inside a group's span, with non-finite, negative, zero and denormal pixels, and with long runs of one
 // bin (a smooth ramp) beside pixels that change bin at every step.
 TEST_F(GlTest, HistogramKernelGivesTheSameBinsAndExtremesAsTheMeanKernel) {
@@ -136,10 +137,19 @@ TEST_F(GlTest, HistogramKernelGivesTheSameBinsAndExtremesAsTheMeanKernel) {
         image.at(5, h - 1)[1] = 1e-40f; // denormal
         image.at(w - 1, h - 1)[1] = 3e38f;
         const GpuMetering runs = meterOnGpu(image, settings, MeteringPass::Weights::None, true);
-        const GpuMetering mean = meterOnGpu(image, settings, MeteringPass::Weights::Average, true);
+        // With a mean: the block shader building both, or the row shader beside the run-length kernel.
+        const GpuMetering mean =
+            meterOnGpu(image, settings, MeteringPass::Weights::Average, true, nullptr, false);
+        const GpuMetering split =
+            meterOnGpu(image, settings, MeteringPass::Weights::Average, true, nullptr, true);
         EXPECT_EQ(runs.histogram.bins, mean.histogram.bins) << w << "x" << h;
         EXPECT_EQ(runs.header.minBits, mean.header.minBits) << w << "x" << h;
         EXPECT_EQ(runs.header.maxBits, mean.header.maxBits) << w << "x" << h;
+        EXPECT_EQ(split.histogram.bins, mean.histogram.bins) << w << "x" << h;
+        EXPECT_EQ(split.header.minBits, mean.header.minBits) << w << "x" << h;
+        EXPECT_EQ(split.header.maxBits, mean.header.maxBits) << w << "x" << h;
+        EXPECT_EQ(split.header.reading, mean.header.reading) << w << "x" << h;
+        EXPECT_GT(mean.header.reading, 0.0f);
         std::uint64_t total = 0;
         for (const auto c : runs.histogram.bins) {
             total += c;

@@ -192,14 +192,18 @@ MeteringPass::Outputs MeteringPass::execute(const Inputs& in) noexcept {
                              .log2Min = s.histogramLog2Min,
                              .log2Max = s.histogramLog2Max});
     mMeterParameters.bind(kBindingParameters);
-    const bool rows = !in.histogram && mRowsWithoutHistogram;
+    // A histogram without partial sums takes the run-length kernel alone. Where the row shader is wanted (a
+    // software renderer), a histogram with a mean takes both, two reads of the image instead of the block
+    // shader's barriers; elsewhere the block shader builds both in one read.
+    const bool histogramOnly = in.histogram && weightsIndex < 0;
+    const bool rows = mRowsWithoutHistogram && !histogramOnly;
     const int rowsPerGroup = rows ? kGroupSize : 1;
-    if (in.histogram && weightsIndex < 0) {
-        // No partial sums wanted: runs of pixels per invocation, a group kHistogramRun times as wide.
+    if (in.histogram && (histogramOnly || rows)) {
         mMeterHistogram.use();
-        const int span = kGroupSize * kHistogramRun;
+        const int span = kGroupSize * kHistogramRun; // a group is kHistogramRun times as wide
         glDispatchCompute(GLuint((e.width + span - 1) / span), GLuint(mGroupsY), 1);
-    } else {
+    }
+    if (!histogramOnly) {
         (rows ? mMeterRows[rowsVariant(weightsIndex)] : mMeter).use();
         glDispatchCompute(GLuint(mGroupsX), GLuint(mGroupsY), 1);
     }

@@ -66,7 +66,8 @@ public:
     };
 
     MeteringPass();
-    /// Which shader meters a frame that needs no histogram (see mRowsWithoutHistogram); tests run both.
+    /// Which shader computes the weighted mean (see mRowsWithoutHistogram; with a histogram too, the row
+    /// shader runs beside the histogram kernel); tests run both.
     void setRowShaderWithoutHistogram(bool rows) { mRowsWithoutHistogram = rows; }
     [[nodiscard]] std::string_view name() const override { return "metering"; }
     [[nodiscard]] bool sanitizesSceneReads() const override { return true; }
@@ -119,7 +120,8 @@ private:
     Buffer mHistogram;
     Buffer mMetering;
     Buffer mMeteringReset; ///< the header each frame starts from (copied on the GPU)
-    /// The row shader when no histogram is wanted, on a software renderer only: the two give the same
+    /// The row shader for the weighted mean (beside the histogram kernel when a histogram is wanted too), on
+    /// a software renderer only: it and the block shader give the same
     /// reading bit for bit, but on llvmpipe the block shader's barriers cost 9x the row shader's time
     /// (265 against 29 ms at 1920x1080) while on an H200 the row shader's uncoalesced reads cost 4x the block
     /// shader's (0.106 against 0.027 ms).
