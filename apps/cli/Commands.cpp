@@ -9,6 +9,7 @@
 #include "TelemetryCsv.h"
 
 #include "common/SequencePattern.h"
+#include "core/Environment.h"
 #include "core/Log.h"
 #include "core/settings/SettingsJson.h"
 #include "gl/Context.h"
@@ -23,7 +24,6 @@
 #include <cctype>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -115,9 +115,7 @@ void setGlDebug(bool on) {
 }
 
 HeadlessContextCreateInfo commandContext() {
-    const char* env = std::getenv("PHOTOPIC_GL_DEBUG");
-    const bool fromEnv = env != nullptr && std::string_view(env) != "" && std::string_view(env) != "0";
-    return {.debug = gGlDebug || fromEnv};
+    return {.debug = gGlDebug || environmentSwitch("PHOTOPIC_GL_DEBUG")};
 }
 
 int runInfo(bool forceLdr, const SettingsSources& sources) {

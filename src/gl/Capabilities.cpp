@@ -1,9 +1,9 @@
 #include "gl/Capabilities.h"
 
+#include "core/Environment.h"
 #include "core/Log.h"
 #include "gl/Gl.h"
 
-#include <cstdlib>
 #include <string_view>
 
 namespace photopic {
@@ -42,8 +42,7 @@ Capabilities detectCapabilities(bool forceLdr) {
     caps.rgba16fRenderable = renderable(GL_RGBA16F);
     caps.rgba32fRenderable = renderable(GL_RGBA32F);
 
-    const char* env = std::getenv("PHOTOPIC_FORCE_LDR");
-    const bool envForce = env && std::string_view(env) != "0" && std::string_view(env) != "";
+    const bool envForce = environmentSwitch("PHOTOPIC_FORCE_LDR");
     if (forceLdr || envForce) {
         caps.path = ColorPath::Ldr;
         caps.pathReason = envForce ? "LDR forced by PHOTOPIC_FORCE_LDR" : "LDR forced by the caller";

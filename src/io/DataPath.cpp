@@ -1,8 +1,9 @@
 #include "io/DataPath.h"
 
+#include "core/Environment.h"
+
 #include <fmt/format.h>
 
-#include <cstdlib>
 #include <stdexcept>
 #include <system_error>
 
@@ -64,8 +65,8 @@ DataDirCandidate explicitChoice(const fs::path& explicitDir) {
     if (!explicitDir.empty()) {
         return {explicitDir, "--data"};
     }
-    if (const char* env = std::getenv("PHOTOPIC_DATA_DIR"); env != nullptr && *env != '\0') {
-        return {env, "PHOTOPIC_DATA_DIR"};
+    if (const auto env = environmentValue("PHOTOPIC_DATA_DIR")) {
+        return {fs::path(*env), "PHOTOPIC_DATA_DIR"};
     }
     return {};
 }

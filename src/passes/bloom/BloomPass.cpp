@@ -1,11 +1,11 @@
 #include "passes/bloom/BloomPass.h"
 
 #include "core/Bloom.h"
+#include "core/Environment.h"
 #include "core/Log.h"
 #include "gl/Capabilities.h"
 #include "passes/Bindings.h"
 
-#include <cstdlib>
 #include <fmt/format.h>
 #include <stdexcept>
 #include <string_view>
@@ -41,28 +41,26 @@ BloomPass::BloomPass()
 }
 
 void BloomPass::applyEnvironmentOverrides() {
-    if (const char* side = std::getenv("PHOTOPIC_BLOOM_BLOCK_SIDE"); side != nullptr && *side != '\0') {
-        const std::string_view value(side);
-        if (value == "2" || value == "4") {
-            setBlockSide(value == "2" ? 2 : 4);
+    if (const auto side = environmentValue("PHOTOPIC_BLOOM_BLOCK_SIDE")) {
+        if (*side == "2" || *side == "4") {
+            setBlockSide(*side == "2" ? 2 : 4);
             warnOnce("bloom-block-side", fmt::format("PHOTOPIC_BLOOM_BLOCK_SIDE={}: the bloom downsample "
                                                      "filters blocks of {} x {} target texels",
-                                                     value, value, value));
+                                                     *side, *side, *side));
         } else {
             warnOnce("bloom-block-side-bad",
-                     fmt::format("PHOTOPIC_BLOOM_BLOCK_SIDE={}: not 2 or 4; ignored", value));
+                     fmt::format("PHOTOPIC_BLOOM_BLOCK_SIDE={}: not 2 or 4; ignored", *side));
         }
     }
-    if (const char* kernel = std::getenv("PHOTOPIC_BLOOM_PREFILTER"); kernel != nullptr && *kernel != '\0') {
-        const std::string_view value(kernel);
-        if (value == "taps" || value == "tiles") {
-            setPrefilterTiles(value == "tiles");
+    if (const auto kernel = environmentValue("PHOTOPIC_BLOOM_PREFILTER")) {
+        if (*kernel == "taps" || *kernel == "tiles") {
+            setPrefilterTiles(*kernel == "tiles");
             warnOnce("bloom-prefilter",
-                     fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: the bloom prefilter reads {}", value,
-                                 value == "tiles" ? "tiles of unfiltered scene texels" : "filtered taps"));
+                     fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: the bloom prefilter reads {}", *kernel,
+                                 *kernel == "tiles" ? "tiles of unfiltered scene texels" : "filtered taps"));
         } else {
             warnOnce("bloom-prefilter-bad",
-                     fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: not 'taps' or 'tiles'; ignored", value));
+                     fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: not 'taps' or 'tiles'; ignored", *kernel));
         }
     }
 }
