@@ -37,7 +37,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <optional>
+#include <memory>
 
 namespace photopic::cli {
 
@@ -427,35 +427,49 @@ private:
     int mHeld = 0, mTimed = 0;
 };
 
+/// One timed run: `submit` issues the timed work (behind the busy work, with `ahead`), `collect` takes its
+/// results once the GPU has done it; with `ahead`, whether the queue stayed ahead is counted.
+template <class Submit, class Collect>
+void timedRun(QueueAhead* ahead, Submit&& submit, Collect&& collect) {
+    if (ahead) {
+        ahead->submit();
+    }
+    submit();
+    if (ahead) {
+        ahead->markSubmitted();
+    }
+    collect();
+    if (ahead) {
+        ahead->settle();
+    }
+}
+
 /// The median time of `work` over `frames` runs, each between one pair of GPU timestamps collected before the
 /// next run (the wall time around it with --sync); `afterEach` runs between runs, outside the timestamps.
-/// With `ahead`, its busy work precedes each run, outside the timestamps.
+/// With `ahead`, its busy work precedes each run, outside the timestamps (timedRun).
 template <class Work, class AfterEach>
 double medianTimed(const BenchOptions& options, QueueAhead* ahead, Work&& work, AfterEach&& afterEach) {
     GpuTimers timers;
     timers.setSynchronous(options.sync);
     std::vector<double> ms;
     for (int i = 0; i < options.frames; ++i) {
-        if (ahead) {
-            ahead->submit();
-        }
-        timers.beginFrame();
-        {
-            ScopedGpuTimer timer(&timers, "timed");
-            work();
-        }
-        timers.endFrame();
-        if (ahead) {
-            ahead->markSubmitted();
-        }
-        for (const auto& frame : timers.drain()) {
-            for (const PassTiming& t : frame) {
-                ms.push_back(options.sync ? t.wallMs : t.gpuMs);
-            }
-        }
-        if (ahead) {
-            ahead->settle();
-        }
+        timedRun(
+            ahead,
+            [&] {
+                timers.beginFrame();
+                {
+                    ScopedGpuTimer timer(&timers, "timed");
+                    work();
+                }
+                timers.endFrame();
+            },
+            [&] {
+                for (const auto& frame : timers.drain()) {
+                    for (const PassTiming& t : frame) {
+                        ms.push_back(options.sync ? t.wallMs : t.gpuMs);
+                    }
+                }
+            });
         afterEach();
     }
     return median(ms);
@@ -644,27 +658,17 @@ int runBench(const BenchOptions& options) {
         pipeline.timers().drain();
         progress.advance();
     }
-    std::optional<QueueAhead> ahead;
-    if (options.queueAhead) {
-        // Four times what a warm frame took the CPU to submit, at least half a millisecond.
-        ahead.emplace();
+    // Four times what a warm frame took the CPU to submit, at least half a millisecond.
+    const std::unique_ptr<QueueAhead> ahead = options.queueAhead ? std::make_unique<QueueAhead>() : nullptr;
+    if (ahead) {
         ahead->calibrate(std::max(0.5, 4.0 * median(warmupSubmitMs)));
     }
-    QueueAhead* const aheadOrNull = ahead ? &*ahead : nullptr;
     PassSamples samples;
     std::vector<double> submitMs;
     for (int i = 0; i < options.frames; ++i) {
-        if (ahead) {
-            ahead->submit();
-        }
-        submitMs.push_back(submitFrame());
-        if (ahead) {
-            ahead->markSubmitted();
-        }
-        samples.add(pipeline.timers().drain());
-        if (ahead) {
-            ahead->settle();
-        }
+        timedRun(
+            ahead.get(), [&] { submitMs.push_back(submitFrame()); },
+            [&] { samples.add(pipeline.timers().drain()); });
         progress.advance();
     }
 
@@ -672,7 +676,7 @@ int runBench(const BenchOptions& options) {
     // loop runs it, gaps between passes included and no per-pass timestamps.
     pipeline.timers().setEnabled(false);
     const double wholeFrameMs = medianTimed(
-        options, aheadOrNull, [&] { submitFrame(); }, [&] { progress.advance(); });
+        options, ahead.get(), [&] { submitFrame(); }, [&] { progress.advance(); });
     // With the queue kept ahead, the frame as a host submits it to an idle GPU too, beside it.
     const double asSubmittedMs = ahead ? medianTimed(
                                              options, nullptr, [&] { submitFrame(); }, [] {})
@@ -696,7 +700,7 @@ int runBench(const BenchOptions& options) {
                     "timestamps and into a later pass's: run with --sync for per-pass wall times\n",
                     info.renderer.c_str());
     }
-    const CopyReference copy = measureCopy(image.width, image.height, input.format(), options, aheadOrNull);
+    const CopyReference copy = measureCopy(image.width, image.height, input.format(), options, ahead.get());
     std::printf("bandwidth reference: %s copy %dx%d, %.3f ms, %.2f MB, %.2f GB/s (%s)\n", copy.format.c_str(),
                 image.width, image.height, copy.medianMs, copy.bytes / 1e6, copy.gbPerSecond(),
                 options.sync ? "wall ms with glFinish" : "GPU timestamps");
