@@ -54,11 +54,6 @@ double median(std::vector<double> values) {
 
 namespace {
 
-bool isSoftwareRenderer(const std::string& renderer) {
-    return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos ||
-           renderer.find("SwiftShader") != std::string::npos;
-}
-
 /// The table as JSON, through the io library's atomic writer: flushed to disk and renamed into place, so a
 /// reader never sees half a table. Throws IoError naming the file.
 void writeJsonAtomically(const fs::path& path, const nlohmann::json& doc) {
@@ -193,7 +188,7 @@ nlohmann::json printCanvasBench(const BenchOptions& options, const CanvasSceneSe
     std::printf(
         "'gpu query ms': GL timer queries, frames back to back (the figure on a GPU); 'wall+finish ms': "
         "glFinish-bracketed wall clock%s\n",
-        isSoftwareRenderer(info.renderer)
+        isSoftwareRenderer()
             ? " (the figure on this software renderer, whose timestamps can miss work run at the flush)"
             : "");
     std::printf("%-12s %16s %10s %14s %16s\n", "path", "tiles shaded", "share", "gpu query ms",
@@ -695,7 +690,7 @@ int runBench(const BenchOptions& options) {
     if (options.sync) {
         std::printf("--sync: glFinish() around every pass; 'wall ms' holds the pass's own work and nothing "
                     "else\n");
-    } else if (isSoftwareRenderer(info.renderer)) {
+    } else if (isSoftwareRenderer()) {
         std::printf("note: %s runs a draw when its scene is flushed, which can fall outside the pass's "
                     "timestamps and into a later pass's: run with --sync for per-pass wall times\n",
                     info.renderer.c_str());
