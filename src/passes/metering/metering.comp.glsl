@@ -6,6 +6,7 @@
 #include "passes/common/sanitize.h.glsl"
 #include "passes/metering/metering.h.glsl"
 #include "passes/metering/metering_buffers.h.glsl"
+#include "passes/metering/metering_group.h.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(binding = 0) uniform sampler2D uScene;
@@ -19,23 +20,14 @@ layout(std140, binding = BINDING_PARAMETERS) uniform MeteringParameters {
     float uLog2Max;
 };
 
-shared uint sBins[256];
 shared float sSum[256];
 shared float sWeight[256];
 shared float sRowSum[16];
 shared float sRowWeight[16];
-shared uint sMinBits;
-shared uint sMaxBits;
 
 void main() {
     uint li = gl_LocalInvocationIndex;
-    if (uBuildHistogram != 0) {
-        sBins[li] = 0u;
-    }
-    if (li == 0u) {
-        sMinBits = 0xffffffffu;
-        sMaxBits = 0u;
-    }
+    clearGroupTallies(li, uBuildHistogram != 0);
     barrier();
 
     ivec2 size = textureSize(uScene, 0);
@@ -59,8 +51,8 @@ void main() {
     sWeight[li] = w > 0.0 ? w : 0.0;
     barrier();
 
-    if (uBuildHistogram != 0 && sBins[li] != 0u) {
-        atomicAdd(gBins[li], sBins[li]);
+    if (uBuildHistogram != 0) {
+        mergeGroupBin(li);
     }
     // Two-level sum (16 rows of 16, then the 16 row sums): two barriers instead of a tree's eight. Barriers are
     // what costs on CPU rasterisers (llvmpipe), and 16-term serial float sums keep
@@ -77,10 +69,7 @@ void main() {
     }
     barrier();
     if (li == 0u) {
-        if (sMaxBits != 0u) {
-            atomicMin(gMinBits, sMinBits);
-            atomicMax(gMaxBits, sMaxBits);
-        }
+        mergeGroupExtremes();
         if (uWeights >= 0) {
             uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
             vec2 total = vec2(0.0);

@@ -9,6 +9,7 @@
 #include "passes/common/sanitize.h.glsl"
 #include "passes/metering/metering.h.glsl"
 #include "passes/metering/metering_buffers.h.glsl"
+#include "passes/metering/metering_group.h.glsl"
 
 const int kGroupWidth = 16;
 const int kRun = 8; // pixels per invocation: a group covers kGroupWidth * kRun x 16 pixels
@@ -24,17 +25,9 @@ layout(std140, binding = BINDING_PARAMETERS) uniform MeteringParameters {
     float uLog2Max;
 };
 
-shared uint sBins[256];
-shared uint sMinBits;
-shared uint sMaxBits;
-
 void main() {
     uint li = gl_LocalInvocationIndex;
-    sBins[li] = 0u;
-    if (li == 0u) {
-        sMinBits = 0xffffffffu;
-        sMaxBits = 0u;
-    }
+    clearGroupTallies(li, true);
     barrier();
 
     ivec2 size = textureSize(uScene, 0);
@@ -72,11 +65,8 @@ void main() {
     }
     barrier();
 
-    if (sBins[li] != 0u) {
-        atomicAdd(gBins[li], sBins[li]);
-    }
-    if (li == 0u && sMaxBits != 0u) {
-        atomicMin(gMinBits, sMinBits);
-        atomicMax(gMaxBits, sMaxBits);
+    mergeGroupBin(li);
+    if (li == 0u) {
+        mergeGroupExtremes();
     }
 }
