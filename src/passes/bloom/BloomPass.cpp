@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 
 namespace photopic {
@@ -16,7 +17,7 @@ namespace {
 constexpr const char* kDown = "passes/bloom/bloom_downsample.comp.glsl";
 constexpr const char* kUp = "passes/bloom/bloom_upsample.comp.glsl";
 constexpr GLenum kFormat = GL_RGBA16F;
-constexpr int kTile = 16; // target texels per side of a tiled prefilter's group (bloom_downsample.comp.glsl)
+constexpr int kTile = 16; // target texels per side of a tiled prefilter's group (the shader's TILES)
 
 double texelBytes(Extent e, GLenum format) {
     return double(e.width) * double(e.height) * bytesPerTexel(format);
@@ -67,7 +68,9 @@ void BloomPass::applyEnvironmentOverrides() {
 
 void BloomPass::setPrefilterTiles(bool on) {
     mPrefilterTiles =
-        on ? makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {"TILES", "1"}}))
+        on ? makeComputeProgram(
+                 kDown,
+                 bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {"TILES", std::to_string(kTile)}}))
            : Program();
 }
 

@@ -26,7 +26,8 @@
 #endif
 
 #ifdef TILES
-layout(local_size_x = 16, local_size_y = 16) in; // one target texel per invocation, a 16x16 tile per group
+// One target texel per invocation, a TILES x TILES tile per group (the host's tile side).
+layout(local_size_x = TILES, local_size_y = TILES) in;
 #else
 #include "passes/common/pixel_group.h.glsl"
 #endif
@@ -185,7 +186,7 @@ void main() {
 // shares, and the centre box at 2x - 1. Means are built from halves and eighths (precise, as in box()) so
 // that finite texels up to the float maximum cannot overflow, and a NaN or an infinity still removes its
 // box. Clamping the texel coordinates is the taps' clamp to edge.
-const int kTile = 16;            // target texels per side of a group's tile
+const int kTile = TILES;         // target texels per side of a group's tile
 const int kSpan = 2 * kTile + 4; // scene texels per side under it: two past each edge
 // [row][column]: the mean of tile texels (column, row) and (column + 1, row).
 shared vec3 sPairs[kSpan][kSpan - 1];

@@ -7,6 +7,7 @@
 #include "passes/Bindings.h"
 
 #include <cstdint>
+#include <string>
 
 namespace photopic {
 
@@ -61,7 +62,8 @@ MeteringPass::MeteringPass()
     : mMeter(makeComputeProgram("passes/metering/metering.comp.glsl", bindingDefines()))
     , mMeterRows{rowsProgram(-1), rowsProgram(int(MeteringMode::Average)),
                  rowsProgram(int(MeteringMode::Center)), rowsProgram(int(MeteringMode::Mask))}
-    , mMeterHistogram(makeComputeProgram("passes/metering/metering_histogram.comp.glsl", bindingDefines()))
+    , mMeterHistogram(makeComputeProgram("passes/metering/metering_histogram.comp.glsl",
+                                         bindingDefines({{"RUN", std::to_string(kHistogramRun)}})))
     , mReduce(makeComputeProgram("passes/metering/metering_reduce.comp.glsl", bindingDefines()))
     , mMeterParameters("metering parameters")
     , mReduceParameters("metering reduce parameters")

@@ -103,7 +103,7 @@ public:
     [[nodiscard]] Outputs outputs() const { return {&mHistogram, &mMetering}; }
 
     static constexpr int kGroupSize = 16;
-    /// Pixels each invocation of the histogram-only kernel bins (metering_histogram.comp.glsl kRun).
+    /// Pixels each invocation of the histogram-only kernel bins (metering_histogram.comp.glsl's RUN).
     static constexpr int kHistogramRun = 8;
 
 private:

@@ -1,18 +1,20 @@
-// Metering that needs the histogram and no weighted mean (histogram metering, or the histogram view with auto
-// exposure off): the 256-bin log2 histogram and the frame's min/max meterable luminance, one read of the image
-// in one dispatch, the same bins and extremes to the bit as metering.comp.glsl. Each invocation bins a row of
-// kRun pixels, kGroupWidth apart (so a group's reads of one step are contiguous), counting runs of one bin in
-// a register and adding each run to the shared bins with one atomic: neighbouring pixels mostly share a bin,
-// so the shared atomics of a smooth region no longer queue on a few bins one pixel at a time. A group covers
-// kRun times the pixels of metering.comp.glsl's, so a frame has kRun times fewer groups, each merging its
-// non-empty bins into the global ones once. The extremes are kept in registers and merged once per invocation.
+// Metering that needs the histogram and no weighted mean (histogram metering, or the histogram view with
+// auto exposure off): the 256-bin log2 histogram and the frame's min/max meterable luminance, one read of the
+// image in one dispatch, the same bins and extremes to the bit as metering.comp.glsl. Each invocation bins a
+// row of kRun pixels, kGroupWidth apart (so a group's reads of one step are contiguous), counting runs of one
+// bin in a register and adding each run to the shared bins with one atomic: neighbouring pixels mostly share
+// a bin, so the shared atomics of a smooth region no longer queue on a few bins one pixel at a time. A group
+// covers kRun times the pixels of metering.comp.glsl's, so a frame has kRun times fewer groups, each merging
+// its non-empty bins into the global ones once. The extremes are kept in registers and merged once per
+// invocation.
 #include "passes/common/sanitize.h.glsl"
 #include "passes/metering/metering.h.glsl"
 #include "passes/metering/metering_buffers.h.glsl"
 #include "passes/metering/metering_group.h.glsl"
 
 const int kGroupWidth = 16;
-const int kRun = 8; // pixels per invocation: a group covers kGroupWidth * kRun x 16 pixels
+const int kRun = RUN; // pixels per invocation (the host's MeteringPass::kHistogramRun): a group covers
+                      // kGroupWidth * kRun x 16 pixels
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(binding = 0) uniform sampler2D uScene;
 
