@@ -4,6 +4,7 @@
 #include <cstring>
 
 #if defined(__x86_64__) || defined(__i386__)
+#include <cpuid.h>
 #include <immintrin.h>
 #define PHOTOPIC_X86 1
 #endif
@@ -83,9 +84,16 @@ __attribute__((target("avx,f16c"))) void halfToFloatF16c(const std::uint16_t* in
         out[i] = halfToFloat(in[i]);
 }
 
+/// AVX usable (the CPU has it and the OS saves its registers: __builtin_cpu_supports checks both) and F16C,
+/// read from CPUID leaf 1 (ECX bit 29) directly: Clang before 16 knows no "f16c" for __builtin_cpu_supports.
 bool detectF16c() noexcept {
     __builtin_cpu_init();
-    return __builtin_cpu_supports("avx") && __builtin_cpu_supports("f16c");
+    unsigned eax = 0;
+    unsigned ebx = 0;
+    unsigned ecx = 0;
+    unsigned edx = 0;
+    return __builtin_cpu_supports("avx") && __get_cpuid(1, &eax, &ebx, &ecx, &edx) != 0 &&
+           (ecx & bit_F16C) != 0;
 }
 #endif
 
