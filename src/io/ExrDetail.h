@@ -29,6 +29,9 @@ namespace photopic::detail {
 /// capacity is kept: a sequence's reader reuses one buffer.
 void readCheckedExrBytes(const std::filesystem::path& path, std::vector<unsigned char>& bytes,
                          const ImageReadLimits& limits = {});
+/// readCheckedExrBytes's checks on bytes already in memory (`path` only names them in errors).
+void checkExrBytes(const std::filesystem::path& path, std::span<const unsigned char> bytes,
+                   const ImageReadLimits& limits = {});
 
 /// OpenEXR's input stream over bytes in memory; reads past the end throw like a short file does.
 class MemoryIStream : public Imf::IStream {

@@ -156,6 +156,10 @@ ExrCameraAttributes readCameraAttributes(const fs::path& path, const Imf::Header
     a.sensorOverallDimensions = vec2Attribute(path, header, "sensorOverallDimensions");
     a.shutterAngle = floatAttribute(path, header, "shutterAngle");
     a.jitter = vec2Attribute(path, header, "jitter");
+    // The motion unjitter adds it to every motion vector: a non-finite one would leave none finite.
+    if (a.jitter && !(std::isfinite(a.jitter->x) && std::isfinite(a.jitter->y)))
+        throw IoError(path, "attribute jitter (" + std::to_string(a.jitter->x) + ", " +
+                                std::to_string(a.jitter->y) + ") is not finite");
     a.nearClip = floatAttribute(path, header, "nearClipPlane");
     a.farClip = floatAttribute(path, header, "farClipPlane");
     a.sunDirection = vec3Attribute(path, header, "sunDirection");
@@ -351,19 +355,14 @@ Lens lensFromExr(const ExrCameraAttributes& a, float verticalFov) {
     return lens;
 }
 
-} // namespace
+// ---------------------------------------------------------------------------------------------------------------
+// Reading
 
-ExrFrame readExrFrame(const fs::path& path, const ImageReadLimits& limits) {
-    ExrFrameReader reader;
-    ExrFrame frame;
-    reader.read(path, frame, limits);
-    return frame;
-}
-
-void ExrFrameReader::read(const fs::path& path, ExrFrame& frame, const ImageReadLimits& limits) {
-    detail::readCheckedExrBytes(path, mBytes, limits);
+/// The frame in `bytes`, already checked by detail::checkExrBytes, into `frame`'s storage.
+void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes, ExrFrame& frame,
+                      const ImageReadLimits& limits) {
     try {
-        detail::MemoryIStream stream(path, mBytes);
+        detail::MemoryIStream stream(path, bytes);
         Imf::InputFile file(stream);
         const Imf::Header& header = file.header();
         const Imf::ChannelList& channels = header.channels();
@@ -396,7 +395,7 @@ void ExrFrameReader::read(const fs::path& path, ExrFrame& frame, const ImageRead
         frame.motion.clear();
 
         detail::readExrColor(
-            path, mBytes, file, frame.color,
+            path, bytes, file, frame.color,
             [&](Imf::FrameBuffer& frameBuffer, const Imath::Box2i& dataWindow, int width, int height) {
                 if (depth)
                     addLayerSlices(frameBuffer, *depth, frame.depth, dataWindow, width, height);
@@ -413,7 +412,61 @@ void ExrFrameReader::read(const fs::path& path, ExrFrame& frame, const ImageRead
     }
 }
 
-void writeExrFrame(const fs::path& path, const ExrFrame& frame) {
+/// Every field of `frame` emptied, its vectors' capacity kept.
+void clearFrame(ExrFrame& frame) {
+    frame.color.width = 0;
+    frame.color.height = 0;
+    frame.color.rgba.clear();
+    frame.depth.clear();
+    frame.normals.clear();
+    frame.motion.clear();
+    frame.camera = {};
+    frame.channels.clear();
+    frame.attributes.clear();
+    frame.displaySize = {0, 0};
+    frame.dataOrigin = {0, 0};
+    frame.halfColor = false;
+}
+
+} // namespace
+
+ExrFrame readExrFrame(const fs::path& path, const ImageReadLimits& limits) {
+    ExrFrameReader reader;
+    ExrFrame frame;
+    reader.read(path, frame, limits);
+    return frame;
+}
+
+ExrFrame decodeExrFrame(std::span<const unsigned char> bytes, const fs::path& name,
+                        const ImageReadLimits& limits) {
+    ExrFrameReader reader;
+    ExrFrame frame;
+    reader.decode(bytes, name, frame, limits);
+    return frame;
+}
+
+void ExrFrameReader::read(const fs::path& path, ExrFrame& frame, const ImageReadLimits& limits) {
+    try {
+        detail::readCheckedExrBytes(path, mBytes, limits);
+        readCheckedFrame(path, mBytes, frame, limits);
+    } catch (const IoError&) {
+        clearFrame(frame);
+        throw;
+    }
+}
+
+void ExrFrameReader::decode(std::span<const unsigned char> bytes, const fs::path& name, ExrFrame& frame,
+                            const ImageReadLimits& limits) {
+    try {
+        detail::checkExrBytes(name, bytes, limits);
+        readCheckedFrame(name, bytes, frame, limits);
+    } catch (const IoError&) {
+        clearFrame(frame);
+        throw;
+    }
+}
+
+std::string encodeExrFrame(const ExrFrame& frame, const fs::path& path) {
     const ImageF& color = frame.color;
     if (color.empty() || color.rgba.size() != color.pixelCount() * 4)
         throw IoError(path, "cannot write a frame without a colour image of width*height RGBA values");
@@ -472,6 +525,11 @@ void writeExrFrame(const fs::path& path, const ExrFrame& frame) {
     } catch (const std::exception& e) {
         throw IoError(path, std::string("cannot encode OpenEXR: ") + e.what());
     }
+    return bytes;
+}
+
+void writeExrFrame(const fs::path& path, const ExrFrame& frame) {
+    const std::string bytes = encodeExrFrame(frame, path);
     detail::writeAtomically(path,
                             std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
 }

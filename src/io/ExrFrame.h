@@ -28,6 +28,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -73,10 +74,16 @@ struct ExrFrame {
     bool halfColor = false;
 };
 
-/// Reads colour as readImage does, plus the layers and attributes above when present, in one pass. Throws
+/// Reads colour as readImage does, plus the layers and attributes above when present, in one pass: each
+/// layer the file has holds the colour's width*height pixels, the display window has at least one pixel.
+/// Values are kept as stored (NaN, infinite), the attributes too except `jitter`, which is finite. Throws
 /// IoError naming the file for anything readImage rejects, a layer with some of its components missing
-/// (N.X and N.Y without N.Z) and a camera attribute of the wrong type.
+/// (N.X and N.Y without N.Z), a camera attribute of the wrong type and a non-finite `jitter`.
 [[nodiscard]] ExrFrame readExrFrame(const std::filesystem::path& path, const ImageReadLimits& limits = {});
+/// readExrFrame on bytes in memory; `name` only names the source in errors. Any byte string gives a frame
+/// or an IoError (the fuzzers hold it to that).
+[[nodiscard]] ExrFrame decodeExrFrame(std::span<const unsigned char> bytes, const std::filesystem::path& name,
+                                      const ImageReadLimits& limits = {});
 
 /// readExrFrame for a sequence: each frame is read into storage kept from the one before (the file's bytes
 /// here, the layers in the ExrFrame passed in), so after its first frame a sequence of one size allocates
@@ -84,8 +91,11 @@ struct ExrFrame {
 class ExrFrameReader {
 public:
     /// readExrFrame into `frame`, every field replaced; its vectors' capacity is reused. On IoError
-    /// `frame` holds no meaningful values.
+    /// `frame` is left empty (as a default ExrFrame, its capacity kept), never half filled.
     void read(const std::filesystem::path& path, ExrFrame& frame, const ImageReadLimits& limits = {});
+    /// read() on bytes in memory (`name` only names them in errors), into the same kept storage.
+    void decode(std::span<const unsigned char> bytes, const std::filesystem::path& name, ExrFrame& frame,
+                const ImageReadLimits& limits = {});
 
 private:
     std::vector<unsigned char> mBytes;
@@ -95,6 +105,8 @@ private:
 /// displaySize/dataOrigin fields are not written). Atomic, like writeExr; throws IoError naming the file when
 /// a layer's size does not match the colour.
 void writeExrFrame(const std::filesystem::path& path, const ExrFrame& frame);
+/// writeExrFrame's file as bytes in memory; `name` only names the frame in errors.
+[[nodiscard]] std::string encodeExrFrame(const ExrFrame& frame, const std::filesystem::path& name);
 
 /// The file's camera attributes as the pipeline's Camera (GL conventions) for the file's display window
 /// (`width` x `height` pixels, which the NDC conversion does not need but the arguments are checked);

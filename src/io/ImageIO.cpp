@@ -30,9 +30,12 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 namespace photopic {
@@ -237,9 +240,61 @@ ImageF readExrLuminanceChroma(const fs::path& path, std::span<const unsigned cha
     return image;
 }
 
+/// The bytes OpenEXR's reader of a value of `type` takes whatever the attribute's declared size says, for the
+/// types of a fixed size; nullopt for the others.
+std::optional<std::size_t> exrFixedValueSize(std::string_view type) {
+    static constexpr std::pair<std::string_view, std::size_t> kSizes[] = {{"box2i", 16},
+                                                                          {"box2f", 16},
+                                                                          {"chromaticities", 32},
+                                                                          {"compression", 1},
+                                                                          {"deepImageState", 1},
+                                                                          {"double", 8},
+                                                                          {"envmap", 1},
+                                                                          {"float", 4},
+                                                                          {"int", 4},
+                                                                          {"keycode", 28},
+                                                                          {"lineOrder", 1},
+                                                                          {"m33f", 36},
+                                                                          {"m33d", 72},
+                                                                          {"m44f", 64},
+                                                                          {"m44d", 128},
+                                                                          {"rational", 8},
+                                                                          {"tiledesc", 9},
+                                                                          {"timecode", 8},
+                                                                          {"v2i", 8},
+                                                                          {"v2f", 8},
+                                                                          {"v2d", 16},
+                                                                          {"v3i", 12},
+                                                                          {"v3f", 12},
+                                                                          {"v3d", 24}};
+    for (const auto& [name, size] : kSizes) {
+        if (name == type)
+            return size;
+    }
+    return std::nullopt;
+}
+
+/// Whether a channel list (entries of a name, its null and 16 bytes, then an empty name) ends exactly at the
+/// end of `value`: OpenEXR reads the list to its empty name, whatever the declared size.
+bool exrChannelListFits(std::span<const unsigned char> value) {
+    std::size_t pos = 0;
+    while (pos < value.size()) {
+        const auto end = std::find(value.begin() + std::ptrdiff_t(pos), value.end(), 0);
+        if (end == value.end())
+            return false;
+        const std::size_t nameLength = std::size_t(end - value.begin()) - pos;
+        if (nameLength == 0)
+            return pos + 1 == value.size();
+        pos += nameLength + 1 + 16; // type, pLinear, 3 reserved bytes, x and y sampling
+    }
+    return false;
+}
+
 /// Walks the header attributes (name, type, 32-bit size, value) without OpenEXR and refuses a size beyond the
 /// file's end: OpenEXR allocates a value's declared size (up to 2 GiB for an unknown type) before it reads
-/// it.
+/// it. A known type whose reader takes a different number of bytes than the declared size (a fixed-size
+/// value, a channel list) is refused too: OpenEXR would go on reading the next attribute from the wrong
+/// place, where a size it then trusted was never checked.
 void checkExrAttributeSizes(const fs::path& path, std::span<const unsigned char> bytes) {
     const bool multiPart = bytes.size() >= 8 && (bytes[5] & 0x10) != 0; // version flag 0x1000
     std::size_t pos = 8;
@@ -272,6 +327,15 @@ void checkExrAttributeSizes(const fs::path& path, std::span<const unsigned char>
             throw IoError(path, "OpenEXR header is corrupt: attribute \"" + name + "\" (" + type +
                                     ") declares " + std::to_string(size) + " bytes, the file has " +
                                     std::to_string(bytes.size() - pos) + " left");
+        const std::optional<std::size_t> fixed = exrFixedValueSize(type);
+        if (fixed && size != *fixed)
+            throw IoError(path, "OpenEXR header is corrupt: attribute \"" + name + "\" (" + type +
+                                    ") declares " + std::to_string(size) + " bytes, a " + type + " has " +
+                                    std::to_string(*fixed));
+        if (type == "chlist" && !exrChannelListFits(bytes.subspan(pos, size)))
+            throw IoError(path, "OpenEXR header is corrupt: channel list \"" + name +
+                                    "\" does not end where its declared " + std::to_string(size) +
+                                    " bytes do");
         pos += size;
     }
 }
@@ -782,9 +846,23 @@ void detail::readCheckedExrBytes(const fs::path& path, std::vector<unsigned char
                                  const ImageReadLimits& limits) {
     requireRegularFile(path);
     readBytes(path, bytes);
+    checkExrBytes(path, bytes, limits);
+}
+
+void detail::checkExrBytes(const fs::path& path, std::span<const unsigned char> bytes,
+                           const ImageReadLimits& limits) {
+    if (bytes.empty())
+        throw IoError(path, "file is empty");
     if (!startsWith(bytes, kExrMagic))
         throw IoError(path, "is not an OpenEXR file (no OpenEXR magic number)");
-    checkExrHeader(path, bytes, limits);
+    try {
+        checkExrHeader(path, bytes, limits);
+    } catch (const IoError&) {
+        throw;
+    } catch (const std::exception& e) {
+        // OpenEXR's own parse of the header (an attribute of the wrong type, a truncated value).
+        throw IoError(path, std::string("cannot read OpenEXR: ") + e.what());
+    }
 }
 
 void detail::readExrColor(const fs::path& path, std::span<const unsigned char> bytes, Imf::InputFile& file,

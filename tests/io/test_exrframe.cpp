@@ -12,13 +12,18 @@
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
+#include <ImfVecAttribute.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <string>
+#include <tuple>
+#include <vector>
 
 namespace photopic {
 namespace {
@@ -281,6 +286,117 @@ TEST(ExrFrame, WrongTypedAttributeIsAnErrorNamingTheFile) {
     writeRaw(folder / "lens.exr", {"R", "G", "B"},
              [](Imf::Header& h) { h.insert("pinholeFocalLength", Imf::StringAttribute("35mm")); });
     expectIoError(folder / "lens.exr", "pinholeFocalLength");
+}
+
+TEST(ExrFrame, NonFiniteJitterIsAnErrorNamingTheFile) {
+    const test::TempFolder folder;
+    writeRaw(folder / "jitter.exr", {"R", "G", "B"}, [](Imf::Header& h) {
+        h.insert("jitter", Imf::V2fAttribute(Imath::V2f(std::numeric_limits<float>::quiet_NaN(), 0.0f)));
+    });
+    expectIoError(folder / "jitter.exr", "attribute jitter");
+}
+
+/// A header by hand: the magic number, version 2 (single-part scanline), then each attribute as name, type,
+/// declared size and value bytes, then the header's end. OpenEXR parses it before any pixel is read.
+std::vector<unsigned char>
+rawHeader(const std::vector<std::tuple<std::string, std::string, std::vector<unsigned char>>>& attributes,
+          std::uint32_t declaredSizeOfLast = UINT32_MAX) {
+    std::vector<unsigned char> bytes{0x76, 0x2f, 0x31, 0x01, 2, 0, 0, 0};
+    for (std::size_t i = 0; i < attributes.size(); ++i) {
+        const auto& [name, type, value] = attributes[i];
+        bytes.insert(bytes.end(), name.begin(), name.end());
+        bytes.push_back(0);
+        bytes.insert(bytes.end(), type.begin(), type.end());
+        bytes.push_back(0);
+        const std::uint32_t size = i + 1 == attributes.size() && declaredSizeOfLast != UINT32_MAX
+                                       ? declaredSizeOfLast
+                                       : std::uint32_t(value.size());
+        for (int b = 0; b < 4; ++b)
+            bytes.push_back(static_cast<unsigned char>(size >> (8 * b)));
+        bytes.insert(bytes.end(), value.begin(), value.end());
+    }
+    bytes.push_back(0);
+    bytes.resize(bytes.size() + 64, 0); // room that a misread size could claim
+    return bytes;
+}
+
+void expectDecodeError(const std::vector<unsigned char>& bytes, const std::string& fragment) {
+    for (const bool frame : {true, false}) {
+        try {
+            if (frame)
+                (void)decodeExrFrame(bytes, "hand.exr");
+            else
+                (void)decodeImage(bytes, "hand.exr");
+            ADD_FAILURE() << "no error";
+        } catch (const IoError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("hand.exr"), std::string::npos) << what;
+            EXPECT_NE(what.find(fragment), std::string::npos) << what;
+        }
+    }
+}
+
+// OpenEXR reads a fixed-size value or a channel list by its own length, not the declared size: a size that
+// differs puts it out of step, and it then trusts a size read from the middle of a value (it allocated 1.2
+// GB for a 29-byte file). Such headers are refused before OpenEXR sees them.
+TEST(ExrFrame, HeaderValuesOfAnotherSizeThanDeclaredAreRefused) {
+    expectDecodeError(rawHeader({{"gain", "float", {0, 0, 0x80, 0x3f, 0, 0x7f}}}), "a float has 4");
+    expectDecodeError(rawHeader({{"window", "box2i", std::vector<unsigned char>(16, 0)}}, 0),
+                      "a box2i has 16");
+    // A channel list whose empty name comes after its declared size ends: OpenEXR reads on to it.
+    expectDecodeError(rawHeader({{"s", "chlist", {}}}), "does not end where");
+    std::vector<unsigned char> channel{'R', 0, 1, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0};
+    expectDecodeError(rawHeader({{"channels", "chlist", channel}}, std::uint32_t(channel.size() - 1)),
+                      "does not end where");
+}
+
+// An attribute of the wrong type for one OpenEXR predefines (`channels`) fails in OpenEXR's own header
+// parse: an IoError naming the file, not OpenEXR's exception.
+TEST(ExrFrame, PredefinedAttributeOfAnotherTypeIsAnErrorNamingTheFile) {
+    const std::vector<unsigned char> bytes = rawHeader({{"channels", "float", {0, 0, 0x80, 0x3f}}});
+    expectDecodeError(bytes, "channels");
+    const test::TempFolder folder;
+    std::ofstream(folder / "typed.exr", std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    expectIoError(folder / "typed.exr", "Unexpected type for image attribute \"channels\"");
+}
+
+TEST(ExrFrame, DecodeFromMemoryMatchesTheFile) {
+    const test::TempFolder folder;
+    writeExrFrame(folder / "frame.exr", testFrame());
+    const std::string bytes = encodeExrFrame(testFrame(), "frame.exr");
+    const ExrFrame fromFile = readExrFrame(folder / "frame.exr");
+    const ExrFrame fromMemory =
+        decodeExrFrame({reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()}, "frame.exr");
+    EXPECT_EQ(fromMemory.color.rgba, fromFile.color.rgba);
+    EXPECT_EQ(fromMemory.depth, fromFile.depth);
+    EXPECT_EQ(fromMemory.normals, fromFile.normals);
+    EXPECT_EQ(fromMemory.motion, fromFile.motion);
+    EXPECT_EQ(fromMemory.attributes, fromFile.attributes);
+    EXPECT_EQ(fromMemory.camera.worldToNDC, fromFile.camera.worldToNDC);
+}
+
+// A sequence reader's frame after an error is empty, not the earlier frame's layers under a new size, and
+// the next read into the same storage is whole again.
+TEST(ExrFrame, FailedReadLeavesTheFrameEmptyAndTheReaderUsable) {
+    const test::TempFolder folder;
+    writeExrFrame(folder / "good.exr", testFrame());
+    writeRaw(folder / "bad.exr", {"R", "G", "B", "N.X"});
+    ExrFrameReader reader;
+    ExrFrame frame;
+    reader.read(folder / "good.exr", frame);
+    EXPECT_THROW(reader.read(folder / "bad.exr", frame), IoError);
+    EXPECT_TRUE(frame.color.empty());
+    EXPECT_TRUE(frame.color.rgba.empty());
+    EXPECT_TRUE(frame.depth.empty() && frame.normals.empty() && frame.motion.empty());
+    EXPECT_FALSE(frame.camera.worldToCamera);
+    EXPECT_TRUE(frame.channels.empty());
+    EXPECT_EQ(frame.displaySize, glm::ivec2(0, 0));
+    reader.read(folder / "good.exr", frame);
+    const ExrFrame alone = readExrFrame(folder / "good.exr");
+    EXPECT_EQ(frame.color.rgba, alone.color.rgba);
+    EXPECT_EQ(frame.normals, alone.normals);
+    EXPECT_EQ(frame.camera.jitter, alone.camera.jitter);
 }
 
 TEST(ExrFrame, NotAnExrIsAnError) {
