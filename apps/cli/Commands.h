@@ -2,6 +2,7 @@
 // The photopic CLI's commands. Each returns the process exit code: 0 ok, 2 bad usage or input, 1 other
 // failure.
 
+#include "InputError.h"
 #include "OcioDisplay.h"
 
 #include "core/Settings.h"
@@ -19,12 +20,6 @@
 namespace photopic::cli {
 
 enum ExitCode : int { kOk = 0, kFailure = 1, kBadInput = 2 };
-
-/// Bad usage or bad input (a file that cannot be read, settings that do not validate): exit 2.
-class InputError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 /// Settings from `base` with the preset's look (--preset NAME, else the file's "preset", else the command's
 /// own), then --settings FILE's other keys over it, then the shorthand flags, then each --set in order.

@@ -8,141 +8,16 @@
 #include "io/ImageIO.h"
 
 #include <fmt/format.h>
-#include <glm/gtc/matrix_transform.hpp>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <limits>
-#include <set>
 
 namespace photopic::cli {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
-
-// ---------------------------------------------------------------------------------------------------------------
-// Camera JSON
-
-namespace {
-
-[[noreturn]] void badKey(const fs::path& path, const std::string& key, const std::string& problem) {
-    throw InputError(fmt::format("{}: camera key \"{}\": {}", path.string(), key, problem));
-}
-
-float number(const fs::path& path, const json& object, const std::string& key, float fallback,
-             const std::string& prefix = "") {
-    const auto it = object.find(key);
-    if (it == object.end())
-        return fallback;
-    if (!it->is_number() || !std::isfinite(it->get<double>()))
-        badKey(path, prefix + key, "expected a finite number");
-    return it->get<float>();
-}
-
-glm::vec3 vector3(const fs::path& path, const json& object, const std::string& key, glm::vec3 fallback) {
-    const auto it = object.find(key);
-    if (it == object.end())
-        return fallback;
-    if (!it->is_array() || it->size() != 3 ||
-        !std::all_of(it->begin(), it->end(), [](const json& v) { return v.is_number(); }))
-        badKey(path, key, "expected an array of 3 numbers");
-    return {(*it)[0].get<float>(), (*it)[1].get<float>(), (*it)[2].get<float>()};
-}
-
-void rejectUnknownKeys(const fs::path& path, const json& object, const std::set<std::string>& known,
-                       const std::string& prefix) {
-    for (const auto& [key, value] : object.items()) {
-        if (!known.contains(key))
-            badKey(path, prefix + key, "unknown key");
-    }
-}
-
-Lens lensJson(const fs::path& path, const json& root, float verticalFov) {
-    Lens lens;
-    const auto it = root.find("lens");
-    if (it == root.end()) {
-        lens.focalLengthMm = lens.sensorHeightMm / (2.0f * std::tan(0.5f * verticalFov));
-        return lens;
-    }
-    if (!it->is_object())
-        badKey(path, "lens", "expected an object");
-    rejectUnknownKeys(path, *it,
-                      {"focalLengthMm", "sensorHeightMm", "fNumber", "focusDistance", "shutterAngleDeg",
-                       "exposureTimeS", "iso"},
-                      "lens.");
-    lens.sensorHeightMm = number(path, *it, "sensorHeightMm", lens.sensorHeightMm, "lens.");
-    // Without a focal length, the one that gives the field of view on this sensor.
-    lens.focalLengthMm = number(path, *it, "focalLengthMm",
-                                lens.sensorHeightMm / (2.0f * std::tan(0.5f * verticalFov)), "lens.");
-    lens.fNumber = number(path, *it, "fNumber", lens.fNumber, "lens.");
-    lens.focusDistance = number(path, *it, "focusDistance", lens.focusDistance, "lens.");
-    lens.shutterAngleDeg = number(path, *it, "shutterAngleDeg", lens.shutterAngleDeg, "lens.");
-    lens.exposureTimeS = number(path, *it, "exposureTimeS", lens.exposureTimeS, "lens.");
-    lens.iso = number(path, *it, "iso", lens.iso, "lens.");
-    return lens;
-}
-
-} // namespace
-
-Camera CameraJson::camera(int width, int height) const {
-    Camera c;
-    c.view = glm::lookAt(position, target, up);
-    c.verticalFov = glm::radians(verticalFovDeg);
-    c.nearPlane = nearPlane;
-    c.farPlane = farPlane;
-    c.projection = perspectiveProjection(c.verticalFov, float(width) / float(height), nearPlane, farPlane);
-    c.prevViewProjection = c.viewProjection();
-    c.lens = lens;
-    return c;
-}
-
-CameraJson loadCameraJson(const fs::path& path) {
-    std::ifstream in(path);
-    if (!in)
-        throw InputError(fmt::format("{}: cannot open the camera file", path.string()));
-    json root;
-    try {
-        root = json::parse(in);
-    } catch (const json::exception& e) {
-        throw InputError(fmt::format("{}: not valid JSON: {}", path.string(), e.what()));
-    }
-    if (!root.is_object())
-        throw InputError(fmt::format("{}: a camera file holds one JSON object", path.string()));
-    rejectUnknownKeys(path, root, {"position", "target", "up", "verticalFovDeg", "near", "far", "lens"}, "");
-    for (const char* key : {"position", "target"}) {
-        if (!root.contains(key))
-            badKey(path, key, "required");
-    }
-    CameraJson c;
-    c.position = vector3(path, root, "position", c.position);
-    c.target = vector3(path, root, "target", c.target);
-    c.up = vector3(path, root, "up", c.up);
-    c.verticalFovDeg = number(path, root, "verticalFovDeg", c.verticalFovDeg);
-    c.nearPlane = number(path, root, "near", c.nearPlane);
-    const auto far = root.find("far");
-    c.farPlane = far == root.end() || far->is_null() ? std::numeric_limits<float>::infinity()
-                                                     : number(path, root, "far", c.farPlane);
-    if (!(c.verticalFovDeg > 0.0f && c.verticalFovDeg < 180.0f))
-        badKey(path, "verticalFovDeg", "must be in (0, 180) degrees");
-    if (!(c.nearPlane > 0.0f))
-        badKey(path, "near", "must be > 0");
-    if (!(c.farPlane > c.nearPlane))
-        badKey(path, "far", "must be > near (omit it or use null for an infinite far plane)");
-    const glm::vec3 forward = c.target - c.position;
-    if (glm::length(forward) < 1e-6f)
-        badKey(path, "target", "must differ from position");
-    if (glm::length(glm::cross(forward, c.up)) < 1e-6f * glm::length(forward) * glm::length(c.up))
-        badKey(path, "up", "must not be parallel to target - position");
-    c.lens = lensJson(path, root, glm::radians(c.verticalFovDeg));
-    Camera check = c.camera(16, 9);
-    if (const char* reason = invalidCameraReason(check))
-        badKey(path, "lens", reason);
-    return c;
-}
 
 // ---------------------------------------------------------------------------------------------------------------
 // Decoding

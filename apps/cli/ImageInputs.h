@@ -3,6 +3,8 @@
 // view-space normals, UV motion with jitter removed, a GL camera), the camera JSON for files without camera
 // attributes, the GL textures they are uploaded to, `--info` and `--write-aux`.
 
+#include "CameraJson.h"
+
 #include "core/Camera.h"
 #include "core/Image.h"
 #include "gl/Objects.h"
@@ -16,23 +18,6 @@
 #include <vector>
 
 namespace photopic::cli {
-
-/// A camera given as JSON (docs/camera-json.md): GL conventions, the projection built per frame size.
-struct CameraJson {
-    glm::vec3 position{0.0f};
-    glm::vec3 target{0.0f, 0.0f, -1.0f};
-    glm::vec3 up{0.0f, 1.0f, 0.0f};
-    float verticalFovDeg = 60.0f; ///< degrees, (0, 180)
-    float nearPlane = 0.1f;       ///< scene units, > 0
-    float farPlane = 1000.0f;     ///< scene units, > near; omitted or null in the file: infinite
-    Lens lens;
-
-    /// The camera for a `width` x `height` frame (aspect from the frame; prevViewProjection = this frame's).
-    [[nodiscard]] Camera camera(int width, int height) const;
-};
-
-/// Reads and validates a camera JSON file; throws InputError naming the file and the key.
-[[nodiscard]] CameraJson loadCameraJson(const std::filesystem::path& path);
 
 /// One input frame in the pipeline's conventions, rows top to bottom like ImageF.
 struct DecodedFrame {
