@@ -53,7 +53,7 @@ bench: build
 # Fuzzing (fuzz/): libFuzzer + ASan/UBSan harnesses built by clang in their own tree, each run for FUZZ_SECONDS
 # on one core. The committed corpus also runs in `make test` (photopic_fuzz_corpus_tests), with any compiler.
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS ?= settings override motion exr hdr png gltf
+FUZZ_TARGETS ?= settings override motion camera exr exrframe hdr png gltf
 fuzz: deps
 	@CC=clang CXX=clang++ cmake -S . -B build/fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPHOTOPIC_BUILD_FUZZERS=ON \
 		-DPHOTOPIC_BUILD_TESTS=OFF -DPHOTOPIC_BUILD_APPS=OFF -DPHOTOPIC_BUILD_BENCH=OFF > build-configure-fuzz.log 2>&1 \

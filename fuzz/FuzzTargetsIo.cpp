@@ -1,11 +1,22 @@
-// Entry points for the image readers: OpenEXR, Radiance .hdr and PNG, from bytes in memory.
+// Entry points for the image readers: OpenEXR (colour alone, and frames with their layers and camera),
+// Radiance .hdr and PNG, from bytes in memory.
 
 #include "FuzzTargets.h"
 
+#include "io/ExrFrame.h"
 #include "io/ImageIO.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace photopic::fuzz {
 
@@ -15,12 +26,16 @@ namespace {
 // (tiling, RLE scanlines, interlacing) to be reached.
 constexpr ImageReadLimits kLimits{.maxPixels = 1 << 20};
 
+[[noreturn]] void broken(const std::string& promise) {
+    std::fprintf(stderr, "fuzz target: promise broken: %s\n", promise.c_str());
+    std::abort();
+}
+
 template <typename Image>
-void checkShape(const Image& image) {
+void checkShape(const Image& image, const ImageReadLimits& limits = kLimits) {
     if (image.empty() || image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4 ||
-        std::int64_t(image.width) * image.height > kLimits.maxPixels) {
-        std::fprintf(stderr, "fuzz target: promise broken: decoded image has the wrong shape\n");
-        std::abort();
+        std::int64_t(image.width) * image.height > limits.maxPixels) {
+        broken("decoded image has the wrong shape");
     }
 }
 
@@ -29,6 +44,171 @@ void decode(const std::uint8_t* data, std::size_t size, const char* name) {
         checkShape(decodeImage({data, size}, name, kLimits));
     } catch (const IoError&) {
     }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// EXR frames
+
+constexpr const char* kFrameName = "fuzz.exr";
+// A frame with its layers is read three times an input (alone, and into the storage each of two frames
+// before it left): a smaller bound than kLimits keeps that fast, still above the largest chunk (256 lines)
+// and the tiles the header check lets through.
+constexpr ImageReadLimits kFrameLimits{.maxPixels = 1 << 16};
+
+bool finite(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r]))
+                return false;
+    return true;
+}
+
+/// Bit for bit, NaNs included: the reader must give the same values whatever its storage held before.
+template <typename T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+template <typename T>
+bool sameBits(const std::optional<T>& a, const std::optional<T>& b) {
+    return a.has_value() == b.has_value() && (!a || std::memcmp(&*a, &*b, sizeof(T)) == 0);
+}
+
+bool sameCamera(const ExrCameraAttributes& a, const ExrCameraAttributes& b) {
+    return sameBits(a.worldToCamera, b.worldToCamera) && sameBits(a.worldToNDC, b.worldToNDC) &&
+           sameBits(a.focus, b.focus) && sameBits(a.aperture, b.aperture) && sameBits(a.expTime, b.expTime) &&
+           sameBits(a.isoSpeed, b.isoSpeed) && sameBits(a.pinholeFocalLength, b.pinholeFocalLength) &&
+           sameBits(a.sensorOverallDimensions, b.sensorOverallDimensions) &&
+           sameBits(a.shutterAngle, b.shutterAngle) && sameBits(a.jitter, b.jitter) &&
+           sameBits(a.nearClip, b.nearClip) && sameBits(a.farClip, b.farClip) &&
+           sameBits(a.sunDirection, b.sunDirection);
+}
+
+bool sameFrame(const ExrFrame& a, const ExrFrame& b) {
+    return a.color.width == b.color.width && a.color.height == b.color.height &&
+           sameBits(a.color.rgba, b.color.rgba) && sameBits(a.depth, b.depth) &&
+           sameBits(a.normals, b.normals) && sameBits(a.motion, b.motion) && sameCamera(a.camera, b.camera) &&
+           a.channels == b.channels && a.attributes == b.attributes && a.displaySize == b.displaySize &&
+           a.dataOrigin == b.dataOrigin && a.halfColor == b.halfColor;
+}
+
+/// The frames a sequence reader's storage holds before the fuzzed one: a larger one with every layer and
+/// camera attribute, and a smaller one with colour alone, each as bytes and as read on its own.
+struct Prime {
+    std::string bytes;
+    ExrFrame frame;
+};
+
+ExrFrame primeFrame(int width, int height, bool layers) {
+    ExrFrame frame;
+    frame.color = ImageF(width, height);
+    const std::size_t pixels = frame.color.pixelCount();
+    for (std::size_t i = 0; i < frame.color.rgba.size(); ++i)
+        frame.color.rgba[i] = 0.5f + float(i % 97);
+    if (!layers)
+        return frame;
+    frame.depth.assign(pixels, 7.25f);
+    frame.normals.assign(pixels * 3, 0.5f);
+    frame.motion.assign(pixels * 2, -3.5f);
+    Camera camera;
+    camera.view = glm::lookAt(glm::vec3(1.0f, 2.0f, 3.0f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    camera.projection = perspectiveProjection(camera.verticalFov, float(width) / float(height), 0.25f, 80.0f);
+    camera.nearPlane = 0.25f;
+    camera.farPlane = 80.0f;
+    frame.camera = exrFromCamera(camera, width, height);
+    frame.camera.jitter = glm::vec2(0.25f, -0.125f);
+    frame.camera.sunDirection = glm::vec3(0.0f, 1.0f, 0.0f);
+    return frame;
+}
+
+const std::array<Prime, 2>& primes() {
+    static const std::array<Prime, 2> primes = [] {
+        std::array<Prime, 2> made;
+        const ExrFrame written[] = {primeFrame(37, 23, true), primeFrame(3, 2, false)};
+        for (std::size_t i = 0; i < made.size(); ++i) {
+            made[i].bytes = encodeExrFrame(written[i], "prime.exr");
+            made[i].frame = decodeExrFrame(
+                {reinterpret_cast<const unsigned char*>(made[i].bytes.data()), made[i].bytes.size()},
+                "prime.exr");
+        }
+        return made;
+    }();
+    return primes;
+}
+
+void readPrime(ExrFrameReader& reader, const Prime& prime, ExrFrame& storage) {
+    reader.decode({reinterpret_cast<const unsigned char*>(prime.bytes.data()), prime.bytes.size()},
+                  "prime.exr", storage, kFrameLimits);
+    if (!sameFrame(storage, prime.frame))
+        broken("a frame read into storage an earlier read left differs from the same frame read on its own");
+}
+
+/// cameraFromExr: nothing, std::invalid_argument (nullopt here) or a camera invalidCameraReason accepts.
+std::optional<Camera> checkedCamera(const ExrCameraAttributes& attributes, glm::ivec2 display,
+                                    const ExrCameraAttributes* previous) {
+    std::optional<Camera> camera;
+    try {
+        camera = cameraFromExr(attributes, display.x, display.y, previous);
+    } catch (const std::invalid_argument&) {
+        return std::nullopt;
+    }
+    if (camera) {
+        if (const char* reason = invalidCameraReason(*camera))
+            broken(std::string("cameraFromExr returned an invalid camera: ") + reason);
+    }
+    return camera;
+}
+
+/// What the reader promises of a frame it returns, and what cameraFromExr promises of its attributes.
+void checkFrame(const ExrFrame& frame) {
+    checkShape(frame.color, kFrameLimits);
+    const std::size_t pixels = frame.color.pixelCount();
+    const auto layer = [&](const std::vector<float>& values, std::size_t components, const char* name) {
+        if (!values.empty() && values.size() != pixels * components)
+            broken(std::string(name) + " layer does not match the colour's size");
+    };
+    layer(frame.depth, 1, "depth");
+    layer(frame.normals, 3, "normals");
+    layer(frame.motion, 2, "motion");
+    if (frame.displaySize.x < 1 || frame.displaySize.y < 1)
+        broken("an empty display window");
+    if (frame.camera.jitter &&
+        !(std::isfinite(frame.camera.jitter->x) && std::isfinite(frame.camera.jitter->y)))
+        broken("a non-finite jitter");
+    // The camera, alone and with a prime's as the previous frame's, and a prime's after this one: valid, and
+    // still finite once cropped to the data window, as `photopic image` renders it.
+    const ExrCameraAttributes& prime = primes()[0].frame.camera;
+    for (const ExrCameraAttributes* previous : {static_cast<const ExrCameraAttributes*>(nullptr), &prime}) {
+        const std::optional<Camera> camera = checkedCamera(frame.camera, frame.displaySize, previous);
+        if (!camera)
+            continue;
+        const glm::mat4 crop =
+            dataWindowCrop(frame.displaySize, frame.dataOrigin, {frame.color.width, frame.color.height});
+        if (!finite(crop * camera->projection) || !finite(crop * camera->prevViewProjection))
+            broken("the camera cropped to the data window is not finite");
+    }
+    (void)checkedCamera(prime, primes()[0].frame.displaySize, &frame.camera);
+}
+
+/// The sequence reader on the fuzzed bytes into `storage` (left by an earlier read): the same outcome as a
+/// read on its own, and on an error an empty frame.
+void readInto(ExrFrameReader& reader, std::span<const unsigned char> bytes, ExrFrame& storage,
+              const std::optional<ExrFrame>& alone, const std::string& aloneError) {
+    try {
+        reader.decode(bytes, kFrameName, storage, kFrameLimits);
+    } catch (const IoError& e) {
+        if (alone)
+            broken(std::string("a read into kept storage failed where a read on its own did not: ") +
+                   e.what());
+        if (aloneError != e.what())
+            broken(std::string("a read into kept storage failed differently: ") + e.what());
+        if (!sameFrame(storage, ExrFrame{}))
+            broken("a failed read left the frame half filled");
+        return;
+    }
+    if (!alone)
+        broken("a read into kept storage succeeded where a read on its own failed: " + aloneError);
+    if (!sameFrame(storage, *alone))
+        broken("a read into kept storage differs from a read on its own");
 }
 
 } // namespace
@@ -47,6 +227,28 @@ void pngImage(const std::uint8_t* data, std::size_t size) {
         checkShape(decodePng8({data, size}, "fuzz.png", kLimits));
     } catch (const IoError&) {
     }
+}
+
+void exrFrame(const std::uint8_t* data, std::size_t size) {
+    const std::span<const unsigned char> bytes(data, size);
+    std::optional<ExrFrame> alone;
+    std::string aloneError;
+    try {
+        alone = decodeExrFrame(bytes, kFrameName, kFrameLimits);
+    } catch (const IoError& e) {
+        aloneError = e.what();
+    }
+    if (alone)
+        checkFrame(*alone);
+    // A sequence: each prime, then the fuzzed frame into the storage it left; then a prime again into what
+    // the fuzzed frame (or its error) left.
+    ExrFrameReader reader;
+    ExrFrame storage;
+    for (const Prime& prime : primes()) {
+        readPrime(reader, prime, storage);
+        readInto(reader, bytes, storage, alone, aloneError);
+    }
+    readPrime(reader, primes()[0], storage);
 }
 
 } // namespace photopic::fuzz

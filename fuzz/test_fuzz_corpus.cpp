@@ -26,10 +26,10 @@ struct Target {
 
 constexpr Target kTargets[] = {
     {"settings", photopic::fuzz::settingsJson}, {"override", photopic::fuzz::settingsOverride},
-    {"motion", photopic::fuzz::motionCsv},
+    {"motion", photopic::fuzz::motionCsv},      {"camera", photopic::fuzz::cameraJson},
 #ifdef PHOTOPIC_FUZZ_WITH_IO
-    {"exr", photopic::fuzz::exrImage},          {"hdr", photopic::fuzz::hdrImage},
-    {"png", photopic::fuzz::pngImage},
+    {"exr", photopic::fuzz::exrImage},          {"exrframe", photopic::fuzz::exrFrame},
+    {"hdr", photopic::fuzz::hdrImage},          {"png", photopic::fuzz::pngImage},
 #endif
 #ifdef PHOTOPIC_FUZZ_WITH_SCENES
     {"gltf", photopic::fuzz::gltfModel},
@@ -42,10 +42,14 @@ struct Reproducer {
     const char* target;
 };
 constexpr Reproducer kReproducers[] = {
-    {"settings_1e400.json", "settings"},  {"override_invalid_utf8.txt", "override"},
-    {"motion_nan_time.csv", "motion"},    {"motion_lerp_overflow.csv", "motion"},
+    {"settings_1e400.json", "settings"},
+    {"override_invalid_utf8.txt", "override"},
+    {"motion_nan_time.csv", "motion"},
+    {"motion_lerp_overflow.csv", "motion"},
 #ifdef PHOTOPIC_FUZZ_WITH_IO
     {"png_zero_len_idat.min.png", "png"},
+    {"exrframe_channels_untyped.min.exr", "exrframe"},
+    {"exrframe_chlist_overruns_size.min.exr", "exrframe"},
 #endif
 };
 
