@@ -79,10 +79,18 @@ void convertExrToRec709(const std::filesystem::path& path, const Imf::Header& he
 /// take the slice's fill value), with the inflate done by libdeflate on OpenEXR's global thread pool
 /// (ExrZip.cpp). Returns false when the file or the frame buffer is outside what it decodes (another
 /// compression, tiled or multi-part, subsampled or UINT channels, slices that are not FLOAT) or when the data
-/// does not decode; the caller then reads through Imf::InputFile, which overwrites every pixel or reports the
-/// error.
+/// does not decode; the caller then checks the chunks (checkExrChunks) and reads through Imf::InputFile.
 [[nodiscard]] bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& header,
                                     const Imf::FrameBuffer& frameBuffer);
+
+/// Throws IoError naming `path` unless every chunk Imf::InputFile would read from the first part (every
+/// scanline chunk, or every tile of the full-resolution level) has a readable leader within the file and
+/// holds all the bytes its lines need: stored chunks their full size, RLE chunks a run sequence of that
+/// length, ZIP/ZIPS chunks a stream inflating to exactly that length (ExrZip.cpp). OpenEXR 3.1's reader
+/// fills the rest of a short chunk's lines from its buffers' earlier contents, so a corrupt file would give
+/// pixels of whatever the process held there before. PIZ, PXR24, B44 and DWA decoders check their output's
+/// size themselves. Deep parts are left to Imf::InputFile, which refuses them.
+void checkExrChunks(const std::filesystem::path& path, std::span<const unsigned char> bytes);
 
 /// The colour of an OpenEXR file open over `bytes`, as readImage returns it (in linear Rec.709: other
 /// chromaticities are converted), into `image` (its storage kept

@@ -1,10 +1,10 @@
-// Scanline ZIP / ZIPS pixel data of an OpenEXR file in memory, decoded through OpenEXR's core library (chunk
-// table, chunk reads and their checks) with the inflate step done by libdeflate instead of zlib, on OpenEXR's
-// global thread pool. The unpacking into the frame buffer is done here too: OpenEXR 3.1's own routine for
-// four half channels into interleaved floats at descending addresses (A, B, G, R into RGBA) writes them in
-// file order, R's value where A belongs (ExrZipTest.RgbaMatchesOpenExrBitForBit fails with it). zlib's
-// inflate was the largest single cost of reading a ZIP-compressed sequence; libdeflate inflates the same
-// stream several times faster.
+// OpenEXR's core library over a file in memory: the check that every chunk holds the bytes its lines need
+// (checkExrChunks), and scanline ZIP / ZIPS pixel data decoded through it (chunk table, chunk reads and their
+// checks) with the inflate step done by libdeflate instead of zlib, on OpenEXR's global thread pool. The
+// unpacking into the frame buffer is done here too: OpenEXR 3.1's own routine for four half channels into
+// interleaved floats at descending addresses (A, B, G, R into RGBA) writes them in file order, R's value
+// where A belongs (ExrZipTest.RgbaMatchesOpenExrBitForBit fails with it). zlib's inflate was the largest
+// single cost of reading a ZIP-compressed sequence; libdeflate inflates the same stream several times faster.
 //
 // The ZIP codec (OpenEXR file layout, "ZIP compression"): a chunk's bytes are deflated in a zlib stream after
 // two reversible steps, which are undone here after inflating: the bytes were split into the even-indexed
@@ -31,6 +31,9 @@
 #include <limits>
 #include <memory>
 #include <new>
+#include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace photopic::detail {
@@ -292,6 +295,21 @@ int64_t memorySize(exr_const_context_t, void* user) {
 /// Any failure here falls back to Imf::InputFile, which reports it in its own words: nothing to print.
 void quiet(exr_const_context_t, exr_result_t, const char*) {}
 
+/// The file for checkExrChunks, and the core library's last error message about it.
+struct ChunkCheckSource {
+    std::span<const unsigned char> bytes;
+    std::string error;
+};
+
+int64_t readChunkCheckSource(exr_const_context_t context, void* user, void* buffer, uint64_t size,
+                             uint64_t offset, exr_stream_error_func_ptr_t error) {
+    return readMemory(context, &static_cast<ChunkCheckSource*>(user)->bytes, buffer, size, offset, error);
+}
+
+int64_t chunkCheckSourceSize(exr_const_context_t context, void* user) {
+    return memorySize(context, &static_cast<ChunkCheckSource*>(user)->bytes);
+}
+
 struct Context {
     exr_context_t handle = nullptr;
     Context() = default;
@@ -399,7 +417,137 @@ private:
     int mChunks;
 };
 
+// ------------------------------------------------------------------------------------- the chunks' sizes
+
+/// The bytes a run-length coded chunk decodes to (OpenEXR's RLE: a signed count byte; -n: n bytes follow as
+/// they are; n >= 0: the next byte n + 1 times), or nullopt when a run is cut off by the chunk's end.
+std::optional<std::uint64_t> rleDecodedSize(std::span<const unsigned char> packed) {
+    std::uint64_t size = 0;
+    std::size_t pos = 0;
+    while (pos < packed.size()) {
+        const int count = static_cast<signed char>(packed[pos++]);
+        const std::size_t consumed = count < 0 ? std::size_t(-count) : 1;
+        if (consumed > packed.size() - pos)
+            return std::nullopt;
+        pos += consumed;
+        size += count < 0 ? std::uint64_t(-count) : std::uint64_t(count) + 1;
+    }
+    return size;
+}
+
+/// What is wrong with a chunk that OpenEXR's reader would fill its lines from only in part, or "".
+std::string chunkProblem(exr_compression_t compression, const exr_chunk_info_t& chunk,
+                         std::span<const unsigned char> file, libdeflate_decompressor* inflater,
+                         std::vector<std::uint8_t>& scratch) {
+    const std::uint64_t packed = chunk.packed_size;
+    const std::uint64_t unpacked = chunk.unpacked_size;
+    if (chunk.data_offset > file.size() || packed > file.size() - chunk.data_offset)
+        return "runs past the end of the file";
+    if (packed >= unpacked)
+        return ""; // stored as it is, all of it there
+    const std::span<const unsigned char> data = file.subspan(chunk.data_offset, packed);
+    const auto shortBy = [&](const std::string& what) {
+        return what + " " + std::to_string(unpacked) + " bytes its lines need";
+    };
+    switch (compression) {
+    case EXR_COMPRESSION_NONE:
+        return shortBy("holds " + std::to_string(packed) + " of the");
+    case EXR_COMPRESSION_RLE: {
+        const std::optional<std::uint64_t> size = rleDecodedSize(data);
+        if (size != unpacked)
+            return shortBy(size ? "decodes to " + std::to_string(*size) + " of the"
+                                : "cuts off a run of the");
+        return "";
+    }
+    case EXR_COMPRESSION_ZIPS:
+    case EXR_COMPRESSION_ZIP:
+        scratch.resize(unpacked);
+        if (inflater == nullptr ||
+            libdeflate_zlib_decompress(inflater, data.data(), data.size(), scratch.data(), unpacked,
+                                       nullptr) != LIBDEFLATE_SUCCESS)
+            return shortBy("does not inflate to the");
+        return "";
+    default:
+        return ""; // the other codecs check their own output's size as they decode
+    }
+}
+
+/// Collects the core library's last error message (its error handler's user data).
+void keepMessage(exr_const_context_t context, exr_result_t, const char* message) {
+    void* user = nullptr;
+    if (exr_get_user_data(context, &user) == EXR_ERR_SUCCESS && user != nullptr && message != nullptr)
+        static_cast<ChunkCheckSource*>(user)->error = message;
+}
+
 } // namespace
+
+void checkExrChunks(const std::filesystem::path& path, std::span<const unsigned char> bytes) {
+    ChunkCheckSource source{bytes, {}};
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    init.user_data = &source;
+    init.read_fn = &readChunkCheckSource;
+    init.size_fn = &chunkCheckSourceSize;
+    init.error_handler_fn = &keepMessage;
+    Context context;
+    const auto corrupt = [&](const std::string& where) {
+        throw IoError(path, "OpenEXR pixel data is corrupt: " + where +
+                                (source.error.empty() ? std::string() : ": " + source.error));
+    };
+    if (exr_start_read(&context.handle, "memory", &init) != EXR_ERR_SUCCESS)
+        corrupt("the chunk table cannot be read");
+    exr_storage_t storage{};
+    exr_compression_t compression{};
+    exr_attr_box2i_t window{};
+    if (exr_get_storage(context.handle, 0, &storage) != EXR_ERR_SUCCESS ||
+        exr_get_compression(context.handle, 0, &compression) != EXR_ERR_SUCCESS ||
+        exr_get_data_window(context.handle, 0, &window) != EXR_ERR_SUCCESS)
+        corrupt("the first part's layout cannot be read");
+    if (storage != EXR_STORAGE_SCANLINE && storage != EXR_STORAGE_TILED)
+        return; // deep data: Imf::InputFile refuses it itself
+
+    std::unique_ptr<libdeflate_decompressor, void (*)(libdeflate_decompressor*)> inflater(
+        libdeflate_alloc_decompressor(), &libdeflate_free_decompressor);
+    std::vector<std::uint8_t> scratch;
+    const auto check = [&](exr_result_t read, const exr_chunk_info_t& chunk, const std::string& where) {
+        if (read != EXR_ERR_SUCCESS)
+            corrupt(where);
+        const std::string problem = chunkProblem(compression, chunk, bytes, inflater.get(), scratch);
+        if (!problem.empty()) {
+            source.error.clear();
+            corrupt(where + " " + problem);
+        }
+    };
+    if (storage == EXR_STORAGE_SCANLINE) {
+        int32_t linesPerChunk = 0;
+        if (exr_get_scanlines_per_chunk(context.handle, 0, &linesPerChunk) != EXR_ERR_SUCCESS ||
+            linesPerChunk < 1)
+            corrupt("the lines per chunk cannot be read");
+        for (std::int64_t y = window.min.y; y <= window.max.y; y += linesPerChunk) {
+            exr_chunk_info_t chunk{};
+            check(exr_read_scanline_chunk_info(context.handle, 0, int(y), &chunk), chunk,
+                  "the chunk of line " + std::to_string(y));
+        }
+        return;
+    }
+    // Tiled: the full-resolution level, the one Imf::InputFile reads.
+    int32_t tileWidth = 0;
+    int32_t tileHeight = 0;
+    int32_t levelWidth = 0;
+    int32_t levelHeight = 0;
+    if (exr_get_tile_sizes(context.handle, 0, 0, 0, &tileWidth, &tileHeight) != EXR_ERR_SUCCESS ||
+        exr_get_level_sizes(context.handle, 0, 0, 0, &levelWidth, &levelHeight) != EXR_ERR_SUCCESS ||
+        tileWidth < 1 || tileHeight < 1 || levelWidth < 1 || levelHeight < 1)
+        corrupt("the tile layout cannot be read");
+    const int tilesX = int((std::int64_t(levelWidth) + tileWidth - 1) / tileWidth);
+    const int tilesY = int((std::int64_t(levelHeight) + tileHeight - 1) / tileHeight);
+    for (int ty = 0; ty < tilesY; ++ty) {
+        for (int tx = 0; tx < tilesX; ++tx) {
+            exr_chunk_info_t chunk{};
+            check(exr_read_tile_chunk_info(context.handle, 0, tx, ty, 0, 0, &chunk), chunk,
+                  "tile (" + std::to_string(tx) + ", " + std::to_string(ty) + ")");
+        }
+    }
+}
 
 bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& header,
                       const Imf::FrameBuffer& frameBuffer) {

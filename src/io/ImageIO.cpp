@@ -881,13 +881,17 @@ void detail::readExrColor(const fs::path& path, std::span<const unsigned char> b
     const auto has = [&](const char* name) { return channels.findChannel(name) != nullptr; };
     const bool hasRgb = has("R") || has("G") || has("B");
     if (!hasRgb && has("Y") && (has("RY") || has("BY"))) {
+        checkExrChunks(path, bytes);
         image = readExrLuminanceChroma(path, bytes, width, height);
         detail::convertExrToRec709(path, header, image);
         if (extra) { // RgbaInputFile reads colour only: the extra layers take a second pass
             Imf::FrameBuffer frameBuffer;
             extra(frameBuffer, dataWindow, width, height);
-            file.setFrameBuffer(frameBuffer);
-            file.readPixels(dataWindow.min.y, dataWindow.max.y);
+            // A file with no extra layer has nothing more to read (OpenEXR refuses an empty frame buffer).
+            if (frameBuffer.begin() != frameBuffer.end()) {
+                file.setFrameBuffer(frameBuffer);
+                file.readPixels(dataWindow.min.y, dataWindow.max.y);
+            }
         }
         return;
     }
@@ -922,6 +926,7 @@ void detail::readExrColor(const fs::path& path, std::span<const unsigned char> b
     if (extra)
         extra(frameBuffer, dataWindow, width, height);
     if (!readZipScanlines(bytes, header, frameBuffer)) {
+        checkExrChunks(path, bytes);
         file.setFrameBuffer(frameBuffer);
         file.readPixels(dataWindow.min.y, dataWindow.max.y);
     }

@@ -11,15 +11,18 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
+#include <ImfRgbaFile.h>
 #include <ImfStringAttribute.h>
 #include <ImfVecAttribute.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <unistd.h>
+#include <zlib.h>
 
 #include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <tuple>
@@ -270,6 +273,22 @@ TEST(ExrFrame, IncompleteLayerIsAnErrorNamingTheFile) {
     expectIoError(folder / "m.exr", "not motion.X");
 }
 
+// Luminance/chroma colour is read by its own pass: a file with no other layer has no second one to run.
+TEST(ExrFrame, LuminanceChromaFileWithoutLayersIsRead) {
+    const test::TempFolder folder;
+    const fs::path path = folder / "yc.exr";
+    std::vector<Imf::Rgba> pixels(16, Imf::Rgba(0.5f, 0.25f, 0.125f, 1.0f));
+    {
+        Imf::RgbaOutputFile file(path.c_str(), Imf::Header(4, 4), Imf::WRITE_YC);
+        file.setFrameBuffer(pixels.data(), 1, 4);
+        file.writePixels(4);
+    }
+    const ExrFrame frame = readExrFrame(path);
+    EXPECT_EQ(frame.color.width, 4);
+    EXPECT_TRUE(frame.depth.empty());
+    EXPECT_NEAR(frame.color.rgba[0] + frame.color.rgba[1] + frame.color.rgba[2], 0.875f, 0.05f);
+}
+
 TEST(ExrFrame, AlternativeLayerNamesAreRead) {
     const test::TempFolder folder;
     writeRaw(folder / "alt.exr", {"R", "G", "B", "depth.Z", "normal.X", "normal.Y", "normal.Z"});
@@ -359,6 +378,84 @@ TEST(ExrFrame, PredefinedAttributeOfAnotherTypeIsAnErrorNamingTheFile) {
     std::ofstream(folder / "typed.exr", std::ios::binary)
         .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
     expectIoError(folder / "typed.exr", "Unexpected type for image attribute \"channels\"");
+}
+
+/// A 16 x 1 file of one half channel Y of constant value (so that RLE and ZIP shrink it), compressed with
+/// `compression`, as bytes.
+std::vector<unsigned char> constantLine(Imf::Compression compression) {
+    const test::TempFolder folder;
+    const fs::path path = folder / "line.exr";
+    Imf::Header header(16, 1);
+    header.compression() = compression;
+    header.channels().insert("Y", Imf::Channel(Imf::HALF));
+    std::vector<half> values(16, half(0.5f));
+    Imf::FrameBuffer frameBuffer;
+    frameBuffer.insert(
+        "Y", Imf::Slice(Imf::HALF, reinterpret_cast<char*>(values.data()), sizeof(half), 16 * sizeof(half)));
+    {
+        Imf::OutputFile file(path.c_str(), header);
+        file.setFrameBuffer(frameBuffer);
+        file.writePixels(1);
+    }
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// Where the first chunk's leader (line number, then data size, 32 bits each) starts: after the header's
+/// attributes and the offset table, here of one entry.
+std::size_t firstChunk(const std::vector<unsigned char>& bytes) {
+    std::size_t pos = 8;
+    const auto skipString = [&] {
+        const std::size_t start = pos;
+        while (bytes.at(pos) != 0)
+            ++pos;
+        ++pos;
+        return pos - start > 1;
+    };
+    while (skipString()) {
+        skipString();
+        const std::uint32_t size = std::uint32_t(bytes[pos]) | std::uint32_t(bytes[pos + 1]) << 8 |
+                                   std::uint32_t(bytes[pos + 2]) << 16 | std::uint32_t(bytes[pos + 3]) << 24;
+        pos += 4 + size;
+    }
+    return pos + 8;
+}
+
+// OpenEXR 3.1 fills the part of a line a short chunk lacks from its buffers' earlier contents: whatever
+// the process held there, different from run to run. Each such chunk is refused, naming the line.
+TEST(ExrFrame, ChunksShorterThanTheirLinesAreRefused) {
+    // Stored: the leader claims 4 bytes fewer than the line's 32 (the file keeps its length).
+    std::vector<unsigned char> stored = constantLine(Imf::NO_COMPRESSION);
+    stored[firstChunk(stored) + 4] -= 4;
+    expectDecodeError(stored, "the chunk of line 0 holds 28 of the 32 bytes its lines need");
+
+    // RLE: the first run repeats its byte fewer times, so the runs decode to fewer bytes than the line.
+    std::vector<unsigned char> rle = constantLine(Imf::RLE_COMPRESSION);
+    std::size_t run = firstChunk(rle) + 8;
+    while (run < rle.size() && static_cast<signed char>(rle[run]) < 2) // past literal runs and short repeats
+        run +=
+            static_cast<signed char>(rle[run]) < 0 ? 1 + std::size_t(-static_cast<signed char>(rle[run])) : 2;
+    ASSERT_LT(run, rle.size());
+    rle[run] -= 2;
+    expectDecodeError(rle, "the chunk of line 0 decodes to 30 of the 32 bytes its lines need");
+
+    // ZIP: a valid zlib stream, but of 30 bytes, in place of the line's (zlib inflates it without a word).
+    std::vector<unsigned char> zip = constantLine(Imf::ZIPS_COMPRESSION);
+    const std::size_t leader = firstChunk(zip);
+    const std::vector<unsigned char> thirty(30, 0x80);
+    std::vector<unsigned char> stream(64);
+    uLongf length = stream.size();
+    ASSERT_EQ(compress(stream.data(), &length, thirty.data(), thirty.size()), Z_OK);
+    ASSERT_LT(length, 32u);
+    zip.resize(leader + 8);
+    for (int b = 0; b < 4; ++b)
+        zip[leader + 4 + std::size_t(b)] = static_cast<unsigned char>(length >> (8 * b));
+    zip.insert(zip.end(), stream.begin(), stream.begin() + std::ptrdiff_t(length));
+    expectDecodeError(zip, "the chunk of line 0 does not inflate to the 32 bytes its lines need");
+
+    // The same files unchanged read whole.
+    for (const Imf::Compression c : {Imf::NO_COMPRESSION, Imf::RLE_COMPRESSION, Imf::ZIPS_COMPRESSION})
+        EXPECT_EQ(decodeExrFrame(constantLine(c), "line.exr").color.rgba[0], 0.5f);
 }
 
 TEST(ExrFrame, DecodeFromMemoryMatchesTheFile) {
