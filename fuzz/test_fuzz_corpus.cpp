@@ -50,6 +50,7 @@ constexpr Reproducer kReproducers[] = {
     {"png_zero_len_idat.min.png", "png"},
     {"exrframe_channels_untyped.min.exr", "exrframe"},
     {"exrframe_chlist_overruns_size.min.exr", "exrframe"},
+    {"exrframe_stored_chunk_short.exr", "exrframe"},
 #endif
 };
 
