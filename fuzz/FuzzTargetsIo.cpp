@@ -55,14 +55,6 @@ constexpr const char* kFrameName = "fuzz.exr";
 // and the tiles the header check lets through.
 constexpr ImageReadLimits kFrameLimits{.maxPixels = 1 << 16};
 
-bool finite(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r]))
-                return false;
-    return true;
-}
-
 /// Bit for bit, NaNs included: the reader must give the same values whatever its storage held before.
 template <typename T>
 bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
@@ -142,20 +134,20 @@ void readPrime(ExrFrameReader& reader, const Prime& prime, ExrFrame& storage) {
         broken("a frame read into storage an earlier read left differs from the same frame read on its own");
 }
 
-/// cameraFromExr: nothing, std::invalid_argument (nullopt here) or a camera invalidCameraReason accepts.
-std::optional<Camera> checkedCamera(const ExrCameraAttributes& attributes, glm::ivec2 display,
-                                    const ExrCameraAttributes* previous) {
+/// A camera from cameraFromExr or frameCamera (`make`): nothing, std::invalid_argument, or a camera that
+/// invalidCameraReason accepts.
+template <typename Make>
+void checkCamera(const Make& make) {
     std::optional<Camera> camera;
     try {
-        camera = cameraFromExr(attributes, display.x, display.y, previous);
+        camera = make();
     } catch (const std::invalid_argument&) {
-        return std::nullopt;
+        return;
     }
     if (camera) {
         if (const char* reason = invalidCameraReason(*camera))
-            broken(std::string("cameraFromExr returned an invalid camera: ") + reason);
+            broken(std::string("an invalid camera from the file's attributes: ") + reason);
     }
-    return camera;
 }
 
 /// What the reader promises of a frame it returns, and what cameraFromExr promises of its attributes.
@@ -174,19 +166,12 @@ void checkFrame(const ExrFrame& frame) {
     if (frame.camera.jitter &&
         !(std::isfinite(frame.camera.jitter->x) && std::isfinite(frame.camera.jitter->y)))
         broken("a non-finite jitter");
-    // The camera, alone and with a prime's as the previous frame's, and a prime's after this one: valid, and
-    // still finite once cropped to the data window, as `photopic image` renders it.
-    const ExrCameraAttributes& prime = primes()[0].frame.camera;
-    for (const ExrCameraAttributes* previous : {static_cast<const ExrCameraAttributes*>(nullptr), &prime}) {
-        const std::optional<Camera> camera = checkedCamera(frame.camera, frame.displaySize, previous);
-        if (!camera)
-            continue;
-        const glm::mat4 crop =
-            dataWindowCrop(frame.displaySize, frame.dataOrigin, {frame.color.width, frame.color.height});
-        if (!finite(crop * camera->projection) || !finite(crop * camera->prevViewProjection))
-            broken("the camera cropped to the data window is not finite");
-    }
-    (void)checkedCamera(prime, primes()[0].frame.displaySize, &frame.camera);
+    // The camera for the frame's pixels (cropped to its data window), alone and with a prime's as the
+    // previous frame's, and a prime's after this one.
+    const Prime& prime = primes()[0];
+    checkCamera([&] { return frameCamera(frame); });
+    checkCamera([&] { return frameCamera(frame, &prime.frame.camera); });
+    checkCamera([&] { return frameCamera(prime.frame, &frame.camera); });
 }
 
 /// The sequence reader on the fuzzed bytes into `storage` (left by an earlier read): the same outcome as a

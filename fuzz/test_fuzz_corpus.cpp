@@ -51,6 +51,7 @@ constexpr Reproducer kReproducers[] = {
     {"exrframe_channels_untyped.min.exr", "exrframe"},
     {"exrframe_chlist_overruns_size.min.exr", "exrframe"},
     {"exrframe_stored_chunk_short.exr", "exrframe"},
+    {"exrframe_crop_overflows_camera.exr", "exrframe"},
 #endif
 };
 

@@ -30,14 +30,6 @@ bool finiteFloat(const json& value) {
     return value.is_number() && std::abs(value.get<double>()) <= double(std::numeric_limits<float>::max());
 }
 
-bool finite(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r]))
-                return false;
-    return true;
-}
-
 float number(const fs::path& path, const json& object, const std::string& key, float fallback,
              const std::string& prefix = "") {
     const auto it = object.find(key);
@@ -69,16 +61,16 @@ constexpr float kMaxDirection = 1e18f;
 void requireFiniteCamera(const fs::path& path, const CameraJson& c) {
     for (const auto& [width, height] : {std::pair{kCameraJsonMaxSide, 1}, std::pair{1, kCameraJsonMaxSide}}) {
         const Camera camera = c.camera(width, height);
-        if (!finite(camera.view))
+        if (!allFinite(camera.view))
             badKey(path, "position", "too far from the origin: the view matrix overflows single precision");
         const glm::mat4& p = camera.projection;
         if (!std::isfinite(p[0][0]) || !std::isfinite(p[1][1]))
             badKey(path, "verticalFovDeg",
                    "too small: the projection overflows single precision for a " + std::to_string(width) +
                        "x" + std::to_string(height) + " frame");
-        if (!finite(p))
+        if (!allFinite(p))
             badKey(path, "far", "too large for this near plane: the projection overflows single precision");
-        if (!finite(camera.prevViewProjection))
+        if (!allFinite(camera.prevViewProjection))
             badKey(path, "position",
                    "too far from the origin for this field of view: the view-projection overflows single "
                    "precision for a " +

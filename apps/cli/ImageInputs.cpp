@@ -92,15 +92,9 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
     const int width = frame.color.width;
     const int height = frame.color.height;
     try {
-        out.camera = cameraFromExr(frame.camera, frame.displaySize.x, frame.displaySize.y,
-                                   mPrevious ? &*mPrevious : nullptr);
+        out.camera = frameCamera(frame, mPrevious ? &*mPrevious : nullptr);
     } catch (const std::invalid_argument& e) {
         throw InputError(fmt::format("\"{}\": bad camera attributes: {}", path.string(), e.what()));
-    }
-    if (out.camera && (frame.dataOrigin != glm::ivec2(0) || frame.displaySize != glm::ivec2(width, height))) {
-        const glm::mat4 crop = dataWindowCrop(frame.displaySize, frame.dataOrigin, {width, height});
-        out.camera->projection = crop * out.camera->projection;
-        out.camera->prevViewProjection = crop * out.camera->prevViewProjection;
     }
     if (!out.camera && mCameraJson)
         out.camera = mCameraJson->camera(width, height);
@@ -350,7 +344,7 @@ void printInfo(const fs::path& path, const std::optional<CameraJson>& cameraJson
     }
     std::optional<Camera> camera;
     try {
-        camera = cameraFromExr(frame.camera, frame.displaySize.x, frame.displaySize.y);
+        camera = frameCamera(frame);
     } catch (const std::invalid_argument& e) {
         throw InputError(fmt::format("\"{}\": bad camera attributes: {}", path.string(), e.what()));
     }

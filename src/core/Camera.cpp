@@ -7,7 +7,13 @@ namespace photopic {
 
 namespace {
 
-bool finite(const glm::mat4& m) noexcept {
+bool within(float v, float lo, float hi) noexcept {
+    return v >= lo && v <= hi;
+}
+
+} // namespace
+
+bool allFinite(const glm::mat4& m) noexcept {
     for (int c = 0; c < 4; ++c) {
         for (int r = 0; r < 4; ++r) {
             if (!std::isfinite(m[c][r])) {
@@ -18,20 +24,14 @@ bool finite(const glm::mat4& m) noexcept {
     return true;
 }
 
-bool within(float v, float lo, float hi) noexcept {
-    return v >= lo && v <= hi;
-}
-
-} // namespace
-
 const char* invalidCameraReason(const Camera& c) noexcept {
-    if (!finite(c.view)) {
+    if (!allFinite(c.view)) {
         return "camera.view has a non-finite entry";
     }
-    if (!finite(c.projection)) {
+    if (!allFinite(c.projection)) {
         return "camera.projection has a non-finite entry";
     }
-    if (!finite(c.prevViewProjection)) {
+    if (!allFinite(c.prevViewProjection)) {
         return "camera.prevViewProjection has a non-finite entry";
     }
     if (!(std::isfinite(c.nearPlane) && c.nearPlane > 0.0f)) {

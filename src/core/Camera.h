@@ -46,6 +46,9 @@ struct Camera {
     [[nodiscard]] glm::mat4 viewProjection() const { return projection * view; }
 };
 
+/// Whether every entry of `m` is finite.
+[[nodiscard]] bool allFinite(const glm::mat4& m) noexcept;
+
 /// Why a camera cannot be used, or nullptr when it can: a non-finite matrix entry, near <= 0, far <= near,
 /// a field of view outside (0, pi), or a lens value outside its range.
 [[nodiscard]] const char* invalidCameraReason(const Camera& camera) noexcept;

@@ -217,14 +217,6 @@ void setRow(glm::mat4& m, int r, const glm::vec4& v) {
         m[c][r] = v[c];
 }
 
-bool finite(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r]))
-                return false;
-    return true;
-}
-
 struct GlCamera {
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};
@@ -265,9 +257,9 @@ void nearFar(const ExrCameraAttributes& a, const glm::vec4& zRow, GlCamera& came
 GlCamera glCamera(const ExrCameraAttributes& a) {
     const glm::mat4& worldToCamera = *a.worldToCamera;
     const glm::mat4& worldToNdc = *a.worldToNDC;
-    if (!finite(worldToCamera))
+    if (!allFinite(worldToCamera))
         throw std::invalid_argument("worldToCamera has a non-finite entry");
-    if (!finite(worldToNdc))
+    if (!allFinite(worldToNdc))
         throw std::invalid_argument("worldToNDC has a non-finite entry");
     const float det = glm::determinant(worldToCamera);
     if (!std::isfinite(det) || std::abs(det) < 1e-12f)
@@ -555,6 +547,20 @@ std::optional<Camera> cameraFromExr(const ExrCameraAttributes& attributes, int w
     }
     if (const char* reason = invalidCameraReason(camera))
         throw std::invalid_argument(reason);
+    return camera;
+}
+
+std::optional<Camera> frameCamera(const ExrFrame& frame, const ExrCameraAttributes* previous) {
+    std::optional<Camera> camera =
+        cameraFromExr(frame.camera, frame.displaySize.x, frame.displaySize.y, previous);
+    const glm::ivec2 dataSize(frame.color.width, frame.color.height);
+    if (!camera || (frame.dataOrigin == glm::ivec2(0) && frame.displaySize == dataSize))
+        return camera;
+    const glm::mat4 crop = dataWindowCrop(frame.displaySize, frame.dataOrigin, dataSize);
+    camera->projection = crop * camera->projection;
+    camera->prevViewProjection = crop * camera->prevViewProjection;
+    if (const char* reason = invalidCameraReason(*camera))
+        throw std::invalid_argument(std::string("cropped to the data window: ") + reason);
     return camera;
 }
 

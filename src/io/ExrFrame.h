@@ -126,6 +126,12 @@ void writeExrFrame(const std::filesystem::path& path, const ExrFrame& frame);
 /// `jitter` is not applied: worldToNDC is taken as unjittered.
 [[nodiscard]] std::optional<Camera> cameraFromExr(const ExrCameraAttributes& attributes, int width,
                                                   int height, const ExrCameraAttributes* previous = nullptr);
+/// The camera for the pixels readExrFrame returned: cameraFromExr over `frame`'s display window, cropped to
+/// its data window (dataWindowCrop, on projection and prevViewProjection) where the two differ. Nothing when
+/// the frame has no camera; throws std::invalid_argument as cameraFromExr does, and when the cropped camera
+/// is not finite (a display window far larger than the data window, with a projection near the float range).
+[[nodiscard]] std::optional<Camera> frameCamera(const ExrFrame& frame,
+                                                const ExrCameraAttributes* previous = nullptr);
 /// The inverse of cameraFromExr for the attributes a renderer writes (worldToCamera, worldToNDC, focus,
 /// aperture, expTime when the lens sets one, isoSpeed, pinholeFocalLength, sensorOverallDimensions from the
 /// sensor height and the width/height aspect, shutterAngle, nearClip/farClip). worldToNDC's z row is

@@ -265,6 +265,37 @@ void expectIoError(const fs::path& path, const std::string& fragment) {
     }
 }
 
+// The camera for the frame's pixels: the display window's cropped to the data window, and refused where
+// the crop takes it past the float range (a 64x64 display window over 4x4 pixels, with a projection whose
+// entries near 1e38 were finite before the crop's factor of 16).
+TEST(ExrFrame, FrameCameraIsCroppedToTheDataWindowAndStaysFinite) {
+    ExrFrame frame;
+    frame.color = ImageF(40, 30);
+    frame.displaySize = {100, 50};
+    frame.dataOrigin = {20, 10};
+    frame.camera = exrFromCamera(testCamera(), 100, 50);
+    const std::optional<Camera> display = cameraFromExr(frame.camera, 100, 50);
+    const std::optional<Camera> cropped = frameCamera(frame);
+    ASSERT_TRUE(display && cropped);
+    const glm::mat4 crop = dataWindowCrop({100, 50}, {20, 10}, {40, 30});
+    expectMatNear(cropped->projection, crop * display->projection, 1e-5f);
+    expectMatNear(cropped->prevViewProjection, crop * display->prevViewProjection, 1e-4f);
+    expectMatNear(cropped->view, display->view, 0.0f);
+
+    frame.color = ImageF(4, 4);
+    frame.displaySize = {64, 64};
+    frame.dataOrigin = {0, 0};
+    // The camera 4 units behind the origin; NDC y picks up a huge multiple of depth.
+    frame.camera = {};
+    frame.camera.worldToCamera = glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0),
+                                           glm::vec4(0, 0, 1, 0), glm::vec4(-0.5f, -1, 4, 1));
+    frame.camera.worldToNDC =
+        glm::mat4(glm::vec4(1.18261f, 0, 0, 0), glm::vec4(0, -1.18261f, 0, 0),
+                  glm::vec4(0.5f, -1.28769e37f, 1.18077e21f, 1), glm::vec4(1.40869f, 3.18261f, 3.76176f, 4));
+    EXPECT_NO_THROW((void)cameraFromExr(frame.camera, 64, 64));
+    EXPECT_THROW((void)frameCamera(frame), std::invalid_argument);
+}
+
 TEST(ExrFrame, IncompleteLayerIsAnErrorNamingTheFile) {
     const test::TempFolder folder;
     writeRaw(folder / "n.exr", {"R", "G", "B", "N.X", "N.Y"});
