@@ -512,8 +512,6 @@ std::optional<OcioDisplay> ocioDisplayFor(const ImageOptions& options) {
     return ocio;
 }
 
-/// Reads the frame's result back into `image`: the scene-referred image for an .exr `out`, else the display
-/// image at `bitDepth` bits (with `ocio`, its transform of the scene-referred image).
 /// Starts reading back what `out` takes from the frame just processed (gl/TextureReadback.h): the
 /// scene-referred colour for an EXR output or an OCIO display, else the display image at `bitDepth`.
 void startReadBack(TextureReadback& readback, Pipeline& pipeline, const Texture& display, const fs::path& out,
