@@ -627,7 +627,8 @@ int runBench(const BenchOptions& options) {
         throw std::runtime_error("this GL implementation has no timer queries; nothing to measure");
     }
     pipeline.timers().setSynchronous(options.sync);
-    const Texture input = makeTexture(image, "bench input");
+    const Texture input =
+        makeTexture(image, "bench input", options.inputFormat == "rgba16f" ? GL_RGBA16F : GL_RGBA32F);
     // 3D inputs for the passes that need them (TAA; contact shadows in the lighting stage): a wall 10 units
     // away, still, seen by a still camera. The sequencer runs nothing on them unless such a pass is on, so
     // the 2D chain's figures are unchanged.
@@ -681,8 +682,9 @@ int runBench(const BenchOptions& options) {
 
     const PipelineStatus t = pipeline.status();
     const ContextInfo& info = context.info();
-    std::printf("photopic bench: %dx%d, %d frames after %d warm-up, %s\n", image.width, image.height,
-                options.frames, options.warmup, info.renderer.c_str());
+    std::printf("photopic bench: %dx%d %s input, %d frames after %d warm-up, %s\n", image.width, image.height,
+                imageFormatName(input.format()).c_str(), options.frames, options.warmup,
+                info.renderer.c_str());
     std::printf("colour path: %s (%s), quality %s, bloom levels %d (prefilter %s, blocks of %d)\n",
                 t.path == ColorPath::Hdr ? "HDR" : "LDR", t.pathReason.c_str(),
                 std::string(qualityNames()[std::size_t(t.quality)]).c_str(), t.bloomLevels,
@@ -729,6 +731,7 @@ int runBench(const BenchOptions& options) {
             {"vendor", info.vendor},
             {"driver", info.version},
             {"platform", info.platform},
+            {"inputFormat", imageFormatName(input.format())},
             {"copyReference",
              {{"format", copy.format},
               {"medianMs", copy.medianMs},

@@ -15,6 +15,9 @@ struct BenchOptions {
     int frames = 60;                ///< timed frames, after the warm-up
     int warmup = 5;                 ///< untimed frames first (shader compilation, first-use allocations)
     std::filesystem::path input;    ///< an HDR image instead of the synthetic frame
+    /// The input texture's format, "rgba32f" or "rgba16f" (a renderer's usual scene colour): what the first
+    /// passes read, and the format of the bandwidth reference copy.
+    std::string inputFormat = "rgba32f";
     std::int64_t maxPixels = kDefaultMaxPixels; ///< a larger --input is refused before it is decoded
     std::filesystem::path json;                 ///< also write the table here (atomically)
     SettingsSources settings;

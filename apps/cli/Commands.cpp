@@ -14,7 +14,7 @@
 #include "core/settings/SettingsJson.h"
 #include "gl/Context.h"
 #include "gl/Gl.h"
-#include "gl/TextureIo.h"
+#include "gl/TextureReadback.h"
 #include "io/ImageIO.h"
 #include "pipeline/Pipeline.h"
 
@@ -512,23 +512,33 @@ std::optional<OcioDisplay> ocioDisplayFor(const ImageOptions& options) {
     return ocio;
 }
 
-/// Reads the frame's result back into `image`: the scene-referred image for an .exr `out`, else the display
-/// image at `bitDepth` bits (with `ocio`, its transform of the scene-referred image).
-void readBack(Pipeline& pipeline, const Texture& display, const fs::path& out, int bitDepth,
-              const OcioDisplay* ocio, FrameImage& image) {
+/// Starts reading back what `out` takes from the frame just processed (gl/TextureReadback.h): the
+/// scene-referred colour for an EXR output or an OCIO display, else the display image at `bitDepth`.
+void startReadBack(TextureReadback& readback, Pipeline& pipeline, const Texture& display, const fs::path& out,
+                   int bitDepth, const OcioDisplay* ocio) {
+    if (lowerExtension(out) == ".exr" || ocio != nullptr) {
+        readback.start(pipeline.sceneReferred(), GL_FLOAT);
+    } else {
+        readback.start(display, bitDepth == 16 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_BYTE);
+    }
+}
+
+/// Finishes the read startReadBack began for `out` into `image`, through the OCIO display when there is one.
+void finishReadBack(TextureReadback& readback, const fs::path& out, int bitDepth, const OcioDisplay* ocio,
+                    FrameImage& image) {
     if (lowerExtension(out) == ".exr") {
-        readTextureF(pipeline.sceneReferred(), image.scene);
+        readback.finish(image.scene);
     } else if (ocio != nullptr) {
-        readTextureF(pipeline.sceneReferred(), image.scene);
+        readback.finish(image.scene);
         if (bitDepth == 16) {
             image.display16 = ocio->apply16(image.scene);
         } else {
             image.display = ocio->apply(image.scene);
         }
     } else if (bitDepth == 16) {
-        readTexture16(display, image.display16);
+        readback.finish(image.display16);
     } else {
-        readTexture8(display, image.display);
+        readback.finish(image.display);
     }
 }
 
@@ -730,6 +740,27 @@ int runImage(const ImageOptions& options) {
     Progress progress("image", inputs.size());
     FrameWriter writer(outputs, pendingWrites(inFlight),
                        {.bitDepth = settings.output.bitDepth, .jpegQuality = options.jpegQuality});
+    // Each frame's output is read back one frame late: its read starts once it is processed and finishes
+    // once the next frame is uploaded, so the GPU ends the frame and copies it out while the CPU waits for
+    // the next decode and fills the upload buffer.
+    TextureReadback readback(1, "cli.output");
+    struct Processed {
+        std::size_t index;
+        std::chrono::steady_clock::time_point start;
+        Extent size;
+    };
+    std::optional<Processed> processed;
+    const auto writeProcessed = [&] {
+        const fs::path& out = outPaths[processed->index];
+        FrameImage image = writer.storage();
+        finishReadBack(readback, out, settings.output.bitDepth, ocio ? &*ocio : nullptr, image);
+        clock.mark(StageClock::ReadBack);
+        writer.write(
+            out, std::move(image),
+            writtenLine(inputs[processed->index], out, processed->size, processed->start, progress, console));
+        clock.mark(StageClock::WriteWait);
+        processed.reset();
+    };
     clock.restart("GL context and pipeline");
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         const DecodedFrame& frame = reader.next();
@@ -759,18 +790,20 @@ int runImage(const ImageOptions& options) {
         }
         reader.release(); // uploaded: the next frame decodes into its storage while this one is processed
         clock.mark(StageClock::Upload);
+        if (processed) {
+            writeProcessed();
+        }
         const Texture& display = pipeline->execute(frameInputs, time);
-        clock.mark(StageClock::Process);
-        const fs::path& out = outPaths[i];
-        FrameImage image = writer.storage();
-        readBack(*pipeline, display, out, settings.output.bitDepth, ocio ? &*ocio : nullptr, image);
         if (telemetry) {
             telemetry->take(*pipeline, i, i + 1 == inputs.size());
         }
-        clock.mark(StageClock::ReadBack);
-        writer.write(out, std::move(image),
-                     writtenLine(inputs[i], out, {width, height}, start, progress, console));
-        clock.mark(StageClock::WriteWait);
+        startReadBack(readback, *pipeline, display, outPaths[i], settings.output.bitDepth,
+                      ocio ? &*ocio : nullptr);
+        processed = Processed{i, start, {width, height}};
+        clock.mark(StageClock::Process);
+    }
+    if (processed) {
+        writeProcessed();
     }
     writer.finish();
     clock.report(inputs.size());

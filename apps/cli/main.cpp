@@ -353,6 +353,12 @@ void addBenchCommand(CLI::App& app, Cli& c) {
         ->add_option("--input", c.benchOptions.input,
                      "an HDR image (EXR, HDR) instead of the synthetic frame")
         ->check(CLI::ExistingFile);
+    c.bench
+        ->add_option("--input-format", c.benchOptions.inputFormat,
+                     "the input texture's format: rgba32f, or rgba16f (a renderer's usual scene colour, half "
+                     "the bytes for the first passes to read); the bandwidth reference copies this format")
+        ->check(CLI::IsMember({"rgba32f", "rgba16f"}))
+        ->capture_default_str();
     c.bench->add_option("--json", c.benchOptions.json, "also write the table as JSON to FILE (atomically)");
     c.bench->add_flag("--force-ldr", c.benchOptions.forceLdr, "run the LDR (RGBA8) path");
     CLI::Option* sync = c.bench->add_flag(

@@ -31,6 +31,18 @@ check "JSON has the CPU's submission time" grep -q '"cpuSubmitMedianMs"' "$S/def
 check "bench names the bloom kernels" contains "(prefilter taps, blocks of"
 check "JSON names the bloom kernels" python3 -c "import json,sys; k=json.load(open('$S/default.json'))['bloomKernels']; \
 sys.exit(0 if k['prefilter'] == 'taps' and k['blockSide'] in (2, 4) else 1)"
+check "the input's format is named" python3 -c "import json,sys; d=json.load(open('$S/default.json')); \
+sys.exit(0 if d['inputFormat'] == 'rgba32f' and d['copyReference']['format'] == 'rgba32f' else 1)"
+# A half-float input: the copy reference takes its format, and the prefilter's bytes count half-float reads.
+expect 0 "bench of a half-float input" -- "$PHOTOPIC" bench --size 64x64 --frames 2 --input-format rgba16f \
+    --json "$S/half.json"
+check "the half-float input is named in the table" contains "64x64 rgba16f input"
+check "half-float input: an rgba16f copy, the prefilter reading 8 bytes a scene texel" python3 -c "import json,sys; \
+d=json.load(open('$S/half.json')); f=json.load(open('$S/default.json')); \
+p=lambda d: [x for x in d['passes'] if x['name']=='bloom prefilter'][0]['bytesMoved']; \
+sys.exit(0 if d['inputFormat'] == 'rgba16f' and d['copyReference']['format'] == 'rgba16f' \
+and p(f) - p(d) == 64 * 64 * 8 else 1)"
+expect 2 "an input format the bench does not make is refused" -- "$PHOTOPIC" bench --size 64x64 --input-format rgb9e5
 expect 0 "bench with the tiled prefilter" -- env PHOTOPIC_BLOOM_PREFILTER=tiles PHOTOPIC_BLOOM_BLOCK_SIDE=2 \
     "$PHOTOPIC" bench --size 64x64 --frames 2 --warmup 1 --json "$S/tiles.json"
 check "the override is reported and named in the table" contains "(prefilter tiles, blocks of 2)"
