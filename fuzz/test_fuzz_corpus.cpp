@@ -52,6 +52,7 @@ constexpr Reproducer kReproducers[] = {
     {"exrframe_chlist_overruns_size.min.exr", "exrframe"},
     {"exrframe_stored_chunk_short.exr", "exrframe"},
     {"exrframe_crop_overflows_camera.exr", "exrframe"},
+    {"exrframe_channels_twice.exr", "exrframe"},
 #endif
 };
 

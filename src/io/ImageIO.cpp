@@ -31,6 +31,7 @@
 #include <cstring>
 #include <memory>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <string_view>
@@ -292,9 +293,9 @@ bool exrChannelListFits(std::span<const unsigned char> value) {
 
 /// Walks the header attributes (name, type, 32-bit size, value) without OpenEXR and refuses a size beyond the
 /// file's end: OpenEXR allocates a value's declared size (up to 2 GiB for an unknown type) before it reads
-/// it. A known type whose reader takes a different number of bytes than the declared size (a fixed-size
-/// value, a channel list) is refused too: OpenEXR would go on reading the next attribute from the wrong
-/// place, where a size it then trusted was never checked.
+/// it. Refused too: an attribute named twice in one header, and a known type whose reader takes another
+/// number of bytes than the declared size (a fixed-size value, a channel list), after which OpenEXR would
+/// go on reading the next attribute from the wrong place, where a size it then trusted was never checked.
 void checkExrAttributeSizes(const fs::path& path, std::span<const unsigned char> bytes) {
     const bool multiPart = bytes.size() >= 8 && (bytes[5] & 0x10) != 0; // version flag 0x1000
     std::size_t pos = 8;
@@ -307,6 +308,7 @@ void checkExrAttributeSizes(const fs::path& path, std::span<const unsigned char>
         pos = std::size_t(end - bytes.begin()) + 1;
         return text;
     };
+    std::set<std::string> names; // of this header's attributes so far
     for (bool firstInHeader = true;;) {
         const std::string name = cString();
         if (name.empty()) {
@@ -314,9 +316,14 @@ void checkExrAttributeSizes(const fs::path& path, std::span<const unsigned char>
             if (!multiPart || firstInHeader)
                 return;
             firstInHeader = true;
+            names.clear();
             continue;
         }
         firstInHeader = false;
+        // OpenEXR's reader merges a second `channels` into the first, its core library keeps one: the two
+        // would read the pixels with different channels.
+        if (!names.insert(name).second)
+            throw IoError(path, "OpenEXR header is corrupt: attribute \"" + name + "\" appears twice");
         const std::string type = cString();
         if (bytes.size() - pos < 4)
             throw IoError(path, "OpenEXR header is truncated");

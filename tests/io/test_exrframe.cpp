@@ -400,6 +400,15 @@ TEST(ExrFrame, HeaderValuesOfAnotherSizeThanDeclaredAreRefused) {
                       "does not end where");
 }
 
+// OpenEXR's reader merges a second channel list into the first, its core library keeps one of them: the
+// pixels would be read with one set of channels and laid out by the other.
+TEST(ExrFrame, AttributeNamedTwiceIsRefused) {
+    const std::vector<unsigned char> red{'R', 0, 2, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0};
+    const std::vector<unsigned char> alpha{'A', 0, 1, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0};
+    expectDecodeError(rawHeader({{"channels", "chlist", red}, {"channels", "chlist", alpha}}),
+                      "attribute \"channels\" appears twice");
+}
+
 // An attribute of the wrong type for one OpenEXR predefines (`channels`) fails in OpenEXR's own header
 // parse: an IoError naming the file, not OpenEXR's exception.
 TEST(ExrFrame, PredefinedAttributeOfAnotherTypeIsAnErrorNamingTheFile) {
