@@ -278,9 +278,16 @@ exr_result_t unpackToFloat(exr_decode_pipeline_t* decode) {
 
 // ---------------------------------------------------------------------------------------- the file in memory
 
+/// An OpenEXR file in memory, as the core library's read callbacks see it, and the library's last error
+/// message about it (kept by keepMessage; `quiet` keeps none).
+struct MemorySource {
+    std::span<const unsigned char> bytes;
+    std::string error;
+};
+
 int64_t readMemory(exr_const_context_t, void* user, void* buffer, uint64_t size, uint64_t offset,
                    exr_stream_error_func_ptr_t) {
-    const auto& bytes = *static_cast<const std::span<const unsigned char>*>(user);
+    const std::span<const unsigned char> bytes = static_cast<const MemorySource*>(user)->bytes;
     if (offset >= bytes.size())
         return 0;
     const std::uint64_t n = std::min<std::uint64_t>(size, bytes.size() - offset);
@@ -289,25 +296,17 @@ int64_t readMemory(exr_const_context_t, void* user, void* buffer, uint64_t size,
 }
 
 int64_t memorySize(exr_const_context_t, void* user) {
-    return int64_t(static_cast<const std::span<const unsigned char>*>(user)->size());
+    return int64_t(static_cast<const MemorySource*>(user)->bytes.size());
 }
 
 /// Any failure here falls back to Imf::InputFile, which reports it in its own words: nothing to print.
 void quiet(exr_const_context_t, exr_result_t, const char*) {}
 
-/// The file for checkExrChunks, and the core library's last error message about it.
-struct ChunkCheckSource {
-    std::span<const unsigned char> bytes;
-    std::string error;
-};
-
-int64_t readChunkCheckSource(exr_const_context_t context, void* user, void* buffer, uint64_t size,
-                             uint64_t offset, exr_stream_error_func_ptr_t error) {
-    return readMemory(context, &static_cast<ChunkCheckSource*>(user)->bytes, buffer, size, offset, error);
-}
-
-int64_t chunkCheckSourceSize(exr_const_context_t context, void* user) {
-    return memorySize(context, &static_cast<ChunkCheckSource*>(user)->bytes);
+/// Collects the core library's last error message (its error handler's user data).
+void keepMessage(exr_const_context_t context, exr_result_t, const char* message) {
+    void* user = nullptr;
+    if (exr_get_user_data(context, &user) == EXR_ERR_SUCCESS && user != nullptr && message != nullptr)
+        static_cast<MemorySource*>(user)->error = message;
 }
 
 struct Context {
@@ -320,6 +319,17 @@ struct Context {
             exr_finish(&handle);
     }
 };
+
+/// Opens `source` for reading with the core library, its errors going to `onError`; false when the header
+/// cannot be read.
+bool startMemoryRead(Context& context, MemorySource& source, exr_error_handler_cb_t onError) {
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    init.user_data = &source;
+    init.read_fn = &readMemory;
+    init.size_fn = &memorySize;
+    init.error_handler_fn = onError;
+    return exr_start_read(&context.handle, "memory", &init) == EXR_ERR_SUCCESS;
+}
 
 /// The address of pixel (x, y), in data-window coordinates, of an Imf slice: Imf's base addresses it at
 /// base + x * xStride + y * yStride (the base itself may lie outside the buffer).
@@ -472,28 +482,16 @@ std::string chunkProblem(exr_compression_t compression, const exr_chunk_info_t& 
     }
 }
 
-/// Collects the core library's last error message (its error handler's user data).
-void keepMessage(exr_const_context_t context, exr_result_t, const char* message) {
-    void* user = nullptr;
-    if (exr_get_user_data(context, &user) == EXR_ERR_SUCCESS && user != nullptr && message != nullptr)
-        static_cast<ChunkCheckSource*>(user)->error = message;
-}
-
 } // namespace
 
 void checkExrChunks(const std::filesystem::path& path, std::span<const unsigned char> bytes) {
-    ChunkCheckSource source{bytes, {}};
-    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
-    init.user_data = &source;
-    init.read_fn = &readChunkCheckSource;
-    init.size_fn = &chunkCheckSourceSize;
-    init.error_handler_fn = &keepMessage;
+    MemorySource source{bytes, {}};
     Context context;
     const auto corrupt = [&](const std::string& where) {
         throw IoError(path, "OpenEXR pixel data is corrupt: " + where +
                                 (source.error.empty() ? std::string() : ": " + source.error));
     };
-    if (exr_start_read(&context.handle, "memory", &init) != EXR_ERR_SUCCESS)
+    if (!startMemoryRead(context, source, &keepMessage))
         corrupt("the chunk table cannot be read");
     exr_storage_t storage{};
     exr_compression_t compression{};
@@ -561,14 +559,9 @@ bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& h
             return false;
     }
 
-    std::span<const unsigned char> file = bytes;
-    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
-    init.user_data = &file;
-    init.read_fn = &readMemory;
-    init.size_fn = &memorySize;
-    init.error_handler_fn = &quiet;
+    MemorySource file{bytes, {}};
     Context context;
-    if (exr_start_read(&context.handle, "memory", &init) != EXR_ERR_SUCCESS)
+    if (!startMemoryRead(context, file, &quiet))
         return false;
     int parts = 0;
     exr_storage_t storage{};
