@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # SMAA from the CLI: aa.mode=smaa changes the image (and only through the anti-aliasing), each quality preset
-# runs, and a quality name that is not one of them is a usage error that names the key.
+# runs, smaa.subpixel 0 (the reference SMAA 1x) differs from the default, and a quality name that is not one
+# of them or a subpixel amount outside 0..1 is a usage error that names the key.
 source "$(dirname "$0")/lib.bash"
 S="$SCRATCH"
 
@@ -17,6 +18,14 @@ for quality in low medium high ultra; do
 done
 check "high is the default quality" cmp -s "$S/smaa.png" "$S/smaa-high.png"
 check "ultra differs from low" bash -c '! cmp -s "$0" "$1"' "$S/smaa-low.png" "$S/smaa-ultra.png"
+
+expect 0 "smaa.subpixel=0" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/smaa-reference.png" \
+    --set aa.mode=smaa --set smaa.subpixel=0
+check "the ridge step changes the image" bash -c '! cmp -s "$0" "$1"' "$S/smaa.png" "$S/smaa-reference.png"
+expect 2 "subpixel out of range" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/bad-subpixel.png" \
+    --set aa.mode=smaa --set smaa.subpixel=1.5
+check "error names the subpixel key" contains "smaa.subpixel"
+check "no output for a bad subpixel" test ! -e "$S/bad-subpixel.png"
 
 expect 2 "unknown SMAA quality" -- "$PHOTOPIC" image "$DATA/Desk.exr" -o "$S/bad.png" --set aa.mode=smaa \
     --set smaa.quality=extreme

@@ -63,6 +63,7 @@ inline std::span<const std::string_view> smaaQualityNames() {
 /// SMAA 1x (Jimenez et al. 2012) on the display-referred image.
 struct SmaaSettings {
     SmaaQuality quality = SmaaQuality::High;
+    float subpixel = 0.33f;
 
     template <class V>
     void visit(V& v) {
@@ -70,6 +71,12 @@ struct SmaaSettings {
             "quality", quality, smaaQualityNames(),
             "sMAA preset. The reference presets: luma threshold 0.15 / 0.1 / 0.1 / 0.05, orthogonal search "
             "steps 4 / 8 / 16 / 32, diagonal steps - / - / 8 / 16, corner rounding - / - / 25% / 25%");
+        v.field(
+            "subpixel", subpixel, Range{0, 1},
+            "a pixel the patterns leave alone that is a ridge one pixel wide (edges on both sides, darker "
+            "or brighter than both) moves this far towards its sides' mean in linear light: a line thinner "
+            "than a pixel is drawn fainter, as its coverage would have it. 0 is the reference SMAA 1x. Not "
+            "under taa+smaa, where TAA's jittered frames resolve thin lines");
     }
 };
 

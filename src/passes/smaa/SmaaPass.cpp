@@ -93,12 +93,15 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
                                  .texture();
     const Texture& out =
         resources.pool().acquire({.extent = e, .format = colorFormat, .debugName = "smaa output"}).texture();
+    // Under taa+smaa the sub-pixel ridges are TAA's to resolve: its jittered frames sample a thin line
+    // without bias, and dimming each of them would take a third of the line away from the converged image.
     mParameters.update(
         {.threshold = preset.threshold,
          .contrastFactor = preset.contrastFactor,
          .cornerRounding = preset.cornerRounding > 0.0f ? preset.cornerRounding / 100.0f : 1.0f,
          .searchSteps = preset.searchSteps,
-         .diagonalSteps = preset.diagonalSteps});
+         .diagonalSteps = preset.diagonalSteps,
+         .subpixel = hdr ? 0.0f : ctx.settings.smaa.subpixel});
     mParameters.bind(kBindingParameters);
     if (hdr) {
         bindExposureStateForReading(*resources.buffer(Resource::ExposureState));
@@ -137,11 +140,12 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
-        // Colour and weights in (the neighbours hit the cache), colour out.
-        ScopedGpuTimer timer(ctx.timers, prefix + "blend", pixels * (2.0 * colorBytes + 4.0));
+        // Colour, weights and edges in (the neighbours hit the cache), colour out.
+        ScopedGpuTimer timer(ctx.timers, prefix + "blend", pixels * (2.0 * colorBytes + 6.0));
         mBlend.at(bitDepth).use();
         glBindTextureUnit(0, color.id());
         glBindTextureUnit(1, weights.id());
+        glBindTextureUnit(2, edges.id());
         glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, colorFormat);
         dispatchPixels(e);
     }

@@ -28,7 +28,8 @@ struct SmaaParameters {
     float cornerRounding = 1.0f;    ///< fraction kept at a detected corner; 1: no corner detection
     std::int32_t searchSteps = 0;   ///< orthogonal search steps (two pixels each)
     std::int32_t diagonalSteps = 0; ///< 0: no diagonal patterns
-    std::int32_t pad[3] = {};
+    float subpixel = 0.0f;          ///< one-pixel ridges left unblended move this far towards their sides
+    std::int32_t pad[2] = {};
 };
 static_assert(sizeof(SmaaParameters) == 32);
 

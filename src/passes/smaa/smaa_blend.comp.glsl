@@ -4,6 +4,14 @@
 // axis with the larger weight is used, so a pixel at a corner is not blended twice. The mix is done on
 // linear values (the reference reads its input as sRGB for the same reason) and encoded again; in the HDR
 // placement (SMAA_HDR) the input is linear scene light already and the output stays RGBA16F.
+//
+// Sub-pixel ridges. A line thinner than a pixel (a wire, a far pole, a distant texture's stripe) shows in a
+// one-sample image as pixels of full contrast wherever a pixel centre fell on it, and the patterns leave
+// most of them alone: a ridge one pixel wide is two parallel edges, not a step. Such a pixel, with an edge
+// on both sides along an axis and darker or brighter than both neighbours there, moves `uSubpixel` of the
+// way towards their mean in linear light. A feature of width or area w (uniform in 0..1) is hit by a pixel
+// centre with probability w, so given that it was hit, its expected coverage is 2/3: a third of the
+// contrast is the expected excess. A pixel that is a ridge along both axes (a dot) takes the mean of both.
 #include "passes/common/color.h.glsl"
 #include "passes/common/display_format.h.glsl"
 
@@ -11,6 +19,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uColor;
 layout(binding = 1) uniform sampler2D uWeights;
+layout(binding = 2) uniform sampler2D uEdges; // RG8: r, an edge with the -x neighbour; g, with the -y one
 #ifdef SMAA_HDR
 layout(binding = 0, rgba16f) uniform writeonly image2D uOutput;
 vec3 toLinear(vec3 c) { return c; }
@@ -21,12 +30,48 @@ vec3 toLinear(vec3 c) { return srgbDecode(c); }
 vec3 fromLinear(vec3 c) { return srgbEncode(c); }
 #endif
 
+#include "passes/smaa/smaa_parameters.h.glsl"
+
 vec4 weightsAt(ivec2 p, ivec2 size) {
     return any(greaterThanEqual(p, size)) ? vec4(0.0) : texelFetch(uWeights, p, 0);
 }
 
 vec3 linearAt(ivec2 p, ivec2 size) {
     return toLinear(texelFetch(uColor, clamp(p, ivec2(0), size - 1), 0).rgb);
+}
+
+vec2 edgesAt(ivec2 p, ivec2 size) {
+    return any(greaterThanEqual(p, size)) ? vec2(0.0) : texelFetch(uEdges, p, 0).rg;
+}
+
+// The ridge filter above for the unblended pixel p of colour `centre` (as stored); false where p is no ridge.
+// Most pixels have no edge on either side and stop after one fetch.
+bool subpixelRidge(ivec2 p, ivec2 size, vec3 centre, out vec3 filtered) {
+    vec2 own = edgesAt(p, size);
+    bvec2 edged = bvec2(own.r > 0.5 && edgesAt(p + ivec2(1, 0), size).r > 0.5,
+                        own.g > 0.5 && edgesAt(p + ivec2(0, 1), size).g > 0.5);
+    filtered = centre;
+    if (!any(edged)) {
+        return false;
+    }
+    vec3 c = toLinear(centre);
+    float l = luma709(c);
+    vec3 sum = vec3(0.0);
+    float axes = 0.0;
+    for (int axis = 0; axis < 2; ++axis) {
+        if (!edged[axis]) {
+            continue;
+        }
+        ivec2 step1 = axis == 0 ? ivec2(1, 0) : ivec2(0, 1);
+        vec3 minusSide = linearAt(p - step1, size);
+        vec3 plusSide = linearAt(p + step1, size);
+        if ((l - luma709(minusSide)) * (l - luma709(plusSide)) > 0.0) {
+            sum += mix(c, 0.5 * (minusSide + plusSide), uSubpixel);
+            axes += 1.0;
+        }
+    }
+    filtered = sum / max(axes, 1.0);
+    return axes > 0.0;
 }
 
 void main() {
@@ -39,7 +84,12 @@ void main() {
     vec4 own = texelFetch(uWeights, p, 0);
     vec4 w = vec4(own.r, weightsAt(p + ivec2(0, 1), size).g, own.b, weightsAt(p + ivec2(1, 0), size).a);
     if (max(max(w.x, w.y), max(w.z, w.w)) == 0.0) {
-        imageStore(uOutput, p, centre);
+        vec3 filtered;
+        if (uSubpixel > 0.0 && subpixelRidge(p, size, centre.rgb, filtered)) {
+            imageStore(uOutput, p, vec4(onDisplayCode(fromLinear(filtered)), centre.a));
+        } else {
+            imageStore(uOutput, p, centre);
+        }
         return;
     }
     bool acrossY = max(w.x, w.y) > max(w.z, w.w);

@@ -5,4 +5,5 @@ layout(std140, binding = BINDING_PARAMETERS) uniform SmaaParameters {
     float uCornerRounding; // fraction kept at a detected corner; 1: no corner detection
     int uSearchSteps;
     int uDiagSteps; // 0: no diagonal patterns
+    float uSubpixel; // the blend step: how far a one-pixel ridge no pattern blended moves towards its sides
 };
