@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# Every figure the performance targets are judged by on a GPU, in one run, into OUT/ (a run on an H100 or H200
+# takes about five minutes):
+#   info.txt                      the device, driver and context (`photopic info`)
+#   gl-tests.log                  with GL_TESTS set: the GL suite, which fails on any driver performance warning
+#   bench-SIZE-submitted.*        the default chain as the CLI submits it (JSON and table)
+#   bench-SIZE-queued.*           the same with --queue-ahead: the GPU's own work, not its waits for the CPU
+#   bench-SIZE-rgba16f.*          queued, the scene colour in half floats as renderers hand it over
+#   bench-1920x1080-gl-debug.txt  a KHR_debug context: the driver's messages are in the log
+#   ae-histogram-1920x1080.*      queued, histogram metering with auto exposure
+#   prefilter-KERNEL-SIZE-rN.*    queued, the bloom prefilter kernels against each other (taps in 2x2 and 4x4
+#                                 blocks, shared-memory tiles), ROUNDS interleaved rounds
+#   cli.txt                       `photopic image` over a 1080p EXR sequence (AE + bloom + ACES): wall time and,
+#                                 from -v, the median milliseconds a frame spends in each stage
+# Usage: scripts/gpu-figures.sh OUT PHOTOPIC...   PHOTOPIC is the command that runs photopic (a path, or a
+# wrapper and its arguments). Environment: GL_TESTS (the command that runs photopic_gl_tests; unset: skipped),
+# FRAMES (timed bench frames, 200), SIZES ("1920x1080 3840x2160"), ROUNDS (2), SEQ_FRAMES (48), SEQ_SIZE
+# (1920x1080). On a software renderer, FRAMES=3 SIZES=320x180 ROUNDS=1 SEQ_FRAMES=4 SEQ_SIZE=320x180 checks
+# that the script runs; its figures mean nothing there.
+set -uo pipefail
+if [ $# -lt 2 ]; then
+    echo "usage: $0 OUT PHOTOPIC..." >&2
+    exit 2
+fi
+out=$1
+shift
+photopic=("$@")
+frames=${FRAMES:-200}
+read -r -a sizes <<< "${SIZES:-1920x1080 3840x2160}"
+rounds=${ROUNDS:-2}
+seq_frames=${SEQ_FRAMES:-48}
+seq_size=${SEQ_SIZE:-1920x1080}
+mkdir -p "$out"
+failures=0
+
+# Runs one command, its output into OUT/NAME.txt; a failure is counted and named, and the rest still runs.
+step() {
+    local name=$1
+    shift
+    echo "== $name"
+    if ! "$@" > "$out/$name.txt" 2>&1; then
+        echo "   failed (exit $?): $out/$name.txt" >&2
+        failures=$((failures + 1))
+    fi
+}
+
+bench() {
+    local name=$1
+    shift
+    step "$name" "${photopic[@]}" bench --frames "$frames" --warmup 20 --json "$out/$name.json" "$@"
+}
+
+step info "${photopic[@]}" info
+if [ -n "${GL_TESTS:-}" ]; then
+    echo "== gl-tests"
+    # shellcheck disable=SC2086 # GL_TESTS is a command line
+    if ! $GL_TESTS > "$out/gl-tests.log" 2>&1; then
+        echo "   failed: $out/gl-tests.log" >&2
+        failures=$((failures + 1))
+    fi
+fi
+for size in "${sizes[@]}"; do
+    bench "bench-$size-submitted" --size "$size"
+    bench "bench-$size-queued" --size "$size" --queue-ahead
+    bench "bench-$size-rgba16f" --size "$size" --queue-ahead --input-format rgba16f
+done
+step bench-1920x1080-gl-debug "${photopic[@]}" bench --size 1920x1080 --frames 20 --gl-debug -v
+bench ae-histogram-1920x1080 --size 1920x1080 --queue-ahead --set autoExposure.enabled=true \
+    --set autoExposure.metering=histogram
+for round in $(seq "$rounds"); do
+    for size in "${sizes[@]}"; do
+        for kernel in taps2 taps4 tiles; do
+            case $kernel in
+            taps2) env=(PHOTOPIC_BLOOM_PREFILTER=taps PHOTOPIC_BLOOM_BLOCK_SIDE=2) ;;
+            taps4) env=(PHOTOPIC_BLOOM_PREFILTER=taps PHOTOPIC_BLOOM_BLOCK_SIDE=4) ;;
+            tiles) env=(PHOTOPIC_BLOOM_PREFILTER=tiles PHOTOPIC_BLOOM_BLOCK_SIDE=2) ;;
+            esac
+            step "prefilter-$kernel-$size-r$round" env "${env[@]}" "${photopic[@]}" bench --size "$size" \
+                --frames "$frames" --warmup 20 --queue-ahead --json "$out/prefilter-$kernel-$size-r$round.json"
+        done
+    done
+done
+
+echo "== cli"
+seq_dir=$(mktemp -d)
+trap 'rm -rf "$seq_dir"' EXIT
+if "${photopic[@]}" scene tabletop --format exr --size "$seq_size" --frames "$seq_frames" -o "$seq_dir/seq" -q \
+    > "$out/cli.txt" 2>&1; then
+    start=$(date +%s.%N)
+    "${photopic[@]}" image "$seq_dir"/seq/frame_*.exr -o "$seq_dir/png/" --set autoExposure.enabled=true \
+        --tonemap aces-fitted -v >> "$out/cli.txt" 2>&1 || failures=$((failures + 1))
+    end=$(date +%s.%N)
+    awk -v s="$start" -v e="$end" -v n="$seq_frames" \
+        'BEGIN { printf "wall %.3f s for %d frames: %.1f ms a frame\n", e - s, n, 1000 * (e - s) / n }' \
+        >> "$out/cli.txt"
+    tail -n 2 "$out/cli.txt"
+else
+    echo "   the sequence could not be written: $out/cli.txt" >&2
+    failures=$((failures + 1))
+fi
+echo "$failures step(s) failed; the figures are in $out"
+[ "$failures" -eq 0 ]
