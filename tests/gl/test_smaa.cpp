@@ -402,9 +402,12 @@ SmaaIntermediates runSmaaAlone(const Texture& display, const Settings& settings)
 // of two pixels or more, or diagonal). "ideal" is the error left if each pixel took the best mix, in linear
 // light, of itself and one neighbour across a detected edge (across any side where none was detected): what a
 // perfect choice of blending weights along SMAA's edges could reach, a bound no morphological filter attains.
+// Both views run twice: the reference SMAA 1x (smaa.subpixel 0), then with the default sub-pixel ridge step.
 TEST_F(SmaaTest, DISABLED_TestbedErrorBreakdown) {
     constexpr int kW = 160, kH = 90;
-    for (int view = 0; view < 2; ++view) {
+    for (int round = 0; round < 4; ++round) {
+        const int view = round % 2;
+        const float subpixel = round < 2 ? 0.0f : SmaaSettings{}.subpixel; // the reference SMAA 1x first
         TestbedScene scene;
         ASSERT_TRUE(scene.applyOverride("cameraSpeed=0").empty());
         ASSERT_TRUE(scene.applyOverride("objectSpeed=0").empty());
@@ -437,6 +440,7 @@ TEST_F(SmaaTest, DISABLED_TestbedErrorBreakdown) {
         const Image8 none = readTexture8(display);
         Settings smaaSettings = base;
         smaaSettings.aa.mode = AntiAliasing::Smaa;
+        smaaSettings.smaa.subpixel = subpixel;
         const SmaaIntermediates smaa = runSmaaAlone(display, smaaSettings);
 
         auto squaredError = [&truth](const Image8& image, int x, int y) {
@@ -536,9 +540,9 @@ TEST_F(SmaaTest, DISABLED_TestbedErrorBreakdown) {
                 totalNone += n;
             }
         }
-        std::printf("view %d: SMAA edge RMSE %.1f%% of no AA's\n"
+        std::printf("view %d, smaa.subpixel %.2f: SMAA edge RMSE %.1f%% of no AA's\n"
                     "  | class | pixels | SMAA sq. error | share | no AA | ideal blend |\n",
-                    view, 100.0 * std::sqrt(totalSmaa / totalNone));
+                    view, double(subpixel), 100.0 * std::sqrt(totalSmaa / totalNone));
         for (const auto& [key, b] : bins) {
             std::printf("  | %s | %d | %.2f | %.1f%% | %.2f | %.2f |\n", key.c_str(), b.pixels, b.smaa,
                         100.0 * b.smaa / totalSmaa, b.none, b.ideal);
