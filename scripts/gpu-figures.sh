@@ -8,6 +8,7 @@
 #   bench-SIZE-rgba16f.*          queued, the scene colour in half floats as renderers hand it over
 #   bench-1920x1080-gl-debug.txt  a KHR_debug context: the driver's messages are in the log
 #   ae-histogram-1920x1080.*      queued, histogram metering with auto exposure
+#   aa-MODE-1920x1080.*           queued, each anti-aliasing method's passes (fxaa, smaa, taa, taa+smaa)
 #   prefilter-KERNEL-SIZE-rN.*    queued, the bloom prefilter kernels against each other (taps in 2x2 and 4x4
 #                                 blocks, shared-memory tiles), ROUNDS interleaved rounds
 #   cli.txt                       `photopic image` over a 1080p EXR sequence (AE + bloom + ACES): wall time and,
@@ -67,6 +68,9 @@ done
 step bench-1920x1080-gl-debug "${photopic[@]}" bench --size 1920x1080 --frames 20 --gl-debug -v
 bench ae-histogram-1920x1080 --size 1920x1080 --queue-ahead --set autoExposure.enabled=true \
     --set autoExposure.metering=histogram
+for mode in fxaa smaa taa taa+smaa; do
+    bench "aa-${mode/+/-}-1920x1080" --size 1920x1080 --queue-ahead --set aa.mode="$mode"
+done
 for round in $(seq "$rounds"); do
     for size in "${sizes[@]}"; do
         for kernel in taps2 taps4 tiles; do
