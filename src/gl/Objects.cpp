@@ -104,6 +104,13 @@ void Buffer::update(const void* data, std::size_t bytes, std::size_t offset) con
     glNamedBufferSubData(id(), GLintptr(offset), GLsizeiptr(bytes), data);
 }
 
+std::byte* Buffer::mapPersistently(GLbitfield access, std::string_view what) const {
+    void* mapped = glMapNamedBufferRange(id(), 0, GLsizeiptr(mSize), access);
+    if (mapped == nullptr)
+        throw GlError("cannot map " + std::string(what) + " (" + std::to_string(mSize) + " bytes)");
+    return static_cast<std::byte*>(mapped);
+}
+
 Framebuffer::Framebuffer(const Texture& color, int level, std::string_view debugName) {
     GLuint id = 0;
     glCreateFramebuffers(1, &id);

@@ -128,6 +128,9 @@ public:
     [[nodiscard]] std::size_t size() const { return mSize; }
     [[nodiscard]] bool valid() const { return mObject.valid(); }
     void update(const void* data, std::size_t bytes, std::size_t offset = 0) const;
+    /// Maps all of it with `access` for as long as it lives (made with GL_MAP_PERSISTENT_BIT and those access
+    /// bits). Throws GlError "cannot map `what` (N bytes)" when the driver refuses.
+    [[nodiscard]] std::byte* mapPersistently(GLbitfield access, std::string_view what) const;
 
 private:
     GlObject<detail::BufferDeleter> mObject;

@@ -13,8 +13,7 @@ ReadbackRing::ReadbackRing(std::size_t bytes, int slots, std::string_view debugN
         const std::string name = std::string(debugName) + " readback " + std::to_string(i++);
         const GLbitfield flags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
         slot.buffer = Buffer({.size = bytes, .flags = flags, .data = nullptr, .debugName = name});
-        slot.mapped = static_cast<const std::byte*>(
-            glMapNamedBufferRange(slot.buffer.id(), 0, GLsizeiptr(bytes), flags));
+        slot.mapped = slot.buffer.mapPersistently(flags, "the read-back buffer '" + name + "'");
     }
 }
 

@@ -86,11 +86,7 @@ void TextureReadback::start(const Texture& texture, GLenum type) {
         const GLbitfield flags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
         const std::string name = mName + " readback " + std::to_string(&slot - mSlots.data());
         slot.buffer = Buffer({.size = bytes, .flags = flags | GL_CLIENT_STORAGE_BIT, .debugName = name});
-        slot.mapped = static_cast<const std::byte*>(
-            glMapNamedBufferRange(slot.buffer.id(), 0, GLsizeiptr(bytes), flags));
-        if (slot.mapped == nullptr)
-            throw GlError("cannot map the read-back buffer '" + name + "' (" + std::to_string(bytes) +
-                          " bytes)");
+        slot.mapped = slot.buffer.mapPersistently(flags, "the read-back buffer '" + name + "'");
     }
     if (mPack == Pack::Shader) {
         packWithShader(texture, slot, sample);

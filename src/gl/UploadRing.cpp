@@ -14,11 +14,7 @@ UploadRing::UploadRing(std::size_t bytes, int slots, std::string_view debugName)
         // Coherent: the texels written become visible to the uploads issued after the writes, with no flush.
         const GLbitfield flags = GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
         slot.buffer = Buffer({.size = bytes, .flags = flags, .data = nullptr, .debugName = name});
-        slot.mapped =
-            static_cast<std::byte*>(glMapNamedBufferRange(slot.buffer.id(), 0, GLsizeiptr(bytes), flags));
-        if (slot.mapped == nullptr)
-            throw GlError("cannot map the upload buffer '" + name + "' (" + std::to_string(bytes) +
-                          " bytes)");
+        slot.mapped = slot.buffer.mapPersistently(flags, "the upload buffer '" + name + "'");
     }
 }
 
