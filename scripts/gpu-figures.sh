@@ -36,11 +36,12 @@ failures=0
 
 # Runs one command, its output into OUT/NAME.txt; a failure is counted and named, and the rest still runs.
 step() {
-    local name=$1
+    local name=$1 rc=0
     shift
     echo "== $name"
-    if ! "$@" > "$out/$name.txt" 2>&1; then
-        echo "   failed (exit $?): $out/$name.txt" >&2
+    "$@" > "$out/$name.txt" 2>&1 || rc=$?
+    if [ "$rc" -ne 0 ]; then
+        echo "   failed (exit $rc): $out/$name.txt" >&2
         failures=$((failures + 1))
     fi
 }
@@ -91,8 +92,11 @@ trap 'rm -rf "$seq_dir"' EXIT
 if "${photopic[@]}" scene tabletop --format exr --size "$seq_size" --frames "$seq_frames" -o "$seq_dir/seq" -q \
     > "$out/cli.txt" 2>&1; then
     start=$(date +%s.%N)
-    "${photopic[@]}" image "$seq_dir"/seq/frame_*.exr -o "$seq_dir/png/" --set autoExposure.enabled=true \
-        --tonemap aces-fitted -v >> "$out/cli.txt" 2>&1 || failures=$((failures + 1))
+    if ! "${photopic[@]}" image "$seq_dir"/seq/frame_*.exr -o "$seq_dir/png/" --set autoExposure.enabled=true \
+        --tonemap aces-fitted -v >> "$out/cli.txt" 2>&1; then
+        echo "   photopic image failed: $out/cli.txt" >&2
+        failures=$((failures + 1))
+    fi
     end=$(date +%s.%N)
     awk -v s="$start" -v e="$end" -v n="$seq_frames" \
         'BEGIN { printf "wall %.3f s for %d frames: %.1f ms a frame\n", e - s, n, 1000 * (e - s) / n }' \
