@@ -28,11 +28,15 @@ void main() {
     vec4 c = texelFetch(uSource, p, 0);
     // GL's texel rows run bottom to top: texel row y is the image's row height - 1 - y.
     uint word = (uint(uSize.y - 1 - p.y) * uint(uSize.x) + uint(p.x)) * kWordsPerPixel - uBaseWord;
+    // Not packUnorm4x8 / packUnorm2x16: NVIDIA's narrow the float to a half first (0.61368 packs to 157, not
+    // 156), where GL's pack converts the float itself.
 #if SAMPLE_BYTES == 1
-    uWords[word] = packUnorm4x8(c); // red in the lowest byte: R, G, B, A in memory
+    uvec4 q = uvec4(roundEven(clamp(c, 0.0, 1.0) * 255.0));
+    uWords[word] = q.r | (q.g << 8) | (q.b << 16) | (q.a << 24); // R, G, B, A in memory
 #elif SAMPLE_BYTES == 2
-    uWords[word] = packUnorm2x16(c.rg);
-    uWords[word + 1u] = packUnorm2x16(c.ba);
+    uvec4 q = uvec4(roundEven(clamp(c, 0.0, 1.0) * 65535.0));
+    uWords[word] = q.r | (q.g << 16);
+    uWords[word + 1u] = q.b | (q.a << 16);
 #else
     uvec4 bits = floatBitsToUint(c);
     uWords[word] = bits.r;
