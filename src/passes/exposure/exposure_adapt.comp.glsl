@@ -199,8 +199,10 @@ float histogramStatistics() {
     if (total == 0u) {
         return 0.0;
     }
-    float sum = 0.0;
-    float weightSum = 0.0;
+    // `precise` and divideRounded: the CPU's roundings, a multiply and an add apart (no fma) and a rounded
+    // quotient.
+    precise float sum = 0.0;
+    precise float weightSum = 0.0;
     for (int i = 0; i < kHistogramBins; ++i) {
         float w = sWeight[i];
         sum += w * sCentre[i];
@@ -208,7 +210,7 @@ float histogramStatistics() {
     }
     float lowLog2 = sLowBin < 256u ? sCentre[sLowBin] : 0.0;
     float highLog2 = sHighBin < 256u ? sCentre[sHighBin] : 0.0;
-    float average = weightSum > 0.0 ? sum / weightSum : lowLog2;
+    float average = weightSum > 0.0 ? divideRounded(sum, weightSum) : lowLog2;
     gExposure.histogramLowLog2 = lowLog2;
     gExposure.histogramHighLog2 = highLog2;
     gExposure.histogramAverageLog2 = average;

@@ -53,10 +53,42 @@ int histogramBin(float luminance, float log2Min, float log2Max) {
     return int(1.0 + kHistogramRangeBins * t);
 }
 
-// core: histogramBinCentreLog2.
+// x * y exactly, as the float nearest to it (hi) and the rest (lo): Dekker's product, each factor split into
+// halves of 12 significant bits (Veltkamp's split) whose partial products floats hold exactly. `precise`
+// keeps a compiler from fusing or reordering the steps, which would undo them. For |x|, |y| < 2^100.
+void exactProduct(float x, float y, out float hi, out float lo) {
+    precise float cx = 4097.0 * x;
+    precise float xh = cx - (cx - x);
+    precise float xl = x - xh;
+    precise float cy = 4097.0 * y;
+    precise float yh = cy - (cy - y);
+    precise float yl = y - yh;
+    precise float p = x * y;
+    precise float rest = ((xh * yh - p) + xh * yl + xl * yh) + xl * yl;
+    hi = p;
+    lo = rest;
+}
+
+// a / b rounded to the nearest float, as the CPU divides. GLSL lets a division be 2.5 ulp off (GPUs multiply
+// by a reciprocal, and a compiler may do so for a constant divisor). The remainder a - q b, exact from
+// Dekker's product (no fma, which a software renderer may run as a multiply and an add), moves the quotient
+// to the rounded one; a quotient that already is stays (its remainder is under half an ulp of it).
+float divideRounded(float a, float b) {
+    precise float q = a / b;
+    float p;
+    float e;
+    exactProduct(q, b, p, e);
+    precise float r = (a - p) - e;
+    precise float rounded = q + r / b;
+    return rounded;
+}
+
+// core: histogramBinCentreLog2. `precise`: a compiler may otherwise fuse the multiply and add into one fma
+// (NVIDIA's does), which rounds once where the CPU rounds twice.
 float histogramBinCentreLog2(int bin, float log2Min, float log2Max) {
-    float binWidth = (log2Max - log2Min) / kHistogramRangeBins;
-    return log2Min + (float(bin) - 0.5) * binWidth;
+    precise float binWidth = divideRounded(log2Max - log2Min, kHistogramRangeBins);
+    precise float centre = log2Min + (float(bin) - 0.5) * binWidth;
+    return centre;
 }
 
 // Image coordinates of texel p of a texture uploaded bottom-up (gl/TextureIo.h): image row y = H - 1 - p.y, so
