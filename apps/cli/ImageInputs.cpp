@@ -188,19 +188,16 @@ SlotLayout slotLayout(const DecodedFrame& frame, bool halfColor) {
     if (!frame.depth.empty())
         place(layout.depth, sizeof(float));
     if (!frame.normals.empty())
-        place(layout.normals, 4 * sizeof(float));
+        place(layout.normals, 4 * sizeof(std::uint16_t));
     if (!frame.motion.empty())
-        place(layout.motion, 2 * sizeof(float));
+        place(layout.motion, 2 * sizeof(std::uint16_t));
     return layout;
 }
 
 // The writers below fill slot memory (write-only, front to back) with image rows bottom to top, GL's order,
 // so that texel (x, y) is image pixel (x, height - 1 - y), as Texture::uploadRgba32f has it.
 
-/// `components` floats a pixel as they are. For a 16F texture (normals, motion) GL converts them as it
-/// converted them from client memory: drivers round floats to halves their own way (Mesa's RGBA16F store
-/// rounds toward zero and clamps, its RG16F store rounds to nearest), which a conversion here could not
-/// match on every driver.
+/// `components` floats a pixel as they are (the depth's, for an R32F texture).
 void writeFloatRows(std::byte* out, const float* values, Extent extent, int components) {
     const std::size_t row = std::size_t(extent.width) * std::size_t(components);
     for (int y = 0; y < extent.height; ++y) {
@@ -209,26 +206,29 @@ void writeFloatRows(std::byte* out, const float* values, Extent extent, int comp
     }
 }
 
-/// Four floats a pixel that are halves exactly (a half EXR's colour), stored as halves (RGBA16F): the same
-/// texels whatever the rounding, so the same as GL's own conversion of them.
-void writeHalfRows(std::byte* out, const float* values, Extent extent) {
-    const std::size_t row = std::size_t(extent.width) * 4;
+/// `components` floats a pixel as halves, rounded to nearest with ties to even (core/HalfFloat.h), for a
+/// 16F texture: the colour of a half EXR (halves exactly, so unchanged) and the motion. The rounding is
+/// done here because GL's conversion of floats is the driver's own: Mesa's RGBA16F store rounds toward
+/// zero and clamps, and NVIDIA's rounds floats from an unpack buffer otherwise than from client memory.
+void writeHalfRows(std::byte* out, const float* values, Extent extent, int components) {
+    const std::size_t row = std::size_t(extent.width) * std::size_t(components);
     auto* halves = reinterpret_cast<std::uint16_t*>(out);
     for (int y = 0; y < extent.height; ++y) {
         floatToHalf(values + std::size_t(extent.height - 1 - y) * row, halves + std::size_t(y) * row, row);
     }
 }
 
-/// Three floats a pixel as four (alpha 0).
-void writeNormalRows(std::byte* out, const float* normals, Extent extent) {
+/// Three floats a pixel as four halves (alpha 0), rounded as writeHalfRows rounds; `scratch` holds a row.
+void writeNormalRows(std::byte* out, const float* normals, Extent extent,
+                     std::vector<std::uint16_t>& scratch) {
     const std::size_t width = std::size_t(extent.width);
-    const float zero = 0.0f;
+    scratch.resize(width * 3);
+    auto* texel = reinterpret_cast<std::uint16_t*>(out);
     for (int y = 0; y < extent.height; ++y) {
-        const float* row = normals + std::size_t(extent.height - 1 - y) * width * 3;
-        std::byte* texel = out + std::size_t(y) * width * 4 * sizeof(float);
-        for (std::size_t x = 0; x < width; ++x, texel += 4 * sizeof(float)) {
-            std::memcpy(texel, row + x * 3, 3 * sizeof(float));
-            std::memcpy(texel + 3 * sizeof(float), &zero, sizeof(float));
+        floatToHalf(normals + std::size_t(extent.height - 1 - y) * width * 3, scratch.data(), width * 3);
+        for (std::size_t x = 0; x < width; ++x, texel += 4) {
+            const std::uint16_t four[4] = {scratch[3 * x], scratch[3 * x + 1], scratch[3 * x + 2], 0};
+            std::memcpy(texel, four, sizeof(four));
         }
     }
 }
@@ -246,7 +246,7 @@ FrameInputs InputTextures::upload(const DecodedFrame& frame, bool halfTexture) {
 
     ensure(mColor, extent, halfColor ? GL_RGBA16F : GL_RGBA32F, "cli.input.color");
     if (halfColor) {
-        writeHalfRows(slot + layout.color, frame.color.rgba.data(), extent);
+        writeHalfRows(slot + layout.color, frame.color.rgba.data(), extent, 4);
         mRing.upload(mColor, layout.color, GL_RGBA, GL_HALF_FLOAT);
     } else {
         writeFloatRows(slot + layout.color, frame.color.rgba.data(), extent, 4);
@@ -261,15 +261,15 @@ FrameInputs InputTextures::upload(const DecodedFrame& frame, bool halfTexture) {
     }
     if (!frame.normals.empty()) {
         ensure(mNormals, extent, GL_RGBA16F, "cli.input.normals");
-        writeNormalRows(slot + layout.normals, frame.normals.data(), extent);
-        mRing.upload(mNormals, layout.normals, GL_RGBA, GL_FLOAT);
+        writeNormalRows(slot + layout.normals, frame.normals.data(), extent, mHalfRow);
+        mRing.upload(mNormals, layout.normals, GL_RGBA, GL_HALF_FLOAT);
         inputs.normals = &mNormals;
         inputs.normalEncoding = NormalEncoding::ViewXyz;
     }
     if (!frame.motion.empty()) {
         ensure(mMotion, extent, GL_RG16F, "cli.input.motion");
-        writeFloatRows(slot + layout.motion, frame.motion.data(), extent, 2);
-        mRing.upload(mMotion, layout.motion, GL_RG, GL_FLOAT);
+        writeHalfRows(slot + layout.motion, frame.motion.data(), extent, 2);
+        mRing.upload(mMotion, layout.motion, GL_RG, GL_HALF_FLOAT);
         inputs.motion = &mMotion;
     }
     mRing.end();

@@ -12,6 +12,7 @@
 #include "io/ExrFrame.h"
 #include "pipeline/Pipeline.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -67,8 +68,9 @@ private:
 /// The GL textures frames are uploaded to: created when the extent (or the set of layers) changes, and
 /// re-uploaded every frame otherwise, so a sequence creates textures only for its first frame. Each frame's
 /// texels go through a ring of two persistently mapped unpack buffers (gl/UploadRing.h): written there in
-/// GL's row order (a half colour texture's as halves, converted here rather than by the driver), then one
-/// glTextureSubImage2D a texture, which the GPU copies while the CPU moves on.
+/// GL's row order (the half-float textures' texels as halves, rounded to nearest here rather than by the
+/// driver, whose roundings differ between drivers and between its own paths), then one glTextureSubImage2D
+/// a texture, which the GPU copies while the CPU moves on.
 class InputTextures {
 public:
     /// Uploads `frame` and returns inputs pointing at the textures and camera held here (valid until the
@@ -87,6 +89,7 @@ private:
     Texture mNormals;
     Texture mMotion;
     Camera mCamera;
+    std::vector<std::uint16_t> mHalfRow; ///< a row of normals as halves, before they are spread to four
 };
 
 /// `photopic image --info`: the channels and attributes of each input and what each feeds.

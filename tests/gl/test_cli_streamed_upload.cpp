@@ -1,9 +1,11 @@
-// The CLI's streamed upload (apps/cli/ImageInputs.cpp through gl/UploadRing.h) against GL's own conversion:
-// each texture must hold what uploading the frame's floats row by row with GL_FLOAT (the driver converting
-// them to the texture's format) gives, for a half-float colour frame, a float one, an odd size, and the
-// depth, normals and motion layers; over several frames in a row, so that both slots of the ring and the
-// reuse of the first are exercised; the unpack buffer binding is left as it was found, unbound; and the
-// upload's calls pass the audit of what NVIDIA's driver reports (GlCallAudit.h: no CPU read of a buffer).
+// The CLI's streamed upload (apps/cli/ImageInputs.cpp through gl/UploadRing.h) against a plain upload from
+// client memory: each texture must hold the frame's floats as they are (the float textures) or rounded to
+// the nearest half, ties to even (the half textures: core/HalfFloat.h's rounding, which the upload does on
+// the CPU because drivers convert floats to halves each their own way), for a half-float colour frame, a
+// float one, an odd size, and the depth, normals and motion layers; over several frames in a row, so that
+// both slots of the ring and the reuse of the first are exercised; the unpack buffer binding is left as it
+// was found, unbound; and the upload's calls pass the audit of what NVIDIA's driver reports (GlCallAudit.h:
+// no CPU read of a buffer).
 
 #include "ImageInputs.h"
 
@@ -82,17 +84,27 @@ cli::DecodedFrame makeFrame(int width, int height, bool halfColor, unsigned seed
     return frame;
 }
 
-/// The upload before the ring: `components` floats a pixel, one glTextureSubImage2D a row from client
-/// memory, rows flipped, GL converting the floats to the texture's format.
+/// The texture the upload must give: `components` floats a pixel, one glTextureSubImage2D a row from client
+/// memory, rows flipped; for a half texture the floats rounded to halves one at a time (floatToHalf of a
+/// single value, not the runs the upload converts with) and uploaded as halves, which GL stores as they are.
 Texture referenceTexture(const Texture& like, std::span<const float> values, int components) {
     const Extent extent = like.extent();
     Texture texture({.extent = extent, .format = like.format(), .debugName = "test.reference"});
     const std::size_t row = std::size_t(extent.width) * std::size_t(components);
     const GLenum format = components == 1 ? GL_RED : components == 2 ? GL_RG : GL_RGBA;
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    for (int y = 0; y < extent.height; ++y)
-        glTextureSubImage2D(texture.id(), 0, 0, y, extent.width, 1, format, GL_FLOAT,
-                            values.data() + std::size_t(extent.height - 1 - y) * row);
+    const bool half = like.format() == GL_RGBA16F || like.format() == GL_RG16F;
+    std::vector<std::uint16_t> halves(half ? row : 0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+    for (int y = 0; y < extent.height; ++y) {
+        const float* source = values.data() + std::size_t(extent.height - 1 - y) * row;
+        if (half) {
+            for (std::size_t i = 0; i < row; ++i)
+                halves[i] = floatToHalf(source[i]);
+            glTextureSubImage2D(texture.id(), 0, 0, y, extent.width, 1, format, GL_HALF_FLOAT, halves.data());
+        } else {
+            glTextureSubImage2D(texture.id(), 0, 0, y, extent.width, 1, format, GL_FLOAT, source);
+        }
+    }
     return texture;
 }
 
