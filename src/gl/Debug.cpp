@@ -4,9 +4,6 @@
 #include "gl/Gl.h"
 
 #include <atomic>
-#include <charconv>
-#include <mutex>
-#include <set>
 #include <string_view>
 
 namespace photopic {
@@ -16,31 +13,10 @@ namespace {
 std::atomic<std::uint64_t> gErrors{0};
 std::atomic<std::uint64_t> gPerformanceWarnings{0};
 std::atomic<std::uint64_t> gUndefinedBehaviour{0};
-std::mutex gRecompiledMutex;
-std::set<std::uint64_t> gRecompiledPrograms; ///< programs NVIDIA said it compiled for the draw state
+std::atomic<std::uint64_t> gRecompiles{0};
 
-/// NVIDIA compiles a graphics program's final code at its first draw, for that draw's state, and says so
-/// ("Vertex shader in program 3 is being recompiled based on GL state") when its disk cache lacks it: once
-/// per program on a cold cache, whatever the program does, so that first time is not counted. The same
-/// program compiled again is: its draws change state it was compiled for, a cost every time they do.
-bool firstCompileForDrawState(std::string_view text) {
-    static constexpr std::string_view kMarker = " in program ";
-    if (text.find("recompiled based on GL state") == std::string_view::npos) {
-        return false;
-    }
-    const std::size_t at = text.find(kMarker);
-    if (at == std::string_view::npos) {
-        return false;
-    }
-    std::uint64_t program = 0;
-    const char* first = text.data() + at + kMarker.size();
-    if (std::from_chars(first, text.data() + text.size(), program).ec != std::errc()) {
-        return false;
-    }
-    // Keyed by the stage's name too: each stage of a program is compiled once.
-    const std::uint64_t key = (program << 8) | std::uint64_t(static_cast<unsigned char>(text.front()));
-    const std::lock_guard lock(gRecompiledMutex);
-    return gRecompiledPrograms.insert(key).second;
+bool isRecompile(std::string_view text) {
+    return text.find("recompiled based on GL state") != std::string_view::npos;
 }
 
 void GLAPIENTRY onMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
@@ -53,8 +29,8 @@ void GLAPIENTRY onMessage(GLenum source, GLenum type, GLuint id, GLenum severity
                                 length < 0 ? std::char_traits<char>::length(message) : std::size_t(length));
     const bool error = type == GL_DEBUG_TYPE_ERROR || severity == GL_DEBUG_SEVERITY_HIGH;
     const bool notable = severity == GL_DEBUG_SEVERITY_MEDIUM || severity == GL_DEBUG_SEVERITY_HIGH;
-    if (type == GL_DEBUG_TYPE_PERFORMANCE && notable && !firstCompileForDrawState(text)) {
-        ++gPerformanceWarnings;
+    if (type == GL_DEBUG_TYPE_PERFORMANCE && notable) {
+        ++(isRecompile(text) ? gRecompiles : gPerformanceWarnings);
     }
     if (type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR && notable) {
         ++gUndefinedBehaviour;
@@ -89,6 +65,10 @@ std::uint64_t glDebugErrorCount() {
 std::uint64_t glDebugPerformanceWarningCount() {
     return gPerformanceWarnings.load();
 }
+std::uint64_t glDebugRecompileCount() {
+    return gRecompiles.load();
+}
+
 std::uint64_t glDebugUndefinedBehaviourCount() {
     return gUndefinedBehaviour.load();
 }
@@ -96,8 +76,7 @@ void resetGlDebugErrorCount() {
     gErrors = 0;
     gPerformanceWarnings = 0;
     gUndefinedBehaviour = 0;
-    const std::lock_guard lock(gRecompiledMutex);
-    gRecompiledPrograms.clear();
+    gRecompiles = 0;
 }
 
 } // namespace photopic

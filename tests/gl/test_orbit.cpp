@@ -9,6 +9,7 @@
 #include "core/Color.h"
 #include "core/Log.h"
 #include "core/ToneCurves.h"
+#include "gl/Debug.h"
 #include "gl/ShaderLibrary.h"
 #include "gl/TextureIo.h"
 #include "scenes/SceneSettings.h"
@@ -23,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <vector>
 
@@ -102,6 +104,20 @@ float timeWithSunInView() {
 }
 
 } // namespace
+
+// The driver compiles a graphics program for each draw state it meets (NVIDIA says so: gl/Debug.h). The
+// first frames meet every state of the scene's draws (shadow map, meshes, background); frames after them
+// repeat those states and must compile nothing.
+TEST_F(GlTest, OrbitFramesAfterTheFirstCompileNoProgramForTheirDrawState) {
+    auto scene = makeScene(2.0f, {});
+    Pipeline pipeline({.settings = scene->defaultSettings()});
+    renderFrame(*scene, pipeline, 0);
+    renderFrame(*scene, pipeline, 1);
+    const std::uint64_t warmUp = glDebugRecompileCount();
+    for (std::uint64_t frame = 2; frame < 5; ++frame)
+        renderFrame(*scene, pipeline, frame);
+    EXPECT_EQ(glDebugRecompileCount(), warmUp) << "programs compiled again for states the frames repeat";
+}
 
 TEST_F(GlTest, OrbitColourTexturesDecodeSrgbAndDataTexturesStayLinear) {
     // One quad, both textures made from the same grey image (code value 128): the emissive (colour) use

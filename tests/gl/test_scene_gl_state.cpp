@@ -147,6 +147,11 @@ TEST_F(GlTest, GlCallAuditFlagsEachRuleItChecks) {
     glUseProgram(0);
     glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    // A driver that reports what it sees (NVIDIA's) names the shadow sampler over no depth texture as
+    // undefined behaviour and the second vertex-fetch state as a recompile: broken on purpose here, so they
+    // do not fail the test as the fixture would make them.
+    glFinish();
+    resetGlDebugErrorCount();
 
     const std::vector<std::string>& p = audit.problems();
     EXPECT_EQ(audit.directBufferReads(), 1) << listed(p);
