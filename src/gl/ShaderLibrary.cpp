@@ -191,6 +191,10 @@ void dispatchPixels(Extent extent, PixelGroup group) noexcept {
                       GLuint((extent.height + group.height - 1) / group.height), 1);
 }
 
+void computeReadBarrier() noexcept {
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
 void imageWriteBarrier() noexcept {
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);

@@ -55,6 +55,11 @@ void dispatchPixels(Extent extent, PixelGroup group) noexcept;
 /// After a pass's image stores: whatever reads the image next (a sampler, an image load, a blit, a readback
 /// or a copy) sees the stores.
 void imageWriteBarrier() noexcept;
+/// After a pass's image stores that only the next compute passes read (by texture fetches or image loads),
+/// as between the levels of a chain: the narrower barrier costs the driver less than imageWriteBarrier's,
+/// which also flushes for framebuffer, texture-update and pixel-buffer reads. The chain's last pass ends
+/// with imageWriteBarrier.
+void computeReadBarrier() noexcept;
 
 /// Set uniforms by name on a program (DSA: no bind needed). Missing names are ignored (optimised away).
 void setUniform(const Program& p, const char* name, float v);

@@ -7,6 +7,8 @@
 #include "passes/Bindings.h"
 
 #include <fmt/format.h>
+
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -27,6 +29,18 @@ double texelBytes(Extent e, GLenum format) {
 ShaderDefines programDefines(ShaderDefines defines, PixelGroup group) {
     return bindingDefines(withPixelGroup(std::move(defines), group));
 }
+
+/// Binds a level's block, writing `parameters` to it first unless it holds them already (the structs are
+/// std140 mirrors with explicit padding, value-initialised, so their bytes compare).
+template <class Level>
+void bindLevelParameters(Level& level, const decltype(Level::written)& parameters) {
+    if (std::memcmp(&level.written, &parameters, sizeof(parameters)) != 0) {
+        level.block.update(parameters);
+        level.written = parameters;
+    }
+    level.block.bind(kBindingParameters);
+}
+
 } // namespace
 
 BloomPass::BloomPass()
@@ -34,9 +48,7 @@ BloomPass::BloomPass()
     , mPrefilter(makeComputeProgram(kDown, programDefines({{"PREFILTER", "1"}, {"KARIS", "1"}}, mGroup)))
     , mDownsample(makeComputeProgram(kDown, programDefines({}, mGroup)))
     , mUpsample(makeComputeProgram(kUp, programDefines({}, mGroup)))
-    , mSceneSampler(Sampler::linear("bloom scene sampler"))
-    , mDownsampleParameters("bloom downsample parameters")
-    , mUpsampleParameters("bloom upsample parameters") {
+    , mSceneSampler(Sampler::linear("bloom scene sampler")) {
     setBlockSide(isSoftwareRenderer() ? 4 : 2);
     applyEnvironmentOverrides();
 }
@@ -122,7 +134,13 @@ void BloomPass::ensureChain(int firstDivisor, int levels) {
     mLevels = levels;
     mDown.clear();
     mUp.clear();
+    mDownParameters.clear();
+    mUpParameters.clear();
     for (int i = 0; i < levels; ++i) {
+        mDownParameters.push_back(
+            {.block = ParameterBlock<BloomDownsampleParameters>(fmt::format("bloom down {} parameters", i))});
+        mUpParameters.push_back(
+            {.block = ParameterBlock<BloomUpsampleParameters>(fmt::format("bloom up {} parameters", i))});
         const glm::ivec2 s = bloomMipSize({mExtent.width, mExtent.height}, firstDivisor, i);
         const std::string down = fmt::format("bloom down {}", i);
         mDown.emplace_back(TextureCreateInfo{.extent = {s.x, s.y}, .format = kFormat, .debugName = down});
@@ -165,8 +183,7 @@ const Texture& BloomPass::execute(const Inputs& in) {
             parameters.threshold = in.settings->mode == BloomMode::Threshold ? 1 : 0;
             parameters.knee = bloomKneeConstants(in.settings->threshold, in.settings->knee);
         }
-        mDownsampleParameters.update(parameters);
-        mDownsampleParameters.bind(kBindingParameters);
+        bindLevelParameters(mDownParameters[std::size_t(i)], parameters);
         program.use();
         glBindTextureUnit(0, source.id());
         glBindSampler(0, i == 0 ? mSceneSampler.id() : 0);
@@ -179,7 +196,11 @@ const Texture& BloomPass::execute(const Inputs& in) {
             dispatchPixels(blocks ? Extent{(te.width + side - 1) / side, (te.height + side - 1) / side} : te,
                            mGroup);
         }
-        imageWriteBarrier();
+        // The next level, or with one level the passes after the chain, read this one.
+        if (levels == 1)
+            imageWriteBarrier();
+        else
+            computeReadBarrier();
     }
     glBindSampler(0, 0);
 
@@ -190,10 +211,10 @@ const Texture& BloomPass::execute(const Inputs& in) {
         const Extent ce = coarse.extent(), te = fine.extent();
         ScopedGpuTimer timer(in.timers, fmt::format("bloom up {}", i),
                              texelBytes(ce, kFormat) + 2 * texelBytes(te, kFormat));
-        mUpsampleParameters.update({.targetTexel = {1.0f / float(te.width), 1.0f / float(te.height)},
-                                    .coarseTexel = {1.0f / float(ce.width), 1.0f / float(ce.height)},
-                                    .radius = in.settings->radius});
-        mUpsampleParameters.bind(kBindingParameters);
+        bindLevelParameters(mUpParameters[std::size_t(i)],
+                            {.targetTexel = {1.0f / float(te.width), 1.0f / float(te.height)},
+                             .coarseTexel = {1.0f / float(ce.width), 1.0f / float(ce.height)},
+                             .radius = in.settings->radius});
         // 4x4 blocks where the level is exactly twice the coarser one: their tent weights are constants.
         const bool blocks = mUpsampleBlocks.valid() && te.width == 2 * ce.width && te.height == 2 * ce.height;
         (blocks ? mUpsampleBlocks : mUpsample).use();
@@ -201,7 +222,10 @@ const Texture& BloomPass::execute(const Inputs& in) {
         glBindTextureUnit(1, fine.id());
         glBindImageTexture(0, mUp[std::size_t(i)].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
         dispatchPixels(blocks ? Extent{(te.width + 3) / 4, (te.height + 3) / 4} : te, mGroup);
-        imageWriteBarrier();
+        if (i == 0)
+            imageWriteBarrier(); // the chain's result: whatever reads it next
+        else
+            computeReadBarrier(); // the next upsample
     }
     return levels == 1 ? mDown[0] : mUp[0];
 }
