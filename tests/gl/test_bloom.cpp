@@ -209,7 +209,8 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
         int side;
         bool tiles; // the prefilter from shared-memory tiles where level 0 is half the scene
     };
-    for (const Kernels kernels : {Kernels{2, false}, Kernels{4, false}, Kernels{2, true}}) {
+    for (const Kernels kernels :
+         {Kernels{1, false}, Kernels{2, false}, Kernels{4, false}, Kernels{2, true}}) {
         const int side = kernels.side;
         for (const Case& k : cases) {
             const ImageF image = fireflyField(k.width, k.height);
@@ -378,7 +379,7 @@ glm::vec3 tentWeightSlack(const ImageF& coarse, const ImageF& fine, int x, int y
 // sizes whose levels double exactly (the 4x4-block upsample where the block side is 4) and sizes whose levels
 // do not, with both block sides and the scene's fireflies.
 TEST_F(GlTest, BloomUpsampleLevelsMatchTheCpuTent) {
-    for (const int side : {2, 4}) {
+    for (const int side : {1, 2, 4}) {
         for (const Extent size : {Extent{64, 48}, Extent{72, 40}, Extent{70, 46}, Extent{61, 37}}) {
             const ImageF image = fireflyField(size.width, size.height);
             const Texture input = makeTexture(image, "bloom upsample twin input");

@@ -55,14 +55,14 @@ BloomPass::BloomPass()
 
 void BloomPass::applyEnvironmentOverrides() {
     if (const auto side = environmentValue("PHOTOPIC_BLOOM_BLOCK_SIDE")) {
-        if (*side == "2" || *side == "4") {
-            setBlockSide(*side == "2" ? 2 : 4);
+        if (*side == "1" || *side == "2" || *side == "4") {
+            setBlockSide(std::stoi(std::string(*side)));
             warnOnce("bloom-block-side", fmt::format("PHOTOPIC_BLOOM_BLOCK_SIDE={}: the bloom downsample "
                                                      "filters blocks of {} x {} target texels",
                                                      *side, *side, *side));
         } else {
             warnOnce("bloom-block-side-bad",
-                     fmt::format("PHOTOPIC_BLOOM_BLOCK_SIDE={}: not 2 or 4; ignored", *side));
+                     fmt::format("PHOTOPIC_BLOOM_BLOCK_SIDE={}: not 1, 2 or 4; ignored", *side));
         }
     }
     if (const auto kernel = environmentValue("PHOTOPIC_BLOOM_PREFILTER")) {
@@ -87,8 +87,15 @@ void BloomPass::setPrefilterTiles(bool on) {
 }
 
 void BloomPass::setBlockSide(int side) {
-    if (side != 2 && side != 4) {
-        throw std::invalid_argument(fmt::format("bloom block side {}: 2 or 4", side));
+    if (side != 1 && side != 2 && side != 4) {
+        throw std::invalid_argument(fmt::format("bloom block side {}: 1, 2 or 4", side));
+    }
+    if (side == 1) {
+        mPrefilterBlocks = Program();
+        mDownsampleBlocks = Program();
+        mUpsampleBlocks = Program();
+        mBlockSide = side;
+        return;
     }
     const char* blocks = side == 4 ? "BLOCKS_4X4" : "BLOCKS";
     mPrefilterBlocks = makeComputeProgram(
@@ -168,10 +175,11 @@ const Texture& BloomPass::execute(const Inputs& in) {
         // source in those steps, the next target texel's taps are these moved by two steps, and blocks share
         // them.
         const float span = 2.0f * step;
-        const bool blocks =
+        const bool half =
             float(se.width) == span * float(te.width) && float(se.height) == span * float(te.height);
+        const bool blocks = half && mBlockSide > 1;
         // Tiles read every scene texel of a half-size level 0 (taps one texel apart).
-        const bool tiles = i == 0 && blocks && step == 1.0f && mPrefilterTiles.valid();
+        const bool tiles = i == 0 && half && step == 1.0f && mPrefilterTiles.valid();
         const Program& program = tiles    ? mPrefilterTiles
                                  : i == 0 ? (blocks ? mPrefilterBlocks : mPrefilter)
                                           : (blocks ? mDownsampleBlocks : mDownsample);

@@ -52,14 +52,16 @@ public:
         GpuTimers* timers = nullptr;
     };
     /// The kernels are the renderer's defaults (setBlockSide, setPrefilterTiles) unless the environment says
-    /// otherwise, for measuring them against each other on one device: PHOTOPIC_BLOOM_BLOCK_SIDE=2|4,
+    /// otherwise, for measuring them against each other on one device: PHOTOPIC_BLOOM_BLOCK_SIDE=1|2|4,
     /// PHOTOPIC_BLOOM_PREFILTER=taps|tiles (an override in force is reported once; a bad value is reported
     /// and ignored).
     BloomPass();
     /// Target texels per side of an invocation's block where a level is exactly half its source: 4 (16 texels
     /// from 61 shared taps) on a software renderer, 2 (4 texels from 25) on a GPU, where holding 61 taps at
     /// once would cost occupancy. With 4, upsampled levels exactly twice the coarser one are computed in 4x4
-    /// blocks too (36 fetched texels, constant tent weights); with 2 by filtered taps. Tests run both.
+    /// blocks too (36 fetched texels, constant tent weights); with 2 by filtered taps. 1: one target texel
+    /// per invocation everywhere (13 taps each), as levels that are not exactly half are. Tests run all
+    /// three.
     void setBlockSide(int side);
     [[nodiscard]] int blockSide() const { return mBlockSide; }
     /// The prefilter from shared-memory tiles of unfiltered scene texels, 16x16 targets per group (each scene
