@@ -7,6 +7,7 @@
 #include "core/Metering.h"
 #include "gl/Capabilities.h"
 #include "gl/ReadbackRing.h"
+#include "gl/ShaderLibrary.h"
 #include "gl/TextureIo.h"
 #include "passes/Bindings.h"
 #include "passes/metering/MeteringPass.h"
@@ -17,6 +18,8 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <string>
+#include <vector>
 
 namespace photopic::test {
 
@@ -301,6 +304,70 @@ TEST_F(GlTest, RowAndBlockMeteringShadersGiveTheSameReading) {
         EXPECT_EQ(rows.header.minBits, block.header.minBits);
         EXPECT_EQ(rows.header.maxBits, block.header.maxBits);
     }
+}
+
+// divideRounded (passes/metering/metering.h.glsl), which the histogram statistics divide with, is the CPU's
+// division to the bit: GLSL lets a GPU's division be 2.5 ulp off (NVIDIA's is), and a compiler that fused or
+// reordered the steps of the remainder would undo the correction. Quotients of both signs across 2^-40..2^40,
+// exact ones, a zero dividend, and the statistics' own (the histogram's range over its 254 bins).
+TEST_F(GlTest, DivideRoundedIsTheCpusDivisionToTheBit) {
+    std::vector<float> pairs = {28.0f, 254.0f, 16.0f - -12.0f, 254.0f, 0.0f, 3.0f, 1.0f,
+                                3.0f,  -7.0f,  7.0f,           1e6f,   3.0f, 2.0f, 10.0f};
+    std::mt19937 rng(29u);
+    std::uniform_real_distribution<float> exponent(-20.0f, 20.0f);
+    while (pairs.size() < 2 * 4096) {
+        pairs.push_back(std::exp2(exponent(rng)) * ((rng() & 1u) != 0u ? -1.0f : 1.0f));
+        pairs.push_back(std::exp2(exponent(rng)) * ((rng() & 1u) != 0u ? -1.0f : 1.0f));
+    }
+    const std::size_t count = pairs.size() / 2;
+    const std::string source = preprocessShader("passes/metering/metering.h.glsl") + R"(
+        layout(local_size_x = 64) in;
+        layout(std430, binding = 0) readonly buffer Pairs { vec2 uPairs[]; };
+        layout(std430, binding = 1) writeonly buffer Quotients { float uQuotients[]; };
+        void main() {
+            uint i = gl_GlobalInvocationID.x;
+            if (i < uint(uPairs.length())) {
+                uQuotients[i] = divideRounded(uPairs[i].x, uPairs[i].y);
+            }
+        })";
+    const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+    const char* text = source.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint compiled = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
+    ASSERT_EQ(compiled, GL_TRUE) << "divideRounded's test shader does not compile";
+    const Program program(glCreateProgram());
+    glAttachShader(program.id(), shader);
+    glLinkProgram(program.id());
+    glDeleteShader(shader);
+    GLint linked = GL_FALSE;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
+    ASSERT_EQ(linked, GL_TRUE);
+
+    const Buffer in({.size = pairs.size() * sizeof(float),
+                     .flags = 0,
+                     .data = pairs.data(),
+                     .debugName = "test divideRounded pairs"});
+    const Buffer out(
+        {.size = count * sizeof(float), .flags = 0, .debugName = "test divideRounded quotients"});
+    program.use();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+    glDispatchCompute(GLuint((count + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glUseProgram(0);
+    std::vector<float> quotients(count);
+    readBuffer(out, count * sizeof(float), quotients.data());
+    int wrong = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const float want = pairs[2 * i] / pairs[2 * i + 1];
+        if (std::memcmp(&quotients[i], &want, sizeof(float)) != 0 && ++wrong <= 5) {
+            ADD_FAILURE() << pairs[2 * i] << " / " << pairs[2 * i + 1] << ": " << quotients[i] << ", the CPU "
+                          << want;
+        }
+    }
+    EXPECT_EQ(wrong, 0) << "of " << count << " quotients";
 }
 
 } // namespace photopic::test
