@@ -73,8 +73,8 @@ std::string infoLog(GLuint object, GetIv getiv, GetLog getLog) {
     return log;
 }
 
-GLuint compile(GLenum stage, std::string_view name, const ShaderDefines& defines) {
-    const std::string source = preprocessShader(name, defines);
+/// Compiles `source` (complete: version line and all); `name` labels the errors.
+GLuint compileSource(GLenum stage, const std::string& source, std::string_view name) {
     const GLuint shader = glCreateShader(stage);
     const char* text = source.c_str();
     glShaderSource(shader, 1, &text, nullptr);
@@ -87,6 +87,10 @@ GLuint compile(GLenum stage, std::string_view name, const ShaderDefines& defines
         throw GlError(fmt::format("compiling {} failed:\n{}", name, log));
     }
     return shader;
+}
+
+GLuint compile(GLenum stage, std::string_view name, const ShaderDefines& defines) {
+    return compileSource(stage, preprocessShader(name, defines), name);
 }
 
 Program link(std::initializer_list<GLuint> shaders, std::string_view label) {
@@ -125,6 +129,10 @@ std::string preprocessShader(std::string_view name, const ShaderDefines& defines
 
 Program makeComputeProgram(std::string_view computeName, const ShaderDefines& defines) {
     return link({compile(GL_COMPUTE_SHADER, computeName, defines)}, computeName);
+}
+
+Program makeComputeProgramFromSource(const std::string& source, std::string_view name) {
+    return link({compileSource(GL_COMPUTE_SHADER, source, name)}, name);
 }
 
 Program makeGraphicsProgram(std::string_view vertexName, std::string_view fragmentName,

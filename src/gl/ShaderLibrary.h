@@ -25,6 +25,9 @@ std::string preprocessShader(std::string_view name, const ShaderDefines& defines
 
 /// Compiles and links; throws GlError with the file name and the driver's log.
 Program makeComputeProgram(std::string_view computeName, const ShaderDefines& defines = {});
+/// Compiles and links a complete compute source (its version line included: e.g. preprocessShader's output of
+/// a header, and a main after it); `name` labels the program and the errors.
+Program makeComputeProgramFromSource(const std::string& source, std::string_view name);
 Program makeGraphicsProgram(std::string_view vertexName, std::string_view fragmentName,
                             const ShaderDefines& defines = {});
 

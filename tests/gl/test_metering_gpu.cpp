@@ -330,20 +330,7 @@ TEST_F(GlTest, DivideRoundedIsTheCpusDivisionToTheBit) {
                 uQuotients[i] = divideRounded(uPairs[i].x, uPairs[i].y);
             }
         })";
-    const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-    const char* text = source.c_str();
-    glShaderSource(shader, 1, &text, nullptr);
-    glCompileShader(shader);
-    GLint compiled = GL_FALSE;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
-    ASSERT_EQ(compiled, GL_TRUE) << "divideRounded's test shader does not compile";
-    const Program program(glCreateProgram());
-    glAttachShader(program.id(), shader);
-    glLinkProgram(program.id());
-    glDeleteShader(shader);
-    GLint linked = GL_FALSE;
-    glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
-    ASSERT_EQ(linked, GL_TRUE);
+    const Program program = makeComputeProgramFromSource(source, "test divideRounded");
 
     const Buffer in({.size = pairs.size() * sizeof(float),
                      .flags = 0,
