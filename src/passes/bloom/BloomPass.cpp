@@ -8,7 +8,6 @@
 
 #include <fmt/format.h>
 
-#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -28,17 +27,6 @@ double texelBytes(Extent e, GLenum format) {
 /// The binding #defines and `defines` for a program of the invocation shape `group`.
 ShaderDefines programDefines(ShaderDefines defines, PixelGroup group) {
     return bindingDefines(withPixelGroup(std::move(defines), group));
-}
-
-/// Binds a level's block, writing `parameters` to it first unless it holds them already (the structs are
-/// std140 mirrors with explicit padding, value-initialised, so their bytes compare).
-template <class Level>
-void bindLevelParameters(Level& level, const decltype(Level::written)& parameters) {
-    if (std::memcmp(&level.written, &parameters, sizeof(parameters)) != 0) {
-        level.block.update(parameters);
-        level.written = parameters;
-    }
-    level.block.bind(kBindingParameters);
 }
 
 } // namespace
@@ -90,17 +78,13 @@ void BloomPass::setBlockSide(int side) {
     if (side != 1 && side != 2 && side != 4) {
         throw std::invalid_argument(fmt::format("bloom block side {}: 1, 2 or 4", side));
     }
-    if (side == 1) {
-        mPrefilterBlocks = Program();
-        mDownsampleBlocks = Program();
-        mUpsampleBlocks = Program();
-        mBlockSide = side;
-        return;
-    }
     const char* blocks = side == 4 ? "BLOCKS_4X4" : "BLOCKS";
-    mPrefilterBlocks = makeComputeProgram(
-        kDown, programDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {blocks, "1"}}, mGroup));
-    mDownsampleBlocks = makeComputeProgram(kDown, programDefines({{blocks, "1"}}, mGroup));
+    mPrefilterBlocks =
+        side == 1 ? Program()
+                  : makeComputeProgram(
+                        kDown, programDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {blocks, "1"}}, mGroup));
+    mDownsampleBlocks =
+        side == 1 ? Program() : makeComputeProgram(kDown, programDefines({{blocks, "1"}}, mGroup));
     mUpsampleBlocks =
         side == 4 ? makeComputeProgram(kUp, programDefines({{"BLOCKS_4X4", "1"}}, mGroup)) : Program();
     mBlockSide = side;
@@ -144,14 +128,12 @@ void BloomPass::ensureChain(int firstDivisor, int levels) {
     mDownParameters.clear();
     mUpParameters.clear();
     for (int i = 0; i < levels; ++i) {
-        mDownParameters.push_back(
-            {.block = ParameterBlock<BloomDownsampleParameters>(fmt::format("bloom down {} parameters", i))});
-        mUpParameters.push_back(
-            {.block = ParameterBlock<BloomUpsampleParameters>(fmt::format("bloom up {} parameters", i))});
+        mDownParameters.emplace_back(fmt::format("bloom down {} parameters", i));
         const glm::ivec2 s = bloomMipSize({mExtent.width, mExtent.height}, firstDivisor, i);
         const std::string down = fmt::format("bloom down {}", i);
         mDown.emplace_back(TextureCreateInfo{.extent = {s.x, s.y}, .format = kFormat, .debugName = down});
         if (i + 1 < levels) {
+            mUpParameters.emplace_back(fmt::format("bloom up {} parameters", i));
             const std::string up = fmt::format("bloom up {}", i);
             mUp.emplace_back(TextureCreateInfo{.extent = {s.x, s.y}, .format = kFormat, .debugName = up});
         }
@@ -191,7 +173,8 @@ const Texture& BloomPass::execute(const Inputs& in) {
             parameters.threshold = in.settings->mode == BloomMode::Threshold ? 1 : 0;
             parameters.knee = bloomKneeConstants(in.settings->threshold, in.settings->knee);
         }
-        bindLevelParameters(mDownParameters[std::size_t(i)], parameters);
+        mDownParameters[std::size_t(i)].update(parameters);
+        mDownParameters[std::size_t(i)].bind(kBindingParameters);
         program.use();
         glBindTextureUnit(0, source.id());
         glBindSampler(0, i == 0 ? mSceneSampler.id() : 0);
@@ -219,10 +202,11 @@ const Texture& BloomPass::execute(const Inputs& in) {
         const Extent ce = coarse.extent(), te = fine.extent();
         ScopedGpuTimer timer(in.timers, fmt::format("bloom up {}", i),
                              texelBytes(ce, kFormat) + 2 * texelBytes(te, kFormat));
-        bindLevelParameters(mUpParameters[std::size_t(i)],
-                            {.targetTexel = {1.0f / float(te.width), 1.0f / float(te.height)},
-                             .coarseTexel = {1.0f / float(ce.width), 1.0f / float(ce.height)},
-                             .radius = in.settings->radius});
+        ParameterBlock<BloomUpsampleParameters>& block = mUpParameters[std::size_t(i)];
+        block.update({.targetTexel = {1.0f / float(te.width), 1.0f / float(te.height)},
+                      .coarseTexel = {1.0f / float(ce.width), 1.0f / float(ce.height)},
+                      .radius = in.settings->radius});
+        block.bind(kBindingParameters);
         // 4x4 blocks where the level is exactly twice the coarser one: their tent weights are constants.
         const bool blocks = mUpsampleBlocks.valid() && te.width == 2 * ce.width && te.height == 2 * ce.height;
         (blocks ? mUpsampleBlocks : mUpsample).use();

@@ -105,16 +105,10 @@ private:
     Program mUpsampleBlocks;
     /// The prefilter's: the scene may be the host's own texture, with its own filtering.
     Sampler mSceneSampler;
-    /// One block a level, rewritten only when its parameters change: a chain whose size and settings hold
-    /// still updates no buffer in a frame, where one block for all levels was rewritten between dispatches
-    /// that still read it, once a level.
-    template <class T>
-    struct LevelParameters {
-        ParameterBlock<T> block;
-        T written{};
-    };
-    std::vector<LevelParameters<BloomDownsampleParameters>> mDownParameters;
-    std::vector<LevelParameters<BloomUpsampleParameters>> mUpParameters;
+    /// One block a level (a block is written only when its contents change: gl/Objects.h), so a chain whose
+    /// size and settings hold still updates no buffer in a frame.
+    std::vector<ParameterBlock<BloomDownsampleParameters>> mDownParameters;
+    std::vector<ParameterBlock<BloomUpsampleParameters>> mUpParameters;
     Extent mExtent;
     int mDivisor = 0;
     int mLevels = 0;

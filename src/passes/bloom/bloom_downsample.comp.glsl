@@ -179,12 +179,13 @@ void main() {
 }
 #elif defined(TILES)
 // The prefilter from a tile of scene texels in shared memory (with PREFILTER, where level 0 is exactly half
-// the scene): each group fetches the 36x36 texels under its 16x16 targets unfiltered and builds the boxes
-// in arithmetic, so no filtered fetch of the scene's (often 128-bit) texels is made. The 13 taps fall on texel corners, so each box of four taps is the mean of a 4x4 block
-// of texels: the corner boxes of target x start at source texels 2x - 2 and 2x, which the next target
-// shares, and the centre box at 2x - 1. Means are built from halves and eighths (precise, as in box()) so
-// that finite texels up to the float maximum cannot overflow, and a NaN or an infinity still removes its
-// box. Clamping the texel coordinates is the taps' clamp to edge.
+// the scene): each group fetches the 36x36 texels under its 16x16 targets unfiltered and builds the boxes in
+// arithmetic, so no filtered fetch of the scene's (often 128-bit) texels is made. The 13 taps fall on texel
+// corners, so each box of four taps is the mean of a 4x4 block of texels: the corner boxes of target x start
+// at source texels 2x - 2 and 2x, which the next target shares, and the centre box at 2x - 1. Means are built
+// from halves and eighths (precise, as in box()) so that finite texels up to the float maximum cannot
+// overflow, and a NaN or an infinity still removes its box. Clamping the texel coordinates is the taps' clamp
+// to edge.
 const int kTile = TILES;         // target texels per side of a group's tile
 const int kSpan = 2 * kTile + 4; // scene texels per side under it: two past each edge
 const int kPairsPerRow = kSpan - 1;
