@@ -688,7 +688,7 @@ int runBench(const BenchOptions& options) {
     std::printf("colour path: %s (%s), quality %s, bloom levels %d (prefilter %s, blocks of %d)\n",
                 t.path == ColorPath::Hdr ? "HDR" : "LDR", t.pathReason.c_str(),
                 std::string(qualityNames()[std::size_t(t.quality)]).c_str(), t.bloomLevels,
-                t.bloomPrefilterTiles ? "tiles" : "taps", t.bloomBlockSide);
+                t.bloomPrefilterKernel.c_str(), t.bloomBlockSide);
     if (options.sync) {
         std::printf("--sync: glFinish() around every pass; 'wall ms' holds the pass's own work and nothing "
                     "else\n");
@@ -740,8 +740,7 @@ int runBench(const BenchOptions& options) {
             {"colourPath", t.path == ColorPath::Hdr ? "hdr" : "ldr"},
             {"colourPathReason", t.pathReason},
             {"quality", std::string(qualityNames()[std::size_t(t.quality)])},
-            {"bloomKernels",
-             {{"prefilter", t.bloomPrefilterTiles ? "tiles" : "taps"}, {"blockSide", t.bloomBlockSide}}},
+            {"bloomKernels", {{"prefilter", t.bloomPrefilterKernel}, {"blockSide", t.bloomBlockSide}}},
             {"passes", passesJson},
             {"totalMedianGpuMs", totalMs},
             {"frameMedianGpuMs", wholeFrameMs},

@@ -438,7 +438,7 @@ PipelineStatus Pipeline::status() const {
     }
     t.bloomLevels = mPostSequencer.ran(mOrder->bloom) ? mOrder->bloom.levels() : 0;
     t.bloomBlockSide = mOrder->bloom.blockSide();
-    t.bloomPrefilterTiles = mOrder->bloom.prefilterTiles();
+    t.bloomPrefilterKernel = bloomPrefilterKernelName(mOrder->bloom.prefilterKernel());
     t.passes = mTimers.latest();
     for (const Sequencer* s : {&mLightingSequencer, &mPostSequencer}) {
         for (std::string& name : s->ranPasses()) {

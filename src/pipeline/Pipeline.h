@@ -41,11 +41,11 @@ struct PipelineStatus {
     Quality quality = Quality::High;
     int bloomLevels = 0; ///< levels the last frame's bloom chain ran (0: no bloom)
     // The bloom chain's kernels (BloomPass): the renderer's defaults unless the environment overrides them.
-    int bloomBlockSide = 0;           ///< target texels per side of a downsample block (2 or 4)
-    bool bloomPrefilterTiles = false; ///< the prefilter from shared-memory tiles instead of filtered taps
-    std::vector<PassTiming> passes;   ///< the most recent frame with GPU timings available
-    std::vector<std::string> ran;     ///< the passes the last frame ran, in order (both stages)
-    std::vector<SkippedPass> skipped; ///< passes the last frame needed but could not run, and why
+    int bloomBlockSide = 0;                    ///< target texels per side of a downsample block (2 or 4)
+    std::string bloomPrefilterKernel = "taps"; ///< bloomPrefilterKernelName of the prefilter's kernel
+    std::vector<PassTiming> passes;            ///< the most recent frame with GPU timings available
+    std::vector<std::string> ran;              ///< the passes the last frame ran, in order (both stages)
+    std::vector<SkippedPass> skipped;          ///< passes the last frame needed but could not run, and why
     /// Problems with the last frame's inputs (a null colour, an input of another size or an unusable format,
     /// a camera with NaN): each names the input; the input was ignored for the frame.
     std::vector<std::string> inputErrors;

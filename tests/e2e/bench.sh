@@ -47,6 +47,10 @@ expect 0 "bench with the tiled prefilter" -- env PHOTOPIC_BLOOM_PREFILTER=tiles 
     "$PHOTOPIC" bench --size 64x64 --frames 2 --warmup 1 --json "$S/tiles.json"
 check "the override is reported and named in the table" contains "(prefilter tiles, blocks of 2)"
 check "the override is named in the JSON" grep -q '"prefilter": "tiles"' "$S/tiles.json"
+expect 0 "bench with the prefilter's taps shared in a group" -- env PHOTOPIC_BLOOM_PREFILTER=shared \
+    "$PHOTOPIC" bench --size 64x64 --frames 2 --warmup 1 --json "$S/shared.json"
+check "the shared taps are named in the table" contains "(prefilter shared, blocks of"
+check "the shared taps are named in the JSON" grep -q '"prefilter": "shared"' "$S/shared.json"
 # --queue-ahead: untimed busy work before each timed frame; the report says on how many frames the GPU was
 # still on it when the frame had been submitted (none on llvmpipe, which runs a dispatch when it is issued).
 expect 0 "bench with the queue kept ahead" -- "$PHOTOPIC" bench --size 64x64 --frames 3 --warmup 1 --queue-ahead \

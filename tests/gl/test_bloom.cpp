@@ -191,8 +191,8 @@ ImageF fireflyField(int width, int height) {
 } // namespace
 
 // Every downsampled level against the CPU filter, on sizes whose levels halve exactly (2x2 and 4x4 blocks
-// of target texels sharing their taps, and the prefilter from shared-memory tiles; odd-sized targets among
-// them) and sizes whose levels do not (one texel
+// of target texels sharing their taps, and the prefilter from shared-memory tiles of texels or of taps;
+// odd-sized targets among them) and sizes whose levels do not (one texel
 // per invocation), with both first divisors, both modes, and fireflies, negative values and a NaN in the
 // scene.
 // Each level is checked from the GPU's own level above, so rounding to half floats does not accumulate.
@@ -207,10 +207,12 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
                           {61, 37, 2, BloomMode::EnergyConserving}};
     struct Kernels {
         int side;
-        bool tiles; // the prefilter from shared-memory tiles where level 0 is half the scene
+        BloomPrefilterKernel prefilter;
     };
     for (const Kernels kernels :
-         {Kernels{1, false}, Kernels{2, false}, Kernels{4, false}, Kernels{2, true}}) {
+         {Kernels{1, BloomPrefilterKernel::Taps}, Kernels{2, BloomPrefilterKernel::Taps},
+          Kernels{4, BloomPrefilterKernel::Taps}, Kernels{2, BloomPrefilterKernel::Tiles},
+          Kernels{2, BloomPrefilterKernel::SharedTaps}}) {
         const int side = kernels.side;
         for (const Case& k : cases) {
             const ImageF image = fireflyField(k.width, k.height);
@@ -220,7 +222,7 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
             settings.mode = k.mode;
             BloomPass pass;
             pass.setBlockSide(side);
-            pass.setPrefilterTiles(kernels.tiles);
+            pass.setPrefilterKernel(kernels.prefilter);
             pass.resize({k.width, k.height});
             pass.execute({.scene = &input,
                           .exposureState = &exposure,
@@ -248,18 +250,19 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
                         }
                     }
                 }
-                EXPECT_LT(worst, 1.0f) << k.width << "x" << k.height << " divisor " << k.divisor << " level "
-                                       << level << " (" << gpu.width << "x" << gpu.height << "), blocks of "
-                                       << side << (kernels.tiles ? ", tiled prefilter" : "");
+                EXPECT_LT(worst, 1.0f)
+                    << k.width << "x" << k.height << " divisor " << k.divisor << " level " << level << " ("
+                    << gpu.width << "x" << gpu.height << "), blocks of " << side << ", prefilter "
+                    << bloomPrefilterKernelName(kernels.prefilter);
             }
         }
     }
 }
 
-// The tiled prefilter (unfiltered texels in shared memory, boxes built in arithmetic) gives the filtered
-// taps' level 0 on scenes a host may hand over raw: NaN, infinities of both signs, negative values, 1e30 and
-// a 4x4 block of 3e38, whose plain sum in a box would overflow; on sizes with partial tiles at the right and
-// bottom.
+// The tiled prefilters (unfiltered texels in shared memory, boxes built in arithmetic; or filtered taps
+// fetched once into shared memory) give the filtered taps' level 0 on scenes a host may hand over raw: NaN,
+// infinities of both signs, negative values, 1e30 and a 4x4 block of 3e38, whose plain sum in a box would
+// overflow; on sizes with partial tiles at the right and bottom.
 TEST_F(GlTest, TiledPrefilterMatchesTheFilteredTapsOnHostileScenes) {
     for (const Extent size : {Extent{64, 48}, Extent{100, 70}, Extent{162, 98}}) {
         ImageF image = fireflyField(size.width, size.height);
@@ -278,30 +281,34 @@ TEST_F(GlTest, TiledPrefilterMatchesTheFilteredTapsOnHostileScenes) {
             BloomSettings settings;
             settings.mode = mode;
             std::vector<ImageF> level0;
-            for (const bool tiles : {false, true}) {
+            for (const BloomPrefilterKernel kernel : {BloomPrefilterKernel::Taps, BloomPrefilterKernel::Tiles,
+                                                      BloomPrefilterKernel::SharedTaps}) {
                 BloomPass pass;
                 pass.setBlockSide(2);
-                pass.setPrefilterTiles(tiles);
-                ASSERT_EQ(pass.prefilterTiles(), tiles);
+                pass.setPrefilterKernel(kernel);
+                ASSERT_EQ(pass.prefilterKernel(), kernel);
                 pass.resize(size);
                 pass.execute(
                     {.scene = &input, .exposureState = &exposure, .settings = &settings, .mipCount = 3});
                 level0.push_back(readTextureF(pass.downsampled(0)));
             }
             const ImageF& taps = level0[0];
-            const ImageF& tiled = level0[1];
-            ASSERT_EQ(tiled.width, size.width / 2);
-            float worst = 0.0f, largest = 0.0f;
-            for (std::size_t i = 0; i < taps.rgba.size(); ++i) {
-                ASSERT_TRUE(std::isfinite(tiled.rgba[i])) << i;
-                // Half floats: a relative step of 2^-11, twice over (the two sums round apart).
-                const float allowed = 2e-3f * (std::abs(taps.rgba[i]) + 1e-3f);
-                worst = std::max(worst, std::abs(tiled.rgba[i] - taps.rgba[i]) / allowed);
-                largest = std::max(largest, tiled.rgba[i]);
+            for (std::size_t k = 1; k < level0.size(); ++k) {
+                const ImageF& tiled = level0[k];
+                ASSERT_EQ(tiled.width, size.width / 2);
+                float worst = 0.0f, largest = 0.0f;
+                for (std::size_t i = 0; i < taps.rgba.size(); ++i) {
+                    ASSERT_TRUE(std::isfinite(tiled.rgba[i])) << i;
+                    // Half floats: a relative step of 2^-11, twice over (the two sums round apart).
+                    const float allowed = 2e-3f * (std::abs(taps.rgba[i]) + 1e-3f);
+                    worst = std::max(worst, std::abs(tiled.rgba[i] - taps.rgba[i]) / allowed);
+                    largest = std::max(largest, tiled.rgba[i]);
+                }
+                const char* name = k == 1 ? "tiles" : "shared taps";
+                EXPECT_LT(worst, 1.0f) << size.width << "x" << size.height << " " << name;
+                // The 3e38 block's boxes are clamped, not dropped as an overflow would make them.
+                EXPECT_GT(largest, 1000.0f) << size.width << "x" << size.height << " " << name;
             }
-            EXPECT_LT(worst, 1.0f) << size.width << "x" << size.height;
-            // The 3e38 block's boxes are clamped, not dropped as an overflow would make them.
-            EXPECT_GT(largest, 1000.0f) << size.width << "x" << size.height;
         }
     }
 }
@@ -316,18 +323,20 @@ TEST_F(GlTest, BloomEnvironmentOverridesPickTheKernels) {
         }
     } unset;
     const BloomPass defaults;
-    EXPECT_FALSE(defaults.prefilterTiles());
+    EXPECT_EQ(defaults.prefilterKernel(), BloomPrefilterKernel::Taps);
     const int otherSide = defaults.blockSide() == 2 ? 4 : 2;
     setenv("PHOTOPIC_BLOOM_BLOCK_SIDE", otherSide == 2 ? "2" : "4", 1);
     setenv("PHOTOPIC_BLOOM_PREFILTER", "tiles", 1);
     const BloomPass overridden;
     EXPECT_EQ(overridden.blockSide(), otherSide);
-    EXPECT_TRUE(overridden.prefilterTiles());
+    EXPECT_EQ(overridden.prefilterKernel(), BloomPrefilterKernel::Tiles);
+    setenv("PHOTOPIC_BLOOM_PREFILTER", "shared", 1);
+    EXPECT_EQ(BloomPass().prefilterKernel(), BloomPrefilterKernel::SharedTaps);
     setenv("PHOTOPIC_BLOOM_BLOCK_SIDE", "3", 1);
     setenv("PHOTOPIC_BLOOM_PREFILTER", "fast", 1);
     const BloomPass ignored;
     EXPECT_EQ(ignored.blockSide(), defaults.blockSide());
-    EXPECT_FALSE(ignored.prefilterTiles());
+    EXPECT_EQ(ignored.prefilterKernel(), BloomPrefilterKernel::Taps);
 }
 
 namespace {

@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -18,7 +20,7 @@ namespace {
 constexpr const char* kDown = "passes/bloom/bloom_downsample.comp.glsl";
 constexpr const char* kUp = "passes/bloom/bloom_upsample.comp.glsl";
 constexpr GLenum kFormat = GL_RGBA16F;
-constexpr int kTile = 16; // target texels per side of a tiled prefilter's group (the shader's TILES)
+constexpr int kTile = 16; // target texels per side of a tiled prefilter's group (TILES, SHARED_TAPS)
 
 double texelBytes(Extent e, GLenum format) {
     return double(e.width) * double(e.height) * bytesPerTexel(format);
@@ -30,6 +32,18 @@ ShaderDefines programDefines(ShaderDefines defines, PixelGroup group) {
 }
 
 } // namespace
+
+const char* bloomPrefilterKernelName(BloomPrefilterKernel kernel) {
+    switch (kernel) {
+    case BloomPrefilterKernel::Taps:
+        return "taps";
+    case BloomPrefilterKernel::Tiles:
+        return "tiles";
+    case BloomPrefilterKernel::SharedTaps:
+        return "shared";
+    }
+    return "taps";
+}
 
 BloomPass::BloomPass()
     : mGroup(pixelGroup())
@@ -53,25 +67,43 @@ void BloomPass::applyEnvironmentOverrides() {
                      fmt::format("PHOTOPIC_BLOOM_BLOCK_SIDE={}: not 1, 2 or 4; ignored", *side));
         }
     }
-    if (const auto kernel = environmentValue("PHOTOPIC_BLOOM_PREFILTER")) {
-        if (*kernel == "taps" || *kernel == "tiles") {
-            setPrefilterTiles(*kernel == "tiles");
+    if (const auto value = environmentValue("PHOTOPIC_BLOOM_PREFILTER")) {
+        const BloomPrefilterKernel kernels[] = {BloomPrefilterKernel::Taps, BloomPrefilterKernel::Tiles,
+                                                BloomPrefilterKernel::SharedTaps};
+        const auto* kernel = std::ranges::find_if(
+            kernels, [&](BloomPrefilterKernel k) { return *value == bloomPrefilterKernelName(k); });
+        if (kernel != std::end(kernels)) {
+            setPrefilterKernel(*kernel);
+            const char* reads = *kernel == BloomPrefilterKernel::Tiles ? "tiles of unfiltered scene texels"
+                                : *kernel == BloomPrefilterKernel::SharedTaps
+                                    ? "filtered taps shared in a group"
+                                    : "filtered taps";
             warnOnce("bloom-prefilter",
-                     fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: the bloom prefilter reads {}", *kernel,
-                                 *kernel == "tiles" ? "tiles of unfiltered scene texels" : "filtered taps"));
+                     fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: the bloom prefilter reads {}", *value, reads));
         } else {
-            warnOnce("bloom-prefilter-bad",
-                     fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: not 'taps' or 'tiles'; ignored", *kernel));
+            warnOnce(
+                "bloom-prefilter-bad",
+                fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: not 'taps', 'tiles' or 'shared'; ignored", *value));
         }
     }
 }
 
-void BloomPass::setPrefilterTiles(bool on) {
-    mPrefilterTiles =
-        on ? makeComputeProgram(
-                 kDown,
-                 bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {"TILES", std::to_string(kTile)}}))
-           : Program();
+void BloomPass::setPrefilterKernel(BloomPrefilterKernel kernel) {
+    mPrefilterKernel = kernel;
+    const std::string tile = std::to_string(kTile);
+    switch (kernel) {
+    case BloomPrefilterKernel::Taps:
+        mPrefilterTiled = Program();
+        break;
+    case BloomPrefilterKernel::Tiles:
+        mPrefilterTiled =
+            makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {"TILES", tile}}));
+        break;
+    case BloomPrefilterKernel::SharedTaps:
+        mPrefilterTiled = makeComputeProgram(
+            kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {"SHARED_TAPS", tile}}));
+        break;
+    }
 }
 
 void BloomPass::setBlockSide(int side) {
@@ -160,9 +192,11 @@ const Texture& BloomPass::execute(const Inputs& in) {
         const bool half =
             float(se.width) == span * float(te.width) && float(se.height) == span * float(te.height);
         const bool blocks = half && mBlockSide > 1;
-        // Tiles read every scene texel of a half-size level 0 (taps one texel apart).
-        const bool tiles = i == 0 && half && step == 1.0f && mPrefilterTiles.valid();
-        const Program& program = tiles    ? mPrefilterTiles
+        // Tiles read every scene texel of a half-size level 0 (taps one texel apart); shared taps need only
+        // the half.
+        const bool tiles = i == 0 && half && mPrefilterTiled.valid() &&
+                           (mPrefilterKernel == BloomPrefilterKernel::SharedTaps || step == 1.0f);
+        const Program& program = tiles    ? mPrefilterTiled
                                  : i == 0 ? (blocks ? mPrefilterBlocks : mPrefilter)
                                           : (blocks ? mDownsampleBlocks : mDownsample);
         ScopedGpuTimer timer(in.timers, i == 0 ? "bloom prefilter" : fmt::format("bloom down {}", i),

@@ -41,6 +41,16 @@ static_assert(sizeof(BloomUpsampleParameters) == 32);
 static_assert(offsetof(BloomUpsampleParameters, coarseTexel) == 8 &&
               offsetof(BloomUpsampleParameters, radius) == 16);
 
+/// How the prefilter (level 0, from the scene) reads the scene where level 0 is exactly half of it in tap
+/// steps; elsewhere it takes filtered taps one target texel at a time.
+enum class BloomPrefilterKernel {
+    Taps,       ///< filtered taps in blocks of blockSide() x blockSide() target texels
+    Tiles,      ///< 16x16 targets a group from unfiltered scene texels in shared memory (divisor 2 only)
+    SharedTaps, ///< 16x16 targets a group from filtered taps fetched once into shared memory
+};
+/// "taps", "tiles" or "shared": the PHOTOPIC_BLOOM_PREFILTER value and the bench's name of `kernel`.
+[[nodiscard]] const char* bloomPrefilterKernelName(BloomPrefilterKernel kernel);
+
 class BloomPass final : public FramePass {
 public:
     struct Inputs {
@@ -51,10 +61,10 @@ public:
         int mipCount = 6;     ///< levels wanted (fewer when the image is small)
         GpuTimers* timers = nullptr;
     };
-    /// The kernels are the renderer's defaults (setBlockSide, setPrefilterTiles) unless the environment says
+    /// The kernels are the renderer's defaults (setBlockSide, setPrefilterKernel) unless the environment says
     /// otherwise, for measuring them against each other on one device: PHOTOPIC_BLOOM_BLOCK_SIDE=1|2|4,
-    /// PHOTOPIC_BLOOM_PREFILTER=taps|tiles (an override in force is reported once; a bad value is reported
-    /// and ignored).
+    /// PHOTOPIC_BLOOM_PREFILTER=taps|tiles|shared (an override in force is reported once; a bad value is
+    /// reported and ignored).
     BloomPass();
     /// Target texels per side of an invocation's block where a level is exactly half its source: 4 (16 texels
     /// from 61 shared taps) on a software renderer, 2 (4 texels from 25) on a GPU, where holding 61 taps at
@@ -64,11 +74,9 @@ public:
     /// three.
     void setBlockSide(int side);
     [[nodiscard]] int blockSide() const { return mBlockSide; }
-    /// The prefilter from shared-memory tiles of unfiltered scene texels, 16x16 targets per group (each scene
-    /// texel fetched once, the boxes built in arithmetic), where level 0 is exactly half the scene; else from
-    /// filtered taps in blocks. Off by default. Tests run both.
-    void setPrefilterTiles(bool on);
-    [[nodiscard]] bool prefilterTiles() const { return mPrefilterTiles.valid(); }
+    /// The prefilter's kernel (BloomPrefilterKernel): Taps by default. Tests run all three.
+    void setPrefilterKernel(BloomPrefilterKernel kernel);
+    [[nodiscard]] BloomPrefilterKernel prefilterKernel() const { return mPrefilterKernel; }
     /// The invocation shape the programs were built with (pixelGroup() when the pass was made).
     [[nodiscard]] PixelGroup group() const { return mGroup; }
     [[nodiscard]] std::string_view name() const override { return "bloom"; }
@@ -97,7 +105,8 @@ private:
     /// Level 0 (exposure, Karis average, threshold) and the later levels; `Blocks`: blocks of mBlockSide x
     /// mBlockSide target texels per invocation sharing their taps, for a target exactly half its source.
     Program mPrefilter, mPrefilterBlocks;
-    Program mPrefilterTiles; ///< made only while setPrefilterTiles(true)
+    BloomPrefilterKernel mPrefilterKernel = BloomPrefilterKernel::Taps;
+    Program mPrefilterTiled; ///< the Tiles or SharedTaps program while one of them is the kernel
     Program mDownsample, mDownsampleBlocks;
     int mBlockSide = 2;
     Program mUpsample;

@@ -17,7 +17,8 @@
 // are a small part of the chip a full-screen triangle runs far below the memory's pace. With BLOCKS each
 // invocation filters a 2x2 block of target texels whose taps it shares (BLOCKS_4X4: a 4x4 block): texture
 // reads are what a CPU rasteriser pays for, and a GPU issues half the texture instructions. With TILES (the
-// prefilter only, 16x16 groups) the boxes come from scene texels fetched once into shared memory.
+// prefilter only, 16x16 groups) the boxes come from scene texels fetched once into shared memory; with
+// SHARED_TAPS (16x16 groups) from filtered taps fetched once into shared memory.
 #include "passes/common/color.h.glsl"
 #include "passes/common/invocation.h.glsl"
 #ifdef PREFILTER
@@ -25,9 +26,11 @@
 #include "passes/common/sanitize.h.glsl"
 #endif
 
-#ifdef TILES
+#if defined(TILES)
 // One target texel per invocation, a TILES x TILES tile per group (the host's tile side).
 layout(local_size_x = TILES, local_size_y = TILES) in;
+#elif defined(SHARED_TAPS)
+layout(local_size_x = SHARED_TAPS, local_size_y = SHARED_TAPS) in;
 #else
 #include "passes/common/pixel_group.h.glsl"
 #endif
@@ -245,6 +248,58 @@ void main() {
     ivec2 l = ivec2(gl_LocalInvocationID.xy);
     vec3 color = combine(sCentre[l.y][l.x].rgb, sCorner[l.y + 1][l.x].rgb, sCorner[l.y + 1][l.x + 1].rgb,
                          sCorner[l.y][l.x].rgb, sCorner[l.y][l.x + 1].rgb);
+    imageStore(uTarget, tile + l, vec4(color, 1.0)); // past the target's edge: no effect
+}
+#elif defined(SHARED_TAPS)
+// The prefilter from filtered taps shared through group memory, where level 0 is exactly half the scene in
+// tap steps: a group's SHARED_TAPS x SHARED_TAPS targets take their 13 taps from two grids that neighbouring
+// targets share. The even grid holds a tap at every target's centre (target x's taps two steps left and
+// right are its neighbours' centres), the odd grid a tap one step up and right of every centre (target x's
+// four one-step taps are the odd taps of x - 1 and x, on rows y - 1 and y). Each tap of the (S + 2)^2 even
+// and (S + 1)^2 odd taps under a group's S x S targets is fetched once: 2.4 filtered fetches a target texel
+// for S = 16, where blocks of 2x2 targets take 6.25 and of 4x4 take 3.8. The boxes and their weights are
+// the taps' (box() and combine()), so the result is the blocks' to the rounding of the tap coordinates.
+const int kTile = SHARED_TAPS;
+const int kEven = kTile + 2; // even taps per side: the tile's centres and one past each edge
+const int kOdd = kTile + 1;  // odd taps per side: one before the tile's first centre, then one per centre
+shared vec4 sEven[kEven][kEven];
+shared vec4 sOdd[kOdd][kOdd];
+const int kEvenTaps = kEven * kEven;
+const int kTaps = kEvenTaps + kOdd * kOdd;
+const int kInvocations = kTile * kTile;
+const int kRounds = (kTaps + kInvocations - 1) / kInvocations;
+
+void main() {
+    ivec2 tile = ivec2(gl_WorkGroupID.xy) * kTile;
+    int invocation = int(gl_LocalInvocationIndex);
+    // Constant bounds: the compiler may issue an invocation's fetches together. Taps past the texture's edge
+    // clamp to it as the blocks' taps do.
+    vec3 fetched[kRounds];
+    for (int n = 0; n < kRounds; ++n) {
+        int k = invocation + n * kInvocations;
+        bool even = k < kEvenTaps;
+        int side = even ? kEven : kOdd, q = even ? k : k - kEvenTaps;
+        // Tap (i, j) of either grid belongs to target tile + (i, j) - 1.
+        vec2 centre = (vec2(tile + ivec2(q % side, q / side) - 1) + 0.5) * uTargetTexel;
+        fetched[n] = k < kTaps ? tap(even ? centre : centre + uSourceStep) : vec3(0.0);
+    }
+    for (int n = 0; n < kRounds; ++n) {
+        int k = invocation + n * kInvocations;
+        if (k < kEvenTaps) {
+            sEven[k / kEven][k % kEven] = vec4(fetched[n], 0.0);
+        } else if (k < kTaps) {
+            sOdd[(k - kEvenTaps) / kOdd][(k - kEvenTaps) % kOdd] = vec4(fetched[n], 0.0);
+        }
+    }
+    barrier();
+    // Target l's even taps are sEven[l.y .. l.y + 2][l.x .. l.x + 2], its odd taps sOdd[l.y .. l.y + 1]
+    // [l.x .. l.x + 1]; downsample()'s a, b, c are on the row two steps up (+y), k, l, m two steps down.
+    ivec2 l = ivec2(gl_LocalInvocationID.xy);
+    vec3 color = downsample(
+        sEven[l.y + 2][l.x].rgb, sEven[l.y + 2][l.x + 1].rgb, sEven[l.y + 2][l.x + 2].rgb,
+        sOdd[l.y + 1][l.x].rgb, sOdd[l.y + 1][l.x + 1].rgb, sEven[l.y + 1][l.x].rgb,
+        sEven[l.y + 1][l.x + 1].rgb, sEven[l.y + 1][l.x + 2].rgb, sOdd[l.y][l.x].rgb, sOdd[l.y][l.x + 1].rgb,
+        sEven[l.y][l.x].rgb, sEven[l.y][l.x + 1].rgb, sEven[l.y][l.x + 2].rgb);
     imageStore(uTarget, tile + l, vec4(color, 1.0)); // past the target's edge: no effect
 }
 #elif defined(BLOCKS)
