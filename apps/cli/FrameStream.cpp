@@ -172,8 +172,10 @@ FrameImage writeFrameImage(const fs::path& path, FrameImage image, PngWriter& pn
     return image;
 }
 
-FrameWriter::FrameWriter(RunOutputs& outputs, std::size_t maxPending, DisplayEncoding encoding)
+FrameWriter::FrameWriter(RunOutputs& outputs, std::size_t maxPending, DisplayEncoding encoding,
+                         FrameRecord record)
     : mOutputs(outputs)
+    , mRecord(record)
     , mMaxPending(maxPending)
     , mEncoding(encoding)
     , mEncoders(std::max<std::size_t>(std::min<std::size_t>(maxPending, maxWorkers()), 1)) {
@@ -186,8 +188,9 @@ FrameWriter::~FrameWriter() {
     for (Pending& p : mPending) {
         try {
             p.done.get();
-            mOutputs.wrote(p.path);
+            record(p.path);
         } catch (...) { // the run is failing already; the writer removed its own temporary
+            mGap = true;
         }
     }
 }
@@ -204,7 +207,7 @@ FrameImage FrameWriter::storage() {
 void FrameWriter::write(const fs::path& path, FrameImage image, std::function<void()> report) {
     if (mWorkers.empty()) {
         mFree.push_back(writeFrameImage(path, std::move(image), mEncoders.front(), mEncoding));
-        mOutputs.wrote(path);
+        record(path);
         report();
         return;
     }
@@ -224,9 +227,23 @@ void FrameWriter::write(const fs::path& path, FrameImage image, std::function<vo
 void FrameWriter::retireOldest() {
     Pending p = std::move(mPending.front());
     mPending.pop_front();
-    mFree.push_back(p.done.get());
-    mOutputs.wrote(p.path);
+    try {
+        mFree.push_back(p.done.get());
+    } catch (...) {
+        mGap = true; // the frames after it that other workers write are listed (the destructor's record())
+        throw;
+    }
+    record(p.path);
     p.report();
+}
+
+void FrameWriter::record(const fs::path& path) {
+    // Counted while the frames written are the sequence's first ones; past a frame that failed, listed.
+    if (mRecord == FrameRecord::Sequence && !mGap) {
+        mOutputs.wroteSequenceItem();
+    } else {
+        mOutputs.wrote(path);
+    }
 }
 
 void FrameWriter::finish() {

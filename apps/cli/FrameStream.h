@@ -124,12 +124,20 @@ struct DisplayEncoding {
 FrameImage writeFrameImage(const std::filesystem::path& path, FrameImage image, PngWriter& png,
                            DisplayEncoding encoding);
 
+/// How FrameWriter tells RunOutputs of a frame written.
+enum class FrameRecord {
+    Listed,   ///< RunOutputs::wrote(path)
+    Sequence, ///< RunOutputs::wroteSequenceItem(): the frames are its numbered sequence, given in order (once
+              ///< one fails to be written, the ones after it are listed)
+};
+
 /// Encodes and writes frames on worker threads, at most `maxPending` at a time (0: on the caller's thread,
 /// before write() returns), and reports each written frame in the order the frames were given: the path
 /// goes to RunOutputs and `report` runs, both on the caller's thread.
 class FrameWriter {
 public:
-    FrameWriter(RunOutputs& outputs, std::size_t maxPending, DisplayEncoding encoding);
+    FrameWriter(RunOutputs& outputs, std::size_t maxPending, DisplayEncoding encoding,
+                FrameRecord record = FrameRecord::Listed);
     /// Waits for every write still running; the files that were written go to RunOutputs (which removes
     /// them when the run failed).
     ~FrameWriter();
@@ -152,7 +160,10 @@ private:
         std::function<void()> report;
     };
     void retireOldest();
+    void record(const std::filesystem::path& path);
     RunOutputs& mOutputs;
+    FrameRecord mRecord;
+    bool mGap = false; ///< a write failed: the frames after it are no longer the sequence's first ones
     std::size_t mMaxPending;
     DisplayEncoding mEncoding;
     std::deque<Pending> mPending;

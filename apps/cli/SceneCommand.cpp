@@ -12,6 +12,7 @@
 #include "core/settings/SettingsJson.h"
 #include "gl/Context.h"
 #include "gl/TextureIo.h"
+#include "gl/TextureReadback.h"
 #include "io/ExrFrame.h"
 #include "io/ImageIO.h"
 #include "scenes/Scene.h"
@@ -27,6 +28,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <deque>
 #include <fstream>
 #include <string>
 #include <tuple>
@@ -276,9 +278,27 @@ int runScene(const SceneOptions& options) {
     requireBitDepthFits({framePath(0)}, resolved.output.bitDepth,
                         options.bitDepth ? "--bit-depth" : "the settings' output.bitDepth");
     const DisplayEncoding encoding{.bitDepth = resolved.output.bitDepth, .jpegQuality = options.jpegQuality};
-    FrameImage image; // read-back storage, kept from frame to frame
-    PngWriter png;
     outputs.sequence(framePath);
+    // The frames stream as `photopic image`'s do: each frame's read starts once it is processed and finishes
+    // once the next one is, so the GPU ends a frame while the CPU renders the next one's inputs; frames are
+    // encoded and written on worker threads (a bounded number at once, their storage recycled), in order.
+    FrameWriter writer(outputs, std::size_t(std::max(defaultFramesInFlight() - 1, 1)), encoding,
+                       FrameRecord::Sequence);
+    TextureReadback readback(2, "cli.scene");
+    std::deque<std::size_t> reading; ///< the frames whose reads are started, oldest first
+    const auto writeOldest = [&] {
+        FrameImage image = writer.storage();
+        if (options.format == "exr") {
+            readback.finish(image.scene);
+        } else if (encoding.bitDepth == 16) {
+            readback.finish(image.display16);
+        } else {
+            readback.finish(image.display);
+        }
+        const fs::path frame = framePath(reading.front());
+        reading.pop_front();
+        writer.write(frame, std::move(image), [frame] { logDebug("wrote {}", frame.string()); });
+    };
     const float dt = 1.0f / options.fps;
     const fs::path telemetryPath = outDir / "telemetry.csv";
     TelemetryCsv telemetry(telemetryPath, dt, scene->telemetryColumns());
@@ -298,17 +318,16 @@ int runScene(const SceneOptions& options) {
                 writeExrFrame(path, sceneExr(inputs, pipeline.jitter(), previousJitter));
                 outputs.wrote(path);
             }
-            const fs::path frame = framePath(std::size_t(i / every));
             if (options.format == "exr") {
-                readTextureF(pipeline.sceneReferred(), image.scene);
-            } else if (encoding.bitDepth == 16) {
-                readTexture16(display, image.display16);
+                readback.start(pipeline.sceneReferred(), GL_FLOAT);
             } else {
-                readTexture8(display, image.display);
+                readback.start(display, encoding.bitDepth == 16 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_BYTE);
             }
-            image = writeFrameImage(frame, std::move(image), png, encoding);
-            outputs.wroteSequenceItem();
-            logDebug("frame {} -> {}", i, frame.string());
+            reading.push_back(std::size_t(i / every));
+            logDebug("frame {} -> {}", i, framePath(reading.back()).string());
+            if (reading.size() == std::size_t(readback.slotCount())) {
+                writeOldest(); // the frame before this one
+            }
         }
         telemetry.sceneValues(std::uint64_t(i), std::move(values));
         telemetry.take(pipeline, std::uint64_t(i), i + 1 == options.frames);
@@ -319,6 +338,10 @@ int runScene(const SceneOptions& options) {
         }
         progress.advance();
     }
+    while (!reading.empty()) {
+        writeOldest();
+    }
+    writer.finish();
     telemetry.commit(std::uint64_t(options.frames), pipeline.droppedTelemetry());
     outputs.wrote(telemetryPath);
     outputs.commit();

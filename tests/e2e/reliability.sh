@@ -59,6 +59,13 @@ check "output folder named" contains "plainfile/x"
 mkdir -p "$S/scene2/frame_0000.png"
 expect 2 "scene: a frame's path is a folder" -- "$PHOTOPIC" scene tabletop --frames 2 --size 64x36 -o "$S/scene2"
 check "no telemetry left behind" test ! -e "$S/scene2/telemetry.csv"
+# A frame that cannot be written once frames before and after it are being written on worker threads: the
+# run fails, takes back every frame it wrote, and keeps the folder that was in the way.
+mkdir -p "$S/scene3/frame_0003.png"
+expect 1 "scene: a later frame's path is a folder" -- "$PHOTOPIC" scene tabletop --frames 6 --size 64x36 -o "$S/scene3"
+check "the frame's path is named" contains "frame_0003.png\": is a folder"
+check "no frames left behind" test -z "$(find "$S/scene3" -name 'frame_*.png' -type f)"
+check "the folder in the way is kept" test -d "$S/scene3/frame_0003.png"
 
 mkdir -p "$S/plot/exposure_plot.png"
 expect 2 "demo: the plot's path is a folder" -- "$PHOTOPIC" demo -o "$S/plot" --size 64x36 --seconds 1 --no-video
