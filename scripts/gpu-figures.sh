@@ -10,8 +10,8 @@
 #   ae-histogram-1920x1080.*      queued, histogram metering with auto exposure
 #   aa-MODE-1920x1080.*           queued, each anti-aliasing method's passes (fxaa, smaa, taa, taa+smaa)
 #   prefilter-KERNEL-SIZE-rN.*    queued, the bloom prefilter kernels against each other (taps in 2x2 and 4x4
-#                                 blocks, shared-memory tiles of texels, taps shared in a group), ROUNDS
-#                                 interleaved rounds
+#                                 blocks, shared-memory tiles of texels, taps shared in a group, filtered
+#                                 or from texels), ROUNDS interleaved rounds
 #   cli.txt                       `photopic image` over a 1080p EXR sequence (AE + bloom + ACES): wall time and,
 #                                 from -v, the median milliseconds a frame spends in each stage
 # Usage: scripts/gpu-figures.sh OUT PHOTOPIC...   PHOTOPIC is the command that runs photopic (a path, or a
@@ -75,12 +75,13 @@ for mode in fxaa smaa taa taa+smaa; do
 done
 for round in $(seq "$rounds"); do
     for size in "${sizes[@]}"; do
-        for kernel in taps2 taps4 tiles shared; do
+        for kernel in taps2 taps4 tiles shared shared-texels; do
             case $kernel in
             taps2) env=(PHOTOPIC_BLOOM_PREFILTER=taps PHOTOPIC_BLOOM_BLOCK_SIDE=2) ;;
             taps4) env=(PHOTOPIC_BLOOM_PREFILTER=taps PHOTOPIC_BLOOM_BLOCK_SIDE=4) ;;
             tiles) env=(PHOTOPIC_BLOOM_PREFILTER=tiles PHOTOPIC_BLOOM_BLOCK_SIDE=2) ;;
             shared) env=(PHOTOPIC_BLOOM_PREFILTER=shared PHOTOPIC_BLOOM_BLOCK_SIDE=2) ;;
+            shared-texels) env=(PHOTOPIC_BLOOM_PREFILTER=shared-texels PHOTOPIC_BLOOM_BLOCK_SIDE=2) ;;
             esac
             step "prefilter-$kernel-$size-r$round" env "${env[@]}" "${photopic[@]}" bench --size "$size" \
                 --frames "$frames" --warmup 20 --queue-ahead --json "$out/prefilter-$kernel-$size-r$round.json"

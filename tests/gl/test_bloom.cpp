@@ -212,7 +212,7 @@ TEST_F(GlTest, BloomDownsampleLevelsMatchTheCpuFilter) {
     for (const Kernels kernels :
          {Kernels{1, BloomPrefilterKernel::Taps}, Kernels{2, BloomPrefilterKernel::Taps},
           Kernels{4, BloomPrefilterKernel::Taps}, Kernels{2, BloomPrefilterKernel::Tiles},
-          Kernels{2, BloomPrefilterKernel::SharedTaps}}) {
+          Kernels{2, BloomPrefilterKernel::SharedTaps}, Kernels{2, BloomPrefilterKernel::SharedTexels}}) {
         const int side = kernels.side;
         for (const Case& k : cases) {
             const ImageF image = fireflyField(k.width, k.height);
@@ -281,8 +281,9 @@ TEST_F(GlTest, TiledPrefilterMatchesTheFilteredTapsOnHostileScenes) {
             BloomSettings settings;
             settings.mode = mode;
             std::vector<ImageF> level0;
-            for (const BloomPrefilterKernel kernel : {BloomPrefilterKernel::Taps, BloomPrefilterKernel::Tiles,
-                                                      BloomPrefilterKernel::SharedTaps}) {
+            for (const BloomPrefilterKernel kernel :
+                 {BloomPrefilterKernel::Taps, BloomPrefilterKernel::Tiles, BloomPrefilterKernel::SharedTaps,
+                  BloomPrefilterKernel::SharedTexels}) {
                 BloomPass pass;
                 pass.setBlockSide(2);
                 pass.setPrefilterKernel(kernel);
@@ -304,7 +305,7 @@ TEST_F(GlTest, TiledPrefilterMatchesTheFilteredTapsOnHostileScenes) {
                     worst = std::max(worst, std::abs(tiled.rgba[i] - taps.rgba[i]) / allowed);
                     largest = std::max(largest, tiled.rgba[i]);
                 }
-                const char* name = k == 1 ? "tiles" : "shared taps";
+                const char* name = k == 1 ? "tiles" : k == 2 ? "shared taps" : "shared texels";
                 EXPECT_LT(worst, 1.0f) << size.width << "x" << size.height << " " << name;
                 // The 3e38 block's boxes are clamped, not dropped as an overflow would make them.
                 EXPECT_GT(largest, 1000.0f) << size.width << "x" << size.height << " " << name;
@@ -332,6 +333,8 @@ TEST_F(GlTest, BloomEnvironmentOverridesPickTheKernels) {
     EXPECT_EQ(overridden.prefilterKernel(), BloomPrefilterKernel::Tiles);
     setenv("PHOTOPIC_BLOOM_PREFILTER", "shared", 1);
     EXPECT_EQ(BloomPass().prefilterKernel(), BloomPrefilterKernel::SharedTaps);
+    setenv("PHOTOPIC_BLOOM_PREFILTER", "shared-texels", 1);
+    EXPECT_EQ(BloomPass().prefilterKernel(), BloomPrefilterKernel::SharedTexels);
     setenv("PHOTOPIC_BLOOM_BLOCK_SIDE", "3", 1);
     setenv("PHOTOPIC_BLOOM_PREFILTER", "fast", 1);
     const BloomPass ignored;

@@ -41,6 +41,8 @@ const char* bloomPrefilterKernelName(BloomPrefilterKernel kernel) {
         return "tiles";
     case BloomPrefilterKernel::SharedTaps:
         return "shared";
+    case BloomPrefilterKernel::SharedTexels:
+        return "shared-texels";
     }
     return "taps";
 }
@@ -69,15 +71,17 @@ void BloomPass::applyEnvironmentOverrides() {
     }
     if (const auto value = environmentValue("PHOTOPIC_BLOOM_PREFILTER")) {
         const BloomPrefilterKernel kernels[] = {BloomPrefilterKernel::Taps, BloomPrefilterKernel::Tiles,
-                                                BloomPrefilterKernel::SharedTaps};
+                                                BloomPrefilterKernel::SharedTaps,
+                                                BloomPrefilterKernel::SharedTexels};
         const auto* kernel = std::ranges::find_if(
             kernels, [&](BloomPrefilterKernel k) { return *value == bloomPrefilterKernelName(k); });
         if (kernel != std::end(kernels)) {
             setPrefilterKernel(*kernel);
-            const char* reads = *kernel == BloomPrefilterKernel::Tiles ? "tiles of unfiltered scene texels"
-                                : *kernel == BloomPrefilterKernel::SharedTaps
-                                    ? "filtered taps shared in a group"
-                                    : "filtered taps";
+            const char* reads =
+                *kernel == BloomPrefilterKernel::Tiles          ? "tiles of unfiltered scene texels"
+                : *kernel == BloomPrefilterKernel::SharedTaps   ? "filtered taps shared in a group"
+                : *kernel == BloomPrefilterKernel::SharedTexels ? "unfiltered taps shared in a group"
+                                                                : "filtered taps";
             warnOnce("bloom-prefilter",
                      fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: the bloom prefilter reads {}", *value, reads));
         } else {
@@ -102,6 +106,11 @@ void BloomPass::setPrefilterKernel(BloomPrefilterKernel kernel) {
     case BloomPrefilterKernel::SharedTaps:
         mPrefilterTiled = makeComputeProgram(
             kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {"SHARED_TAPS", tile}}));
+        break;
+    case BloomPrefilterKernel::SharedTexels:
+        mPrefilterTiled = makeComputeProgram(
+            kDown, bindingDefines(
+                       {{"PREFILTER", "1"}, {"KARIS", "1"}, {"SHARED_TAPS", tile}, {"SHARED_TEXELS", "1"}}));
         break;
     }
 }
@@ -195,7 +204,7 @@ const Texture& BloomPass::execute(const Inputs& in) {
         // Tiles read every scene texel of a half-size level 0 (taps one texel apart); shared taps need only
         // the half.
         const bool tiles = i == 0 && half && mPrefilterTiled.valid() &&
-                           (mPrefilterKernel == BloomPrefilterKernel::SharedTaps || step == 1.0f);
+                           (mPrefilterKernel != BloomPrefilterKernel::Tiles || step == 1.0f);
         const Program& program = tiles    ? mPrefilterTiled
                                  : i == 0 ? (blocks ? mPrefilterBlocks : mPrefilter)
                                           : (blocks ? mDownsampleBlocks : mDownsample);

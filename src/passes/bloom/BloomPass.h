@@ -47,8 +47,12 @@ enum class BloomPrefilterKernel {
     Taps,       ///< filtered taps in blocks of blockSide() x blockSide() target texels
     Tiles,      ///< 16x16 targets a group from unfiltered scene texels in shared memory (divisor 2 only)
     SharedTaps, ///< 16x16 targets a group from filtered taps fetched once into shared memory
+    /// SharedTaps with each tap the mean of its 2x2 texels from unfiltered fetches (to measure the
+    /// filtering of wide texels apart from their reading)
+    SharedTexels,
 };
-/// "taps", "tiles" or "shared": the PHOTOPIC_BLOOM_PREFILTER value and the bench's name of `kernel`.
+/// "taps", "tiles", "shared" or "shared-texels": the PHOTOPIC_BLOOM_PREFILTER value and the bench's name of
+/// `kernel`.
 [[nodiscard]] const char* bloomPrefilterKernelName(BloomPrefilterKernel kernel);
 
 class BloomPass final : public FramePass {
@@ -63,8 +67,8 @@ public:
     };
     /// The kernels are the renderer's defaults (setBlockSide, setPrefilterKernel) unless the environment says
     /// otherwise, for measuring them against each other on one device: PHOTOPIC_BLOOM_BLOCK_SIDE=1|2|4,
-    /// PHOTOPIC_BLOOM_PREFILTER=taps|tiles|shared (an override in force is reported once; a bad value is
-    /// reported and ignored).
+    /// PHOTOPIC_BLOOM_PREFILTER=taps|tiles|shared|shared-texels (an override in force is reported once; a bad
+    /// value is reported and ignored).
     BloomPass();
     /// Target texels per side of an invocation's block where a level is exactly half its source: 4 (16 texels
     /// from 61 shared taps) on a software renderer, 2 (4 texels from 25) on a GPU, where holding 61 taps at
@@ -74,7 +78,7 @@ public:
     /// three.
     void setBlockSide(int side);
     [[nodiscard]] int blockSide() const { return mBlockSide; }
-    /// The prefilter's kernel (BloomPrefilterKernel): Taps by default. Tests run all three.
+    /// The prefilter's kernel (BloomPrefilterKernel): Taps by default. Tests run them all.
     void setPrefilterKernel(BloomPrefilterKernel kernel);
     [[nodiscard]] BloomPrefilterKernel prefilterKernel() const { return mPrefilterKernel; }
     /// The invocation shape the programs were built with (pixelGroup() when the pass was made).
@@ -106,7 +110,7 @@ private:
     /// mBlockSide target texels per invocation sharing their taps, for a target exactly half its source.
     Program mPrefilter, mPrefilterBlocks;
     BloomPrefilterKernel mPrefilterKernel = BloomPrefilterKernel::Taps;
-    Program mPrefilterTiled; ///< the Tiles or SharedTaps program while one of them is the kernel
+    Program mPrefilterTiled; ///< the program of a kernel other than Taps while it is the kernel
     Program mDownsample, mDownsampleBlocks;
     int mBlockSide = 2;
     Program mUpsample;

@@ -259,6 +259,8 @@ void main() {
 // and (S + 1)^2 odd taps under a group's S x S targets is fetched once: 2.4 filtered fetches a target texel
 // for S = 16, where blocks of 2x2 targets take 6.25 and of 4x4 take 3.8. The boxes and their weights are
 // the taps' (box() and combine()), so the result is the blocks' to the rounding of the tap coordinates.
+// With SHARED_TEXELS no tap is filtered: each is the mean of the 2x2 texels around its texel corner, from
+// four unfiltered fetches (9.4 a target texel), for telling the filtering of wide texels from their reading.
 const int kTile = SHARED_TAPS;
 const int kEven = kTile + 2; // even taps per side: the tile's centres and one past each edge
 const int kOdd = kTile + 1;  // odd taps per side: one before the tile's first centre, then one per centre
@@ -269,9 +271,27 @@ const int kTaps = kEvenTaps + kOdd * kOdd;
 const int kInvocations = kTile * kTile;
 const int kRounds = (kTaps + kInvocations - 1) / kInvocations;
 
+#ifdef SHARED_TEXELS
+// The bilinear tap at the texel corner `corner` (the corner below and left of texel `corner`), clamped to the
+// edge as the sampler clamps: the mean of the 2x2 texels around it, quartered before the sum as box() does.
+vec3 cornerTap(ivec2 corner, ivec2 last) {
+    ivec2 lo = clamp(corner - 1, ivec2(0), last), hi = clamp(corner, ivec2(0), last);
+    vec3 a = texelFetch(uSource, lo, 0).rgb, b = texelFetch(uSource, ivec2(hi.x, lo.y), 0).rgb;
+    vec3 c = texelFetch(uSource, ivec2(lo.x, hi.y), 0).rgb, d = texelFetch(uSource, hi, 0).rgb;
+    precise vec3 mean = a * 0.25 + b * 0.25 + c * 0.25 + d * 0.25;
+    return mean;
+}
+#endif
+
 void main() {
     ivec2 tile = ivec2(gl_WorkGroupID.xy) * kTile;
     int invocation = int(gl_LocalInvocationIndex);
+#ifdef SHARED_TEXELS
+    ivec2 last = textureSize(uSource, 0) - 1;
+    // Source texels per tap step (1, or 2 where level 0 is a quarter of the scene): the target is half the
+    // source in tap steps.
+    ivec2 step = textureSize(uSource, 0) / (2 * imageSize(uTarget));
+#endif
     // Constant bounds: the compiler may issue an invocation's fetches together. Taps past the texture's edge
     // clamp to it as the blocks' taps do.
     vec3 fetched[kRounds];
@@ -280,8 +300,15 @@ void main() {
         bool even = k < kEvenTaps;
         int side = even ? kEven : kOdd, q = even ? k : k - kEvenTaps;
         // Tap (i, j) of either grid belongs to target tile + (i, j) - 1.
-        vec2 centre = (vec2(tile + ivec2(q % side, q / side) - 1) + 0.5) * uTargetTexel;
+        ivec2 target = tile + ivec2(q % side, q / side) - 1;
+#ifdef SHARED_TEXELS
+        // A target's centre is the texel corner (2 target + 1) steps from the source's origin.
+        ivec2 corner = (2 * target + (even ? 1 : 2)) * step;
+        fetched[n] = k < kTaps ? cornerTap(corner, last) : vec3(0.0);
+#else
+        vec2 centre = (vec2(target) + 0.5) * uTargetTexel;
         fetched[n] = k < kTaps ? tap(even ? centre : centre + uSourceStep) : vec3(0.0);
+#endif
     }
     for (int n = 0; n < kRounds; ++n) {
         int k = invocation + n * kInvocations;
