@@ -317,8 +317,11 @@ TEST_F(GlTest, TiledPrefilterMatchesTheFilteredTapsOnHostileScenes) {
 // PHOTOPIC_BLOOM_BLOCK_SIDE and PHOTOPIC_BLOOM_PREFILTER pick the kernels of a pass made while they are set
 // (for measuring them against each other on one device); a bad value leaves the renderer's defaults.
 TEST_F(GlTest, BloomEnvironmentOverridesPickTheKernels) {
+    // Unset before (a run of the suite with an override set still tests the defaults) and after.
     struct Unset {
-        ~Unset() {
+        Unset() { clear(); }
+        ~Unset() { clear(); }
+        static void clear() {
             unsetenv("PHOTOPIC_BLOOM_BLOCK_SIDE");
             unsetenv("PHOTOPIC_BLOOM_PREFILTER");
         }
