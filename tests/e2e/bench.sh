@@ -12,7 +12,8 @@ for pass in sanitize "bloom prefilter" "bloom down 1" "bloom up 0" "composite + 
     check "bench lists '$pass'" contains "$pass"
 done
 check "bench prints GB/s" contains "GB/s"
-check "bench measures its copy reference" contains "bandwidth reference: rgba32f copy 256x144"
+check "bench measures its copy reference on the frame" contains "bandwidth reference: rgba32f copy of the frame 256x144"
+check "bench also copies a texture of one value" contains "of a texture of one value:"
 check "bench prints the fraction of the copy" contains "of copy"
 check "bench times the whole frame" contains "whole frame"
 check "JSON written" test -s "$S/bench.json"
@@ -21,6 +22,10 @@ check "JSON has the passes" grep -q '"medianGpuMs"' "$S/bench.json"
 check "JSON has each pass's fraction of the copy" grep -q '"fractionOfCopy"' "$S/bench.json"
 check "JSON names the device and the driver" grep -q '"driver"' "$S/bench.json"
 check "JSON has the copy reference" grep -q '"copyReference"' "$S/bench.json"
+check "the reference copies the frame; the one-value copy is beside it, same format and bytes" python3 -c "import json,sys; \
+d=json.load(open('$S/bench.json')); c=d['copyReference']; k=d['constantCopy']; \
+sys.exit(0 if c['source'] == 'frame' and k['source'] == 'constant' and c['format'] == k['format'] == 'rgba32f' \
+and c['bytesMoved'] == k['bytesMoved'] == 2 * 256 * 144 * 16 and c['medianMs'] > 0 and k['medianMs'] > 0 else 1)"
 check "JSON has the whole frame's time" grep -q '"frameMedianGpuMs"' "$S/bench.json"
 expect 0 "bench of the default chain" -- "$PHOTOPIC" bench --size 64x64 --frames 2 --json "$S/default.json"
 # Nothing is metered with auto exposure off: the metering line must not claim the image's bytes.
@@ -58,7 +63,7 @@ expect 0 "bench with the queue kept ahead" -- "$PHOTOPIC" bench --size 64x64 --f
 check "bench says how long the busy work ran and where it held" contains "of untimed GPU work before each timed frame"
 check "bench also times the frame as submitted to an idle GPU" contains "whole frame, as submitted"
 check "JSON has the busy work and the frames it held on" python3 -c "import json,sys; q=json.load(open('$S/ahead.json'))['queueAhead']; \
-sys.exit(0 if q['busyMs'] >= 0.5 and q['framesTimed'] == 3 + 3 + 3 and 0 <= q['framesHeld'] <= q['framesTimed'] \
+sys.exit(0 if q['busyMs'] >= 0.5 and q['framesTimed'] == 3 + 3 + 3 + 3 and 0 <= q['framesHeld'] <= q['framesTimed'] \
 and q['frameAsSubmittedMedianGpuMs'] > 0 else 1)"
 expect 2 "--queue-ahead and --sync exclude each other" -- "$PHOTOPIC" bench --size 64x64 --queue-ahead --sync
 expect 2 "--queue-ahead does not time the canvas scene" -- "$PHOTOPIC" bench --scene canvas --queue-ahead
