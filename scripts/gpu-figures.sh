@@ -6,6 +6,8 @@
 #   bench-SIZE-submitted.*        the default chain as the CLI submits it (JSON and table)
 #   bench-SIZE-queued.*           the same with --queue-ahead: the GPU's own work, not its waits for the CPU
 #   bench-SIZE-rgba16f.*          queued, the scene colour in half floats as renderers hand it over
+#   bench-SIZE-natural[-rgba16f].* queued, a photograph (NATURAL) mirrored to the size instead of the synthetic
+#                                 frame, whose flat areas a GPU that compresses memory moves for less
 #   bench-1920x1080-gl-debug.txt  a KHR_debug context: the driver's messages are in the log
 #   ae-histogram-1920x1080.*      queued, histogram metering with auto exposure
 #   aa-MODE-1920x1080.*           queued, each anti-aliasing method's passes (fxaa, smaa, taa, taa+smaa)
@@ -17,7 +19,7 @@
 # Usage: scripts/gpu-figures.sh OUT PHOTOPIC...   PHOTOPIC is the command that runs photopic (a path, or a
 # wrapper and its arguments). Environment: GL_TESTS (the command that runs photopic_gl_tests; unset: skipped),
 # FRAMES (timed bench frames, 200), SIZES ("1920x1080 3840x2160"), ROUNDS (2), SEQ_FRAMES (48), SEQ_SIZE
-# (1920x1080). On a software renderer, FRAMES=3 SIZES=320x180 ROUNDS=1 SEQ_FRAMES=4 SEQ_SIZE=320x180 checks
+# (1920x1080), NATURAL (data/GoldenGate.exr: run from the repository's root). On a software renderer, FRAMES=3 SIZES=320x180 ROUNDS=1 SEQ_FRAMES=4 SEQ_SIZE=320x180 checks
 # that the script runs; its figures mean nothing there.
 set -uo pipefail
 if [ $# -lt 2 ]; then
@@ -32,6 +34,7 @@ read -r -a sizes <<< "${SIZES:-1920x1080 3840x2160}"
 rounds=${ROUNDS:-2}
 seq_frames=${SEQ_FRAMES:-48}
 seq_size=${SEQ_SIZE:-1920x1080}
+natural=${NATURAL:-data/GoldenGate.exr}
 mkdir -p "$out"
 failures=0
 
@@ -66,6 +69,9 @@ for size in "${sizes[@]}"; do
     bench "bench-$size-submitted" --size "$size"
     bench "bench-$size-queued" --size "$size" --queue-ahead
     bench "bench-$size-rgba16f" --size "$size" --queue-ahead --input-format rgba16f
+    # A natural image mirrored to the size: no large flat areas for a GPU's memory compression to take.
+    bench "bench-$size-natural" --size "$size" --queue-ahead --input "$natural"
+    bench "bench-$size-natural-rgba16f" --size "$size" --queue-ahead --input "$natural" --input-format rgba16f
 done
 step bench-1920x1080-gl-debug "${photopic[@]}" bench --size 1920x1080 --frames 20 --gl-debug -v
 bench ae-histogram-1920x1080 --size 1920x1080 --queue-ahead --set autoExposure.enabled=true \

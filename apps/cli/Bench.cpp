@@ -36,6 +36,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <memory>
 
@@ -57,7 +58,8 @@ namespace {
 /// The table as JSON, through the io library's atomic writer: flushed to disk and renamed into place, so a
 /// reader never sees half a table. Throws IoError naming the file.
 void writeJsonAtomically(const fs::path& path, const nlohmann::json& doc) {
-    writeTextFile(path, doc.dump(2) + "\n");
+    // A file name need not be UTF-8 (the input's is in the document): its stray bytes become U+FFFD.
+    writeTextFile(path, doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
 /// `--set canvas.key=value` into the canvas scene's settings; any other key is an error (this bench shades
@@ -275,6 +277,10 @@ ImageF benchInput(const BenchOptions& options) {
     if (options.input.empty()) {
         const auto [w, h] = parseSize(options.size, 8);
         return makeSyntheticHdr(w, h);
+    }
+    if (options.sizeGiven) {
+        const auto [w, h] = parseSize(options.size, 8); // before the decode: a bad size fails at once
+        return mirroredTo(readInput(options.input, options.maxPixels), w, h);
     }
     return readInput(options.input, options.maxPixels);
 }
@@ -721,9 +727,12 @@ int runBench(const BenchOptions& options) {
 
     const PipelineStatus t = pipeline.status();
     const ContextInfo& info = context.info();
-    std::printf("photopic bench: %dx%d %s input, %d frames after %d warm-up, %s\n", image.width, image.height,
-                imageFormatName(input.format()).c_str(), options.frames, options.warmup,
-                info.renderer.c_str());
+    const std::string source = options.input.empty() ? std::string("synthetic")
+                               : options.sizeGiven   ? options.input.string() + ", mirrored to this size"
+                                                     : options.input.string();
+    std::printf("photopic bench: %dx%d %s input (%s), %d frames after %d warm-up, %s\n", image.width,
+                image.height, imageFormatName(input.format()).c_str(), source.c_str(), options.frames,
+                options.warmup, info.renderer.c_str());
     std::printf("colour path: %s (%s), quality %s, bloom levels %d (prefilter %s, blocks of %d)\n",
                 t.path == ColorPath::Hdr ? "HDR" : "LDR", t.pathReason.c_str(),
                 std::string(qualityNames()[std::size_t(t.quality)]).c_str(), t.bloomLevels,
@@ -776,6 +785,9 @@ int runBench(const BenchOptions& options) {
             {"driver", info.version},
             {"platform", info.platform},
             {"inputFormat", imageFormatName(input.format())},
+            // "synthetic", or the --input file (mirrored to width x height when --size was given)
+            {"input", options.input.empty() ? std::string("synthetic") : options.input.string()},
+            {"inputMirrored", !options.input.empty() && options.sizeGiven},
             {"copyReference", copy.json()},
             {"constantCopy", constantCopy.json()},
             {"colourPath", t.path == ColorPath::Hdr ? "hdr" : "ldr"},

@@ -11,7 +11,8 @@
 namespace photopic::cli {
 
 struct BenchOptions {
-    std::string size = "1920x1080"; ///< WxH of the synthetic frame (ignored with --input)
+    std::string size = "1920x1080"; ///< WxH of the synthetic frame, or of --input mirrored to fill it
+    bool sizeGiven = false;         ///< --size was given: with --input, the image is mirrored to that size
     int frames = 60;                ///< timed frames, after the warm-up
     int warmup = 5;                 ///< untimed frames first (shader compilation, first-use allocations)
     std::filesystem::path input;    ///< an HDR image instead of the synthetic frame

@@ -343,7 +343,12 @@ void addBenchCommand(CLI::App& app, Cli& c) {
     c.bench = app.add_subcommand("bench", "per-pass GPU timings (median ms, bytes moved, GB/s) over N "
                                           "frames of a synthetic HDR frame or --input FILE, or the canvas "
                                           "scene's shading paths (--scene canvas)");
-    c.bench->add_option("--size", c.benchOptions.size, "WxH of the synthetic frame")->capture_default_str();
+    c.bench
+        ->add_option("--size", c.benchOptions.size,
+                     "WxH of the synthetic frame; with --input, the image is mirrored (repeated, every other "
+                     "copy flipped) or cropped to this size, for natural content at any size")
+        ->each([&c](const std::string&) { c.benchOptions.sizeGiven = true; })
+        ->capture_default_str();
     c.bench->add_option("--frames", c.benchOptions.frames, "timed frames after the warm-up")
         ->check(CLI::Range(1, 100000))
         ->capture_default_str();
@@ -378,6 +383,7 @@ void addBenchCommand(CLI::App& app, Cli& c) {
     c.bench->footer("Examples:\n"
                     "  photopic bench --size 1920x1080 --frames 100\n"
                     "  photopic bench --input data/Desk.exr --json timings.json\n"
+                    "  photopic bench --input data/GoldenGate.exr --size 3840x2160 --queue-ahead\n"
                     "  photopic bench --scene canvas --set canvas.occupancy=0.3");
 }
 

@@ -1,6 +1,7 @@
 #include "scenes/SyntheticHdr.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace photopic {
 
@@ -44,6 +45,21 @@ ImageF makeSyntheticHdr(int width, int height) {
         }
     }
     return image;
+}
+
+ImageF mirroredTo(const ImageF& image, int width, int height) {
+    const auto mirror = [](int i, int n) {
+        const int m = i % (2 * n);
+        return m < n ? m : 2 * n - 1 - m;
+    };
+    ImageF out(width, height);
+    for (int y = 0; y < height; ++y) {
+        const int sy = mirror(y, image.height);
+        for (int x = 0; x < width; ++x) {
+            std::memcpy(out.at(x, y), image.at(mirror(x, image.width), sy), 4 * sizeof(float));
+        }
+    }
+    return out;
 }
 
 } // namespace photopic

@@ -47,6 +47,22 @@ d=json.load(open('$S/half.json')); f=json.load(open('$S/default.json')); \
 p=lambda d: [x for x in d['passes'] if x['name']=='bloom prefilter'][0]['bytesMoved']; \
 sys.exit(0 if d['inputFormat'] == 'rgba16f' and d['copyReference']['format'] == 'rgba16f' \
 and p(f) - p(d) == 64 * 64 * 8 else 1)"
+# A natural image: at its own size, or mirrored to --size (natural content at a benchmark's size).
+expect 0 "bench of an image at its own size" -- "$PHOTOPIC" bench --input "$DATA/GoldenGate.exr" --frames 1 \
+    --warmup 0 --json "$S/image.json"
+check "the image is named in the table" contains "1262x860 rgba32f input ($DATA/GoldenGate.exr)"
+check "the image at its own size in the JSON" python3 -c "import json,sys; d=json.load(open('$S/image.json')); \
+sys.exit(0 if (d['width'], d['height']) == (1262, 860) and d['input'].endswith('GoldenGate.exr') \
+and not d['inputMirrored'] else 1)"
+expect 0 "bench of an image mirrored to a size" -- "$PHOTOPIC" bench --input "$DATA/GoldenGate.exr" --size 2600x200 \
+    --frames 1 --warmup 0 --json "$S/mirrored.json"
+check "the mirroring is named in the table" contains "2600x200 rgba32f input ($DATA/GoldenGate.exr, mirrored to this size)"
+check "the mirrored image's size in the JSON" python3 -c "import json,sys; d=json.load(open('$S/mirrored.json')); \
+sys.exit(0 if (d['width'], d['height']) == (2600, 200) and d['inputMirrored'] else 1)"
+check "the synthetic frame is named as such" python3 -c "import json,sys; \
+sys.exit(0 if json.load(open('$S/default.json'))['input'] == 'synthetic' else 1)"
+expect 2 "a bad size with an image is bad input" -- "$PHOTOPIC" bench --input "$DATA/GoldenGate.exr" --size 2x2
+check "the size is named" contains "size '2x2'"
 expect 2 "an input format the bench does not make is refused" -- "$PHOTOPIC" bench --size 64x64 --input-format rgb9e5
 expect 0 "bench with the tiled prefilter" -- env PHOTOPIC_BLOOM_PREFILTER=tiles PHOTOPIC_BLOOM_BLOCK_SIDE=2 \
     "$PHOTOPIC" bench --size 64x64 --frames 2 --warmup 1 --json "$S/tiles.json"
