@@ -28,8 +28,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <deque>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -280,13 +280,14 @@ int runScene(const SceneOptions& options) {
     const DisplayEncoding encoding{.bitDepth = resolved.output.bitDepth, .jpegQuality = options.jpegQuality};
     outputs.sequence(framePath);
     // The frames stream as `photopic image`'s do: each frame's read starts once it is processed and finishes
-    // once the next one is, so the GPU ends a frame while the CPU renders the next one's inputs; frames are
-    // encoded and written on worker threads (a bounded number at once, their storage recycled), in order.
+    // once the next one is (one read buffer: the next read starts after it), so the GPU ends a frame while
+    // the CPU renders the next one's inputs; frames are encoded and written on worker threads (a bounded
+    // number at once, their storage recycled), in order.
     FrameWriter writer(outputs, std::size_t(std::max(defaultFramesInFlight() - 1, 1)), encoding,
                        FrameRecord::Sequence);
-    TextureReadback readback(2, "cli.scene");
-    std::deque<std::size_t> reading; ///< the frames whose reads are started, oldest first
-    const auto writeOldest = [&] {
+    TextureReadback readback(1, "cli.scene");
+    std::optional<std::size_t> reading; ///< the frame whose read is started
+    const auto writeRead = [&] {
         FrameImage image = writer.storage();
         if (options.format == "exr") {
             readback.finish(image.scene);
@@ -295,8 +296,8 @@ int runScene(const SceneOptions& options) {
         } else {
             readback.finish(image.display);
         }
-        const fs::path frame = framePath(reading.front());
-        reading.pop_front();
+        const fs::path frame = framePath(*reading);
+        reading.reset();
         writer.write(frame, std::move(image), [frame] { logDebug("wrote {}", frame.string()); });
     };
     const float dt = 1.0f / options.fps;
@@ -318,16 +319,16 @@ int runScene(const SceneOptions& options) {
                 writeExrFrame(path, sceneExr(inputs, pipeline.jitter(), previousJitter));
                 outputs.wrote(path);
             }
+            if (reading) {
+                writeRead(); // the frame written before this one
+            }
             if (options.format == "exr") {
                 readback.start(pipeline.sceneReferred(), GL_FLOAT);
             } else {
                 readback.start(display, encoding.bitDepth == 16 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_BYTE);
             }
-            reading.push_back(std::size_t(i / every));
-            logDebug("frame {} -> {}", i, framePath(reading.back()).string());
-            if (reading.size() == std::size_t(readback.slotCount())) {
-                writeOldest(); // the frame before this one
-            }
+            reading = std::size_t(i / every);
+            logDebug("frame {} -> {}", i, framePath(*reading).string());
         }
         telemetry.sceneValues(std::uint64_t(i), std::move(values));
         telemetry.take(pipeline, std::uint64_t(i), i + 1 == options.frames);
@@ -338,8 +339,8 @@ int runScene(const SceneOptions& options) {
         }
         progress.advance();
     }
-    while (!reading.empty()) {
-        writeOldest();
+    if (reading) {
+        writeRead();
     }
     writer.finish();
     telemetry.commit(std::uint64_t(options.frames), pipeline.droppedTelemetry());
