@@ -36,7 +36,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <map>
 #include <memory>
 
@@ -527,10 +526,10 @@ std::vector<float> sampleRows(const Texture& texture) {
 CopyReference measureCopy(const Texture& source, const char* what, const BenchOptions& options,
                           QueueAhead* ahead) {
     const GLenum format = source.format();
-    const std::string name = imageFormatName(format);
     if (format != GL_RGBA32F && format != GL_RGBA16F && format != GL_RGBA8) {
-        throw std::logic_error("bench: no reference copy of format " + name);
+        throw std::logic_error(fmt::format("bench: no reference copy of GL format {:#x}", format));
     }
+    const std::string name = imageFormatName(format);
     const Extent e = source.extent();
     const Program program = makeComputeProgram("gl/bandwidth_copy.comp.glsl", {{"FORMAT", name}});
     const Texture target({.extent = e, .format = format, .debugName = "bench copy target"});
@@ -727,12 +726,13 @@ int runBench(const BenchOptions& options) {
 
     const PipelineStatus t = pipeline.status();
     const ContextInfo& info = context.info();
-    const std::string source = options.input.empty() ? std::string("synthetic")
-                               : options.sizeGiven   ? options.input.string() + ", mirrored to this size"
-                                                     : options.input.string();
-    std::printf("photopic bench: %dx%d %s input (%s), %d frames after %d warm-up, %s\n", image.width,
-                image.height, imageFormatName(input.format()).c_str(), source.c_str(), options.frames,
-                options.warmup, info.renderer.c_str());
+    // "synthetic", or the --input file (mirrored to the frame's size when --size was given)
+    const std::string inputName = options.input.empty() ? std::string("synthetic") : options.input.string();
+    const bool mirrored = !options.input.empty() && options.sizeGiven;
+    std::printf("photopic bench: %dx%d %s input (%s%s), %d frames after %d warm-up, %s\n", image.width,
+                image.height, imageFormatName(input.format()).c_str(), inputName.c_str(),
+                mirrored ? ", mirrored to this size" : "", options.frames, options.warmup,
+                info.renderer.c_str());
     std::printf("colour path: %s (%s), quality %s, bloom levels %d (prefilter %s, blocks of %d)\n",
                 t.path == ColorPath::Hdr ? "HDR" : "LDR", t.pathReason.c_str(),
                 std::string(qualityNames()[std::size_t(t.quality)]).c_str(), t.bloomLevels,
@@ -785,9 +785,8 @@ int runBench(const BenchOptions& options) {
             {"driver", info.version},
             {"platform", info.platform},
             {"inputFormat", imageFormatName(input.format())},
-            // "synthetic", or the --input file (mirrored to width x height when --size was given)
-            {"input", options.input.empty() ? std::string("synthetic") : options.input.string()},
-            {"inputMirrored", !options.input.empty() && options.sizeGiven},
+            {"input", inputName},
+            {"inputMirrored", mirrored},
             {"copyReference", copy.json()},
             {"constantCopy", constantCopy.json()},
             {"colourPath", t.path == ColorPath::Hdr ? "hdr" : "ldr"},

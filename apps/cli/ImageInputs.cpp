@@ -197,7 +197,7 @@ SlotLayout slotLayout(const DecodedFrame& frame, bool halfColor) {
 // The writers below fill slot memory (write-only, front to back) with image rows bottom to top, GL's order,
 // so that texel (x, y) is image pixel (x, height - 1 - y), as Texture::uploadRgba32f has it.
 
-/// `components` floats a pixel as they are (the depth's, for an R32F texture).
+/// `components` floats a pixel as they are, for a 32F texture (a float colour, the depth).
 void writeFloatRows(std::byte* out, const float* values, Extent extent, int components) {
     const std::size_t row = std::size_t(extent.width) * std::size_t(components);
     for (int y = 0; y < extent.height; ++y) {

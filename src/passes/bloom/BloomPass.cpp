@@ -9,10 +9,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace photopic {
 
@@ -31,20 +31,43 @@ ShaderDefines programDefines(ShaderDefines defines, PixelGroup group) {
     return bindingDefines(withPixelGroup(std::move(defines), group));
 }
 
+/// Each prefilter kernel: its name (PHOTOPIC_BLOOM_PREFILTER, the bench), what it reads (the override's
+/// report) and the #defines that pick it in bloom_downsample.comp.glsl (besides PREFILTER and KARIS).
+struct PrefilterKernelInfo {
+    BloomPrefilterKernel kernel;
+    const char* name;
+    const char* reads;
+    ShaderDefines defines; ///< none for Taps, whose programs setBlockSide makes
+};
+
+const std::vector<PrefilterKernelInfo>& prefilterKernels() {
+    static const std::vector<PrefilterKernelInfo> kernels = [] {
+        const std::string tile = std::to_string(kTile);
+        return std::vector<PrefilterKernelInfo>{
+            {BloomPrefilterKernel::Taps, "taps", "filtered taps", {}},
+            {BloomPrefilterKernel::Tiles, "tiles", "tiles of unfiltered scene texels", {{"TILES", tile}}},
+            {BloomPrefilterKernel::SharedTaps,
+             "shared",
+             "filtered taps shared in a group",
+             {{"SHARED_TAPS", tile}}},
+            {BloomPrefilterKernel::SharedTexels,
+             "shared-texels",
+             "unfiltered taps shared in a group",
+             {{"SHARED_TAPS", tile}, {"SHARED_TEXELS", "1"}}},
+        };
+    }();
+    return kernels;
+}
+
+const PrefilterKernelInfo& prefilterKernelInfo(BloomPrefilterKernel kernel) {
+    const auto& kernels = prefilterKernels();
+    return *std::ranges::find(kernels, kernel, &PrefilterKernelInfo::kernel);
+}
+
 } // namespace
 
 const char* bloomPrefilterKernelName(BloomPrefilterKernel kernel) {
-    switch (kernel) {
-    case BloomPrefilterKernel::Taps:
-        return "taps";
-    case BloomPrefilterKernel::Tiles:
-        return "tiles";
-    case BloomPrefilterKernel::SharedTaps:
-        return "shared";
-    case BloomPrefilterKernel::SharedTexels:
-        return "shared-texels";
-    }
-    return "taps";
+    return prefilterKernelInfo(kernel).name;
 }
 
 BloomPass::BloomPass()
@@ -70,49 +93,34 @@ void BloomPass::applyEnvironmentOverrides() {
         }
     }
     if (const auto value = environmentValue("PHOTOPIC_BLOOM_PREFILTER")) {
-        const BloomPrefilterKernel kernels[] = {BloomPrefilterKernel::Taps, BloomPrefilterKernel::Tiles,
-                                                BloomPrefilterKernel::SharedTaps,
-                                                BloomPrefilterKernel::SharedTexels};
-        const auto* kernel = std::ranges::find_if(
-            kernels, [&](BloomPrefilterKernel k) { return *value == bloomPrefilterKernelName(k); });
-        if (kernel != std::end(kernels)) {
-            setPrefilterKernel(*kernel);
-            const char* reads =
-                *kernel == BloomPrefilterKernel::Tiles          ? "tiles of unfiltered scene texels"
-                : *kernel == BloomPrefilterKernel::SharedTaps   ? "filtered taps shared in a group"
-                : *kernel == BloomPrefilterKernel::SharedTexels ? "unfiltered taps shared in a group"
-                                                                : "filtered taps";
+        const auto& kernels = prefilterKernels();
+        const auto kernel =
+            std::ranges::find_if(kernels, [&](const PrefilterKernelInfo& k) { return *value == k.name; });
+        if (kernel != kernels.end()) {
+            setPrefilterKernel(kernel->kernel);
             warnOnce("bloom-prefilter",
-                     fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: the bloom prefilter reads {}", *value, reads));
+                     fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: the bloom prefilter reads {}", *value,
+                                 kernel->reads));
         } else {
-            warnOnce(
-                "bloom-prefilter-bad",
-                fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: not 'taps', 'tiles' or 'shared'; ignored", *value));
+            std::string names;
+            for (const PrefilterKernelInfo& k : kernels) {
+                names += fmt::format("{}'{}'", names.empty() ? "" : ", ", k.name);
+            }
+            warnOnce("bloom-prefilter-bad",
+                     fmt::format("PHOTOPIC_BLOOM_PREFILTER={}: not one of {}; ignored", *value, names));
         }
     }
 }
 
 void BloomPass::setPrefilterKernel(BloomPrefilterKernel kernel) {
     mPrefilterKernel = kernel;
-    const std::string tile = std::to_string(kTile);
-    switch (kernel) {
-    case BloomPrefilterKernel::Taps:
+    ShaderDefines defines = prefilterKernelInfo(kernel).defines;
+    if (defines.empty()) {
         mPrefilterTiled = Program();
-        break;
-    case BloomPrefilterKernel::Tiles:
-        mPrefilterTiled =
-            makeComputeProgram(kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {"TILES", tile}}));
-        break;
-    case BloomPrefilterKernel::SharedTaps:
-        mPrefilterTiled = makeComputeProgram(
-            kDown, bindingDefines({{"PREFILTER", "1"}, {"KARIS", "1"}, {"SHARED_TAPS", tile}}));
-        break;
-    case BloomPrefilterKernel::SharedTexels:
-        mPrefilterTiled = makeComputeProgram(
-            kDown, bindingDefines(
-                       {{"PREFILTER", "1"}, {"KARIS", "1"}, {"SHARED_TAPS", tile}, {"SHARED_TEXELS", "1"}}));
-        break;
+        return;
     }
+    defines.insert(defines.begin(), {{"PREFILTER", "1"}, {"KARIS", "1"}});
+    mPrefilterTiled = makeComputeProgram(kDown, bindingDefines(std::move(defines)));
 }
 
 void BloomPass::setBlockSide(int side) {
