@@ -67,7 +67,7 @@ private:
 
 /// The GL textures frames are uploaded to: created when the extent (or the set of layers) changes, and
 /// re-uploaded every frame otherwise, so a sequence creates textures only for its first frame. Each frame's
-/// texels go through a ring of two persistently mapped unpack buffers (gl/UploadRing.h): written there in
+/// texels go through a persistently mapped unpack buffer (gl/UploadRing.h, one slot): written there in
 /// GL's row order (the half-float textures' texels as halves, rounded to nearest here rather than by the
 /// driver, whose roundings differ between drivers and between its own paths), then one glTextureSubImage2D
 /// a texture, which the GPU copies while the CPU moves on.
@@ -81,8 +81,11 @@ public:
     [[nodiscard]] FrameInputs upload(const DecodedFrame& frame, bool halfTexture = false);
 
 private:
-    /// Two: the CPU fills one slot while the GPU copies from the other.
-    static constexpr int kUploadSlots = 2;
+    /// One. A frame's copies from the slot are queued before its passes, and the next frame is written
+    /// there only once this one's passes are submitted and the next frame decoded: the wait is for the
+    /// copies alone, which are done by then (on llvmpipe a copy is done when its call returns). A second
+    /// slot waited for nothing and held another frame's texels: 16 MB of half colour at 1080p, 33 of float.
+    static constexpr int kUploadSlots = 1;
     UploadRing mRing;
     Texture mColor;
     Texture mDepth;

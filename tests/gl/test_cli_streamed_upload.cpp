@@ -3,7 +3,8 @@
 // the nearest half, ties to even (the half textures: core/HalfFloat.h's rounding, which the upload does on
 // the CPU because drivers convert floats to halves each their own way), for a half-float colour frame, a
 // float one, an odd size, and the depth, normals and motion layers; over several frames in a row, so that
-// both slots of the ring and the reuse of the first are exercised; the unpack buffer binding is left as it
+// the slot is reused once its fence has passed (and, on their own, a ring of two slots takes them in turn,
+// each texture holding what was written for it); the unpack buffer binding is left as it
 // was found, unbound; and the upload's calls pass the audit of what NVIDIA's driver reports (GlCallAudit.h:
 // no CPU read of a buffer).
 
@@ -14,6 +15,7 @@
 
 #include "core/HalfFloat.h"
 #include "gl/Objects.h"
+#include "gl/UploadRing.h"
 
 #include <cmath>
 #include <cstdint>
@@ -21,6 +23,7 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <set>
 #include <span>
 #include <string>
 #include <vector>
@@ -199,7 +202,7 @@ TEST_F(GlTest, CliStreamedUploadMatchesGlConversionOverConsecutiveFrames) {
     for (const Case c : {Case{97, 61, true, true}, Case{97, 61, false, false}, Case{64, 36, true, false},
                          Case{33, 17, true, true}}) {
         cli::InputTextures textures;
-        // Three frames: the ring's first slot, its second, and the first again once its fence has passed.
+        // Three frames through the one slot, each written once the copies from the frame before are done.
         for (unsigned frame = 0; frame < 3; ++frame) {
             const std::string what = std::to_string(c.width) + "x" + std::to_string(c.height) +
                                      (c.halfColor ? " half" : " float") +
@@ -225,6 +228,38 @@ TEST_F(GlTest, CliStreamedUploadLeavesTheUnpackBufferUnbound) {
     std::vector<float> back(4);
     glGetTextureImage(scratch.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(back.size() * sizeof(float)), back.data());
     EXPECT_EQ(back, texel);
+}
+
+TEST_F(GlTest, UploadRingTakesItsSlotsInTurn) {
+    // Five frames through two slots (the CLI uses one): the slots alternate, each written again only once
+    // the copies from its previous frame are done, and every texture holds the texels written for it.
+    const Extent extent{37, 11};
+    const std::size_t bytes = std::size_t(extent.width) * std::size_t(extent.height) * 4 * sizeof(float);
+    UploadRing ring(bytes, 2, "test.ring");
+    ASSERT_EQ(ring.slotCount(), 2);
+    std::vector<Texture> textures;
+    std::vector<std::vector<std::uint8_t>> written;
+    std::set<const std::byte*> slots;
+    std::mt19937 random(5u);
+    for (int frame = 0; frame < 5; ++frame) {
+        const std::span<std::byte> slot = ring.begin();
+        ASSERT_EQ(slot.size(), bytes);
+        slots.insert(slot.data());
+        std::vector<float> values(bytes / sizeof(float));
+        for (float& v : values)
+            v = std::uniform_real_distribution<float>(-100.0f, 100.0f)(random);
+        std::memcpy(slot.data(), values.data(), bytes);
+        written.emplace_back(bytes);
+        std::memcpy(written.back().data(), values.data(), bytes);
+        textures.emplace_back(
+            TextureCreateInfo{.extent = extent, .format = GL_RGBA32F, .debugName = "test.ring.texture"});
+        ring.upload(textures.back(), 0, GL_RGBA, GL_FLOAT);
+        ring.end();
+    }
+    EXPECT_EQ(slots.size(), 2u);
+    for (std::size_t frame = 0; frame < textures.size(); ++frame)
+        EXPECT_EQ(texels(textures[frame]), written[frame]) << "frame " << frame;
+    EXPECT_EQ(unpackBufferBinding(), 0);
 }
 
 } // namespace
