@@ -3,6 +3,7 @@
 
 #include "FuzzTargets.h"
 
+#include "core/HalfFloat.h"
 #include "io/ExrFrame.h"
 #include "io/ImageIO.h"
 
@@ -50,9 +51,10 @@ void decode(const std::uint8_t* data, std::size_t size, const char* name) {
 // EXR frames
 
 constexpr const char* kFrameName = "fuzz.exr";
-// A frame with its layers is read three times an input (alone, and into the storage each of two frames
-// before it left): a smaller bound than kLimits keeps that fast, still above the largest chunk (256 lines)
-// and the tiles the header check lets through.
+// A frame with its layers is read five times an input (alone, and into the storage each of two frames
+// before it left, by a reader of floats and by one that keeps half colour as halves): a smaller bound than
+// kLimits keeps that fast, still above the largest chunk (256 lines) and the tiles the header check lets
+// through.
 constexpr ImageReadLimits kFrameLimits{.maxPixels = 1 << 16};
 
 /// Bit for bit, NaNs included: the reader must give the same values whatever its storage held before.
@@ -77,10 +79,11 @@ bool sameCamera(const ExrCameraAttributes& a, const ExrCameraAttributes& b) {
 
 bool sameFrame(const ExrFrame& a, const ExrFrame& b) {
     return a.color.width == b.color.width && a.color.height == b.color.height &&
-           sameBits(a.color.rgba, b.color.rgba) && sameBits(a.depth, b.depth) &&
-           sameBits(a.normals, b.normals) && sameBits(a.motion, b.motion) && sameCamera(a.camera, b.camera) &&
-           a.channels == b.channels && a.attributes == b.attributes && a.displaySize == b.displaySize &&
-           a.dataOrigin == b.dataOrigin && a.halfColor == b.halfColor;
+           sameBits(a.color.rgba, b.color.rgba) && a.colorHalves.width == b.colorHalves.width &&
+           a.colorHalves.height == b.colorHalves.height && sameBits(a.colorHalves.rgba, b.colorHalves.rgba) &&
+           sameBits(a.depth, b.depth) && sameBits(a.normals, b.normals) && sameBits(a.motion, b.motion) &&
+           sameCamera(a.camera, b.camera) && a.channels == b.channels && a.attributes == b.attributes &&
+           a.displaySize == b.displaySize && a.dataOrigin == b.dataOrigin && a.halfColor == b.halfColor;
 }
 
 /// The frames a sequence reader's storage holds before the fuzzed one: a larger one with every layer and
@@ -174,6 +177,50 @@ void checkFrame(const ExrFrame& frame) {
     checkCamera([&] { return frameCamera(prime.frame, &frame.camera); });
 }
 
+/// `frame` with a colour kept as halves widened to floats (exactly), as a reader of floats gives it.
+ExrFrame widened(ExrFrame frame) {
+    if (!frame.colorHalves.empty()) {
+        frame.color = ImageF(frame.colorHalves.width, frame.colorHalves.height);
+        halfToFloat(frame.colorHalves.rgba.data(), frame.color.rgba.data(), frame.color.rgba.size());
+        frame.colorHalves = ImageH{};
+    }
+    return frame;
+}
+
+/// A reader that keeps half colour as halves, on the fuzzed bytes into storage a prime left: the same
+/// outcome as the float read on its own, halves only for a colour that is halves, and the same values.
+void readHalvesInto(std::span<const unsigned char> bytes, const std::optional<ExrFrame>& alone,
+                    const std::string& aloneError) {
+    ExrFrameReader reader(ExrFrameReader::Color::HalvesWhenStored);
+    ExrFrame storage;
+    for (const Prime& prime : primes()) {
+        reader.decode({reinterpret_cast<const unsigned char*>(prime.bytes.data()), prime.bytes.size()},
+                      "prime.exr", storage, kFrameLimits);
+        if (storage.colorHalves.empty() || !sameFrame(widened(storage), prime.frame))
+            broken("a half-colour prime read as halves differs from its floats");
+        try {
+            reader.decode(bytes, kFrameName, storage, kFrameLimits);
+        } catch (const IoError& e) {
+            if (alone)
+                broken(std::string("a read keeping halves failed where a read of floats did not: ") +
+                       e.what());
+            if (aloneError != e.what())
+                broken(std::string("a read keeping halves failed differently: ") + e.what());
+            if (!sameFrame(storage, ExrFrame{}))
+                broken("a failed read keeping halves left the frame half filled");
+            continue;
+        }
+        if (!alone)
+            broken("a read keeping halves succeeded where a read of floats failed: " + aloneError);
+        if (!storage.colorHalves.empty() && !storage.color.empty())
+            broken("a read keeping halves filled both colours");
+        if (!storage.colorHalves.empty() && !storage.halfColor)
+            broken("a colour kept as halves that the frame does not call half");
+        if (!sameFrame(widened(storage), *alone))
+            broken("a colour kept as halves differs from the floats read");
+    }
+}
+
 /// The sequence reader on the fuzzed bytes into `storage` (left by an earlier read): the same outcome as a
 /// read on its own, and on an error an empty frame.
 void readInto(ExrFrameReader& reader, std::span<const unsigned char> bytes, ExrFrame& storage,
@@ -234,6 +281,7 @@ void exrFrame(const std::uint8_t* data, std::size_t size) {
         readInto(reader, bytes, storage, alone, aloneError);
     }
     readPrime(reader, primes()[0], storage);
+    readHalvesInto(bytes, alone, aloneError);
 }
 
 } // namespace photopic::fuzz

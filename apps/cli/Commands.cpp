@@ -730,7 +730,7 @@ int runImage(const ImageOptions& options) {
     clock.restart("first decode");
 
     HeadlessContext context(commandContext());
-    requireTextureFits(inputs.front(), first.color.width, first.color.height); // before any GL object
+    requireTextureFits(inputs.front(), first.width(), first.height()); // before any GL object
     const std::unique_ptr<Pipeline> pipeline = makeImagePipeline(
         {.settings = settings, .forceLdr = options.forceLdr, .keepTelemetryHistory = telemetry.has_value()});
     InputTextures textures; // created for the first frame, re-uploaded for the others
@@ -767,8 +767,8 @@ int runImage(const ImageOptions& options) {
         clock.mark(StageClock::DecodeWait);
         clock.add(StageClock::Decode, reader.decodeMs());
         const auto start = std::chrono::steady_clock::now();
-        const int width = frame.color.width;
-        const int height = frame.color.height;
+        const int width = frame.width();
+        const int height = frame.height();
         requireTextureFits(inputs[i], width, height);
         const FrameTime time{.dt = dt, .frameIndex = i};
         if (frame.jittered) {

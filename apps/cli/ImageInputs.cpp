@@ -89,8 +89,8 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
     } catch (const IoError& e) {
         throw InputError(e.what());
     }
-    const int width = frame.color.width;
-    const int height = frame.color.height;
+    const int width = frame.width();
+    const int height = frame.height();
     try {
         out.camera = frameCamera(frame, mPrevious ? &*mPrevious : nullptr);
     } catch (const std::invalid_argument& e) {
@@ -137,7 +137,7 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
                  mPreviousJitter.value_or(glm::vec2(0.0f)), out.motion);
     }
     out.color = std::move(frame.color);
-    out.halfColor = frame.halfColor;
+    out.colorHalves = std::move(frame.colorHalves);
     mPrevious = frame.camera;
     mPreviousJitter = jitter;
     ++mIndex;
@@ -148,6 +148,8 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
 void InputDecoder::recycle(DecodedFrame&& frame) {
     if (frame.color.rgba.capacity() > mFrame.color.rgba.capacity())
         mFrame.color = std::move(frame.color);
+    if (frame.colorHalves.rgba.capacity() > mFrame.colorHalves.rgba.capacity())
+        mFrame.colorHalves = std::move(frame.colorHalves);
     if (frame.depth.capacity() > mFrame.depth.capacity())
         mFrame.depth = std::move(frame.depth);
     if (frame.normals.capacity() > mNormals.capacity())
@@ -178,7 +180,7 @@ struct SlotLayout {
 };
 
 SlotLayout slotLayout(const DecodedFrame& frame, bool halfColor) {
-    const std::size_t pixels = frame.color.pixelCount();
+    const std::size_t pixels = std::size_t(frame.width()) * std::size_t(frame.height());
     SlotLayout layout;
     const auto place = [&](std::size_t& offset, std::size_t texelBytes) {
         offset = layout.bytes;
@@ -207,7 +209,7 @@ void writeFloatRows(std::byte* out, const float* values, Extent extent, int comp
 }
 
 /// `components` floats a pixel as halves, rounded to nearest with ties to even (core/HalfFloat.h), for a
-/// 16F texture: the colour of a half EXR (halves exactly, so unchanged) and the motion. The rounding is
+/// 16F texture: the motion. The rounding is
 /// done here because GL's conversion of floats is the driver's own: Mesa's RGBA16F store rounds toward
 /// zero and clamps, and NVIDIA's rounds floats from an unpack buffer otherwise than from client memory.
 void writeHalfRows(std::byte* out, const float* values, Extent extent, int components) {
@@ -215,6 +217,27 @@ void writeHalfRows(std::byte* out, const float* values, Extent extent, int compo
     auto* halves = reinterpret_cast<std::uint16_t*>(out);
     for (int y = 0; y < extent.height; ++y) {
         floatToHalf(values + std::size_t(extent.height - 1 - y) * row, halves + std::size_t(y) * row, row);
+    }
+}
+
+/// RGBA halves as they are, for a 16F texture.
+void copyHalfRows(std::byte* out, const std::uint16_t* halves, Extent extent) {
+    const std::size_t row = std::size_t(extent.width) * 4;
+    for (int y = 0; y < extent.height; ++y) {
+        std::memcpy(out + std::size_t(y) * row * sizeof(std::uint16_t),
+                    halves + std::size_t(extent.height - 1 - y) * row, row * sizeof(std::uint16_t));
+    }
+}
+
+/// RGBA halves widened to floats (exactly), for a 32F texture; `scratch` holds a row.
+void writeHalvesAsFloatRows(std::byte* out, const std::uint16_t* halves, Extent extent,
+                            std::vector<float>& scratch) {
+    const std::size_t row = std::size_t(extent.width) * 4;
+    scratch.resize(row);
+    for (int y = 0; y < extent.height; ++y) {
+        // Widened in cached memory, then copied: the slot may be write-combined.
+        halfToFloat(halves + std::size_t(extent.height - 1 - y) * row, scratch.data(), row);
+        std::memcpy(out + std::size_t(y) * row * sizeof(float), scratch.data(), row * sizeof(float));
     }
 }
 
@@ -236,8 +259,8 @@ void writeNormalRows(std::byte* out, const float* normals, Extent extent,
 } // namespace
 
 FrameInputs InputTextures::upload(const DecodedFrame& frame, bool halfTexture) {
-    const Extent extent{frame.color.width, frame.color.height};
-    const bool halfColor = halfTexture && frame.halfColor;
+    const Extent extent{frame.width(), frame.height()};
+    const bool halfColor = halfTexture && frame.halfColor();
     const SlotLayout layout = slotLayout(frame, halfColor);
     if (!mRing.valid() || mRing.bytes() < layout.bytes)
         mRing = UploadRing(layout.bytes, kUploadSlots, "cli.input");
@@ -246,10 +269,13 @@ FrameInputs InputTextures::upload(const DecodedFrame& frame, bool halfTexture) {
 
     ensure(mColor, extent, halfColor ? GL_RGBA16F : GL_RGBA32F, "cli.input.color");
     if (halfColor) {
-        writeHalfRows(slot + layout.color, frame.color.rgba.data(), extent, 4);
+        copyHalfRows(slot + layout.color, frame.colorHalves.rgba.data(), extent);
         mRing.upload(mColor, layout.color, GL_RGBA, GL_HALF_FLOAT);
     } else {
-        writeFloatRows(slot + layout.color, frame.color.rgba.data(), extent, 4);
+        if (frame.halfColor())
+            writeHalvesAsFloatRows(slot + layout.color, frame.colorHalves.rgba.data(), extent, mFloatRow);
+        else
+            writeFloatRows(slot + layout.color, frame.color.rgba.data(), extent, 4);
         mRing.upload(mColor, layout.color, GL_RGBA, GL_FLOAT);
     }
     if (!frame.depth.empty()) {
@@ -392,11 +418,12 @@ int runImageInfo(const std::vector<fs::path>& inputs, const fs::path& cameraJson
 fs::path writeAux(const fs::path& folder, const fs::path& input, const DecodedFrame& frame) {
     ExrFrame aux;
     aux.color = frame.color;
+    aux.colorHalves = frame.colorHalves;
     aux.depth = frame.depth;
     aux.normals = frame.normals;
     aux.motion = frame.motion;
     if (frame.camera)
-        aux.camera = exrFromCamera(*frame.camera, frame.color.width, frame.color.height);
+        aux.camera = exrFromCamera(*frame.camera, frame.width(), frame.height());
     const fs::path path = folder / (input.stem().string() + ".aux.exr");
     writeExrFrame(path, aux);
     return path;

@@ -22,7 +22,10 @@ namespace photopic::cli {
 
 /// One input frame in the pipeline's conventions, rows top to bottom like ImageF.
 struct DecodedFrame {
-    ImageF color;
+    ImageF color; ///< the colour, unless `colorHalves` holds it (then empty)
+    /// The colour as an EXR of half channels stores it (values that are halves exactly, nothing to convert):
+    /// half the memory of `color`, which is then empty. Empty otherwise.
+    ImageH colorHalves;
     std::vector<float> depth;   ///< width*height linear view depth (inf or >= far: background); or empty
     std::vector<float> normals; ///< width*height*3 view-space unit normals; or empty
     std::vector<float> motion; ///< width*height*2 UV (y up), current minus previous, jitter removed; or empty
@@ -32,8 +35,10 @@ struct DecodedFrame {
     /// The frame's samples were jittered: it carries a `jitter` attribute, or the sequence was rendered with
     /// Photopic's Halton(2, 3) jitter (--jitter halton).
     bool jittered = false;
-    /// Every colour value is a half float exactly (an EXR whose colour channels are half).
-    bool halfColor = false;
+
+    [[nodiscard]] bool halfColor() const { return !colorHalves.empty(); }
+    [[nodiscard]] int width() const { return halfColor() ? colorHalves.width : color.width; }
+    [[nodiscard]] int height() const { return halfColor() ? colorHalves.height : color.height; }
 };
 
 /// Decodes a sequence in order, remembering the previous frame's camera attributes (prevViewProjection and
@@ -52,7 +57,7 @@ public:
     void recycle(DecodedFrame&& frame);
 
 private:
-    ExrFrameReader mReader;
+    ExrFrameReader mReader{ExrFrameReader::Color::HalvesWhenStored};
     ExrFrame mFrame; ///< the storage decode() reads into; its colour and depth move out to the caller
     std::vector<float> mNormals; ///< storage for the next frame's view-space normals (recycle())
     std::vector<float> mMotion;  ///< storage for the next frame's UV motion (recycle())
@@ -75,7 +80,7 @@ class InputTextures {
 public:
     /// Uploads `frame` and returns inputs pointing at the textures and camera held here (valid until the
     /// next upload). `halfTexture`: the colour texture is RGBA16F instead of RGBA32F; only for a frame whose
-    /// colour is half exactly (halfColor) and a pipeline whose only reader of it fetches texels (the HDR
+    /// colour is halves (colorHalves) and a pipeline whose only reader of it fetches texels (the HDR
     /// path's sanitize pass), which then reads the same values from half the memory. Leaves no unpack
     /// buffer bound.
     [[nodiscard]] FrameInputs upload(const DecodedFrame& frame, bool halfTexture = false);
@@ -93,6 +98,7 @@ private:
     Texture mMotion;
     Camera mCamera;
     std::vector<std::uint16_t> mHalfRow; ///< a row of normals as halves, before they are spread to four
+    std::vector<float> mFloatRow;        ///< a row of half colour widened, for a float texture
 };
 
 /// `photopic image --info`: the channels and attributes of each input and what each feeds.

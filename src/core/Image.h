@@ -29,6 +29,18 @@ struct ImageF {
     }
 };
 
+/// Linear RGBA image of half floats (IEEE binary16 bits, core/HalfFloat.h), rows top to bottom: a colour
+/// whose every value is a half exactly (an OpenEXR file's half channels as stored), in half an ImageF's
+/// memory.
+struct ImageH {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint16_t> rgba; ///< width * height * 4 halves
+
+    [[nodiscard]] bool empty() const { return width <= 0 || height <= 0; }
+    [[nodiscard]] std::size_t pixelCount() const { return std::size_t(width) * std::size_t(height); }
+};
+
 /// 8-bit RGBA image (display-referred, sRGB-encoded), rows top to bottom.
 struct Image8 {
     int width = 0;

@@ -78,8 +78,10 @@ void convertExrToRec709(const std::filesystem::path& path, const Imf::Header& he
 /// Imf::InputFile::readPixels does for the whole data window (the same values to the bit: absent channels
 /// take the slice's fill value), with the inflate done by libdeflate on OpenEXR's global thread pool
 /// (ExrZip.cpp). Returns false when the file or the frame buffer is outside what it decodes (another
-/// compression, tiled or multi-part, subsampled or UINT channels, slices that are not FLOAT) or when the data
-/// does not decode; the caller then checks the chunks (checkExrChunks) and reads through Imf::InputFile.
+/// compression, tiled or multi-part, subsampled or UINT channels, slices that are neither FLOAT nor HALF, a
+/// HALF slice of a FLOAT channel) or when the data does not decode; the caller then checks the chunks
+/// (checkExrChunks) and reads through Imf::InputFile. A HALF slice of a HALF channel takes its bits as
+/// stored.
 [[nodiscard]] bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& header,
                                     const Imf::FrameBuffer& frameBuffer);
 
@@ -99,6 +101,19 @@ void checkExrChunks(const std::filesystem::path& path, std::span<const unsigned 
 void readExrColor(const std::filesystem::path& path, std::span<const unsigned char> bytes,
                   Imf::InputFile& file, ImageF& image, const ExrExtraSlices& extra = {},
                   const ImageReadLimits& limits = {});
+
+/// Whether the header's colour is halves as stored, to the bit, with nothing to convert: R, G, B (or Y
+/// alone, not luminance/chroma) and A, those present all HALF, in Rec.709 primaries (readExrColor converts
+/// others in float).
+[[nodiscard]] bool exrColorIsHalves(const Imf::Header& header);
+
+/// readExrColor for a file whose colour is halves (exrColorIsHalves): the halves as stored, into `image`
+/// (its storage kept when large enough; A is 1.0 where absent, Y copied to R, G and B as readExrColor does).
+/// The same values as readExrColor's, in half the memory. Throws std::invalid_argument for any other file,
+/// IoError and OpenEXR's exceptions as readExrColor does.
+void readExrColorHalves(const std::filesystem::path& path, std::span<const unsigned char> bytes,
+                        Imf::InputFile& file, ImageH& image, const ExrExtraSlices& extra = {},
+                        const ImageReadLimits& limits = {});
 
 /// Throws IoError naming `path` unless `image` (ImageF, Image8 or Image16) can be written: not empty, its
 /// samples matching its size, within kDefaultMaxPixels.

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -352,7 +353,7 @@ Lens lensFromExr(const ExrCameraAttributes& a, float verticalFov) {
 
 /// The frame in `bytes`, already checked by detail::checkExrBytes, into `frame`'s storage.
 void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes, ExrFrame& frame,
-                      const ImageReadLimits& limits) {
+                      const ImageReadLimits& limits, ExrFrameReader::Color color) {
     try {
         detail::MemoryIStream stream(path, bytes);
         Imf::InputFile file(stream);
@@ -386,17 +387,25 @@ void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes
         frame.normals.clear();
         frame.motion.clear();
 
-        detail::readExrColor(
-            path, bytes, file, frame.color,
-            [&](Imf::FrameBuffer& frameBuffer, const Imath::Box2i& dataWindow, int width, int height) {
-                if (depth)
-                    addLayerSlices(frameBuffer, *depth, frame.depth, dataWindow, width, height);
-                if (normals)
-                    addLayerSlices(frameBuffer, *normals, frame.normals, dataWindow, width, height);
-                if (motion)
-                    addLayerSlices(frameBuffer, *motion, frame.motion, dataWindow, width, height);
-            },
-            limits);
+        const auto layers = [&](Imf::FrameBuffer& frameBuffer, const Imath::Box2i& dataWindow, int width,
+                                int height) {
+            if (depth)
+                addLayerSlices(frameBuffer, *depth, frame.depth, dataWindow, width, height);
+            if (normals)
+                addLayerSlices(frameBuffer, *normals, frame.normals, dataWindow, width, height);
+            if (motion)
+                addLayerSlices(frameBuffer, *motion, frame.motion, dataWindow, width, height);
+        };
+        // The colour not read is emptied, its storage kept for a later frame that reads it.
+        if (color == ExrFrameReader::Color::HalvesWhenStored && detail::exrColorIsHalves(header)) {
+            frame.color.width = frame.color.height = 0;
+            frame.color.rgba.clear();
+            detail::readExrColorHalves(path, bytes, file, frame.colorHalves, layers, limits);
+        } else {
+            frame.colorHalves.width = frame.colorHalves.height = 0;
+            frame.colorHalves.rgba.clear();
+            detail::readExrColor(path, bytes, file, frame.color, layers, limits);
+        }
     } catch (const IoError&) {
         throw;
     } catch (const std::exception& e) {
@@ -409,6 +418,9 @@ void clearFrame(ExrFrame& frame) {
     frame.color.width = 0;
     frame.color.height = 0;
     frame.color.rgba.clear();
+    frame.colorHalves.width = 0;
+    frame.colorHalves.height = 0;
+    frame.colorHalves.rgba.clear();
     frame.depth.clear();
     frame.normals.clear();
     frame.motion.clear();
@@ -440,7 +452,7 @@ ExrFrame decodeExrFrame(std::span<const unsigned char> bytes, const fs::path& na
 void ExrFrameReader::read(const fs::path& path, ExrFrame& frame, const ImageReadLimits& limits) {
     try {
         detail::readCheckedExrBytes(path, mBytes, limits);
-        readCheckedFrame(path, mBytes, frame, limits);
+        readCheckedFrame(path, mBytes, frame, limits, mColor);
     } catch (const IoError&) {
         clearFrame(frame);
         throw;
@@ -451,7 +463,7 @@ void ExrFrameReader::decode(std::span<const unsigned char> bytes, const fs::path
                             const ImageReadLimits& limits) {
     try {
         detail::checkExrBytes(name, bytes, limits);
-        readCheckedFrame(name, bytes, frame, limits);
+        readCheckedFrame(name, bytes, frame, limits, mColor);
     } catch (const IoError&) {
         clearFrame(frame);
         throw;
@@ -460,9 +472,14 @@ void ExrFrameReader::decode(std::span<const unsigned char> bytes, const fs::path
 
 std::string encodeExrFrame(const ExrFrame& frame, const fs::path& path) {
     const ImageF& color = frame.color;
-    if (color.empty() || color.rgba.size() != color.pixelCount() * 4)
+    const ImageH& halves = frame.colorHalves;
+    const bool fromHalves = color.empty() && !halves.empty();
+    const int width = fromHalves ? halves.width : color.width;
+    const int height = fromHalves ? halves.height : color.height;
+    if (fromHalves ? halves.rgba.size() != halves.pixelCount() * 4
+                   : color.empty() || color.rgba.size() != color.pixelCount() * 4)
         throw IoError(path, "cannot write a frame without a colour image of width*height RGBA values");
-    const std::size_t pixels = color.pixelCount();
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
     const auto requireSize = [&](const std::vector<float>& layer, std::size_t components, const char* name) {
         if (!layer.empty() && layer.size() != pixels * components)
             throw IoError(path, std::string(name) + " holds " + std::to_string(layer.size()) +
@@ -473,16 +490,25 @@ std::string encodeExrFrame(const ExrFrame& frame, const fs::path& path) {
     requireSize(frame.motion, 2, "motion");
 
     // The writer takes each channel in its file type: half channels are converted here. Colour clamps
-    // finite values to the largest half, as writeExr does.
+    // finite values to the largest half, as writeExr does; colour held as halves is written as it is.
     static constexpr float kHalfMax = 65504.0f;
-    std::vector<half> rgba(color.rgba.size());
-    std::transform(color.rgba.begin(), color.rgba.end(), rgba.begin(),
-                   [](float v) { return half(std::isfinite(v) ? std::clamp(v, -kHalfMax, kHalfMax) : v); });
+    std::vector<half> rgba(pixels * 4);
+    if (fromHalves) {
+        std::transform(halves.rgba.begin(), halves.rgba.end(), rgba.begin(), [](std::uint16_t bits) {
+            half h;
+            h.setBits(bits);
+            return h;
+        });
+    } else {
+        std::transform(color.rgba.begin(), color.rgba.end(), rgba.begin(), [](float v) {
+            return half(std::isfinite(v) ? std::clamp(v, -kHalfMax, kHalfMax) : v);
+        });
+    }
     const std::vector<half> normals(frame.normals.begin(), frame.normals.end());
 
     std::string bytes;
     try {
-        Imf::Header header(color.width, color.height);
+        Imf::Header header(width, height);
         header.compression() = Imf::ZIP_COMPRESSION;
         writeCameraAttributes(header, frame.camera);
         Imf::FrameBuffer frameBuffer;
@@ -493,7 +519,7 @@ std::string encodeExrFrame(const ExrFrame& frame, const fs::path& path) {
             header.channels().insert(name, Imf::Channel(type));
             const std::size_t xStride = count * sizeof(Sample);
             frameBuffer.insert(name, Imf::Slice(type, reinterpret_cast<char*>(const_cast<Sample*>(base)),
-                                                xStride, xStride * std::size_t(color.width)));
+                                                xStride, xStride * std::size_t(width)));
         };
         const std::array<const char*, 4> rgbaNames{"R", "G", "B", "A"};
         for (std::size_t c = 0; c < 4; ++c)
@@ -511,7 +537,7 @@ std::string encodeExrFrame(const ExrFrame& frame, const fs::path& path) {
             // The offset table is written when the file object goes: close it before taking the bytes.
             Imf::OutputFile file(stream, header);
             file.setFrameBuffer(frameBuffer);
-            file.writePixels(color.height);
+            file.writePixels(height);
         }
         bytes = stream.str();
     } catch (const std::exception& e) {
@@ -553,7 +579,7 @@ std::optional<Camera> cameraFromExr(const ExrCameraAttributes& attributes, int w
 std::optional<Camera> frameCamera(const ExrFrame& frame, const ExrCameraAttributes* previous) {
     std::optional<Camera> camera =
         cameraFromExr(frame.camera, frame.displaySize.x, frame.displaySize.y, previous);
-    const glm::ivec2 dataSize(frame.color.width, frame.color.height);
+    const glm::ivec2 dataSize(frame.width(), frame.height());
     if (!camera || (frame.dataOrigin == glm::ivec2(0) && frame.displaySize == dataSize))
         return camera;
     const glm::mat4 crop = dataWindowCrop(frame.displaySize, frame.dataOrigin, dataSize);

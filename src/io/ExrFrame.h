@@ -55,7 +55,11 @@ struct ExrCameraAttributes {
 
 /// One EXR frame with its optional 3D layers, each row-major, rows top to bottom like ImageF.
 struct ExrFrame {
-    ImageF color;
+    ImageF color; ///< the colour, unless `colorHalves` holds it (then empty)
+    /// The colour as the file stores it, when read by an ExrFrameReader that keeps halves and the file's
+    /// colour is halves with nothing to convert (detail::exrColorIsHalves): the same values as `color` would
+    /// hold, in half the memory; `color` is then empty. Empty otherwise.
+    ImageH colorHalves;
     std::vector<float> depth;   ///< width*height linear view depth; empty when the file has none
     std::vector<float> normals; ///< width*height*3 world-space normals; empty when none
     std::vector<float>
@@ -72,6 +76,10 @@ struct ExrFrame {
     /// stored as half, and the file's primaries are Rec.709 (others are converted to it in float): each
     /// colour value is a half float exactly, so a half-float texture holds it unchanged.
     bool halfColor = false;
+
+    /// The colour's size, whichever of `color` and `colorHalves` holds it.
+    [[nodiscard]] int width() const { return color.empty() ? colorHalves.width : color.width; }
+    [[nodiscard]] int height() const { return color.empty() ? colorHalves.height : color.height; }
 };
 
 /// Reads colour as readImage does, plus the layers and attributes above when present, in one pass: each
@@ -90,6 +98,12 @@ struct ExrFrame {
 /// no pixel memory: no page faults, no clearing of buffers that are overwritten anyway.
 class ExrFrameReader {
 public:
+    /// How the colour is kept: always as floats (`color`), or as halves (`colorHalves`) when the file's
+    /// colour is halves with nothing to convert, else as floats.
+    enum class Color { Floats, HalvesWhenStored };
+    explicit ExrFrameReader(Color color = Color::Floats)
+        : mColor(color) {}
+
     /// readExrFrame into `frame`, every field replaced; its vectors' capacity is reused. On IoError
     /// `frame` is left empty (as a default ExrFrame, its capacity kept), never half filled.
     void read(const std::filesystem::path& path, ExrFrame& frame, const ImageReadLimits& limits = {});
@@ -99,8 +113,10 @@ public:
 
 private:
     std::vector<unsigned char> mBytes;
+    Color mColor;
 };
-/// Writes colour (half RGBA), Z (float), N.X/Y/Z (half), motion.X/Y (float) for the layers that are not
+/// Writes colour (half RGBA: `color` rounded, or `colorHalves` as they are when `color` is empty), Z (float),
+/// N.X/Y/Z (half), motion.X/Y (float) for the layers that are not
 /// empty, and the camera attributes that are set; data window = display window = the colour image (the
 /// displaySize/dataOrigin fields are not written). Atomic, like writeExr; throws IoError naming the file when
 /// a layer's size does not match the colour.

@@ -3,7 +3,8 @@
 // checks) with the inflate step done by libdeflate instead of zlib, on OpenEXR's global thread pool. The
 // unpacking into the frame buffer is done here too: OpenEXR 3.1's own routine for four half channels into
 // interleaved floats at descending addresses (A, B, G, R into RGBA) writes them in file order, R's value
-// where A belongs (ExrZipTest.RgbaMatchesOpenExrBitForBit fails with it). zlib's inflate was the largest
+// where A belongs (ExrZipTest.RgbaMatchesOpenExrBitForBit fails with it). Half channels may also go to half
+// slices, as stored (a colour kept in half the memory). zlib's inflate was the largest
 // single cost of reading a ZIP-compressed sequence; libdeflate inflates the same stream several times faster.
 //
 // The ZIP codec (OpenEXR file layout, "ZIP compression"): a chunk's bytes are deflated in a zlib stream after
@@ -147,21 +148,27 @@ const float* lineFloats(const exr_coding_channel_info_t& channel, const std::uin
     return scratch;
 }
 
-/// The float each of four channels fills in a 16-byte pixel, when the four fill one pixel between them (a
-/// renderer's A, B, G, R into RGBA): lane[c] for channel c, and the pixel at `base`. Else base is null.
+/// The value each of four channels fills in a pixel of four values, when the four fill one pixel between them
+/// (a renderer's A, B, G, R into RGBA), all four as floats (16-byte pixels) or all four as halves (8-byte
+/// pixels): lane[c] for channel c, and the pixel at `base`. Else base is null.
 struct FourLanes {
     std::uint8_t* base = nullptr;
     int lane[4] = {};
+    bool halves = false;
 };
 
 FourLanes fourLanes(const exr_decode_pipeline_t& decode) noexcept {
     FourLanes four;
     if (decode.channel_count != 4)
         return four;
+    const int element = decode.channels[0].user_bytes_per_element;
+    if (element != 2 && element != 4)
+        return four;
     std::uint8_t* base = nullptr;
     for (int c = 0; c < 4; ++c) {
         const exr_coding_channel_info_t& channel = decode.channels[c];
-        if (channel.decode_to_ptr == nullptr || channel.user_pixel_stride != 16 ||
+        if (channel.decode_to_ptr == nullptr || channel.user_bytes_per_element != element ||
+            channel.user_pixel_stride != 4 * element ||
             channel.user_line_stride != decode.channels[0].user_line_stride)
             return four;
         if (base == nullptr || channel.decode_to_ptr < base)
@@ -170,12 +177,13 @@ FourLanes fourLanes(const exr_decode_pipeline_t& decode) noexcept {
     unsigned lanesSeen = 0;
     for (int c = 0; c < 4; ++c) {
         const std::ptrdiff_t offset = decode.channels[c].decode_to_ptr - base;
-        if (offset % 4 != 0 || offset > 12 || (lanesSeen & (1u << (offset / 4))) != 0)
+        if (offset % element != 0 || offset > 3 * element || (lanesSeen & (1u << (offset / element))) != 0)
             return four;
-        lanesSeen |= 1u << (offset / 4);
-        four.lane[c] = int(offset / 4);
+        lanesSeen |= 1u << (offset / element);
+        four.lane[c] = int(offset / element);
     }
     four.base = base;
+    four.halves = element == 2;
     return four;
 }
 
@@ -214,12 +222,45 @@ void interleaveFour(const float* const runs[4], const int lane[4], std::uint8_t*
     }
 }
 
+/// Interleaves four runs of `width` halves (each at any byte offset) into 8-byte RGBA pixels, run c into
+/// lane[c] of each pixel, the bits as they are.
+void interleaveFourHalves(const std::uint8_t* const runs[4], const int lane[4], std::uint8_t* out,
+                          std::size_t width) noexcept {
+    const std::uint8_t* byLane[4];
+    for (int c = 0; c < 4; ++c)
+        byLane[lane[c]] = runs[c];
+    std::size_t x = 0;
+#if defined(__SSE2__)
+    // Eight pixels at a time: (r, g) and (b, a) woven into pairs, then the pairs into pixels.
+    for (; x + 8 <= width; x += 8) {
+        const __m128i r = _mm_loadu_si128(reinterpret_cast<const __m128i*>(byLane[0] + 2 * x));
+        const __m128i g = _mm_loadu_si128(reinterpret_cast<const __m128i*>(byLane[1] + 2 * x));
+        const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(byLane[2] + 2 * x));
+        const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(byLane[3] + 2 * x));
+        const __m128i rgLow = _mm_unpacklo_epi16(r, g);
+        const __m128i rgHigh = _mm_unpackhi_epi16(r, g);
+        const __m128i baLow = _mm_unpacklo_epi16(b, a);
+        const __m128i baHigh = _mm_unpackhi_epi16(b, a);
+        auto* pixel = reinterpret_cast<__m128i*>(out + 8 * x);
+        _mm_storeu_si128(pixel, _mm_unpacklo_epi32(rgLow, baLow));
+        _mm_storeu_si128(pixel + 1, _mm_unpackhi_epi32(rgLow, baLow));
+        _mm_storeu_si128(pixel + 2, _mm_unpacklo_epi32(rgHigh, baHigh));
+        _mm_storeu_si128(pixel + 3, _mm_unpackhi_epi32(rgHigh, baHigh));
+    }
+#endif
+    for (; x < width; ++x) {
+        for (int l = 0; l < 4; ++l)
+            std::memcpy(out + 8 * x + 2 * std::size_t(l), byLane[l] + 2 * x, 2);
+    }
+}
+
 /// The pipeline's unpack step: each line of the chunk holds every channel's run of values in the part's
-/// channel order (no subsampling here), little-endian; a channel with a destination is converted to float
-/// exactly as Imf::InputFile converts it (halfToFloat gives Imath's values to the bit), the others are
-/// stepped over. Four channels that make up RGBA pixels are widened a run at a time and written a pixel at
-/// a time, rather than a float at a time at 16-byte steps.
-exr_result_t unpackToFloat(exr_decode_pipeline_t* decode) {
+/// channel order (no subsampling here), little-endian; a channel with a float destination is converted to
+/// float exactly as Imf::InputFile converts it (halfToFloat gives Imath's values to the bit), a half channel
+/// with a half destination is copied as it is, the others are stepped over. Four channels that make up RGBA
+/// pixels are widened a run at a time and written a pixel at a time, rather than a value at a time at 16-
+/// or 8-byte steps.
+exr_result_t unpackChannels(exr_decode_pipeline_t* decode) {
     static_assert(std::endian::native == std::endian::little, "EXR values are little-endian");
     const auto* source = static_cast<const std::uint8_t*>(decode->unpacked_buffer);
     auto* state = static_cast<ZipState*>(decode->decoding_user_data);
@@ -228,7 +269,9 @@ exr_result_t unpackToFloat(exr_decode_pipeline_t* decode) {
     for (int c = 0; c < decode->channel_count; ++c) {
         const exr_coding_channel_info_t& channel = decode->channels[c];
         if (channel.height != lines || channel.width != decode->chunk.width ||
-            (channel.bytes_per_element != 2 && channel.bytes_per_element != 4))
+            (channel.bytes_per_element != 2 && channel.bytes_per_element != 4) ||
+            (channel.decode_to_ptr != nullptr && channel.user_bytes_per_element == 2 &&
+             channel.bytes_per_element != 2))
             return EXR_ERR_INVALID_ARGUMENT;
         lineBytes += std::uint64_t(channel.width) * std::uint64_t(channel.bytes_per_element);
     }
@@ -243,6 +286,16 @@ exr_result_t unpackToFloat(exr_decode_pipeline_t* decode) {
     }
     const FourLanes four = fourLanes(*decode);
     for (int y = 0; y < lines; ++y) {
+        if (four.base != nullptr && four.halves) {
+            const std::uint8_t* runs[4];
+            for (int c = 0; c < 4; ++c) {
+                runs[c] = source;
+                source += width * std::size_t(decode->channels[c].bytes_per_element);
+            }
+            interleaveFourHalves(runs, four.lane,
+                                 four.base + std::ptrdiff_t(y) * decode->channels[0].user_line_stride, width);
+            continue;
+        }
         if (four.base != nullptr) {
             const float* runs[4];
             for (int c = 0; c < 4; ++c) {
@@ -256,7 +309,16 @@ exr_result_t unpackToFloat(exr_decode_pipeline_t* decode) {
         }
         for (int c = 0; c < decode->channel_count; ++c) {
             const exr_coding_channel_info_t& channel = decode->channels[c];
-            if (channel.decode_to_ptr != nullptr) {
+            if (channel.decode_to_ptr != nullptr && channel.user_bytes_per_element == 2) {
+                std::uint8_t* out = channel.decode_to_ptr + std::ptrdiff_t(y) * channel.user_line_stride;
+                const std::ptrdiff_t step = channel.user_pixel_stride;
+                if (step == 2) {
+                    std::memcpy(out, source, width * 2);
+                } else {
+                    for (std::size_t x = 0; x < width; ++x)
+                        std::memcpy(out + std::ptrdiff_t(x) * step, source + 2 * x, 2);
+                }
+            } else if (channel.decode_to_ptr != nullptr) {
                 const float* values = lineFloats(channel, source, state->floats.data());
                 std::uint8_t* out = channel.decode_to_ptr + std::ptrdiff_t(y) * channel.user_line_stride;
                 const std::ptrdiff_t step = channel.user_pixel_stride;
@@ -345,6 +407,7 @@ struct Target {
     std::uint8_t* origin = nullptr;
     int pixelStride = 0;
     int lineStride = 0;
+    bool half = false; ///< a half slice (of a half channel: its bits as stored), else a float one
 };
 
 struct Job {
@@ -385,14 +448,14 @@ bool decodeChunk(Job& job, ZipState& state, exr_decode_pipeline_t& decode, bool&
         channel.decode_to_ptr = target.origin + std::ptrdiff_t(chunk.start_y - job.minY) * target.lineStride;
         channel.user_pixel_stride = target.pixelStride;
         channel.user_line_stride = target.lineStride;
-        channel.user_data_type = EXR_PIXEL_FLOAT;
-        channel.user_bytes_per_element = 4;
+        channel.user_data_type = target.half ? EXR_PIXEL_HALF : EXR_PIXEL_FLOAT;
+        channel.user_bytes_per_element = target.half ? 2 : 4;
     }
     if (exr_decoding_choose_default_routines(job.context, 0, &decode) != EXR_ERR_SUCCESS)
         return false;
     if (decode.decompress_fn != nullptr)
         decode.decompress_fn = &inflateZipChunk;
-    decode.unpack_and_convert_fn = &unpackToFloat;
+    decode.unpack_and_convert_fn = &unpackChannels;
     return exr_decoding_run(job.context, 0, &decode) == EXR_ERR_SUCCESS;
 }
 
@@ -553,9 +616,9 @@ bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& h
         return false;
     for (auto it = frameBuffer.begin(); it != frameBuffer.end(); ++it) {
         const Imf::Slice& s = it.slice();
-        if (s.type != Imf::FLOAT || s.xSampling != 1 || s.ySampling != 1 || s.xTileCoords || s.yTileCoords ||
-            s.xStride <= 0 || s.yStride <= 0 || s.xStride > std::numeric_limits<int>::max() ||
-            s.yStride > std::numeric_limits<int>::max())
+        if ((s.type != Imf::FLOAT && s.type != Imf::HALF) || s.xSampling != 1 || s.ySampling != 1 ||
+            s.xTileCoords || s.yTileCoords || s.xStride <= 0 || s.yStride <= 0 ||
+            s.xStride > std::numeric_limits<int>::max() || s.yStride > std::numeric_limits<int>::max())
             return false;
     }
 
@@ -599,12 +662,15 @@ bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& h
         const Imf::Slice* slice = frameBuffer.findSlice(entry.name.str);
         Target target;
         if (slice != nullptr) {
+            // A half slice takes a half channel's bits; a float channel into it (a rounding) is Imf's.
             if ((entry.pixel_type != EXR_PIXEL_HALF && entry.pixel_type != EXR_PIXEL_FLOAT) ||
-                entry.x_sampling != 1 || entry.y_sampling != 1)
+                entry.x_sampling != 1 || entry.y_sampling != 1 ||
+                (slice->type == Imf::HALF && entry.pixel_type != EXR_PIXEL_HALF))
                 return false;
             target.origin = slicePixel(*slice, window.min.x, window.min.y);
             target.pixelStride = int(slice->xStride);
             target.lineStride = int(slice->yStride);
+            target.half = slice->type == Imf::HALF;
         }
         job.targets.push_back(target);
     }
@@ -615,10 +681,13 @@ bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& h
             continue;
         const Imf::Slice& s = it.slice();
         const float fill = float(s.fillValue);
+        const std::uint16_t halfFill = floatToHalf(fill); // Imf's half(float) for the values it is given
+        const void* value = s.type == Imf::HALF ? static_cast<const void*>(&halfFill) : &fill;
+        const std::size_t size = s.type == Imf::HALF ? sizeof(halfFill) : sizeof(fill);
         for (std::int64_t y = window.min.y; y <= window.max.y; ++y) {
             std::uint8_t* row = slicePixel(s, window.min.x, y);
             for (int x = 0; x < job.width; ++x)
-                std::memcpy(row + std::ptrdiff_t(x) * s.xStride, &fill, sizeof(float));
+                std::memcpy(row + std::ptrdiff_t(x) * s.xStride, value, size);
         }
     }
 

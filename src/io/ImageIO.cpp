@@ -872,22 +872,86 @@ void detail::checkExrBytes(const fs::path& path, std::span<const unsigned char> 
     }
 }
 
-void detail::readExrColor(const fs::path& path, std::span<const unsigned char> bytes, Imf::InputFile& file,
-                          ImageF& image, const ExrExtraSlices& extra, const ImageReadLimits& limits) {
-    const Imf::Header& header = file.header();
-    const Imath::Box2i dataWindow = header.dataWindow();
+namespace {
+
+/// The data window's size, checked against the limits, once the file holds every chunk it lists.
+std::pair<int, int> exrColorSize(const fs::path& path, const Imf::InputFile& file,
+                                 const ImageReadLimits& limits) {
+    const Imath::Box2i dataWindow = file.header().dataWindow();
     const std::int64_t width64 = std::int64_t(dataWindow.max.x) - dataWindow.min.x + 1;
     const std::int64_t height64 = std::int64_t(dataWindow.max.y) - dataWindow.min.y + 1;
     checkSize(path, width64, height64, limits);
-    const int width = int(width64);
-    const int height = int(height64);
     if (!file.isComplete())
         throw IoError(path, "OpenEXR file is truncated or incomplete (pixel blocks are missing)");
+    return {int(width64), int(height64)};
+}
 
-    const Imf::ChannelList& channels = header.channels();
-    const auto has = [&](const char* name) { return channels.findChannel(name) != nullptr; };
-    const bool hasRgb = has("R") || has("G") || has("B");
-    if (!hasRgb && has("Y") && (has("RY") || has("BY"))) {
+bool hasChannel(const Imf::Header& header, const char* name) {
+    return header.channels().findChannel(name) != nullptr;
+}
+
+bool hasRgbChannel(const Imf::Header& header) {
+    return hasChannel(header, "R") || hasChannel(header, "G") || hasChannel(header, "B");
+}
+
+/// Throws IoError naming `path` and the file's channels when it has no R, G, B or Y channel.
+void requireColorChannels(const fs::path& path, const Imf::Header& header) {
+    if (hasRgbChannel(header) || hasChannel(header, "Y"))
+        return;
+    std::string names;
+    for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
+        names += std::string(names.empty() ? "" : ", ") + it.name();
+    throw IoError(path, "OpenEXR file has no R, G, B or Y channel (channels: " + names + ")");
+}
+
+/// Reads R, G, B (or Y, copied to all three) and A (1 where absent) as `type` values, four a pixel, into
+/// `rgba` (width * height * 4 values, each written), plus whatever `extra` adds, in one pass.
+template <class Value>
+void readRgbaSlices(const fs::path& path, std::span<const unsigned char> bytes, Imf::InputFile& file,
+                    Imf::PixelType type, Value* rgba, int width, int height,
+                    const detail::ExrExtraSlices& extra) {
+    const Imf::Header& header = file.header();
+    const Imath::Box2i dataWindow = header.dataWindow();
+    const bool hasRgb = hasRgbChannel(header);
+    Imf::FrameBuffer frameBuffer;
+    const std::size_t xStride = 4 * sizeof(Value);
+    const std::size_t yStride = xStride * std::size_t(width);
+    // Absent channels take the fill value.
+    const auto addSlice = [&](const char* name, std::size_t component, double fill) {
+        frameBuffer.insert(
+            name, Imf::Slice::Make(type, rgba + component, dataWindow, xStride, yStride, 1, 1, fill));
+    };
+    if (hasRgb) {
+        addSlice("R", 0, 0.0);
+        addSlice("G", 1, 0.0);
+        addSlice("B", 2, 0.0);
+    } else {
+        addSlice("Y", 0, 0.0);
+    }
+    addSlice("A", 3, 1.0);
+    if (extra)
+        extra(frameBuffer, dataWindow, width, height);
+    if (!detail::readZipScanlines(bytes, header, frameBuffer)) {
+        detail::checkExrChunks(path, bytes);
+        file.setFrameBuffer(frameBuffer);
+        file.readPixels(dataWindow.min.y, dataWindow.max.y);
+    }
+    if (!hasRgb) {
+        const std::size_t pixels = std::size_t(width) * std::size_t(height);
+        for (std::size_t i = 0; i < pixels; ++i)
+            rgba[i * 4 + 1] = rgba[i * 4 + 2] = rgba[i * 4];
+    }
+}
+
+} // namespace
+
+void detail::readExrColor(const fs::path& path, std::span<const unsigned char> bytes, Imf::InputFile& file,
+                          ImageF& image, const ExrExtraSlices& extra, const ImageReadLimits& limits) {
+    const auto [width, height] = exrColorSize(path, file, limits);
+    const Imf::Header& header = file.header();
+    const Imath::Box2i dataWindow = header.dataWindow();
+    const bool hasRgb = hasRgbChannel(header);
+    if (!hasRgb && hasChannel(header, "Y") && (hasChannel(header, "RY") || hasChannel(header, "BY"))) {
         checkExrChunks(path, bytes);
         image = readExrLuminanceChroma(path, bytes, width, height);
         detail::convertExrToRec709(path, header, image);
@@ -902,47 +966,41 @@ void detail::readExrColor(const fs::path& path, std::span<const unsigned char> b
         }
         return;
     }
-    if (!hasRgb && !has("Y")) {
-        std::string names;
-        for (auto it = channels.begin(); it != channels.end(); ++it)
-            names += std::string(names.empty() ? "" : ", ") + it.name();
-        throw IoError(path, "OpenEXR file has no R, G, B or Y channel (channels: " + names + ")");
-    }
-
-    // Every value is written below (absent channels take their fill), so storage kept from an earlier frame
-    // needs no clearing.
+    requireColorChannels(path, header);
+    // Every value is written (absent channels take their fill), so storage kept from an earlier frame needs
+    // no clearing.
     image.width = width;
     image.height = height;
     image.rgba.resize(image.pixelCount() * 4);
-    Imf::FrameBuffer frameBuffer;
-    const std::size_t xStride = 4 * sizeof(float);
-    const std::size_t yStride = xStride * std::size_t(width);
-    // Every channel is read as FLOAT whatever it is stored as; absent channels take the fill value.
-    const auto addSlice = [&](const char* name, std::size_t component, double fill) {
-        frameBuffer.insert(name, Imf::Slice::Make(Imf::FLOAT, image.rgba.data() + component, dataWindow,
-                                                  xStride, yStride, 1, 1, fill));
-    };
-    if (hasRgb) {
-        addSlice("R", 0, 0.0);
-        addSlice("G", 1, 0.0);
-        addSlice("B", 2, 0.0);
-    } else {
-        addSlice("Y", 0, 0.0);
-    }
-    addSlice("A", 3, 1.0);
-    if (extra)
-        extra(frameBuffer, dataWindow, width, height);
-    if (!readZipScanlines(bytes, header, frameBuffer)) {
-        checkExrChunks(path, bytes);
-        file.setFrameBuffer(frameBuffer);
-        file.readPixels(dataWindow.min.y, dataWindow.max.y);
-    }
-
-    if (!hasRgb) {
-        for (std::size_t i = 0; i < image.pixelCount(); ++i)
-            image.rgba[i * 4 + 1] = image.rgba[i * 4 + 2] = image.rgba[i * 4];
-    }
+    readRgbaSlices(path, bytes, file, Imf::FLOAT, image.rgba.data(), width, height, extra);
     detail::convertExrToRec709(path, header, image);
+}
+
+bool detail::exrColorIsHalves(const Imf::Header& header) {
+    const bool hasRgb = hasRgbChannel(header);
+    if (!hasRgb && !hasChannel(header, "Y"))
+        return false;
+    if (!hasRgb && (hasChannel(header, "RY") || hasChannel(header, "BY")))
+        return false; // luminance/chroma: rebuilt as RGB in float
+    for (const char* name : {"R", "G", "B", "A", "Y"}) {
+        const Imf::Channel* channel = header.channels().findChannel(name);
+        if (channel != nullptr && channel->type != Imf::HALF)
+            return false;
+    }
+    return !detail::exrToRec709(header).has_value();
+}
+
+void detail::readExrColorHalves(const fs::path& path, std::span<const unsigned char> bytes,
+                                Imf::InputFile& file, ImageH& image, const ExrExtraSlices& extra,
+                                const ImageReadLimits& limits) {
+    if (!exrColorIsHalves(file.header()))
+        throw std::invalid_argument("readExrColorHalves: the colour of \"" + path.string() +
+                                    "\" is not halves as stored");
+    const auto [width, height] = exrColorSize(path, file, limits);
+    image.width = width;
+    image.height = height;
+    image.rgba.resize(image.pixelCount() * 4);
+    readRgbaSlices(path, bytes, file, Imf::HALF, image.rgba.data(), width, height, extra);
 }
 
 void detail::writeAtomically(const fs::path& path, std::span<const unsigned char> bytes) {

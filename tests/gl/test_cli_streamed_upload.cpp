@@ -1,12 +1,13 @@
 // The CLI's streamed upload (apps/cli/ImageInputs.cpp through gl/UploadRing.h) against a plain upload from
 // client memory: each texture must hold the frame's floats as they are (the float textures) or rounded to
 // the nearest half, ties to even (the half textures: core/HalfFloat.h's rounding, which the upload does on
-// the CPU because drivers convert floats to halves each their own way), for a half-float colour frame, a
-// float one, an odd size, and the depth, normals and motion layers; over several frames in a row, so that
-// the slot is reused once its fence has passed (and, on their own, a ring of two slots takes them in turn,
-// each texture holding what was written for it); the unpack buffer binding is left as it
-// was found, unbound; and the upload's calls pass the audit of what NVIDIA's driver reports (GlCallAudit.h:
-// no CPU read of a buffer).
+// the CPU because drivers convert floats to halves each their own way), for a half-float colour frame (kept
+// as halves, as the decoder keeps a half EXR's colour: to an RGBA16F texture as they are, to an RGBA32F one
+// widened), a float one, an odd size, and the depth, normals and motion layers; over several frames in a row,
+// so that the slot is reused once its fence has passed (and, on their own, a ring of two slots takes them in
+// turn, each texture holding what was written for it); the unpack buffer binding is left as it was found,
+// unbound; and the upload's calls pass the audit of what NVIDIA's driver reports (GlCallAudit.h: no CPU read
+// of a buffer).
 
 #include "ImageInputs.h"
 
@@ -69,10 +70,16 @@ cli::DecodedFrame makeFrame(int width, int height, bool halfColor, unsigned seed
     std::mt19937 random(seed);
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     cli::DecodedFrame frame;
-    frame.color = ImageF(width, height);
-    for (float& v : frame.color.rgba)
-        v = halfColor ? halfValue(random) : std::uniform_real_distribution<float>(-1e6f, 1e6f)(random);
-    frame.halfColor = halfColor;
+    if (halfColor) { // as the decoder keeps a half EXR's colour: the halves as stored
+        frame.colorHalves = ImageH{.width = width, .height = height, .rgba = {}};
+        frame.colorHalves.rgba.resize(pixels * 4);
+        for (std::uint16_t& v : frame.colorHalves.rgba)
+            v = floatToHalf(halfValue(random));
+    } else {
+        frame.color = ImageF(width, height);
+        for (float& v : frame.color.rgba)
+            v = std::uniform_real_distribution<float>(-1e6f, 1e6f)(random);
+    }
     frame.depth.resize(pixels);
     for (float& v : frame.depth)
         v = std::uniform_real_distribution<float>(0.1f, 1000.0f)(random);
@@ -177,11 +184,17 @@ void expectSameAsGlConversion(cli::InputTextures& textures, const cli::DecodedFr
     const FrameInputs& inputs = *uploaded;
     EXPECT_EQ(unpackBufferBinding(), 0) << what << ": the unpack buffer is left bound";
     ASSERT_TRUE(inputs.color && inputs.depth && inputs.normals && inputs.motion) << what;
-    EXPECT_EQ(inputs.color->format(), GLenum(halfTexture && frame.halfColor ? GL_RGBA16F : GL_RGBA32F));
+    EXPECT_EQ(inputs.color->format(), GLenum(halfTexture && frame.halfColor() ? GL_RGBA16F : GL_RGBA32F));
+    std::vector<float> color = frame.color.rgba;
+    if (frame.halfColor()) {
+        color.resize(frame.colorHalves.rgba.size());
+        for (std::size_t i = 0; i < color.size(); ++i)
+            color[i] = halfToFloat(frame.colorHalves.rgba[i]);
+    }
     std::vector<float> normals(frame.normals.size() / 3 * 4, 0.0f);
     for (std::size_t i = 0, j = 0; i < frame.normals.size(); i += 3, j += 4)
         std::copy_n(frame.normals.data() + i, 3, normals.data() + j);
-    EXPECT_EQ(firstDifference(*inputs.color, referenceTexture(*inputs.color, frame.color.rgba, 4)), -1)
+    EXPECT_EQ(firstDifference(*inputs.color, referenceTexture(*inputs.color, color, 4)), -1)
         << what << ": colour";
     EXPECT_EQ(firstDifference(*inputs.depth, referenceTexture(*inputs.depth, frame.depth, 1)), -1)
         << what << ": depth";

@@ -1,6 +1,7 @@
 // The ZIP / ZIPS scanline decoder (io/ExrZip.cpp: OpenEXR's core library with libdeflate's inflate) against
 // Imf::InputFile::readPixels on the same bytes and the same frame buffer: every value the same to the bit,
-// for both compressions, half and float channels, odd sizes (a last chunk shorter than the others, byte
+// for both compressions, half and float channels (into float slices, and half ones into half slices), odd
+// sizes (a last chunk shorter than the others, byte
 // counts that do not fill the codec's 16- and 32-byte steps), a data window away from the origin, channels
 // the frame buffer does not ask for and slices the file has no channel for. Files it does not decode, and
 // damaged ones, are left to Imf::InputFile.
@@ -266,6 +267,87 @@ TEST_P(ExrZipTest, ReadImageOfAZipFileMatchesOpenExr) {
         makeExr({Imf::ZIP_COMPRESSION, Imf::HALF, 50, 20, {0, 0}}, mPath);
     const ImageF image = readImage(mPath);
     EXPECT_TRUE(sameBits(image.rgba, readWithImf(mPath, bytes).rgba));
+}
+
+/// The colour into half slices (RGBA interleaved, 8-byte pixels; A filled with 1 when absent), Z into a float
+/// one, and a half slice "W" the file lacks (filled with 0.25), read by Imf or by the fast path.
+struct HalfPixels {
+    std::vector<std::uint16_t> rgba;
+    std::vector<float> z;
+    std::vector<std::uint16_t> w;
+
+    HalfPixels(const Imath::Box2i& window, Imf::FrameBuffer& frameBuffer) {
+        const std::size_t width = std::size_t(window.max.x - window.min.x + 1);
+        const std::size_t n = width * std::size_t(window.max.y - window.min.y + 1);
+        rgba.assign(n * 4, 0x7777);
+        z.assign(n, -7.0f);
+        w.assign(n, 0x7777);
+        const auto add = [&](const char* name, char* base, Imf::PixelType type, std::size_t stride,
+                             double fill) {
+            frameBuffer.insert(name,
+                               Imf::Slice::Make(type, base, window, stride, stride * width, 1, 1, fill));
+        };
+        const auto rgbaBase = [&](int c) { return reinterpret_cast<char*>(rgba.data() + c); };
+        add("R", rgbaBase(0), Imf::HALF, 8, 0.0);
+        add("G", rgbaBase(1), Imf::HALF, 8, 0.0);
+        add("B", rgbaBase(2), Imf::HALF, 8, 0.0);
+        add("A", rgbaBase(3), Imf::HALF, 8, 1.0);
+        add("Z", reinterpret_cast<char*>(z.data()), Imf::FLOAT, 4, 0.0);
+        add("W", reinterpret_cast<char*>(w.data()), Imf::HALF, 2, 0.25);
+    }
+};
+
+// Half channels into half slices: the bits as stored, as Imf gives them, with or without an A channel (four
+// lanes of a pixel, or three and a fill), colour alone or with other channels, at odd widths.
+TEST_P(ExrZipTest, HalfSlicesOfHalfChannelsMatchOpenExrBitForBit) {
+    for (const bool alpha : {false, true}) {
+        for (const bool extras : {false, true}) {
+            for (const int width : {37, 64, 1}) {
+                FileSpec spec{Imf::ZIP_COMPRESSION, Imf::HALF, width, 19, {2, -3}};
+                spec.alpha = alpha;
+                spec.extras = extras;
+                const std::vector<unsigned char> bytes = makeExr(spec, mPath);
+                const std::string what = std::string(alpha ? "RGBA" : "RGB") + (extras ? " + Z" : "") +
+                                         ", width " + std::to_string(width);
+                detail::MemoryIStream stream(mPath, bytes);
+                Imf::InputFile file(stream);
+                const Imath::Box2i window = file.header().dataWindow();
+                Imf::FrameBuffer imfBuffer;
+                HalfPixels expected(window, imfBuffer);
+                file.setFrameBuffer(imfBuffer);
+                file.readPixels(window.min.y, window.max.y);
+                Imf::FrameBuffer fastBuffer;
+                HalfPixels actual(window, fastBuffer);
+                ASSERT_TRUE(detail::readZipScanlines(bytes, file.header(), fastBuffer)) << what;
+                EXPECT_EQ(actual.rgba, expected.rgba) << what;
+                EXPECT_TRUE(sameBits(actual.z, expected.z)) << what;
+                EXPECT_EQ(actual.w, expected.w) << what;
+                EXPECT_EQ(actual.w[0], 0x3400) << what; // 0.25
+                if (!alpha)
+                    EXPECT_EQ(actual.rgba[3], 0x3C00) << what; // 1.0
+                // The halves are the file's: widened, they are what the float slices read.
+                const Pixels floats = readWithImf(mPath, bytes);
+                std::vector<float> widened(actual.rgba.size());
+                for (std::size_t i = 0; i < widened.size(); ++i) {
+                    half h;
+                    h.setBits(actual.rgba[i]);
+                    widened[i] = float(h);
+                }
+                EXPECT_TRUE(sameBits(widened, floats.rgba)) << what;
+            }
+        }
+    }
+}
+
+// A float channel into a half slice is a rounding: left to Imf.
+TEST_P(ExrZipTest, HalfSlicesOfFloatChannelsAreLeftToOpenExr) {
+    const std::vector<unsigned char> bytes =
+        makeExr({Imf::ZIP_COMPRESSION, Imf::FLOAT, 16, 16, {0, 0}}, mPath);
+    detail::MemoryIStream stream(mPath, bytes);
+    Imf::InputFile file(stream);
+    Imf::FrameBuffer frameBuffer;
+    HalfPixels pixels(file.header().dataWindow(), frameBuffer);
+    EXPECT_FALSE(detail::readZipScanlines(bytes, file.header(), frameBuffer));
 }
 
 // With no worker threads the chunks decode on the caller's thread; with several, on OpenEXR's pool.

@@ -12,6 +12,7 @@
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
 #include <ImfRgbaFile.h>
+#include <ImfStandardAttributes.h>
 #include <ImfStringAttribute.h>
 #include <ImfVecAttribute.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -534,6 +535,109 @@ TEST(ExrFrame, FailedReadLeavesTheFrameEmptyAndTheReaderUsable) {
     EXPECT_EQ(frame.color.rgba, alone.color.rgba);
     EXPECT_EQ(frame.normals, alone.normals);
     EXPECT_EQ(frame.camera.jitter, alone.camera.jitter);
+}
+
+/// `frame`'s colour kept as halves, widened to floats.
+std::vector<float> widenedColor(const ExrFrame& frame) {
+    std::vector<float> out(frame.colorHalves.rgba.size());
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        half h;
+        h.setBits(frame.colorHalves.rgba[i]);
+        out[i] = float(h);
+    }
+    return out;
+}
+
+/// A 6x4 file of `mode` (Imf::WRITE_Y: luminance alone; WRITE_YC: luminance/chroma, subsampled by 2)
+/// through OpenEXR's RGBA interface, in half.
+void writeRgbaFile(const fs::path& path, Imf::RgbaChannels mode) {
+    std::vector<Imf::Rgba> pixels(24);
+    for (std::size_t i = 0; i < pixels.size(); ++i)
+        pixels[i] = Imf::Rgba(half(0.5f + float(i)), half(0.25f * float(i)), half(2.0f), half(1.0f));
+    Imf::RgbaOutputFile file(path.c_str(), 6, 4, mode);
+    file.setFrameBuffer(pixels.data(), 1, 6);
+    file.writePixels(4);
+}
+
+// A reader that keeps half colour as halves gives a half file's colour as stored, in `colorHalves` (`color`
+// empty), the same values as the floats a reader of floats gives, and every other field the same; a file
+// whose colour is not halves as stored (float channels, luminance/chroma, other primaries: converted in
+// float) keeps floats. In a sequence, each frame empties the colour it does not use.
+TEST(ExrFrame, AReaderKeepingHalvesGivesTheStoredHalves) {
+    const test::TempFolder folder;
+    writeExrFrame(folder / "half.exr", testFrame()); // colour in half, Z and motion in float
+    writeRaw(folder / "float.exr", {"R", "G", "B"});
+    writeRgbaFile(folder / "y.exr", Imf::WRITE_Y);
+    writeRgbaFile(folder / "yc.exr", Imf::WRITE_YC);
+    writeRaw(folder / "rec2020.exr", {"R", "G", "B"}, [](Imf::Header& header) {
+        Imf::addChromaticities(header,
+                               Imf::Chromaticities(Imath::V2f(0.708f, 0.292f), Imath::V2f(0.170f, 0.797f),
+                                                   Imath::V2f(0.131f, 0.046f), Imath::V2f(0.3127f, 0.3290f)));
+    });
+    ExrFrameReader reader(ExrFrameReader::Color::HalvesWhenStored);
+    ExrFrame frame;
+    struct Case {
+        const char* name;
+        bool halves;
+    };
+    // Twice over, so that each file is read into storage every other kind left.
+    for (int round = 0; round < 2; ++round) {
+        for (const Case c : {Case{"half.exr", true}, Case{"float.exr", false}, Case{"y.exr", true},
+                             Case{"yc.exr", false}, Case{"half.exr", true}}) {
+            reader.read(folder / c.name, frame);
+            const ExrFrame floats = readExrFrame(folder / c.name);
+            EXPECT_EQ(frame.width(), floats.color.width) << c.name;
+            EXPECT_EQ(frame.height(), floats.color.height) << c.name;
+            if (c.halves) {
+                EXPECT_TRUE(frame.color.empty() && frame.color.rgba.empty()) << c.name;
+                EXPECT_EQ(frame.colorHalves.rgba.size(), floats.color.rgba.size()) << c.name;
+                EXPECT_EQ(widenedColor(frame), floats.color.rgba) << c.name;
+            } else {
+                EXPECT_TRUE(frame.colorHalves.empty() && frame.colorHalves.rgba.empty()) << c.name;
+                EXPECT_EQ(frame.color.width, floats.color.width) << c.name;
+                EXPECT_EQ(frame.color.rgba, floats.color.rgba) << c.name;
+            }
+            EXPECT_EQ(frame.halfColor, floats.halfColor) << c.name;
+            EXPECT_EQ(frame.depth, floats.depth) << c.name;
+            EXPECT_EQ(frame.normals, floats.normals) << c.name;
+            EXPECT_EQ(frame.motion, floats.motion) << c.name;
+            EXPECT_EQ(frame.channels, floats.channels) << c.name;
+            EXPECT_EQ(frame.camera.worldToNDC, floats.camera.worldToNDC) << c.name;
+            const std::optional<Camera> camera = frameCamera(frame);
+            const std::optional<Camera> expected = frameCamera(floats);
+            ASSERT_EQ(camera.has_value(), expected.has_value()) << c.name;
+            if (camera)
+                EXPECT_EQ(camera->projection, expected->projection) << c.name;
+        }
+    }
+    // Y alone is copied to G and B, as halves too; alpha absent is 1.
+    reader.read(folder / "y.exr", frame);
+    ASSERT_FALSE(frame.colorHalves.empty());
+    EXPECT_EQ(frame.colorHalves.rgba[1], frame.colorHalves.rgba[0]);
+    EXPECT_EQ(frame.colorHalves.rgba[2], frame.colorHalves.rgba[0]);
+    EXPECT_EQ(frame.colorHalves.rgba[3], 0x3C00);
+    // Other primaries are converted in float: floats, as a reader of floats gives them.
+    reader.read(folder / "rec2020.exr", frame);
+    EXPECT_TRUE(frame.colorHalves.empty());
+    EXPECT_EQ(frame.color.rgba, readExrFrame(folder / "rec2020.exr").color.rgba);
+}
+
+// A frame whose colour is held as halves is written as they are, and reads back the same.
+TEST(ExrFrame, ColourHeldAsHalvesIsWrittenAsItIs) {
+    const test::TempFolder folder;
+    writeExrFrame(folder / "half.exr", testFrame());
+    ExrFrameReader reader(ExrFrameReader::Color::HalvesWhenStored);
+    ExrFrame frame;
+    reader.read(folder / "half.exr", frame);
+    ASSERT_FALSE(frame.colorHalves.empty());
+    writeExrFrame(folder / "again.exr", frame);
+    ExrFrame again;
+    reader.read(folder / "again.exr", again);
+    EXPECT_EQ(again.colorHalves.rgba, frame.colorHalves.rgba);
+    EXPECT_EQ(again.depth, frame.depth);
+    frame.colorHalves.rgba.pop_back();
+    EXPECT_THROW(writeExrFrame(folder / "bad.exr", frame), IoError);
+    EXPECT_FALSE(fs::exists(folder / "bad.exr"));
 }
 
 TEST(ExrFrame, NotAnExrIsAnError) {
