@@ -130,10 +130,21 @@ const std::array<Prime, 2>& primes() {
     return primes;
 }
 
+/// `frame` with a colour kept as halves widened to floats (exactly), as a reader of floats gives it.
+ExrFrame widened(ExrFrame frame) {
+    if (!frame.colorHalves.empty()) {
+        frame.color = ImageF(frame.colorHalves.width, frame.colorHalves.height);
+        halfToFloat(frame.colorHalves.rgba.data(), frame.color.rgba.data(), frame.color.rgba.size());
+        frame.colorHalves = ImageH{};
+    }
+    return frame;
+}
+
 void readPrime(ExrFrameReader& reader, const Prime& prime, ExrFrame& storage) {
     reader.decode({reinterpret_cast<const unsigned char*>(prime.bytes.data()), prime.bytes.size()},
                   "prime.exr", storage, kFrameLimits);
-    if (!sameFrame(storage, prime.frame))
+    // A reader keeping halves keeps the primes' half colour so; widened, it is the floats read.
+    if (!sameFrame(storage.colorHalves.empty() ? storage : widened(storage), prime.frame))
         broken("a frame read into storage an earlier read left differs from the same frame read on its own");
 }
 
@@ -177,54 +188,11 @@ void checkFrame(const ExrFrame& frame) {
     checkCamera([&] { return frameCamera(prime.frame, &frame.camera); });
 }
 
-/// `frame` with a colour kept as halves widened to floats (exactly), as a reader of floats gives it.
-ExrFrame widened(ExrFrame frame) {
-    if (!frame.colorHalves.empty()) {
-        frame.color = ImageF(frame.colorHalves.width, frame.colorHalves.height);
-        halfToFloat(frame.colorHalves.rgba.data(), frame.color.rgba.data(), frame.color.rgba.size());
-        frame.colorHalves = ImageH{};
-    }
-    return frame;
-}
-
-/// A reader that keeps half colour as halves, on the fuzzed bytes into storage a prime left: the same
-/// outcome as the float read on its own, halves only for a colour that is halves, and the same values.
-void readHalvesInto(std::span<const unsigned char> bytes, const std::optional<ExrFrame>& alone,
-                    const std::string& aloneError) {
-    ExrFrameReader reader(ExrFrameReader::Color::HalvesWhenStored);
-    ExrFrame storage;
-    for (const Prime& prime : primes()) {
-        reader.decode({reinterpret_cast<const unsigned char*>(prime.bytes.data()), prime.bytes.size()},
-                      "prime.exr", storage, kFrameLimits);
-        if (storage.colorHalves.empty() || !sameFrame(widened(storage), prime.frame))
-            broken("a half-colour prime read as halves differs from its floats");
-        try {
-            reader.decode(bytes, kFrameName, storage, kFrameLimits);
-        } catch (const IoError& e) {
-            if (alone)
-                broken(std::string("a read keeping halves failed where a read of floats did not: ") +
-                       e.what());
-            if (aloneError != e.what())
-                broken(std::string("a read keeping halves failed differently: ") + e.what());
-            if (!sameFrame(storage, ExrFrame{}))
-                broken("a failed read keeping halves left the frame half filled");
-            continue;
-        }
-        if (!alone)
-            broken("a read keeping halves succeeded where a read of floats failed: " + aloneError);
-        if (!storage.colorHalves.empty() && !storage.color.empty())
-            broken("a read keeping halves filled both colours");
-        if (!storage.colorHalves.empty() && !storage.halfColor)
-            broken("a colour kept as halves that the frame does not call half");
-        if (!sameFrame(widened(storage), *alone))
-            broken("a colour kept as halves differs from the floats read");
-    }
-}
-
 /// The sequence reader on the fuzzed bytes into `storage` (left by an earlier read): the same outcome as a
-/// read on its own, and on an error an empty frame.
+/// read of floats on its own, and on an error an empty frame. A reader that keeps half colour as halves
+/// (`keepsHalves`) keeps them only for a colour that is halves, and their floats are the read's.
 void readInto(ExrFrameReader& reader, std::span<const unsigned char> bytes, ExrFrame& storage,
-              const std::optional<ExrFrame>& alone, const std::string& aloneError) {
+              const std::optional<ExrFrame>& alone, const std::string& aloneError, bool keepsHalves) {
     try {
         reader.decode(bytes, kFrameName, storage, kFrameLimits);
     } catch (const IoError& e) {
@@ -239,8 +207,10 @@ void readInto(ExrFrameReader& reader, std::span<const unsigned char> bytes, ExrF
     }
     if (!alone)
         broken("a read into kept storage succeeded where a read on its own failed: " + aloneError);
-    if (!sameFrame(storage, *alone))
-        broken("a read into kept storage differs from a read on its own");
+    if (!storage.colorHalves.empty() && (!keepsHalves || !storage.color.empty() || !storage.halfColor))
+        broken("colour kept as halves by a reader of floats, beside floats, or for a colour not half");
+    if (!sameFrame(keepsHalves ? widened(storage) : storage, *alone))
+        broken("a read into kept storage differs from a read of floats on its own");
 }
 
 } // namespace
@@ -278,10 +248,18 @@ void exrFrame(const std::uint8_t* data, std::size_t size) {
     ExrFrame storage;
     for (const Prime& prime : primes()) {
         readPrime(reader, prime, storage);
-        readInto(reader, bytes, storage, alone, aloneError);
+        readInto(reader, bytes, storage, alone, aloneError, false);
     }
     readPrime(reader, primes()[0], storage);
-    readHalvesInto(bytes, alone, aloneError);
+    // The same with a reader keeping half colour as halves (the primes' colour is half).
+    ExrFrameReader halves(ExrFrameReader::Color::HalvesWhenStored);
+    ExrFrame kept;
+    for (const Prime& prime : primes()) {
+        readPrime(halves, prime, kept);
+        if (kept.colorHalves.empty())
+            broken("a reader keeping halves gave a half-colour prime as floats");
+        readInto(halves, bytes, kept, alone, aloneError, true);
+    }
 }
 
 } // namespace photopic::fuzz
