@@ -24,32 +24,28 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// World-space normals into view space with the view's normal matrix, into `out` (its storage kept); zero
-/// or non-finite normals (no surface) stay zero.
-void viewSpaceNormals(const std::vector<float>& world, const glm::mat4& view, std::vector<float>& out) {
+/// World-space normals into view space with the view's normal matrix, in place; zero or non-finite normals
+/// (no surface) become zero.
+void viewSpaceNormals(std::vector<float>& normals, const glm::mat4& view) {
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(view)));
-    out.assign(world.size(), 0.0f);
-    for (std::size_t i = 0; i + 2 < world.size(); i += 3) {
-        const glm::vec3 n = normalMatrix * glm::vec3(world[i], world[i + 1], world[i + 2]);
+    for (std::size_t i = 0; i + 2 < normals.size(); i += 3) {
+        const glm::vec3 n = normalMatrix * glm::vec3(normals[i], normals[i + 1], normals[i + 2]);
         const float length = glm::length(n);
-        if (!(length > 0.0f) || !std::isfinite(length))
-            continue;
-        out[i] = n.x / length;
-        out[i + 1] = n.y / length;
-        out[i + 2] = n.z / length;
+        const bool surface = length > 0.0f && std::isfinite(length);
+        normals[i] = surface ? n.x / length : 0.0f;
+        normals[i + 1] = surface ? n.y / length : 0.0f;
+        normals[i + 2] = surface ? n.z / length : 0.0f;
     }
 }
 
-/// Pixels (x right, y down, current minus previous, samples jittered) -> UV (y up), jitter removed, into
-/// `out` (its storage kept): a jittered sample of the current frame sits at p + j_current, of the previous
-/// frame at p' + j_previous, so the surface's own motion is m - j_current + j_previous.
-void uvMotion(const std::vector<float>& pixels, int width, int height, glm::vec2 jitter,
-              glm::vec2 previousJitter, std::vector<float>& out) {
+/// Pixels (x right, y down, current minus previous, samples jittered) -> UV (y up), jitter removed, in
+/// place: a jittered sample of the current frame sits at p + j_current, of the previous frame at
+/// p' + j_previous, so the surface's own motion is m - j_current + j_previous.
+void uvMotion(std::vector<float>& motion, int width, int height, glm::vec2 jitter, glm::vec2 previousJitter) {
     const glm::vec2 unjitter = previousJitter - jitter;
-    out.resize(pixels.size());
-    for (std::size_t i = 0; i + 1 < pixels.size(); i += 2) {
-        out[i] = (pixels[i] + unjitter.x) / float(width);
-        out[i + 1] = -(pixels[i + 1] + unjitter.y) / float(height);
+    for (std::size_t i = 0; i + 1 < motion.size(); i += 2) {
+        motion[i] = (motion[i] + unjitter.x) / float(width);
+        motion[i + 1] = -(motion[i + 1] + unjitter.y) / float(height);
     }
 }
 
@@ -104,8 +100,8 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
     out.depth = std::move(frame.depth);
     if (!frame.normals.empty()) {
         if (out.camera) {
-            out.normals = std::move(mNormals);
-            viewSpaceNormals(frame.normals, out.camera->view, out.normals);
+            out.normals = std::move(frame.normals);
+            viewSpaceNormals(out.normals, out.camera->view);
         } else {
             warnOnce("cli.normalsWithoutCamera",
                      fmt::format("{}: normals skipped: turning world-space normals into view space needs a "
@@ -132,9 +128,9 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
         out.sunDirection = sun;
     }
     if (!frame.motion.empty()) {
-        out.motion = std::move(mMotion);
-        uvMotion(frame.motion, width, height, jitter.value_or(glm::vec2(0.0f)),
-                 mPreviousJitter.value_or(glm::vec2(0.0f)), out.motion);
+        out.motion = std::move(frame.motion);
+        uvMotion(out.motion, width, height, jitter.value_or(glm::vec2(0.0f)),
+                 mPreviousJitter.value_or(glm::vec2(0.0f)));
     }
     out.color = std::move(frame.color);
     out.colorHalves = std::move(frame.colorHalves);
@@ -152,10 +148,10 @@ void InputDecoder::recycle(DecodedFrame&& frame) {
         mFrame.colorHalves = std::move(frame.colorHalves);
     if (frame.depth.capacity() > mFrame.depth.capacity())
         mFrame.depth = std::move(frame.depth);
-    if (frame.normals.capacity() > mNormals.capacity())
-        mNormals = std::move(frame.normals);
-    if (frame.motion.capacity() > mMotion.capacity())
-        mMotion = std::move(frame.motion);
+    if (frame.normals.capacity() > mFrame.normals.capacity())
+        mFrame.normals = std::move(frame.normals);
+    if (frame.motion.capacity() > mFrame.motion.capacity())
+        mFrame.motion = std::move(frame.motion);
 }
 
 // ---------------------------------------------------------------------------------------------------------------

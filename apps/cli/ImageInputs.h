@@ -58,9 +58,9 @@ public:
 
 private:
     ExrFrameReader mReader{ExrFrameReader::Color::HalvesWhenStored};
-    ExrFrame mFrame; ///< the storage decode() reads into; its colour and depth move out to the caller
-    std::vector<float> mNormals; ///< storage for the next frame's view-space normals (recycle())
-    std::vector<float> mMotion;  ///< storage for the next frame's UV motion (recycle())
+    /// The storage decode() reads into; its layers move out to the caller (normals and motion converted
+    /// in place) and come back through recycle().
+    ExrFrame mFrame;
     std::optional<CameraJson> mCameraJson;
     std::optional<ExrCameraAttributes> mPrevious;
     std::optional<glm::vec2> mPreviousJitter; ///< pixels, x right, y down
