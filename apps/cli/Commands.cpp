@@ -21,13 +21,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bitset>
 #include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <thread>
+#include <tuple>
 
 namespace photopic::cli {
 
@@ -686,6 +689,30 @@ private:
 
 } // namespace
 
+namespace {
+
+/// The 3D layers no pass of the pipeline read on the first frame (`uploaded`: its inputs) are left out of
+/// the frames decoded from now on: the settings stay the same, so no pass reads them later either, and their
+/// decode, upload and textures would cost 24 bytes a pixel on the CPU and 16 on the GPU for nothing.
+void readOnlyLayersUsed(InputDecoder& decoder, const Pipeline& pipeline, const FrameInputs& uploaded) {
+    const std::bitset<kResourceCount>& read = pipeline.resourcesRead();
+    const ExrFrameReader::Layers layers{.depth = read[std::size_t(Resource::Depth)],
+                                        .normals = read[std::size_t(Resource::Normals)],
+                                        .motion = read[std::size_t(Resource::Motion)]};
+    std::string unread;
+    for (const auto& [name, had, kept] : {std::tuple{"depth", uploaded.depth != nullptr, layers.depth},
+                                          std::tuple{"normals", uploaded.normals != nullptr, layers.normals},
+                                          std::tuple{"motion", uploaded.motion != nullptr, layers.motion}}) {
+        if (had && !kept)
+            unread += std::string(unread.empty() ? "" : ", ") + name;
+    }
+    if (!unread.empty())
+        logDebug("image: no pass reads the input's {}: left out of the frames decoded from now on", unread);
+    decoder.readLayers(layers);
+}
+
+} // namespace
+
 int runImage(const ImageOptions& options) {
     const std::vector<InputFile> files = expandInputs(options);
     std::vector<fs::path> inputs;
@@ -794,6 +821,9 @@ int runImage(const ImageOptions& options) {
             writeProcessed();
         }
         const Texture& display = pipeline->execute(frameInputs, time);
+        if (i == 0 && options.writeAux.empty()) {
+            readOnlyLayersUsed(decoder, *pipeline, frameInputs);
+        }
         if (telemetry) {
             telemetry->take(*pipeline, i, i + 1 == inputs.size());
         }

@@ -80,6 +80,9 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
         return out;
     }
     ExrFrame& frame = mFrame; // storage kept from the frame before (recycle())
+    const unsigned layers = mLayers.load(std::memory_order_relaxed);
+    mReader.setLayers(
+        {.depth = (layers & 1u) != 0, .normals = (layers & 2u) != 0, .motion = (layers & 4u) != 0});
     try {
         mReader.read(path, frame, {.maxPixels = mMaxPixels});
     } catch (const IoError& e) {
@@ -139,6 +142,11 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
     ++mIndex;
     mFirst = false;
     return out;
+}
+
+void InputDecoder::readLayers(ExrFrameReader::Layers layers) {
+    mLayers.store((layers.depth ? 1u : 0u) | (layers.normals ? 2u : 0u) | (layers.motion ? 4u : 0u),
+                  std::memory_order_relaxed);
 }
 
 void InputDecoder::recycle(DecodedFrame&& frame) {
@@ -258,8 +266,12 @@ FrameInputs InputTextures::upload(const DecodedFrame& frame, bool halfTexture) {
     const Extent extent{frame.width(), frame.height()};
     const bool halfColor = halfTexture && frame.halfColor();
     const SlotLayout layout = slotLayout(frame, halfColor);
-    if (!mRing.valid() || mRing.bytes() < layout.bytes)
+    // Made anew when a frame needs more, or under half of it (layers the pipeline does not read are left
+    // out after the first frame).
+    if (!mRing.valid() || mRing.bytes() < layout.bytes || layout.bytes < mRing.bytes() / 2) {
+        mRing = UploadRing(); // the old slot goes first: never both at once
         mRing = UploadRing(layout.bytes, kUploadSlots, "cli.input");
+    }
     std::byte* slot = mRing.begin().data();
     FrameInputs inputs{.color = &mColor};
 
@@ -295,6 +307,13 @@ FrameInputs InputTextures::upload(const DecodedFrame& frame, bool halfTexture) {
         inputs.motion = &mMotion;
     }
     mRing.end();
+    // A layer this frame lacks gives its texture back (the decoder leaves out layers no pass reads).
+    for (auto [texture, present] :
+         {std::pair{&mDepth, !frame.depth.empty()}, std::pair{&mNormals, !frame.normals.empty()},
+          std::pair{&mMotion, !frame.motion.empty()}}) {
+        if (!present && texture->valid())
+            *texture = Texture();
+    }
     if (frame.camera) {
         mCamera = *frame.camera;
         inputs.camera = &mCamera;

@@ -12,6 +12,7 @@
 #include "io/ExrFrame.h"
 #include "pipeline/Pipeline.h"
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -55,6 +56,9 @@ public:
     /// Gives back a frame decode() returned and the caller is done with: the next decode() reads into its
     /// storage instead of allocating (and clearing) a frame's worth of memory.
     void recycle(DecodedFrame&& frame);
+    /// The 3D layers the decodes that start after this call read (all until then): those the pipeline's
+    /// passes read. May be called from another thread than the one decoding.
+    void readLayers(ExrFrameReader::Layers layers);
 
 private:
     ExrFrameReader mReader{ExrFrameReader::Color::HalvesWhenStored};
@@ -66,6 +70,7 @@ private:
     std::optional<glm::vec2> mPreviousJitter; ///< pixels, x right, y down
     int mHaltonCycle = 0;
     std::int64_t mMaxPixels = kDefaultMaxPixels;
+    std::atomic<unsigned> mLayers{7u}; ///< readLayers(): depth 1, normals 2, motion 4
     std::uint64_t mIndex = 0;
     bool mFirst = true;
 };

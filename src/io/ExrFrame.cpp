@@ -353,7 +353,8 @@ Lens lensFromExr(const ExrCameraAttributes& a, float verticalFov) {
 
 /// The frame in `bytes`, already checked by detail::checkExrBytes, into `frame`'s storage.
 void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes, ExrFrame& frame,
-                      const ImageReadLimits& limits, ExrFrameReader::Color color) {
+                      const ImageReadLimits& limits, ExrFrameReader::Color color,
+                      ExrFrameReader::Layers wanted) {
     try {
         detail::MemoryIStream stream(path, bytes);
         Imf::InputFile file(stream);
@@ -389,11 +390,11 @@ void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes
 
         const auto layers = [&](Imf::FrameBuffer& frameBuffer, const Imath::Box2i& dataWindow, int width,
                                 int height) {
-            if (depth)
+            if (depth && wanted.depth)
                 addLayerSlices(frameBuffer, *depth, frame.depth, dataWindow, width, height);
-            if (normals)
+            if (normals && wanted.normals)
                 addLayerSlices(frameBuffer, *normals, frame.normals, dataWindow, width, height);
-            if (motion)
+            if (motion && wanted.motion)
                 addLayerSlices(frameBuffer, *motion, frame.motion, dataWindow, width, height);
         };
         // The colour not read is emptied, its storage kept for a later frame that reads it.
@@ -452,7 +453,7 @@ ExrFrame decodeExrFrame(std::span<const unsigned char> bytes, const fs::path& na
 void ExrFrameReader::read(const fs::path& path, ExrFrame& frame, const ImageReadLimits& limits) {
     try {
         detail::readCheckedExrBytes(path, mBytes, limits);
-        readCheckedFrame(path, mBytes, frame, limits, mColor);
+        readCheckedFrame(path, mBytes, frame, limits, mColor, mLayers);
     } catch (const IoError&) {
         clearFrame(frame);
         throw;
@@ -463,7 +464,7 @@ void ExrFrameReader::decode(std::span<const unsigned char> bytes, const fs::path
                             const ImageReadLimits& limits) {
     try {
         detail::checkExrBytes(name, bytes, limits);
-        readCheckedFrame(name, bytes, frame, limits, mColor);
+        readCheckedFrame(name, bytes, frame, limits, mColor, mLayers);
     } catch (const IoError&) {
         clearFrame(frame);
         throw;

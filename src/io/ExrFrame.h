@@ -103,6 +103,15 @@ public:
     enum class Color { Floats, HalvesWhenStored };
     explicit ExrFrameReader(Color color = Color::Floats)
         : mColor(color) {}
+    /// The 3D layers read when the file has them (all, unless set otherwise): a layer left out stays empty
+    /// in the frames read after this call, though its channels are still checked (a layer with some of its
+    /// components missing is an error either way) and listed in `channels`.
+    struct Layers {
+        bool depth = true;
+        bool normals = true;
+        bool motion = true;
+    };
+    void setLayers(Layers layers) { mLayers = layers; }
 
     /// readExrFrame into `frame`, every field replaced; its vectors' capacity is reused. On IoError
     /// `frame` is left empty (as a default ExrFrame, its capacity kept), never half filled.
@@ -114,6 +123,7 @@ public:
 private:
     std::vector<unsigned char> mBytes;
     Color mColor;
+    Layers mLayers;
 };
 /// Writes colour (half RGBA: `color` rounded, or `colorHalves` as they are when `color` is empty), Z (float),
 /// N.X/Y/Z (half), motion.X/Y (float) for the layers that are not

@@ -314,6 +314,7 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
             pass->invalidateHistory();
         }
     }
+    const bool lightingRan = mLightingTimed; // renderLighting() ran for this frame
     if (!mLightingTimed) {
         mTimers.beginFrame();
     }
@@ -342,6 +343,20 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
     mBeganFrame = false;
     mOutput = mPostSequencer.run(mOrder->post(), {.resources = kPostOutputs, .firstAvailable = true}, ctx,
                                  mResources);
+    mResourcesRead.reset();
+    const auto addReads = [&](const Sequencer& sequencer, std::span<FramePass* const> passes) {
+        for (const FramePass* pass : passes) {
+            if (!sequencer.needed(*pass))
+                continue;
+            for (const ResourceUse& use : pass->uses()) {
+                if (use.access != Access::Write)
+                    mResourcesRead.set(std::size_t(use.resource));
+            }
+        }
+    };
+    addReads(mPostSequencer, mOrder->post());
+    if (lightingRan)
+        addReads(mLightingSequencer, mOrder->lighting());
     mResetExposure = false;
     mResetHistory = false;
     mTimers.endFrame();

@@ -22,6 +22,7 @@
 #include "pipeline/Sequencer.h"
 
 #include <array>
+#include <bitset>
 #include <cstdint>
 #include <deque>
 #include <functional>
@@ -129,6 +130,12 @@ public:
     [[nodiscard]] GpuTimers& timers() { return mTimers; }
     /// The path, tier, latest pass timings, and what the last frame ran and skipped.
     [[nodiscard]] PipelineStatus status() const;
+    /// The resources the passes the last execute() needed (those that ran, and those skipped for want of an
+    /// input) read, required or optional; with the lighting stage's when renderLighting() ran for that frame.
+    /// Of the host's inputs (Resource::Depth, Normals, Motion, ...), those the frame used: a host whose
+    /// settings stay the same may leave the others out of its later frames. No pass reads them, and an input
+    /// that no needed pass reads decides no pass's place in the plan.
+    [[nodiscard]] const std::bitset<kResourceCount>& resourcesRead() const { return mResourcesRead; }
 
     /// Camera cut, teleport: the next frame's exposure snaps to its target (resize does the same).
     void resetExposure() { mResetExposure = true; }
@@ -197,7 +204,8 @@ private:
     LightingOutputs mLighting;
     const Texture* mContactShadowSteps = nullptr; ///< the lighting stage's, for the post stage's debug view
     std::vector<std::string> mInputErrors;
-    Texture mInvalid; ///< 1x1 black, returned for a frame without usable colour
+    std::bitset<kResourceCount> mResourcesRead; ///< resourcesRead()
+    Texture mInvalid;                           ///< 1x1 black, returned for a frame without usable colour
     Resource mOutput = Resource::DisplayColor;
 };
 

@@ -190,4 +190,13 @@ bool Sequencer::ran(const FramePass& pass) const {
     return false;
 }
 
+bool Sequencer::needed(const FramePass& pass) const {
+    for (std::size_t i = 0; i < mPasses.size(); ++i) {
+        if (mPasses[i] == &pass) {
+            return mStates[i] == State::Run || mStates[i] == State::Skipped;
+        }
+    }
+    return false;
+}
+
 } // namespace photopic

@@ -46,6 +46,8 @@ public:
     /// The passes the last run() had to skip.
     [[nodiscard]] std::vector<SkippedPass> skippedPasses() const;
     [[nodiscard]] bool ran(const FramePass& pass) const;
+    /// The last run() needed the pass: it ran, or it was skipped for want of a required input.
+    [[nodiscard]] bool needed(const FramePass& pass) const;
 
 private:
     enum class State : std::uint8_t { Off, Candidate, Blocked, Run, Skipped };

@@ -25,6 +25,18 @@ check "one PNG per frame" test "$(ls "$S/out"/*.png | wc -l)" -eq 10
 check "one aux EXR per frame" test "$(ls "$S/aux"/*.aux.exr | wc -l)" -eq 10
 expect 0 "aux depth, view-space normals and UV motion hold the expected values" -- "$FIXTURE" check-aux "$S/aux"
 
+# Layers that no pass reads (the default settings read none) are left out of the frames after the first, and
+# the images are the same as the run above, which kept every layer for --write-aux; with TAA, which reads
+# the motion and the depth, only the normals are left out.
+expect 0 "the sequence without --write-aux" -- "$PHOTOPIC" image "$S"/seq/*.exr -o "$S/lean" -v
+check "the layers no pass reads are left out" contains "no pass reads the input's depth, normals, motion: left out"
+check "the same images as with every layer" diff -r "$S/out" "$S/lean"
+expect 0 "with TAA, every layer kept" -- "$PHOTOPIC" image "$S"/seq/*.exr -o "$S/taa" --jitter halton \
+    --set aa.mode=taa --write-aux "$S/aux-taa"
+expect 0 "with TAA" -- "$PHOTOPIC" image "$S"/seq/*.exr -o "$S/taa-lean" --jitter halton --set aa.mode=taa -v
+check "only the normals are left out" contains "no pass reads the input's normals: left out"
+check "the same images with TAA" diff -r "$S/taa" "$S/taa-lean"
+
 expect 0 "normals without a camera are skipped, with a warning" -- "$PHOTOPIC" image "$S/plain/plain.exr" -o "$S/plain.png"
 check "the warning says why" contains "normals skipped"
 check "the image is still written" test -s "$S/plain.png"

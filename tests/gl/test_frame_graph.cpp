@@ -11,8 +11,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <string_view>
 #include <vector>
 
 namespace photopic::test {
@@ -165,6 +168,92 @@ TEST_F(GlTest, AMissingInputSkipsExactlyThePassesThatNeedItAndReportsThem) {
     EXPECT_TRUE(contains(st.ran, "linear depth"));
     EXPECT_TRUE(contains(st.ran, "debug view"));
     EXPECT_FALSE(contains(st.ran, "composite + grade + tonemap")); // the view replaces the image
+}
+
+// resourcesRead(): what the passes a frame needed read. The default chain reads none of the 3D layers; a
+// frame given only what the first frame read (the CLI leaves the rest out of later frames) shows the same
+// images, frame after frame, for each effect that reads some of them.
+TEST_F(GlTest, InputsTheFrameDidNotReadCanBeLeftOut) {
+    ImageF checker = grey(kW, kH, 0.05f); // detail for the effects to move, blur and reflect
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) {
+            if ((x / 3 + y / 3) % 2 == 0)
+                std::fill_n(checker.at(x, y), 3, 4.0f);
+        }
+    }
+    const Texture color = makeTexture(checker, "color");
+    std::vector<float> distance(kW * kH);
+    for (std::size_t i = 0; i < distance.size(); ++i)
+        distance[i] = 2.0f + float(i % 7);
+    const Texture depth = r32f(kW, kH, distance);
+    ImageF facing(kW, kH);
+    ImageF moving(kW, kH);
+    for (std::size_t i = 0; i < facing.pixelCount(); ++i) { // creases every few columns, a slow drift
+        const float angle = 0.6f * float((i % kW) / 4 % 3) - 0.6f;
+        facing.rgba[i * 4] = std::sin(angle);
+        facing.rgba[i * 4 + 2] = std::cos(angle);
+        moving.rgba[i * 4] = 0.01f;
+    }
+    const Texture normals = makeTexture(facing, "normals", GL_RGBA16F);
+    const Texture motion = makeTexture(moving, "motion", GL_RG16F);
+    const Camera camera = testCamera();
+    const FrameInputs all{.color = &color,
+                          .depth = &depth,
+                          .depthKind = DepthKind::LinearView,
+                          .normals = &normals,
+                          .motion = &motion,
+                          .camera = &camera};
+    struct Case {
+        const char* name;
+        Settings settings;
+    };
+    std::vector<Case> cases{{"default", plain()}};
+    const auto add = [&](const char* name, const std::function<void(Settings&)>& change) {
+        Settings s = plain();
+        change(s);
+        cases.push_back({name, s});
+    };
+    add("ssao", [](Settings& s) { // in the post stage (a lighting-stage AO needs a host that shades)
+        s.ssao.enabled = true;
+        s.ssao.apply = AoApply::Multiply;
+    });
+    add("taa", [](Settings& s) { s.aa.mode = AntiAliasing::Taa; });
+    add("dof", [](Settings& s) { s.dof.enabled = true; });
+    add("motion blur", [](Settings& s) { s.motionBlur.enabled = true; });
+    add("ssr", [](Settings& s) { s.ssr.enabled = true; });
+    add("outline", [](Settings& s) { s.outline.enabled = true; });
+    add("depth view", [](Settings& s) { s.debug.view = DebugView::Depth; });
+    add("normals view", [](Settings& s) { s.debug.view = DebugView::Normals; });
+    const auto layer = [](const std::bitset<kResourceCount>& read, Resource r) {
+        return read[std::size_t(r)];
+    };
+    for (const Case& c : cases) {
+        Pipeline full({.settings = c.settings});
+        Pipeline lean({.settings = c.settings});
+        (void)full.execute(all, {.frameIndex = 0});
+        const std::bitset<kResourceCount> read = full.resourcesRead();
+        EXPECT_TRUE(layer(read, Resource::SceneColor)) << c.name;
+        if (c.name == std::string_view("default")) {
+            EXPECT_FALSE(layer(read, Resource::Depth) || layer(read, Resource::Normals) ||
+                         layer(read, Resource::Motion));
+        } else {
+            EXPECT_TRUE(layer(read, Resource::Depth) || layer(read, Resource::Normals) ||
+                        layer(read, Resource::Motion))
+                << c.name << " reads no 3D layer";
+        }
+        FrameInputs used = all;
+        used.depth = layer(read, Resource::Depth) ? &depth : nullptr;
+        used.normals = layer(read, Resource::Normals) ? &normals : nullptr;
+        used.motion = layer(read, Resource::Motion) ? &motion : nullptr;
+        // The first frame as the CLI runs it (all layers), then three with only what it read.
+        (void)lean.execute(all, {.frameIndex = 0});
+        for (std::uint64_t frame = 1; frame <= 3; ++frame) {
+            const Image8 expected = readTexture8(full.execute(all, {.frameIndex = frame}));
+            const Image8 actual = readTexture8(lean.execute(used, {.frameIndex = frame}));
+            EXPECT_TRUE(actual.rgba == expected.rgba) << c.name << ", frame " << frame;
+            EXPECT_EQ(lean.status().skipped.size(), full.status().skipped.size()) << c.name;
+        }
+    }
 }
 
 TEST_F(GlTest, BadInputsAreReportedNotFatal) {

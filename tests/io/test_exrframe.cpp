@@ -622,6 +622,31 @@ TEST(ExrFrame, AReaderKeepingHalvesGivesTheStoredHalves) {
     EXPECT_EQ(frame.color.rgba, readExrFrame(folder / "rec2020.exr").color.rgba);
 }
 
+// Layers left out are empty in the frames read after, still listed among the channels and still checked (a
+// layer missing a component is an error either way); asked for again, they are read again.
+TEST(ExrFrame, LayersLeftOutAreNotReadButStillChecked) {
+    const test::TempFolder folder;
+    writeExrFrame(folder / "frame.exr", testFrame());
+    writeRaw(folder / "bad.exr", {"R", "G", "B", "N.X", "N.Y"});
+    const ExrFrame whole = readExrFrame(folder / "frame.exr");
+    ExrFrameReader reader;
+    ExrFrame frame;
+    reader.setLayers({.depth = false, .normals = true, .motion = false});
+    reader.read(folder / "frame.exr", frame);
+    EXPECT_TRUE(frame.depth.empty());
+    EXPECT_TRUE(frame.motion.empty());
+    EXPECT_EQ(frame.normals, whole.normals);
+    EXPECT_EQ(frame.color.rgba, whole.color.rgba);
+    EXPECT_EQ(frame.channels, whole.channels);
+    reader.setLayers({.depth = false, .normals = false, .motion = false});
+    EXPECT_THROW(reader.read(folder / "bad.exr", frame), IoError);
+    reader.setLayers({});
+    reader.read(folder / "frame.exr", frame);
+    EXPECT_EQ(frame.depth, whole.depth);
+    EXPECT_EQ(frame.normals, whole.normals);
+    EXPECT_EQ(frame.motion, whole.motion);
+}
+
 // A frame whose colour is held as halves is written as they are, and reads back the same.
 TEST(ExrFrame, ColourHeldAsHalvesIsWrittenAsItIs) {
     const test::TempFolder folder;
