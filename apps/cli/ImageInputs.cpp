@@ -83,6 +83,12 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
     const unsigned layers = mLayers.load(std::memory_order_relaxed);
     mReader.setLayers(
         {.depth = (layers & 1u) != 0, .normals = (layers & 2u) != 0, .motion = (layers & 4u) != 0});
+    // Storage kept for a layer no longer read (the frames decoded before readLayers() had it) goes back.
+    for (auto [layer, bit] :
+         {std::pair{&frame.depth, 1u}, std::pair{&frame.normals, 2u}, std::pair{&frame.motion, 4u}}) {
+        if ((layers & bit) == 0)
+            *layer = std::vector<float>();
+    }
     try {
         mReader.read(path, frame, {.maxPixels = mMaxPixels});
     } catch (const IoError& e) {
