@@ -687,10 +687,6 @@ private:
     std::vector<double> mSamples[kStages];
 };
 
-} // namespace
-
-namespace {
-
 /// The 3D layers no pass of the pipeline read on the first frame (`uploaded`: its inputs) are left out of
 /// the frames decoded from now on: the settings stay the same, so no pass reads them later either, and their
 /// decode, upload and textures would cost 24 bytes a pixel on the CPU and 16 on the GPU for nothing.

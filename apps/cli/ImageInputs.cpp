@@ -80,13 +80,16 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
         return out;
     }
     ExrFrame& frame = mFrame; // storage kept from the frame before (recycle())
-    const unsigned layers = mLayers.load(std::memory_order_relaxed);
-    mReader.setLayers(
-        {.depth = (layers & 1u) != 0, .normals = (layers & 2u) != 0, .motion = (layers & 4u) != 0});
+    const ExrFrameReader::Layers layers = [&] {
+        const std::lock_guard lock(mLayersMutex);
+        return mLayers;
+    }();
+    mReader.setLayers(layers);
     // Storage kept for a layer no longer read (the frames decoded before readLayers() had it) goes back.
-    for (auto [layer, bit] :
-         {std::pair{&frame.depth, 1u}, std::pair{&frame.normals, 2u}, std::pair{&frame.motion, 4u}}) {
-        if ((layers & bit) == 0)
+    for (auto [layer, read] :
+         {std::pair{&frame.depth, layers.depth}, std::pair{&frame.normals, layers.normals},
+          std::pair{&frame.motion, layers.motion}}) {
+        if (!read)
             *layer = std::vector<float>();
     }
     try {
@@ -151,8 +154,8 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
 }
 
 void InputDecoder::readLayers(ExrFrameReader::Layers layers) {
-    mLayers.store((layers.depth ? 1u : 0u) | (layers.normals ? 2u : 0u) | (layers.motion ? 4u : 0u),
-                  std::memory_order_relaxed);
+    const std::lock_guard lock(mLayersMutex);
+    mLayers = layers;
 }
 
 void InputDecoder::recycle(DecodedFrame&& frame) {
@@ -209,12 +212,14 @@ SlotLayout slotLayout(const DecodedFrame& frame, bool halfColor) {
 // The writers below fill slot memory (write-only, front to back) with image rows bottom to top, GL's order,
 // so that texel (x, y) is image pixel (x, height - 1 - y), as Texture::uploadRgba32f has it.
 
-/// `components` floats a pixel as they are, for a 32F texture (a float colour, the depth).
-void writeFloatRows(std::byte* out, const float* values, Extent extent, int components) {
+/// `components` values a pixel as they are: floats for a 32F texture (a float colour, the depth), halves for
+/// a 16F one (a half colour).
+template <class Value>
+void copyRows(std::byte* out, const Value* values, Extent extent, int components) {
     const std::size_t row = std::size_t(extent.width) * std::size_t(components);
     for (int y = 0; y < extent.height; ++y) {
-        std::memcpy(out + std::size_t(y) * row * sizeof(float),
-                    values + std::size_t(extent.height - 1 - y) * row, row * sizeof(float));
+        std::memcpy(out + std::size_t(y) * row * sizeof(Value),
+                    values + std::size_t(extent.height - 1 - y) * row, row * sizeof(Value));
     }
 }
 
@@ -227,15 +232,6 @@ void writeHalfRows(std::byte* out, const float* values, Extent extent, int compo
     auto* halves = reinterpret_cast<std::uint16_t*>(out);
     for (int y = 0; y < extent.height; ++y) {
         floatToHalf(values + std::size_t(extent.height - 1 - y) * row, halves + std::size_t(y) * row, row);
-    }
-}
-
-/// RGBA halves as they are, for a 16F texture.
-void copyHalfRows(std::byte* out, const std::uint16_t* halves, Extent extent) {
-    const std::size_t row = std::size_t(extent.width) * 4;
-    for (int y = 0; y < extent.height; ++y) {
-        std::memcpy(out + std::size_t(y) * row * sizeof(std::uint16_t),
-                    halves + std::size_t(extent.height - 1 - y) * row, row * sizeof(std::uint16_t));
     }
 }
 
@@ -283,18 +279,18 @@ FrameInputs InputTextures::upload(const DecodedFrame& frame, bool halfTexture) {
 
     ensure(mColor, extent, halfColor ? GL_RGBA16F : GL_RGBA32F, "cli.input.color");
     if (halfColor) {
-        copyHalfRows(slot + layout.color, frame.colorHalves.rgba.data(), extent);
+        copyRows(slot + layout.color, frame.colorHalves.rgba.data(), extent, 4);
         mRing.upload(mColor, layout.color, GL_RGBA, GL_HALF_FLOAT);
     } else {
         if (frame.halfColor())
             writeHalvesAsFloatRows(slot + layout.color, frame.colorHalves.rgba.data(), extent, mFloatRow);
         else
-            writeFloatRows(slot + layout.color, frame.color.rgba.data(), extent, 4);
+            copyRows(slot + layout.color, frame.color.rgba.data(), extent, 4);
         mRing.upload(mColor, layout.color, GL_RGBA, GL_FLOAT);
     }
     if (!frame.depth.empty()) {
         ensure(mDepth, extent, GL_R32F, "cli.input.depth");
-        writeFloatRows(slot + layout.depth, frame.depth.data(), extent, 1);
+        copyRows(slot + layout.depth, frame.depth.data(), extent, 1);
         mRing.upload(mDepth, layout.depth, GL_RED, GL_FLOAT);
         inputs.depth = &mDepth;
         inputs.depthKind = DepthKind::LinearView;

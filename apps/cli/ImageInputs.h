@@ -12,9 +12,9 @@
 #include "io/ExrFrame.h"
 #include "pipeline/Pipeline.h"
 
-#include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -70,7 +70,8 @@ private:
     std::optional<glm::vec2> mPreviousJitter; ///< pixels, x right, y down
     int mHaltonCycle = 0;
     std::int64_t mMaxPixels = kDefaultMaxPixels;
-    std::atomic<unsigned> mLayers{7u}; ///< readLayers(): depth 1, normals 2, motion 4
+    std::mutex mLayersMutex;        ///< readLayers() may come from another thread than decode()
+    ExrFrameReader::Layers mLayers; ///< readLayers(); all at first
     std::uint64_t mIndex = 0;
     bool mFirst = true;
 };

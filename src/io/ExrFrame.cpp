@@ -351,6 +351,14 @@ Lens lensFromExr(const ExrCameraAttributes& a, float verticalFov) {
 // ---------------------------------------------------------------------------------------------------------------
 // Reading
 
+/// `image` (ImageF or ImageH) made empty, its storage's capacity kept.
+template <class Image>
+void emptyKeepingStorage(Image& image) {
+    image.width = 0;
+    image.height = 0;
+    image.rgba.clear();
+}
+
 /// The frame in `bytes`, already checked by detail::checkExrBytes, into `frame`'s storage.
 void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes, ExrFrame& frame,
                       const ImageReadLimits& limits, ExrFrameReader::Color color,
@@ -399,12 +407,10 @@ void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes
         };
         // The colour not read is emptied, its storage kept for a later frame that reads it.
         if (color == ExrFrameReader::Color::HalvesWhenStored && detail::exrColorIsHalves(header)) {
-            frame.color.width = frame.color.height = 0;
-            frame.color.rgba.clear();
+            emptyKeepingStorage(frame.color);
             detail::readExrColorHalves(path, bytes, file, frame.colorHalves, layers, limits);
         } else {
-            frame.colorHalves.width = frame.colorHalves.height = 0;
-            frame.colorHalves.rgba.clear();
+            emptyKeepingStorage(frame.colorHalves);
             detail::readExrColor(path, bytes, file, frame.color, layers, limits);
         }
     } catch (const IoError&) {
@@ -416,12 +422,8 @@ void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes
 
 /// Every field of `frame` emptied, its vectors' capacity kept.
 void clearFrame(ExrFrame& frame) {
-    frame.color.width = 0;
-    frame.color.height = 0;
-    frame.color.rgba.clear();
-    frame.colorHalves.width = 0;
-    frame.colorHalves.height = 0;
-    frame.colorHalves.rgba.clear();
+    emptyKeepingStorage(frame.color);
+    emptyKeepingStorage(frame.colorHalves);
     frame.depth.clear();
     frame.normals.clear();
     frame.motion.clear();

@@ -181,22 +181,22 @@ std::vector<SkippedPass> Sequencer::skippedPasses() const {
     return skipped;
 }
 
-bool Sequencer::ran(const FramePass& pass) const {
+Sequencer::State Sequencer::stateOf(const FramePass& pass) const {
     for (std::size_t i = 0; i < mPasses.size(); ++i) {
         if (mPasses[i] == &pass) {
-            return mStates[i] == State::Run;
+            return mStates[i];
         }
     }
-    return false;
+    return State::Off;
+}
+
+bool Sequencer::ran(const FramePass& pass) const {
+    return stateOf(pass) == State::Run;
 }
 
 bool Sequencer::needed(const FramePass& pass) const {
-    for (std::size_t i = 0; i < mPasses.size(); ++i) {
-        if (mPasses[i] == &pass) {
-            return mStates[i] == State::Run || mStates[i] == State::Skipped;
-        }
-    }
-    return false;
+    const State state = stateOf(pass);
+    return state == State::Run || state == State::Skipped;
 }
 
 } // namespace photopic

@@ -51,6 +51,8 @@ public:
 
 private:
     enum class State : std::uint8_t { Off, Candidate, Blocked, Run, Skipped };
+    /// The pass's state in the last run() (Off when it was not in the list).
+    [[nodiscard]] State stateOf(const FramePass& pass) const;
     void plan(std::span<FramePass* const> passes, StageOutputs outputs, const FrameContext& ctx,
               const FrameResources& resources, Resource& output);
     void barrierBefore(const FramePass& pass, const FrameResources& resources);
