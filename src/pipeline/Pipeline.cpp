@@ -36,6 +36,10 @@ bool readsRawScene(std::span<FramePass* const> passes, const FramePass& sanitize
 }
 /// A scene-value debug view replaces the display image when its pass can run.
 constexpr Resource kPostOutputs[] = {Resource::DebugColor, Resource::DisplayColor};
+/// The host's inputs besides colour (FrameInputs), as plannedReads() takes them.
+constexpr Resource kHostInputs[] = {Resource::Depth,    Resource::Normals,      Resource::Motion,
+                                    Resource::Camera,   Resource::SunDirection, Resource::ObjectId,
+                                    Resource::Material, Resource::SunShadowMap};
 
 void warnAboutTier(const Capabilities& caps, Quality quality) {
     if (quality == Quality::Legacy && caps.path == ColorPath::Hdr) {
@@ -343,26 +347,61 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
     mBeganFrame = false;
     mOutput = mPostSequencer.run(mOrder->post(), {.resources = kPostOutputs, .firstAvailable = true}, ctx,
                                  mResources);
-    mResourcesRead.reset();
-    const auto addReads = [&](const Sequencer& sequencer, std::span<FramePass* const> passes) {
-        for (const FramePass* pass : passes) {
-            if (!sequencer.needed(*pass))
-                continue;
-            for (const ResourceUse& use : pass->uses()) {
-                if (use.access != Access::Write)
-                    mResourcesRead.set(std::size_t(use.resource));
-            }
-        }
-    };
-    addReads(mPostSequencer, mOrder->post());
+    mResourcesRead = mPostSequencer.neededReads();
     if (lightingRan)
-        addReads(mLightingSequencer, mOrder->lighting());
+        mResourcesRead |= mLightingSequencer.neededReads();
     mResetExposure = false;
     mResetHistory = false;
     mTimers.endFrame();
     const Texture* out = mResources.texture(mOutput);
     PHOTOPIC_ASSERT(out != nullptr);
     return *out;
+}
+
+std::bitset<kResourceCount> Pipeline::plannedReads(std::bitset<kResourceCount> inputs, bool lighting) {
+    const auto has = [&](Resource r) { return inputs.test(std::size_t(r)); };
+    // The passes' enabled() look at which inputs the frame has, never at what they hold: a present texture
+    // input is the 1x1 placeholder here, the camera a default one. Nothing is bound or read.
+    const Camera camera;
+    FrameInputs in{.color = &mInvalid};
+    in.depth = has(Resource::Depth) ? &mInvalid : nullptr;
+    in.normals = has(Resource::Normals) ? &mInvalid : nullptr;
+    in.motion = has(Resource::Motion) ? &mInvalid : nullptr;
+    in.camera = has(Resource::Camera) ? &camera : nullptr;
+    if (has(Resource::SunDirection)) {
+        in.sunDirection = glm::vec3(0.0f, 1.0f, 0.0f);
+    }
+    in.objectId = has(Resource::ObjectId) ? &mInvalid : nullptr;
+    in.material = has(Resource::Material) ? &mInvalid : nullptr;
+    in.sunShadow.depth = has(Resource::SunShadowMap) ? &mInvalid : nullptr;
+
+    Sequencer::ResourceSet bound;
+    for (const Resource r : kHostInputs) {
+        bound.set(std::size_t(r), has(r));
+    }
+    // What bindInputs() binds besides the host's inputs.
+    for (const Resource r : {Resource::Color, Resource::SceneColor, Resource::ExposureState}) {
+        bound.set(std::size_t(r));
+    }
+    const QualityTier tier = effectiveTier(mCaps, mSettings.quality);
+    const FrameTime time;
+    FrameContext ctx = makeContext(in, time, tier);
+    std::bitset<kResourceCount> reads;
+    if (lighting) {
+        Sequencer stage;
+        const Sequencer::ResourceSet made =
+            stage.plan(mOrder->lighting(), {.resources = kLightingOutputs}, ctx, bound);
+        reads |= stage.neededReads();
+        // execute() binds the lighting stage's textures for the post stage.
+        for (const Resource r :
+             {Resource::AmbientOcclusion, Resource::ContactShadows, Resource::ContactShadowSteps}) {
+            bound.set(std::size_t(r), made.test(std::size_t(r)));
+        }
+    }
+    ctx.sanitizeScene = readsRawScene(mOrder->post(), mOrder->sanitize, ctx);
+    Sequencer stage;
+    (void)stage.plan(mOrder->post(), {.resources = kPostOutputs, .firstAvailable = true}, ctx, bound);
+    return reads | stage.neededReads();
 }
 
 int Pipeline::subframeCount() const noexcept {

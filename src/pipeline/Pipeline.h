@@ -131,11 +131,20 @@ public:
     /// The path, tier, latest pass timings, and what the last frame ran and skipped.
     [[nodiscard]] PipelineStatus status() const;
     /// The resources the passes the last execute() needed (those that ran, and those skipped for want of an
-    /// input) read, required or optional; with the lighting stage's when renderLighting() ran for that frame.
+    /// input whose output a later pass reads) read, required or optional; with the lighting stage's when
+    /// renderLighting() ran for that frame.
     /// Of the host's inputs (Resource::Depth, Normals, Motion, ...), those the frame used: a host whose
     /// settings stay the same may leave the others out of its later frames. No pass reads them, and an input
     /// that no needed pass reads decides no pass's place in the plan.
     [[nodiscard]] const std::bitset<kResourceCount>& resourcesRead() const { return mResourcesRead; }
+    /// What resourcesRead() will hold after a frame whose inputs besides colour are `inputs` (of
+    /// Resource::Depth, Normals, Motion, Camera, SunDirection, ObjectId, Material and SunShadowMap, each
+    /// taken as valid), at the current settings; with the lighting stage's reads when `lighting` (the host
+    /// calls renderLighting() for that frame). Planned as execute() plans, before the frame is made: a host
+    /// can leave out of its first frame too the inputs no pass will read. Runs nothing and changes nothing
+    /// later frames do.
+    [[nodiscard]] std::bitset<kResourceCount> plannedReads(std::bitset<kResourceCount> inputs,
+                                                           bool lighting = false);
 
     /// Camera cut, teleport: the next frame's exposure snaps to its target (resize does the same).
     void resetExposure() { mResetExposure = true; }

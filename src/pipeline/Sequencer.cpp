@@ -20,17 +20,20 @@ Sequencer::ResourceSet usesOf(const FramePass& pass, Access access) {
 
 } // namespace
 
-void Sequencer::plan(std::span<FramePass* const> passes, StageOutputs outputs, const FrameContext& ctx,
-                     const FrameResources& resources, Resource& output) {
+Sequencer::ResourceSet Sequencer::plan(std::span<FramePass* const> passes, StageOutputs outputs,
+                                       const FrameContext& ctx, ResourceSet bound) {
+    Resource output = Resource::Count;
+    return plan(passes, outputs, ctx, bound, output);
+}
+
+Sequencer::ResourceSet Sequencer::plan(std::span<FramePass* const> passes, StageOutputs outputs,
+                                       const FrameContext& ctx, ResourceSet bound, Resource& output) {
     mPasses.assign(passes.begin(), passes.end());
     mStates.assign(passes.size(), State::Off);
     mMissing.assign(passes.size(), ResourceSet());
 
     // Forward: what can run, and what will be available.
-    ResourceSet available;
-    for (std::size_t r = 0; r < kResourceCount; ++r) {
-        available.set(r, resources.has(Resource(r)));
-    }
+    ResourceSet available = bound;
     for (std::size_t i = 0; i < passes.size(); ++i) {
         const FramePass& pass = *passes[i];
         if (!pass.enabled(ctx)) {
@@ -79,7 +82,7 @@ void Sequencer::plan(std::span<FramePass* const> passes, StageOutputs outputs, c
         const bool wanted = pass.hasSideEffects() || (writes & needed).any();
         if (mStates[i] == State::Blocked) {
             // Blocked passes are reported whether or not a consumer ran: the settings asked for them.
-            mStates[i] = State::Skipped;
+            mStates[i] = wanted ? State::Skipped : State::SkippedUnread;
             continue;
         }
         if (!wanted) {
@@ -91,6 +94,7 @@ void Sequencer::plan(std::span<FramePass* const> passes, StageOutputs outputs, c
         needed &= ~writes;
         needed |= usesOf(pass, Access::Read) | usesOf(pass, Access::ReadOptional);
     }
+    return available;
 }
 
 void Sequencer::barrierBefore(const FramePass& pass, const FrameResources& resources) {
@@ -117,12 +121,16 @@ void Sequencer::barrierBefore(const FramePass& pass, const FrameResources& resou
 
 Resource Sequencer::run(std::span<FramePass* const> passes, StageOutputs outputs, FrameContext& ctx,
                         FrameResources& resources) {
+    ResourceSet bound;
+    for (std::size_t r = 0; r < kResourceCount; ++r) {
+        bound.set(r, resources.has(Resource(r)));
+    }
     Resource output = Resource::Count;
-    plan(passes, outputs, ctx, resources, output);
+    plan(passes, outputs, ctx, bound, output);
     mDirty.reset();
     for (std::size_t i = 0; i < passes.size(); ++i) {
         FramePass& pass = *passes[i];
-        if (mStates[i] == State::Skipped) {
+        if (mStates[i] == State::Skipped || mStates[i] == State::SkippedUnread) {
             try {
                 std::string missing;
                 for (std::size_t r = 0; r < kResourceCount; ++r) {
@@ -167,7 +175,7 @@ std::vector<std::string> Sequencer::ranPasses() const {
 std::vector<SkippedPass> Sequencer::skippedPasses() const {
     std::vector<SkippedPass> skipped;
     for (std::size_t i = 0; i < mPasses.size(); ++i) {
-        if (mStates[i] != State::Skipped) {
+        if (mStates[i] != State::Skipped && mStates[i] != State::SkippedUnread) {
             continue;
         }
         SkippedPass s{.pass = std::string(mPasses[i]->name()), .missing = {}};
@@ -194,9 +202,14 @@ bool Sequencer::ran(const FramePass& pass) const {
     return stateOf(pass) == State::Run;
 }
 
-bool Sequencer::needed(const FramePass& pass) const {
-    const State state = stateOf(pass);
-    return state == State::Run || state == State::Skipped;
+Sequencer::ResourceSet Sequencer::neededReads() const {
+    ResourceSet reads;
+    for (std::size_t i = 0; i < mPasses.size(); ++i) {
+        if (mStates[i] == State::Run || mStates[i] == State::Skipped) {
+            reads |= usesOf(*mPasses[i], Access::Read) | usesOf(*mPasses[i], Access::ReadOptional);
+        }
+    }
+    return reads;
 }
 
 } // namespace photopic

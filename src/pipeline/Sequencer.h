@@ -40,21 +40,29 @@ public:
     /// firstAvailable, the chosen one; else the first listed), or Resource::Count when none could be.
     Resource run(std::span<FramePass* const> passes, StageOutputs outputs, FrameContext& ctx,
                  FrameResources& resources);
+    /// Plans `passes` as run() would for a frame whose bound resources are `bound`, and runs nothing: the
+    /// queries below then answer for this plan. Returns what the stage makes available: `bound` and what
+    /// the passes that can run write.
+    ResourceSet plan(std::span<FramePass* const> passes, StageOutputs outputs, const FrameContext& ctx,
+                     ResourceSet bound);
 
     /// Names of the passes that ran in the last run() (for tests and timings).
     [[nodiscard]] std::vector<std::string> ranPasses() const;
     /// The passes the last run() had to skip.
     [[nodiscard]] std::vector<SkippedPass> skippedPasses() const;
     [[nodiscard]] bool ran(const FramePass& pass) const;
-    /// The last run() needed the pass: it ran, or it was skipped for want of a required input.
-    [[nodiscard]] bool needed(const FramePass& pass) const;
+    /// What the passes the last run() needed read, required or optional: those that ran, and those skipped
+    /// for want of a required input whose output a later pass or the stage's output reads.
+    [[nodiscard]] ResourceSet neededReads() const;
 
 private:
-    enum class State : std::uint8_t { Off, Candidate, Blocked, Run, Skipped };
+    /// Skipped: enabled, a required input missing, and a later pass or the stage's output reads what it
+    /// writes. SkippedUnread: the same but nothing reads what it writes (reported all the same).
+    enum class State : std::uint8_t { Off, Candidate, Blocked, Run, Skipped, SkippedUnread };
     /// The pass's state in the last run() (Off when it was not in the list).
     [[nodiscard]] State stateOf(const FramePass& pass) const;
-    void plan(std::span<FramePass* const> passes, StageOutputs outputs, const FrameContext& ctx,
-              const FrameResources& resources, Resource& output);
+    ResourceSet plan(std::span<FramePass* const> passes, StageOutputs outputs, const FrameContext& ctx,
+                     ResourceSet bound, Resource& output);
     void barrierBefore(const FramePass& pass, const FrameResources& resources);
 
     std::vector<FramePass*> mPasses; ///< the last run's list (capacity kept: no allocation per frame)

@@ -170,9 +170,92 @@ TEST_F(GlTest, AMissingInputSkipsExactlyThePassesThatNeedItAndReportsThem) {
     EXPECT_FALSE(contains(st.ran, "composite + grade + tonemap")); // the view replaces the image
 }
 
+namespace {
+
+struct EffectCase {
+    const char* name;
+    Settings settings;
+    bool lighting = false; ///< the host runs the lighting stage
+};
+
+/// The default chain and each effect that reads 3D inputs, alone.
+std::vector<EffectCase> effectCases() {
+    std::vector<EffectCase> cases{{"default", plain()}};
+    const auto add = [&](const char* name, const std::function<void(Settings&)>& change,
+                         bool lighting = false) {
+        Settings s = plain();
+        change(s);
+        cases.push_back({name, s, lighting});
+    };
+    add("ssao", [](Settings& s) {
+        s.ssao.enabled = true;
+        s.ssao.apply = AoApply::Multiply;
+    });
+    add("taa", [](Settings& s) { s.aa.mode = AntiAliasing::Taa; });
+    add("dof", [](Settings& s) { s.dof.enabled = true; });
+    add("motion blur", [](Settings& s) { s.motionBlur.enabled = true; });
+    add("ssr", [](Settings& s) { s.ssr.enabled = true; });
+    add("outline", [](Settings& s) { s.outline.enabled = true; });
+    add("volumetric light", [](Settings& s) { s.volumetricLight.enabled = true; });
+    add("depth view", [](Settings& s) { s.debug.view = DebugView::Depth; });
+    add("normals view", [](Settings& s) { s.debug.view = DebugView::Normals; });
+    add(
+        "lighting stage", // SSAO and contact shadows for a host that shades with them
+        [](Settings& s) {
+            s.ssao.enabled = true;
+            s.ssao.apply = AoApply::Lighting;
+            s.contactShadows.enabled = true;
+        },
+        true);
+    return cases;
+}
+
+} // namespace
+
+// plannedReads(): before a frame is made, what its passes will read, for every combination of the optional
+// inputs a host gives (present or not), on both colour paths: the same as resourcesRead() after the frame.
+TEST_F(GlTest, PlannedReadsAreWhatTheFrameReads) {
+    const Texture color = makeTexture(grey(kW, kH, 0.5f), "color");
+    const Texture depth = r32f(kW, kH, std::vector<float>(kW * kH, 3.0f));
+    const Texture normals = makeTexture(grey(kW, kH, 0.5f), "normals", GL_RGBA16F);
+    const Texture motion = makeTexture(grey(kW, kH, 0.0f), "motion", GL_RG16F);
+    const Camera camera = testCamera();
+    constexpr Resource kOptional[] = {Resource::Depth, Resource::Normals, Resource::Motion, Resource::Camera,
+                                      Resource::SunDirection};
+    std::vector<EffectCase> cases = effectCases();
+    EffectCase ldr = cases[2]; // taa, which the LDR path does not run
+    ldr.name = "taa, LDR path";
+    cases.push_back(ldr);
+    for (const EffectCase& c : cases) {
+        Pipeline pipeline({.settings = c.settings, .forceLdr = c.name == std::string_view("taa, LDR path")});
+        for (unsigned mask = 0; mask < 1u << std::size(kOptional); ++mask) {
+            std::bitset<kResourceCount> present;
+            for (std::size_t i = 0; i < std::size(kOptional); ++i) {
+                present.set(std::size_t(kOptional[i]), (mask >> i & 1u) != 0);
+            }
+            const auto has = [&](Resource r) { return present.test(std::size_t(r)); };
+            FrameInputs in{.color = &color, .depthKind = DepthKind::LinearView};
+            in.depth = has(Resource::Depth) ? &depth : nullptr;
+            in.normals = has(Resource::Normals) ? &normals : nullptr;
+            in.motion = has(Resource::Motion) ? &motion : nullptr;
+            in.camera = has(Resource::Camera) ? &camera : nullptr;
+            if (has(Resource::SunDirection)) {
+                in.sunDirection = glm::vec3(0.3f, 1.0f, 0.2f);
+            }
+            const std::bitset<kResourceCount> planned = pipeline.plannedReads(present, c.lighting);
+            const FrameTime time{.frameIndex = mask};
+            if (c.lighting) {
+                (void)pipeline.renderLighting(in, time);
+            }
+            (void)pipeline.execute(in, time);
+            EXPECT_EQ(planned, pipeline.resourcesRead()) << c.name << ", inputs " << present;
+        }
+    }
+}
+
 // resourcesRead(): what the passes a frame needed read. The default chain reads none of the 3D layers; a
-// frame given only what the first frame read (the CLI leaves the rest out of later frames) shows the same
-// images, frame after frame, for each effect that reads some of them.
+// host that gives, from the first frame on, only what plannedReads() says its passes read (as the CLI
+// decodes only those layers) shows the same images, frame after frame, for each effect that reads some.
 TEST_F(GlTest, InputsTheFrameDidNotReadCanBeLeftOut) {
     ImageF checker = grey(kW, kH, 0.05f); // detail for the effects to move, blur and reflect
     for (int y = 0; y < kH; ++y) {
@@ -203,35 +286,20 @@ TEST_F(GlTest, InputsTheFrameDidNotReadCanBeLeftOut) {
                           .normals = &normals,
                           .motion = &motion,
                           .camera = &camera};
-    struct Case {
-        const char* name;
-        Settings settings;
-    };
-    std::vector<Case> cases{{"default", plain()}};
-    const auto add = [&](const char* name, const std::function<void(Settings&)>& change) {
-        Settings s = plain();
-        change(s);
-        cases.push_back({name, s});
-    };
-    add("ssao", [](Settings& s) { // in the post stage (a lighting-stage AO needs a host that shades)
-        s.ssao.enabled = true;
-        s.ssao.apply = AoApply::Multiply;
-    });
-    add("taa", [](Settings& s) { s.aa.mode = AntiAliasing::Taa; });
-    add("dof", [](Settings& s) { s.dof.enabled = true; });
-    add("motion blur", [](Settings& s) { s.motionBlur.enabled = true; });
-    add("ssr", [](Settings& s) { s.ssr.enabled = true; });
-    add("outline", [](Settings& s) { s.outline.enabled = true; });
-    add("depth view", [](Settings& s) { s.debug.view = DebugView::Depth; });
-    add("normals view", [](Settings& s) { s.debug.view = DebugView::Normals; });
     const auto layer = [](const std::bitset<kResourceCount>& read, Resource r) {
         return read[std::size_t(r)];
     };
-    for (const Case& c : cases) {
+    std::bitset<kResourceCount> present;
+    for (const Resource r : {Resource::Depth, Resource::Normals, Resource::Motion, Resource::Camera}) {
+        present.set(std::size_t(r));
+    }
+    for (const EffectCase& c : effectCases()) {
+        if (c.lighting) {
+            continue; // the lighting stage's outputs are the host's to use
+        }
         Pipeline full({.settings = c.settings});
         Pipeline lean({.settings = c.settings});
-        (void)full.execute(all, {.frameIndex = 0});
-        const std::bitset<kResourceCount> read = full.resourcesRead();
+        const std::bitset<kResourceCount> read = lean.plannedReads(present);
         EXPECT_TRUE(layer(read, Resource::SceneColor)) << c.name;
         if (c.name == std::string_view("default")) {
             EXPECT_FALSE(layer(read, Resource::Depth) || layer(read, Resource::Normals) ||
@@ -245,9 +313,7 @@ TEST_F(GlTest, InputsTheFrameDidNotReadCanBeLeftOut) {
         used.depth = layer(read, Resource::Depth) ? &depth : nullptr;
         used.normals = layer(read, Resource::Normals) ? &normals : nullptr;
         used.motion = layer(read, Resource::Motion) ? &motion : nullptr;
-        // The first frame as the CLI runs it (all layers), then three with only what it read.
-        (void)lean.execute(all, {.frameIndex = 0});
-        for (std::uint64_t frame = 1; frame <= 3; ++frame) {
+        for (std::uint64_t frame = 0; frame <= 3; ++frame) {
             const Image8 expected = readTexture8(full.execute(all, {.frameIndex = frame}));
             const Image8 actual = readTexture8(lean.execute(used, {.frameIndex = frame}));
             EXPECT_TRUE(actual.rgba == expected.rgba) << c.name << ", frame " << frame;
