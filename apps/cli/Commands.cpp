@@ -687,23 +687,34 @@ private:
     std::vector<double> mSamples[kStages];
 };
 
-/// The 3D layers no pass of the pipeline read on the first frame (`uploaded`: its inputs) are left out of
-/// the frames decoded from now on: the settings stay the same, so no pass reads them later either, and their
-/// decode, upload and textures would cost 24 bytes a pixel on the CPU and 16 on the GPU for nothing.
-void readOnlyLayersUsed(InputDecoder& decoder, const Pipeline& pipeline, const FrameInputs& uploaded) {
-    const std::bitset<kResourceCount>& read = pipeline.resourcesRead();
+/// The depth, normals and motion layers are decoded and uploaded only where a pass reads them: before the
+/// first upload the pipeline plans what its passes read for every combination of the inputs a frame may
+/// carry (each layer, the camera and the sun direction there or not), so a later frame that carries more or
+/// fewer of them still finds what it needs, and the settings stay the same. A frame decoded before this
+/// (the first) loses the others before its upload. Otherwise they cost up to 24 bytes a pixel on the CPU
+/// and 16 on the GPU for nothing.
+void readOnlyLayersRead(InputDecoder& decoder, Pipeline& pipeline, const DecodedFrame& first) {
+    constexpr Resource kOptional[] = {Resource::Depth, Resource::Normals, Resource::Motion, Resource::Camera,
+                                      Resource::SunDirection};
+    std::bitset<kResourceCount> read;
+    for (unsigned mask = 0; mask < 1u << std::size(kOptional); ++mask) {
+        std::bitset<kResourceCount> inputs;
+        for (std::size_t i = 0; i < std::size(kOptional); ++i)
+            inputs.set(std::size_t(kOptional[i]), (mask >> i & 1u) != 0);
+        read |= pipeline.plannedReads(inputs);
+    }
     const ExrFrameReader::Layers layers{.depth = read[std::size_t(Resource::Depth)],
                                         .normals = read[std::size_t(Resource::Normals)],
                                         .motion = read[std::size_t(Resource::Motion)]};
     std::string unread;
-    for (const auto& [name, had, kept] : {std::tuple{"depth", uploaded.depth != nullptr, layers.depth},
-                                          std::tuple{"normals", uploaded.normals != nullptr, layers.normals},
-                                          std::tuple{"motion", uploaded.motion != nullptr, layers.motion}}) {
+    for (const auto& [name, had, kept] : {std::tuple{"depth", !first.depth.empty(), layers.depth},
+                                          std::tuple{"normals", !first.normals.empty(), layers.normals},
+                                          std::tuple{"motion", !first.motion.empty(), layers.motion}}) {
         if (had && !kept)
             unread += std::string(unread.empty() ? "" : ", ") + name;
     }
     if (!unread.empty())
-        logDebug("image: no pass reads the input's {}: left out of the frames decoded from now on", unread);
+        logDebug("image: no pass reads the input's {}: left out (decoded for the first frame only)", unread);
     decoder.readLayers(layers);
 }
 
@@ -756,6 +767,9 @@ int runImage(const ImageOptions& options) {
     requireTextureFits(inputs.front(), first.width(), first.height()); // before any GL object
     const std::unique_ptr<Pipeline> pipeline = makeImagePipeline(
         {.settings = settings, .forceLdr = options.forceLdr, .keepTelemetryHistory = telemetry.has_value()});
+    if (options.writeAux.empty()) { // which writes every layer
+        readOnlyLayersRead(decoder, *pipeline, first);
+    }
     InputTextures textures; // created for the first frame, re-uploaded for the others
     // On the HDR path the colour input is read only by the sanitize pass's texel fetches, so a half EXR's
     // colour can stay half on the GPU (16 MB less at 1080p, same values).
@@ -817,9 +831,6 @@ int runImage(const ImageOptions& options) {
             writeProcessed();
         }
         const Texture& display = pipeline->execute(frameInputs, time);
-        if (i == 0 && options.writeAux.empty()) {
-            readOnlyLayersUsed(decoder, *pipeline, frameInputs);
-        }
         if (telemetry) {
             telemetry->take(*pipeline, i, i + 1 == inputs.size());
         }

@@ -112,6 +112,7 @@ const DecodedFrame& FrameReader::next() {
         }
         mHave = true;
     }
+    mDecoder.leaveOutUnread(mCurrent.frame); // decoded before the decoder was told what to leave out
     return mCurrent.frame;
 }
 

@@ -72,7 +72,8 @@ public:
     FrameReader(const FrameReader&) = delete;
     FrameReader& operator=(const FrameReader&) = delete;
 
-    /// The current frame, in input order (waits for its decode); the same frame until release().
+    /// The current frame, in input order (waits for its decode); the same frame until release(). Without
+    /// the layers the decoder was told to leave out since (InputDecoder::readLayers).
     [[nodiscard]] const DecodedFrame& next();
     /// The caller is done with the frame next() returned: its storage goes back to the decoder for a frame
     /// still to decode, whose decode is queued (at once when `ahead` > 0, else at the next next()).

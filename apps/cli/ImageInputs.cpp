@@ -158,6 +158,19 @@ void InputDecoder::readLayers(ExrFrameReader::Layers layers) {
     mLayers = layers;
 }
 
+void InputDecoder::leaveOutUnread(DecodedFrame& frame) {
+    const ExrFrameReader::Layers layers = [&] {
+        const std::lock_guard lock(mLayersMutex);
+        return mLayers;
+    }();
+    for (auto [layer, read] :
+         {std::pair{&frame.depth, layers.depth}, std::pair{&frame.normals, layers.normals},
+          std::pair{&frame.motion, layers.motion}}) {
+        if (!read)
+            *layer = std::vector<float>();
+    }
+}
+
 void InputDecoder::recycle(DecodedFrame&& frame) {
     if (frame.color.rgba.capacity() > mFrame.color.rgba.capacity())
         mFrame.color = std::move(frame.color);

@@ -59,6 +59,9 @@ public:
     /// The 3D layers the decodes that start after this call read (all until then): those the pipeline's
     /// passes read. May be called from another thread than the one decoding.
     void readLayers(ExrFrameReader::Layers layers);
+    /// Frees the layers of `frame` that readLayers() left out: a frame whose decode started before the
+    /// call has them all.
+    void leaveOutUnread(DecodedFrame& frame);
 
 private:
     ExrFrameReader mReader{ExrFrameReader::Color::HalvesWhenStored};

@@ -25,9 +25,9 @@ check "one PNG per frame" test "$(ls "$S/out"/*.png | wc -l)" -eq 10
 check "one aux EXR per frame" test "$(ls "$S/aux"/*.aux.exr | wc -l)" -eq 10
 expect 0 "aux depth, view-space normals and UV motion hold the expected values" -- "$FIXTURE" check-aux "$S/aux"
 
-# Layers that no pass reads (the default settings read none) are left out of the frames after the first, and
-# the images are the same as the run above, which kept every layer for --write-aux; with TAA, which reads
-# the motion and the depth, only the normals are left out.
+# Layers that no pass reads (the default settings read none) are left out (decoded for the first frame only,
+# never uploaded), and the images are the same as the run above, which kept every layer for --write-aux;
+# with TAA, which reads the motion and the depth, only the normals are left out.
 expect 0 "the sequence without --write-aux" -- "$PHOTOPIC" image "$S"/seq/*.exr -o "$S/lean" -v
 check "the layers no pass reads are left out" contains "no pass reads the input's depth, normals, motion: left out"
 check "the same images as with every layer" diff -r "$S/out" "$S/lean"
