@@ -174,6 +174,21 @@ struct Frame {
     std::uint64_t frameIndex = 0; ///< increases by one per frame; drives jitter, dither and grain
 };
 
+/// The optional inputs of a Frame, for PostProcessor::inputsRead(): those a frame carries, or those its
+/// passes read.
+struct FrameInputSet {
+    bool depth = false;
+    bool normals = false;
+    bool motion = false;
+    bool material = false;
+    bool objectId = false;
+    bool camera = false;
+    bool sunDirection = false;
+    bool sunShadow = false;
+
+    friend bool operator==(const FrameInputSet&, const FrameInputSet&) = default;
+};
+
 /// Which image execute() delivers.
 enum class Output {
     /// Tone mapped, output-transformed and dithered: display-referred values, sRGB-encoded (RGBA8). Copy the
@@ -290,6 +305,12 @@ public:
     void execute(const Frame& frame, const FramebufferTarget& target, Output output = Output::Display);
     /// Runs the chain and writes the output into the host's texture.
     void execute(const Frame& frame, const TextureTarget& target, Output output = Output::Display);
+
+    /// Of the inputs a frame carries (`offered`), those its passes will read at the current settings, with
+    /// the lighting stage's when the host calls renderLighting() for the frame (`lighting`). A host may stop
+    /// rendering and handing over the others (a normals or motion-vector pass, say) until the settings
+    /// change: nothing reads them, so the images are the same. Plans only: no GL work, nothing changes.
+    [[nodiscard]] FrameInputSet inputsRead(const FrameInputSet& offered, bool lighting = false);
 
     /// The next frame's exposure snaps to its target (a camera cut, a teleport).
     void resetExposure() noexcept;

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <bitset>
 #include <cstring>
 #include <utility>
 
@@ -338,6 +339,30 @@ Telemetry PostProcessor::telemetry() {
             .appliedLog2 = t.appliedLog2,
             .exposure = t.exposure,
             .adapting = t.adapting};
+}
+
+FrameInputSet PostProcessor::inputsRead(const FrameInputSet& offered, bool lighting) {
+    return guarded([&] {
+        const std::pair<bool FrameInputSet::*, Resource> kInputs[] = {
+            {&FrameInputSet::depth, Resource::Depth},
+            {&FrameInputSet::normals, Resource::Normals},
+            {&FrameInputSet::motion, Resource::Motion},
+            {&FrameInputSet::material, Resource::Material},
+            {&FrameInputSet::objectId, Resource::ObjectId},
+            {&FrameInputSet::camera, Resource::Camera},
+            {&FrameInputSet::sunDirection, Resource::SunDirection},
+            {&FrameInputSet::sunShadow, Resource::SunShadowMap}};
+        std::bitset<kResourceCount> inputs;
+        for (const auto& [member, resource] : kInputs) {
+            inputs.set(std::size_t(resource), offered.*member);
+        }
+        const std::bitset<kResourceCount> read = mImpl->pipeline.plannedReads(inputs, lighting) & inputs;
+        FrameInputSet out;
+        for (const auto& [member, resource] : kInputs) {
+            out.*member = read.test(std::size_t(resource));
+        }
+        return out;
+    });
 }
 
 Status PostProcessor::status() const {

@@ -226,6 +226,17 @@ TEST_F(PublicApi, BadNamesAreReportedNotFatal) {
 // illuminance is taken (no input error) and, with volumetric light in auto mode, marched (the image differs
 // from the screen-space rays', which add nothing with the sun behind the camera); a colour texture in its
 // place is refused by name.
+/// A camera at the origin looking down -z with a GL perspective projection of kW x kH.
+HostCamera perspectiveCamera() {
+    HostCamera camera;
+    const float f = 1.0f / std::tan(0.5f * camera.verticalFov), n = camera.nearPlane, far = camera.farPlane;
+    camera.projection = {
+        f * float(kH) / float(kW), 0, 0, 0, 0, f, 0, 0, 0, 0, (far + n) / (n - far), -1, 0, 0,
+        2 * far * n / (n - far),   0};
+    camera.prevViewProjection = camera.projection;
+    return camera;
+}
+
 TEST_F(PublicApi, TakesTheSunShadowMap) {
     const GlName depth = makeTexture(GL_R32F);
     const float five = 5.0f;
@@ -233,12 +244,7 @@ TEST_F(PublicApi, TakesTheSunShadowMap) {
     const GlName map = makeTexture(GL_DEPTH_COMPONENT32F, 64, 64);
     const float half = 0.5f;
     glClearTexImage(map, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &half);
-    HostCamera camera;
-    const float f = 1.0f / std::tan(0.5f * camera.verticalFov), n = camera.nearPlane, far = camera.farPlane;
-    camera.projection = {
-        f * float(kH) / float(kW), 0, 0, 0, 0, f, 0, 0, 0, 0, (far + n) / (n - far), -1, 0, 0,
-        2 * far * n / (n - far),   0};
-    camera.prevViewProjection = camera.projection;
+    const HostCamera camera = perspectiveCamera();
     Frame withMap = frame();
     withMap.depth = depth;
     withMap.depthEncoding = DepthEncoding::LinearView;
@@ -268,6 +274,60 @@ TEST_F(PublicApi, TakesTheSunShadowMap) {
     EXPECT_EQ(refused, screen);
     glDeleteTextures(1, &depth);
     glDeleteTextures(1, &map);
+}
+
+// inputsRead(): the inputs the settings' passes read, before any frame. A host that then hands over only
+// those gets the same images.
+TEST_F(PublicApi, SaysWhichInputsThePassesReadAndTheOthersChangeNothing) {
+    const FrameInputSet offered{.depth = true, .normals = true, .motion = true, .camera = true};
+    PostProcessor plain({.settingsJson = kSettings});
+    EXPECT_EQ(plain.inputsRead(offered), FrameInputSet{}) << "the 2D chain reads no 3D input";
+
+    PostProcessor taa({.settingsJson = kSettings});
+    taa.setSetting("aa.mode=taa");
+    const FrameInputSet read = taa.inputsRead(offered);
+    EXPECT_TRUE(read.motion && read.depth && read.camera);
+    EXPECT_FALSE(read.normals);
+    EXPECT_FALSE(taa.inputsRead({.depth = true, .camera = true}).motion) << "only what is offered";
+    EXPECT_TRUE(taa.inputsRead({.depth = true, .camera = true}).depth) << "motion from depth and the camera";
+
+    PostProcessor lit({.settingsJson = kSettings});
+    lit.setSetting("ssao.enabled=true");
+    lit.setSetting("ssao.apply=lighting");
+    EXPECT_EQ(lit.inputsRead(offered), FrameInputSet{}) << "lighting-stage AO, but no lighting stage";
+    EXPECT_TRUE(lit.inputsRead(offered, true).depth);
+    EXPECT_TRUE(lit.inputsRead(offered, true).normals);
+
+    // Three TAA frames with every input and with only those read.
+    const GlName depth = makeTexture(GL_R32F);
+    const float five = 5.0f;
+    glClearTexImage(depth, 0, GL_RED, GL_FLOAT, &five);
+    const GlName normals = makeTexture(GL_RGBA16F);
+    const float facing[4] = {0.0f, 0.0f, 1.0f, 0.0f};
+    glClearTexImage(normals, 0, GL_RGBA, GL_FLOAT, facing);
+    const GlName motion = makeTexture(GL_RG16F);
+    const float drift[2] = {0.01f, 0.0f};
+    glClearTexImage(motion, 0, GL_RG, GL_FLOAT, drift);
+    const HostCamera camera = perspectiveCamera();
+    Frame all = frame();
+    all.depth = depth;
+    all.depthEncoding = DepthEncoding::LinearView;
+    all.normals = normals;
+    all.motion = motion;
+    all.camera = &camera;
+    Frame lean = all;
+    lean.normals = read.normals ? normals : 0;
+    PostProcessor taaLean({.settingsJson = kSettings});
+    taaLean.setSetting("aa.mode=taa");
+    for (std::uint64_t i = 0; i < 3; ++i) {
+        all.frameIndex = lean.frameIndex = i;
+        (void)taa.beginFrame(i, all.dt, &camera);
+        (void)taaLean.beginFrame(i, all.dt, &camera);
+        EXPECT_EQ(readBytes(taa.execute(all)), readBytes(taaLean.execute(lean))) << "frame " << i;
+    }
+    EXPECT_EQ(taa.status().skipped, taaLean.status().skipped);
+    const GlName textures[] = {depth, normals, motion};
+    glDeleteTextures(3, textures);
 }
 
 TEST_F(PublicApi, SettingsErrorsNameTheKeyAndChangeNothing) {
