@@ -558,6 +558,55 @@ CopyReference measureCopy(const Texture& source, const char* what, const BenchOp
     return r;
 }
 
+/// The reduction reference: the 2x2 box mean of `source` into an RGBA16F texture of half its size, timed as
+/// the copy is. A pass that reads the whole frame and writes a quarter of it (the bloom prefilter) moves its
+/// bytes at no more than this pace: its share of the copy's is that kind of pass's ceiling on the device.
+/// Throws when the means are not the source's.
+CopyReference measureReduction(const Texture& source, const BenchOptions& options, QueueAhead* ahead) {
+    const Extent e = source.extent();
+    const Extent half{std::max(e.width / 2, 1), std::max(e.height / 2, 1)};
+    const Program program = makeComputeProgram("gl/bandwidth_reduce.comp.glsl", {});
+    const Texture target({.extent = half, .format = GL_RGBA16F, .debugName = "bench reduction target"});
+    const auto reduce = [&] {
+        program.use();
+        glBindTextureUnit(0, source.id());
+        glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        dispatchPixels(half);
+        imageWriteBarrier();
+    };
+    CopyReference r{.format = "rgba16f",
+                    .source = "frame, 2x2 box mean at half size",
+                    .bytes = double(e.width) * e.height * bytesPerTexel(source.format()) +
+                             double(half.width) * half.height * bytesPerTexel(GL_RGBA16F)};
+    for (int i = 0; i < options.warmup; ++i) {
+        reduce();
+    }
+    r.medianMs = medianTimed(options, ahead, reduce, [] {});
+    // Its first row against the mean of the source's first two, within the rounding to halves.
+    const int w = e.width;
+    std::vector<float> in(std::size_t(w) * 2 * 4), out(std::size_t(half.width) * 4);
+    glGetTextureSubImage(source.id(), 0, 0, 0, 0, w, std::min(e.height, 2), 1, GL_RGBA, GL_FLOAT,
+                         GLsizei(in.size() * sizeof(float)), in.data());
+    glGetTextureSubImage(target.id(), 0, 0, 0, 0, half.width, 1, 1, GL_RGBA, GL_FLOAT,
+                         GLsizei(out.size() * sizeof(float)), out.data());
+    for (int x = 0; x < half.width && e.width >= 2 && e.height >= 2; ++x) {
+        for (int c = 0; c < 4; ++c) {
+            const auto at = [&](int px, int py) { return in[(std::size_t(py) * w + px) * 4 + c]; };
+            const float mean = 0.25f * (at(2 * x, 0) + at(2 * x + 1, 0) + at(2 * x, 1) + at(2 * x + 1, 1));
+            const float got = out[std::size_t(x) * 4 + c];
+            const bool ok = (std::isnan(mean) && std::isnan(got)) ||
+                            (std::abs(mean) > 65504.0f && std::isinf(got)) ||
+                            std::abs(got - mean) <= 1e-3f * std::abs(mean) + 1e-7f;
+            if (!ok) {
+                throw std::runtime_error(fmt::format("bench: the reduction reference gave {} where the mean "
+                                                     "of its texels is {} (texel {}, channel {})",
+                                                     got, mean, x, c));
+            }
+        }
+    }
+    return r;
+}
+
 /// A texture of `extent` and `format` cleared to one colour: the source of the copy earlier records used.
 Texture constantTexture(Extent extent, GLenum format) {
     Texture texture({.extent = extent, .format = format, .debugName = "bench one-value copy source"});
@@ -749,11 +798,18 @@ int runBench(const BenchOptions& options) {
     const CopyReference constantCopy =
         measureCopy(constantTexture(input.extent(), input.format()), "constant", options, ahead.get());
     const CopyReference copy = measureCopy(input, "frame", options, ahead.get());
+    const CopyReference reduction = measureReduction(input, options, ahead.get());
     std::printf("bandwidth reference: %s copy of the frame %dx%d, %.3f ms, %.2f MB, %.2f GB/s (%s); of a "
                 "texture of one value: %.3f ms, %.2f GB/s\n",
                 copy.format.c_str(), image.width, image.height, copy.medianMs, copy.bytes / 1e6,
                 copy.gbPerSecond(), options.sync ? "wall ms with glFinish" : "GPU timestamps",
                 constantCopy.medianMs, constantCopy.gbPerSecond());
+    std::printf(
+        "reduction reference: 2x2 box means of the frame into RGBA16F at half size, %.3f ms, %.2f MB, "
+        "%.2f GB/s, %.0f%% of the copy's (what a pass that reads a frame and writes a quarter of it "
+        "can reach)\n",
+        reduction.medianMs, reduction.bytes / 1e6, reduction.gbPerSecond(),
+        copy.gbPerSecond() > 0 ? 100.0 * reduction.gbPerSecond() / copy.gbPerSecond() : 0.0);
     std::printf("CPU: %.3f ms to submit a frame (median, beginFrame to execute's return)\n", submitMedianMs);
     if (ahead) {
         std::printf(
@@ -789,6 +845,7 @@ int runBench(const BenchOptions& options) {
             {"inputMirrored", mirrored},
             {"copyReference", copy.json()},
             {"constantCopy", constantCopy.json()},
+            {"reduceReference", reduction.json()},
             {"colourPath", t.path == ColorPath::Hdr ? "hdr" : "ldr"},
             {"colourPathReason", t.pathReason},
             {"quality", std::string(qualityNames()[std::size_t(t.quality)])},

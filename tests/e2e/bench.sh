@@ -26,6 +26,11 @@ check "the reference copies the frame; the one-value copy is beside it, same for
 d=json.load(open('$S/bench.json')); c=d['copyReference']; k=d['constantCopy']; \
 sys.exit(0 if c['source'] == 'frame' and k['source'] == 'constant' and c['format'] == k['format'] == 'rgba32f' \
 and c['bytesMoved'] == k['bytesMoved'] == 2 * 256 * 144 * 16 and c['medianMs'] > 0 and k['medianMs'] > 0 else 1)"
+check "bench measures the reduction reference" contains "reduction reference: 2x2 box means of the frame"
+check "the reduction reference reads the frame and writes a quarter of it in halves" python3 -c "import json,sys; \
+r=json.load(open('$S/bench.json'))['reduceReference']; \
+sys.exit(0 if r['format'] == 'rgba16f' and r['bytesMoved'] == 256 * 144 * 16 + 128 * 72 * 8 and r['medianMs'] > 0 \
+else 1)"
 check "JSON has the whole frame's time" grep -q '"frameMedianGpuMs"' "$S/bench.json"
 expect 0 "bench of the default chain" -- "$PHOTOPIC" bench --size 64x64 --frames 2 --json "$S/default.json"
 # Nothing is metered with auto exposure off: the metering line must not claim the image's bytes.
@@ -72,14 +77,15 @@ expect 0 "bench with the prefilter's taps shared in a group" -- env PHOTOPIC_BLO
     "$PHOTOPIC" bench --size 64x64 --frames 2 --warmup 1 --json "$S/shared.json"
 check "the shared taps are named in the table" contains "(prefilter shared, blocks of"
 check "the shared taps are named in the JSON" grep -q '"prefilter": "shared"' "$S/shared.json"
-# --queue-ahead: untimed busy work before each timed frame; the report says on how many frames the GPU was
-# still on it when the frame had been submitted (none on llvmpipe, which runs a dispatch when it is issued).
+# --queue-ahead: untimed busy work before each timed frame and reference (the frames, both copies, the
+# reduction, the whole frame); the report says on how many the GPU was still on it when the frame had been
+# submitted (none on llvmpipe, which runs a dispatch when it is issued).
 expect 0 "bench with the queue kept ahead" -- "$PHOTOPIC" bench --size 64x64 --frames 3 --warmup 1 --queue-ahead \
     --json "$S/ahead.json"
 check "bench says how long the busy work ran and where it held" contains "of untimed GPU work before each timed frame"
 check "bench also times the frame as submitted to an idle GPU" contains "whole frame, as submitted"
 check "JSON has the busy work and the frames it held on" python3 -c "import json,sys; q=json.load(open('$S/ahead.json'))['queueAhead']; \
-sys.exit(0 if q['busyMs'] >= 0.5 and q['framesTimed'] == 3 + 3 + 3 + 3 and 0 <= q['framesHeld'] <= q['framesTimed'] \
+sys.exit(0 if q['busyMs'] >= 0.5 and q['framesTimed'] == 3 + 3 + 3 + 3 + 3 and 0 <= q['framesHeld'] <= q['framesTimed'] \
 and q['frameAsSubmittedMedianGpuMs'] > 0 else 1)"
 expect 2 "--queue-ahead and --sync exclude each other" -- "$PHOTOPIC" bench --size 64x64 --queue-ahead --sync
 expect 2 "--queue-ahead does not time the canvas scene" -- "$PHOTOPIC" bench --scene canvas --queue-ahead
