@@ -177,15 +177,16 @@ struct Frame {
 /// The optional inputs of a Frame, for PostProcessor::inputsRead(): those a frame carries, or those its
 /// passes read.
 struct FrameInputSet {
-    bool depth = false;
-    bool normals = false;
-    bool motion = false;
-    bool material = false;
-    bool objectId = false;
-    bool camera = false;
-    bool sunDirection = false;
-    bool sunShadow = false;
+    bool depth = false;        ///< Frame::depth
+    bool normals = false;      ///< Frame::normals
+    bool motion = false;       ///< Frame::motion
+    bool material = false;     ///< Frame::material
+    bool objectId = false;     ///< Frame::objectId
+    bool camera = false;       ///< Frame::camera
+    bool sunDirection = false; ///< Frame::sunDirection
+    bool sunShadow = false;    ///< Frame::sunShadow
 
+    /// The same inputs.
     friend bool operator==(const FrameInputSet&, const FrameInputSet&) = default;
 };
 
