@@ -770,6 +770,7 @@ int runImage(const ImageOptions& options) {
     if (options.writeAux.empty()) { // which writes every layer
         readOnlyLayersRead(decoder, *pipeline, first);
     }
+    reader.decodeAhead();
     InputTextures textures; // created for the first frame, re-uploaded for the others
     // On the HDR path the colour input is read only by the sanitize pass's texel fetches, so a half EXR's
     // colour can stay half on the GPU (16 MB less at 1080p, same values).

@@ -71,9 +71,14 @@ FrameReader::FrameReader(InputDecoder& decoder, const std::vector<fs::path>& inp
     , mAhead(std::max(ahead, 0)) {
     if (mAhead > 0) {
         mWorker = std::make_unique<Worker>();
-        for (int i = 0; i < mAhead; ++i) {
-            start({});
-        }
+        start({});
+    }
+}
+
+void FrameReader::decodeAhead() {
+    // At most `ahead` frames decoded or decoding, the one the caller holds counted.
+    while (mAhead > 0 && int(mPending.size()) + (mHave ? 1 : 0) < mAhead && mNext < mInputs.size()) {
+        start({});
     }
 }
 
@@ -121,6 +126,7 @@ void FrameReader::release() {
     if (mAhead > 0) {
         start(std::move(mCurrent.frame));
         mCurrent.frame = {};
+        decodeAhead();
     }
 }
 

@@ -63,10 +63,14 @@ private:
 /// holds one decoded frame whatever its length. At 2 it is decoded while this one is uploaded too, for two
 /// frames' memory. Frames are decoded one after another, never two at once (the decoder carries the previous
 /// frame's camera), and into the storage of frames released. A decode error (InputError) comes out of next()
-/// for the frame it belongs to.
+/// for the frame it belongs to. Only the first frame's decode starts at construction: the others wait for
+/// decodeAhead() or the first release(), so that what the decoder is told before (the layers to leave out)
+/// holds for them.
 class FrameReader {
 public:
     FrameReader(InputDecoder& decoder, const std::vector<std::filesystem::path>& inputs, int ahead);
+    /// Starts the decodes ahead that wait (from 2 ahead: the second frame's, while the first is held).
+    void decodeAhead();
     /// Waits for the decodes in flight (their errors, if any, go with them: the run failed already).
     ~FrameReader();
     FrameReader(const FrameReader&) = delete;
