@@ -281,8 +281,7 @@ FrameInputs InputTextures::upload(const DecodedFrame& frame, bool halfTexture) {
     const Extent extent{frame.width(), frame.height()};
     const bool halfColor = halfTexture && frame.halfColor();
     const SlotLayout layout = slotLayout(frame, halfColor);
-    // Made anew when a frame needs more, or under half of it (layers the pipeline does not read are left
-    // out after the first frame).
+    // Made anew when a frame needs more, or under half of it (a sequence whose later frames lack a layer).
     if (!mRing.valid() || mRing.bytes() < layout.bytes || layout.bytes < mRing.bytes() / 2) {
         mRing = UploadRing(); // the old slot goes first: never both at once
         mRing = UploadRing(layout.bytes, kUploadSlots, "cli.input");
@@ -322,7 +321,7 @@ FrameInputs InputTextures::upload(const DecodedFrame& frame, bool halfTexture) {
         inputs.motion = &mMotion;
     }
     mRing.end();
-    // A layer this frame lacks gives its texture back (the decoder leaves out layers no pass reads).
+    // A layer this frame lacks gives its texture back.
     for (auto [texture, present] :
          {std::pair{&mDepth, !frame.depth.empty()}, std::pair{&mNormals, !frame.normals.empty()},
           std::pair{&mMotion, !frame.motion.empty()}}) {
