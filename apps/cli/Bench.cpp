@@ -521,6 +521,15 @@ std::vector<float> sampleRows(const Texture& texture) {
     return rows;
 }
 
+/// A reference's median time: `run` warmed up, then timed as the passes are.
+template <class Work>
+double timeReference(const BenchOptions& options, QueueAhead* ahead, const Work& run) {
+    for (int i = 0; i < options.warmup; ++i) {
+        run();
+    }
+    return medianTimed(options, ahead, run, [] {});
+}
+
 /// The reference copy of `source` (the frame's texture, or the one-value texture: `what`) into a texture of
 /// its format and size. Throws when the copy did not reproduce its source.
 CopyReference measureCopy(const Texture& source, const char* what, const BenchOptions& options,
@@ -542,10 +551,7 @@ CopyReference measureCopy(const Texture& source, const char* what, const BenchOp
     };
     CopyReference r{
         .format = name, .source = what, .bytes = 2.0 * double(e.width) * e.height * bytesPerTexel(format)};
-    for (int i = 0; i < options.warmup; ++i) {
-        copy();
-    }
-    r.medianMs = medianTimed(options, ahead, copy, [] {});
+    r.medianMs = timeReference(options, ahead, copy);
     // A copy that did not copy would make every fraction meaningless: a copy into the same format gives
     // back every value as it was.
     const std::vector<float> in = sampleRows(source), out = sampleRows(target);
@@ -564,7 +570,7 @@ CopyReference measureCopy(const Texture& source, const char* what, const BenchOp
 /// Throws when the means are not the source's.
 CopyReference measureReduction(const Texture& source, const BenchOptions& options, QueueAhead* ahead) {
     const Extent e = source.extent();
-    const Extent half{std::max(e.width / 2, 1), std::max(e.height / 2, 1)};
+    const Extent half{e.width / 2, e.height / 2}; // the bench's frames are 8x8 at least
     const Program program = makeComputeProgram("gl/bandwidth_reduce.comp.glsl", {});
     const Texture target({.extent = half, .format = GL_RGBA16F, .debugName = "bench reduction target"});
     const auto reduce = [&] {
@@ -578,18 +584,15 @@ CopyReference measureReduction(const Texture& source, const BenchOptions& option
                     .source = "frame, 2x2 box mean at half size",
                     .bytes = double(e.width) * e.height * bytesPerTexel(source.format()) +
                              double(half.width) * half.height * bytesPerTexel(GL_RGBA16F)};
-    for (int i = 0; i < options.warmup; ++i) {
-        reduce();
-    }
-    r.medianMs = medianTimed(options, ahead, reduce, [] {});
+    r.medianMs = timeReference(options, ahead, reduce);
     // Its first row against the mean of the source's first two, within the rounding to halves.
     const int w = e.width;
     std::vector<float> in(std::size_t(w) * 2 * 4), out(std::size_t(half.width) * 4);
-    glGetTextureSubImage(source.id(), 0, 0, 0, 0, w, std::min(e.height, 2), 1, GL_RGBA, GL_FLOAT,
+    glGetTextureSubImage(source.id(), 0, 0, 0, 0, w, 2, 1, GL_RGBA, GL_FLOAT,
                          GLsizei(in.size() * sizeof(float)), in.data());
     glGetTextureSubImage(target.id(), 0, 0, 0, 0, half.width, 1, 1, GL_RGBA, GL_FLOAT,
                          GLsizei(out.size() * sizeof(float)), out.data());
-    for (int x = 0; x < half.width && e.width >= 2 && e.height >= 2; ++x) {
+    for (int x = 0; x < half.width; ++x) {
         for (int c = 0; c < 4; ++c) {
             const auto at = [&](int px, int py) { return in[(std::size_t(py) * w + px) * 4 + c]; };
             const float mean = 0.25f * (at(2 * x, 0) + at(2 * x + 1, 0) + at(2 * x, 1) + at(2 * x + 1, 1));

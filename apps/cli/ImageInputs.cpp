@@ -38,6 +38,16 @@ void viewSpaceNormals(std::vector<float>& normals, const glm::mat4& view) {
     }
 }
 
+/// Gives back the storage of the layers `layers` leaves out.
+void freeUnreadLayers(ExrFrameReader::Layers layers, std::vector<float>& depth, std::vector<float>& normals,
+                      std::vector<float>& motion) {
+    for (auto [layer, read] : {std::pair{&depth, layers.depth}, std::pair{&normals, layers.normals},
+                               std::pair{&motion, layers.motion}}) {
+        if (!read)
+            *layer = std::vector<float>();
+    }
+}
+
 /// Pixels (x right, y down, current minus previous, samples jittered) -> UV (y up), jitter removed, in
 /// place: a jittered sample of the current frame sits at p + j_current, of the previous frame at
 /// p' + j_previous, so the surface's own motion is m - j_current + j_previous.
@@ -80,18 +90,10 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
         return out;
     }
     ExrFrame& frame = mFrame; // storage kept from the frame before (recycle())
-    const ExrFrameReader::Layers layers = [&] {
-        const std::lock_guard lock(mLayersMutex);
-        return mLayers;
-    }();
+    const ExrFrameReader::Layers layers = layersRead();
     mReader.setLayers(layers);
     // Storage kept for a layer no longer read (the frames decoded before readLayers() had it) goes back.
-    for (auto [layer, read] :
-         {std::pair{&frame.depth, layers.depth}, std::pair{&frame.normals, layers.normals},
-          std::pair{&frame.motion, layers.motion}}) {
-        if (!read)
-            *layer = std::vector<float>();
-    }
+    freeUnreadLayers(layers, frame.depth, frame.normals, frame.motion);
     try {
         mReader.read(path, frame, {.maxPixels = mMaxPixels});
     } catch (const IoError& e) {
@@ -158,17 +160,13 @@ void InputDecoder::readLayers(ExrFrameReader::Layers layers) {
     mLayers = layers;
 }
 
+ExrFrameReader::Layers InputDecoder::layersRead() {
+    const std::lock_guard lock(mLayersMutex);
+    return mLayers;
+}
+
 void InputDecoder::leaveOutUnread(DecodedFrame& frame) {
-    const ExrFrameReader::Layers layers = [&] {
-        const std::lock_guard lock(mLayersMutex);
-        return mLayers;
-    }();
-    for (auto [layer, read] :
-         {std::pair{&frame.depth, layers.depth}, std::pair{&frame.normals, layers.normals},
-          std::pair{&frame.motion, layers.motion}}) {
-        if (!read)
-            *layer = std::vector<float>();
-    }
+    freeUnreadLayers(layersRead(), frame.depth, frame.normals, frame.motion);
 }
 
 void InputDecoder::recycle(DecodedFrame&& frame) {

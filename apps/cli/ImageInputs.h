@@ -64,6 +64,9 @@ public:
     void leaveOutUnread(DecodedFrame& frame);
 
 private:
+    /// What readLayers() was told last, under its lock.
+    [[nodiscard]] ExrFrameReader::Layers layersRead();
+
     ExrFrameReader mReader{ExrFrameReader::Color::HalvesWhenStored};
     /// The storage decode() reads into; its layers move out to the caller (normals and motion converted
     /// in place) and come back through recycle().
