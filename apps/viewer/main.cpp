@@ -7,6 +7,7 @@
 #include "core/settings/JsonVisitors.h"
 #include "core/settings/SettingsJson.h"
 #include "gl/Gl.h"
+#include "scenes/Scene.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -24,6 +25,15 @@ void parseSize(const std::string& text, ViewerOptions& options) {
     }
     options.width = size->width;
     options.height = size->height;
+}
+
+/// --scene's help: the built-in scenes, from the list makeScene() looks them up in.
+std::string sceneHelp() {
+    std::string names;
+    for (const photopic::SceneInfo& scene : photopic::builtInScenes()) {
+        names += (names.empty() ? "" : ", ") + scene.name;
+    }
+    return "built-in scene: " + names;
 }
 
 /// The key map for --help, from the same list the viewer's Keys panel shows.
@@ -45,6 +55,7 @@ int main(int argc, char** argv) {
                "  photopic-view data/Desk.exr                  one image; drop other files on the window\n"
                "  photopic-view shot_*.exr                     a sequence, played with adaptation\n"
                "  photopic-view --scene testbed --set aa.mode=taa\n"
+               "  photopic-view --scene orbit --set orbit.model=data/gltf/2CylinderEngine.glb\n"
                "\n" +
                keysHelp());
     app.set_version_flag("--version", std::string("photopic-view ") + PHOTOPIC_VERSION);
@@ -53,9 +64,7 @@ int main(int argc, char** argv) {
     float fixedDt = 0.0f;
     app.add_option("files", options.files,
                    "image files (EXR, HDR, PNG) to view instead of a scene; several play as a sequence");
-    auto* sceneOption =
-        app.add_option("--scene", options.scene, "built-in scene: tabletop, canvas, gradient or testbed")
-            ->capture_default_str();
+    auto* sceneOption = app.add_option("--scene", options.scene, sceneHelp())->capture_default_str();
     app.add_option("--settings", options.settingsFile, "settings JSON applied over the scene's defaults")
         ->check(CLI::ExistingFile);
     app.add_option("--preset", options.preset,

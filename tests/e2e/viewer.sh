@@ -104,6 +104,15 @@ GRAD=(--scene gradient --size 480x200 --frames 3 --fixed-dt 0.0333)
 expect 0 "gradient, no input" -- "$VIEW" "${GRAD[@]}" --screenshot "$S/g.png"
 expect 0 "gradient, a drag" -- "$VIEW" "${GRAD[@]}" --press drag:120:0 --screenshot "$S/g_dragged.png"
 check "a scene without an interactive camera ignores it" python3 "$S/right_diff.py" "$S/g.png" "$S/g_dragged.png" less 0
+# The orbit scene (its image-based light built at start) under the same drag, at a size where the ship shows
+# right of the panels; --help names it with the other scenes.
+ORBIT=(--scene orbit --size 640x360 --frames 3 --fixed-dt 0.0333)
+expect 0 "orbit, no input" -- "$VIEW" "${ORBIT[@]}" --screenshot "$S/orbit.png"
+expect 0 "orbit, a drag" -- "$VIEW" "${ORBIT[@]}" --press drag:120:0 --screenshot "$S/orbit_dragged.png"
+check "the drag turns the orbit scene's camera (mean |diff| > 1)" python3 "$S/right_diff.py" "$S/orbit.png" \
+    "$S/orbit_dragged.png" more 1
+expect 0 "--help" -- "$VIEW" --help
+check "--help names every built-in scene" contains "built-in scene: gradient, canvas, tabletop, testbed, orbit"
 
 expect 2 "bad --set exits 2" -- "$VIEW" --frames 1 --set autoExposure.tauDarken=-3
 check "names the bad key" contains "tauDarken"
