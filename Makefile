@@ -3,7 +3,7 @@
 JOBS ?= $(shell nproc)
 CTEST_FLAGS ?= --output-on-failure -j$(JOBS)
 
-.PHONY: all deps build demo test docs settings-doc bench fuzz soak install clean format
+.PHONY: all deps build demo test docs settings-doc bench fuzz soak asan-all install clean format
 
 all: build
 
@@ -67,6 +67,11 @@ SOAK_FRAMES ?= 100000
 SOAK_MAX_GROWTH_KB ?= 5120
 soak: build
 	scripts/soak.sh build/release/photopic $(SOAK_FRAMES) $(SOAK_MAX_GROWTH_KB)
+
+# Every target (GL host code, scenes, CLI, viewer) and its tests under ASan + UBSan in build/asan-all; about an
+# hour on two cores, so not part of `make test`, which runs the core under them (docs/reliability.md).
+asan-all: deps
+	JOBS=$(JOBS) scripts/asan-all.sh build/asan-all
 
 install: build
 	cmake --install build/release
