@@ -258,7 +258,7 @@ void addSettingsCommand(CLI::App& app, Cli& c) {
 void addSceneCommand(CLI::App& app, Cli& c) {
     c.scene = app.add_subcommand("scene", "render a built-in scene's frames and telemetry.csv");
     c.scene->add_option("name", c.sceneOptions.name,
-                        "scene name: " + joined(builtInScenes() | std::views::transform(&SceneInfo::name)) +
+                        "scene name: " + builtInSceneNames() +
                             " (photopic scene --list says what each shows)");
     c.scene->add_flag("--list", c.listScenes, "list the built-in scenes");
     c.scene->add_option("-o,--output", c.sceneOptions.output, "output folder (default out/scene-NAME)");

@@ -304,11 +304,7 @@ SplitOverrides checkOptions(const ViewerOptions& options) {
     }
     if (std::none_of(scenes.begin(), scenes.end(),
                      [&](const SceneInfo& s) { return s.name == options.scene; })) {
-        std::string names;
-        for (const SceneInfo& s : scenes) {
-            names += (names.empty() ? "" : ", ") + s.name;
-        }
-        throw InputError(fmt::format("unknown scene '{}' (known: {})", options.scene, names));
+        throw InputError(fmt::format("unknown scene '{}' (known: {})", options.scene, builtInSceneNames()));
     }
     SplitOverrides overrides = splitSceneOverrides(options.scene, options.overrides);
     Settings probe;

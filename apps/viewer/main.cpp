@@ -27,15 +27,6 @@ void parseSize(const std::string& text, ViewerOptions& options) {
     options.height = size->height;
 }
 
-/// --scene's help: the built-in scenes, from the list makeScene() looks them up in.
-std::string sceneHelp() {
-    std::string names;
-    for (const photopic::SceneInfo& scene : photopic::builtInScenes()) {
-        names += (names.empty() ? "" : ", ") + scene.name;
-    }
-    return "built-in scene: " + names;
-}
-
 /// The key map for --help, from the same list the viewer's Keys panel shows.
 std::string keysHelp() {
     std::string out = "Keys (when no panel has the keyboard) and mouse (outside the panels):\n";
@@ -64,7 +55,9 @@ int main(int argc, char** argv) {
     float fixedDt = 0.0f;
     app.add_option("files", options.files,
                    "image files (EXR, HDR, PNG) to view instead of a scene; several play as a sequence");
-    auto* sceneOption = app.add_option("--scene", options.scene, sceneHelp())->capture_default_str();
+    auto* sceneOption =
+        app.add_option("--scene", options.scene, "built-in scene: " + photopic::builtInSceneNames())
+            ->capture_default_str();
     app.add_option("--settings", options.settingsFile, "settings JSON applied over the scene's defaults")
         ->check(CLI::ExistingFile);
     app.add_option("--preset", options.preset,

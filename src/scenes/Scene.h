@@ -75,6 +75,8 @@ struct SceneInfo {
 
 /// Every built-in scene (scenes/SceneRegistry.cpp lists them).
 const std::vector<SceneInfo>& builtInScenes();
+/// "gradient, canvas, ...": the built-in scenes' names in builtInScenes()'s order, for help texts and errors.
+std::string builtInSceneNames();
 /// Makes the named scene; throws std::invalid_argument listing the known names.
 std::unique_ptr<Scene> makeScene(std::string_view name);
 

@@ -38,15 +38,22 @@ const std::vector<SceneInfo>& builtInScenes() {
     return kScenes;
 }
 
+std::string builtInSceneNames() {
+    std::string names;
+    for (const SceneInfo& scene : builtInScenes()) {
+        names += (names.empty() ? "" : ", ") + scene.name;
+    }
+    return names;
+}
+
 std::unique_ptr<Scene> makeScene(std::string_view name) {
-    std::string known;
     for (const auto& scene : builtInScenes()) {
         if (scene.name == name) {
             return scene.make();
         }
-        known += (known.empty() ? "" : ", ") + scene.name;
     }
-    throw std::invalid_argument("unknown scene '" + std::string(name) + "' (known scenes: " + known + ")");
+    throw std::invalid_argument("unknown scene '" + std::string(name) +
+                                "' (known scenes: " + builtInSceneNames() + ")");
 }
 
 SplitOverrides splitSceneOverrides(std::string_view sceneName, std::span<const std::string> overrides) {
