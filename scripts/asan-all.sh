@@ -9,10 +9,11 @@ build="${1:-build/asan-all}"
 jobs="${JOBS:-$(nproc)}"
 # RelWithDebInfo: -O2 -g, asserts off (as in the release build the tests otherwise run).
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer"
+mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPHOTOPIC_BUILD_BENCH=OFF \
     -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-    -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" > "$build.configure.log" 2>&1 \
-    || { cat "$build.configure.log"; exit 1; }
+    -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" > "$build/configure.log" 2>&1 \
+    || { cat "$build/configure.log"; exit 1; }
 cmake --build "$build" -j"$jobs"
 
 # The GL driver is unloaded at exit (dlclose), after which LeakSanitizer no longer sees the pointers its data
