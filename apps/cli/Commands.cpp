@@ -754,7 +754,8 @@ int runImage(const ImageOptions& options) {
         telemetry.emplace(options.telemetry, dt, std::vector<std::string>{});
     }
     const int inFlight = options.inFlight > 0 ? options.inFlight : defaultFramesInFlight();
-    setExrThreads(inFlight > 1 ? int(std::max(std::thread::hardware_concurrency(), 1u)) : 0);
+    const int allCores = int(std::max(std::thread::hardware_concurrency(), 1u));
+    setExrThreads(options.decodeThreads >= 0 ? options.decodeThreads : inFlight > 1 ? allCores : 0);
     InputDecoder decoder(options.camera.empty() ? std::nullopt
                                                 : std::optional<CameraJson>(loadCameraJson(options.camera)),
                          options.jitter == "halton" ? settings.temporal.jitterCycle : 0, options.maxPixels);

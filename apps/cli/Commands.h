@@ -66,6 +66,9 @@ struct ImageOptions {
     /// after another; more decode one frame ahead and write up to N - 2 (at least one) behind on other
     /// threads. 0: defaultFramesInFlight().
     int inFlight = 0;
+    /// Threads of OpenEXR's pool that decode a frame's chunks, [0, 256]: 0 decodes on the thread that reads
+    /// the frame. -1: every core, or 0 with one frame in flight.
+    int decodeThreads = -1;
 };
 
 struct SceneOptions {

@@ -219,6 +219,12 @@ void addImageCommand(CLI::App& app, Cli& c) {
             "earlier ones on other threads (same outputs, bounded memory); default 3 with up to 4 cores, "
             "else half the cores, at most 8")
         ->check(CLI::Range(1, 16));
+    c.image
+        ->add_option("--decode-threads", c.imageOptions.decodeThreads,
+                     "threads that decode each EXR frame's chunks (OpenEXR's thread pool): 0 decodes on the "
+                     "thread that reads the frame; default every core, or 0 with --frames-in-flight 1; the "
+                     "pixels are the same whatever the count")
+        ->check(CLI::Range(0, 256));
     c.image->footer(
         "Examples:\n"
         "  photopic image in.exr -o out.png --tonemap agx --exposure -1.5\n"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # photopic image streams a sequence (decode ahead, write behind on other threads): whatever the number of
 # frames in flight, every output, the telemetry CSV and the order of the lines printed are those of the
-# serial run (--frames-in-flight 1), and a bad frame part way still leaves nothing behind.
+# serial run (--frames-in-flight 1), whatever the decode pool's size, and a bad frame part way still leaves
+# nothing behind.
 source "$(dirname "$0")/lib.bash"
 cd "$SCRATCH"
 
@@ -29,6 +30,18 @@ for n in 2 3 5; do
     check "$n in flight: every frame byte-identical to the serial run's" same_outputs "streamed$n"
     check "$n in flight: telemetry identical" cmp -s serial.csv "streamed$n.csv"
 done
+
+# The decode pool's size changes who decodes, not what: none (each frame's chunks on the decode thread) and
+# more threads than the frame has chunks.
+for t in 0 7; do
+    expect 0 "decode threads $t" -- "$PHOTOPIC" image src/*.exr -o "threads$t" "${AE[@]}" \
+        --telemetry "threads$t.csv" --frames-in-flight 3 --decode-threads "$t"
+    check "decode threads $t: every frame byte-identical to the serial run's" same_outputs "threads$t"
+    check "decode threads $t: telemetry identical" cmp -s serial.csv "threads$t.csv"
+done
+expect 2 "decode threads out of range" -- "$PHOTOPIC" image src/*.exr -o bad --decode-threads 257
+check "names the option" contains "--decode-threads"
+check "nothing written" test ! -e bad
 
 expect 0 "EXR outputs, serial" -- "$PHOTOPIC" image src/*.exr -o exr1 --format exr "${AE[@]}" --frames-in-flight 1
 expect 0 "EXR outputs, streamed" -- "$PHOTOPIC" image src/*.exr -o exr3 --format exr "${AE[@]}"
