@@ -3,7 +3,7 @@
 JOBS ?= $(shell nproc)
 CTEST_FLAGS ?= --output-on-failure -j$(JOBS)
 
-.PHONY: all deps build demo test docs settings-doc bench fuzz soak asan-all install clean format
+.PHONY: all deps build demo test docs settings-doc bench fuzz soak asan-all tsan install clean format
 
 all: build
 
@@ -72,6 +72,11 @@ soak: build
 # hour on two cores, so not part of `make test`, which runs the core under them (docs/reliability.md).
 asan-all: deps
 	JOBS=$(JOBS) scripts/asan-all.sh build/asan-all
+
+# The CLI's threads (sequence streaming, the scenes' writers) under ThreadSanitizer in build/tsan; about 15
+# minutes on two cores, run by hand (docs/reliability.md).
+tsan: deps
+	JOBS=$(JOBS) scripts/tsan.sh build/tsan
 
 install: build
 	cmake --install build/release
