@@ -73,7 +73,7 @@ soak: build
 asan-all: deps
 	JOBS=$(JOBS) scripts/asan-all.sh build/asan-all
 
-# The CLI's threads (sequence streaming, the scenes' writers) under ThreadSanitizer in build/tsan; about 15
+# The CLI's threads (sequence streaming, the scenes' writers) under ThreadSanitizer in build/tsan; about 6
 # minutes on two cores, run by hand (docs/reliability.md).
 tsan: deps
 	JOBS=$(JOBS) scripts/tsan.sh build/tsan

@@ -5,7 +5,7 @@
 # streaming writers). A ThreadSanitizer report ends the run it comes from with exit 66, which none expects.
 # OpenEXR's decode pool is left out (--decode-threads 0): it hands its results back through synchronisation
 # inside the uninstrumented OpenEXR library, which TSan cannot see, and reports races that are not there.
-# About 15 minutes on two cores, so it is run by hand.
+# About 6 minutes on two cores; run by hand.
 # Usage: scripts/tsan.sh [BUILD_DIR]   (`make tsan`; JOBS sets the parallelism)
 set -euo pipefail
 cd "$(dirname "$0")/.."
