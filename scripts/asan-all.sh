@@ -11,7 +11,8 @@ jobs="${JOBS:-$(nproc)}"
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer"
 mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPHOTOPIC_BUILD_BENCH=OFF \
-    -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+    -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
     -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" > "$build/configure.log" 2>&1 \
     || { cat "$build/configure.log"; exit 1; }
 cmake --build "$build" -j"$jobs"
@@ -20,15 +21,16 @@ cmake --build "$build" -j"$jobs"
 # held and reports the driver's objects as leaks from no known module. A dlclose that does nothing keeps it
 # mapped, so that what is left is what the project leaks.
 keep="$(cd "$build" && pwd)/keep-loaded.so"
-echo 'int dlclose(void* handle) { (void)handle; return 0; }' | cc -shared -fPIC -x c -o "$keep" -
+scripts/keep-loaded.sh "$keep"
 libasan="$(cc -print-file-name=libasan.so)"
 
 echo "== the test suites (leaks checked)"
-(cd "$build" && LD_PRELOAD="$libasan:$keep" ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    ctest -j"$jobs" -E '^e2e\.' --output-on-failure)
+(cd "$build" && LD_PRELOAD="$libasan:$keep" ASAN_OPTIONS=detect_leaks=1 \
+    UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest -j"$jobs" -E '^e2e\.' --output-on-failure)
 # e2e runs bash and python too (not instrumented): no leak checks there. A sanitizer report exits 99, which
 # no script expects, so it cannot pass for an expected failure. standalone and install build the project
 # again, without the sanitizers.
 echo "== the e2e scripts but standalone and install"
-(cd "$build" && ASAN_OPTIONS=detect_leaks=0:exitcode=99 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:exitcode=99 \
+(cd "$build" && ASAN_OPTIONS=detect_leaks=0:exitcode=99 \
+    UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:exitcode=99 \
     ctest -j"$jobs" -R '^e2e\.' -E '^e2e\.(standalone|install)$' --output-on-failure)

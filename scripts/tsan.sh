@@ -9,6 +9,7 @@
 # Usage: scripts/tsan.sh [BUILD_DIR]   (`make tsan`; JOBS sets the parallelism)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+repo="$(pwd)"
 build="${1:-build/tsan}"
 jobs="${JOBS:-$(nproc)}"
 mkdir -p "$build"
@@ -28,7 +29,7 @@ rm -rf "$work" && mkdir -p "$work" && cd "$work"
 # thread after a mipmap build). The calls it makes into TSan's interceptors are left out like the rest of it.
 # TSan stops a process that unloads a library so named: a dlclose that does nothing keeps the driver mapped.
 echo "called_from_lib:swrast_dri.so" > suppressions.txt
-echo 'int dlclose(void* handle) { (void)handle; return 0; }' | cc -shared -fPIC -x c -o keep-loaded.so -
+"$repo/scripts/keep-loaded.sh" keep-loaded.so
 export TSAN_OPTIONS="halt_on_error=1 exitcode=66 second_deadlock_stack=1 suppressions=$work/suppressions.txt"
 failures=0
 # run CODE DESCRIPTION -- command...: the command's exit code must be CODE, its output free of TSan reports.
