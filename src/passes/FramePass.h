@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -132,6 +133,8 @@ struct FrameContext {
     /// Some pass this frame reads the scene colour without sanitising each value it reads, so the sanitize
     /// pass makes a clean copy first; else the host's colour stands in for it (Pipeline::execute).
     bool sanitizeScene = true;
+    /// EV: the host's planned auto exposure for this frame (Pipeline::setExposureOverride), else none.
+    std::optional<float> exposureOverrideLog2{};
 };
 
 class FramePass {

@@ -255,7 +255,8 @@ FrameContext Pipeline::makeContext(const FrameInputs& inputs, const FrameTime& t
                         .resetExposure = mResetExposure,
                         .resetHistory = mResetHistory,
                         .timers = &mTimers,
-                        .autoExposure = &mSettings.autoExposure};
+                        .autoExposure = &mSettings.autoExposure,
+                        .exposureOverrideLog2 = mExposureOverride};
 }
 
 const LightingOutputs& Pipeline::renderLighting(const FrameInputs& inputs, const FrameTime& time) {

@@ -93,6 +93,7 @@ void ExposurePass::execute(FrameContext& ctx, FrameResources& resources) {
              .reset = ctx.resetExposure,
              .dt = ctx.time.dt,
              .manualEV = exposure.manualEV,
+             .appliedOverride = ctx.exposureOverrideLog2,
              .timers = ctx.timers});
     resources.bind(Resource::ExposureState, mState);
 
@@ -153,7 +154,7 @@ void ExposurePass::execute(const Inputs& in) noexcept {
     // manual EV alone. When the last dispatch was such a frame on this buffer with this EV, the buffer
     // already holds what this one would write, and the dispatch is skipped (the bracket stays, empty, for the
     // timings' table).
-    const bool idle = !s.enabled && !in.metered && !in.histogramBuilt && !in.reset;
+    const bool idle = !s.enabled && !in.metered && !in.histogramBuilt && !in.reset && !in.appliedOverride;
     const std::uint32_t evBits = std::bit_cast<std::uint32_t>(in.manualEV);
     const bool unchanged = idle && mIdleBuffer == in.exposureState->id() && mIdleManualEvBits == evBits;
     ScopedGpuTimer timer(in.timers, "exposure adaptation",
@@ -189,7 +190,9 @@ void ExposurePass::execute(const Inputs& in) noexcept {
                                   .log2Min = s.histogramLog2Min,
                                   .log2Max = s.histogramLog2Max,
                                   .lowPercent = s.lowPercent,
-                                  .highPercent = s.highPercent};
+                                  .highPercent = s.highPercent,
+                                  .overrideApplied = in.appliedOverride ? 1 : 0,
+                                  .overrideLog2 = in.appliedOverride.value_or(0.0f)};
     for (std::size_t i = 0; i < curveCount; ++i) {
         parameters.curve[i].x = s.compensationCurve[i].x;
         parameters.curve[i].y = s.compensationCurve[i].y;

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace photopic {
@@ -51,14 +52,17 @@ struct ExposureParameters {
     float log2Max = 0.0f;
     float lowPercent = 0.0f;
     float highPercent = 0.0f;
-    float padding1[3] = {};
+    std::int32_t overrideApplied = 0; ///< 1: overrideLog2 replaces the adapted auto exposure
+    float overrideLog2 = 0.0f; ///< EV
+    float padding1 = 0.0f;
 };
 static_assert(kMaxCompensationCurvePoints == 16, "exposure_adapt.comp.glsl declares uCurve[16]");
 static_assert(sizeof(ExposureParameters::CurvePoint) == 16);
 static_assert(sizeof(ExposureParameters) == 368);
 static_assert(offsetof(ExposureParameters, reset) == 16 && offsetof(ExposureParameters, maxEV) == 40 &&
               offsetof(ExposureParameters, curve) == 48 && offsetof(ExposureParameters, curveCount) == 304 &&
-              offsetof(ExposureParameters, maxDt) == 336 && offsetof(ExposureParameters, highPercent) == 352);
+              offsetof(ExposureParameters, maxDt) == 336 && offsetof(ExposureParameters, highPercent) == 352 &&
+              offsetof(ExposureParameters, overrideApplied) == 356 && offsetof(ExposureParameters, overrideLog2) == 360);
 
 /// One frame's exposure as the GPU computed it, read back through the ring (never blocking the frame).
 struct ExposureTelemetry {
@@ -94,6 +98,9 @@ public:
         bool reset = false;          ///< snap to the next valid reading
         float dt = 0.0f;             ///< s, from the caller
         float manualEV = 0.0f;       ///< tonemapping.exposure
+        /// EV: the auto exposure planned for this frame (Pipeline::setExposureOverride), applied in place of
+        /// the adapted value; the frame is still metered and its target reported.
+        std::optional<float> appliedOverride{};
         GpuTimers* timers = nullptr;
     };
     /// `keepHistory`: keep every frame's telemetry until drainTelemetry() (offline sequences); else only the

@@ -53,6 +53,8 @@ layout(std140, binding = BINDING_PARAMETERS) uniform ExposureParameters {
     float uLog2Max;
     float uLowPercent;
     float uHighPercent;
+    int uOverride;       // 1: the host planned this frame's auto exposure (uOverrideLog2)
+    float uOverrideLog2;  // EV, replaces the adapted value
 };
 
 // core: compensationCurveEV.
@@ -217,6 +219,27 @@ float histogramStatistics() {
     return average;
 }
 
+// core: ExposureController::update, with this frame's reading.
+void followReading(float reading) {
+    if (!isMeterable(reading)) {
+        gExposure.frameLuminance = 0.0;
+        gExposure.exposure = exposureMultiplier(uManualEV);
+        return;
+    }
+    gExposure.frameLuminance = reading;
+    float target = exposureTargetLog2(reading);
+    if (uAutoEnabled == 0) {
+        gExposure.meteredLuminance = reading;
+        gExposure.targetLog2 = target;
+        gExposure.adapting = 0;
+        gExposure.initialized = 0;
+    } else if (isFiniteBits(target)) {
+        adaptExposure(target, uDt);
+        gExposure.meteredLuminance = reading;
+    }
+    gExposure.exposure = exposureMultiplier(uManualEV);
+}
+
 void main() {
     sBins[gl_LocalInvocationIndex] = gBins[gl_LocalInvocationIndex];
     barrier();
@@ -250,22 +273,14 @@ void main() {
             reading = gReading;
         }
     }
-    // core: ExposureController::update.
-    if (!isMeterable(reading)) {
-        gExposure.frameLuminance = 0.0;
-        gExposure.exposure = exposureMultiplier(uManualEV);
-        return;
-    }
-    gExposure.frameLuminance = reading;
-    float target = exposureTargetLog2(reading);
-    if (uAutoEnabled == 0) {
-        gExposure.meteredLuminance = reading;
-        gExposure.targetLog2 = target;
+    followReading(reading);
+    // A planned exposure (a sequence rendered in chunks with the whole sequence's plan): the target and the
+    // readings above stay this frame's own for telemetry; the applied value is the plan's.
+    if (uOverride != 0) {
+        float manual = isFiniteBits(uManualEV) ? clamp(uManualEV, -kManualEVLimit, kManualEVLimit) : 0.0;
+        gExposure.appliedLog2 = uOverrideLog2;
         gExposure.adapting = 0;
-        gExposure.initialized = 0;
-    } else if (isFiniteBits(target)) {
-        adaptExposure(target, uDt);
-        gExposure.meteredLuminance = reading;
+        gExposure.initialized = 1;
+        gExposure.exposure = exp2(manual + uOverrideLog2);
     }
-    gExposure.exposure = exposureMultiplier(uManualEV);
 }
