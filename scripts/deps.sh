@@ -11,6 +11,7 @@ packages=(
     libglfw3-dev libimgui-dev xvfb xauth
     libopengl-dev libgl-dev python3-glad doxygen
     libgtest-dev libgmock-dev libbenchmark-dev
+    slurm-wlm munge
 )
 
 missing=()

@@ -5,8 +5,11 @@
 
 #include "FrameStream.h"
 #include "ImageInputs.h"
+#include "InputSequence.h"
 #include "Outputs.h"
 #include "TelemetryCsv.h"
+
+#include "common/ExposureTrack.h"
 
 #include "common/SequencePattern.h"
 #include "core/Environment.h"
@@ -191,52 +194,6 @@ void requireTextureFits(const fs::path& path, int width, int height) {
 
 namespace {
 
-/// Where runImage writes each input's result, every path checked before any work.
-/// Natural order of file names, as a person numbers frames: runs of digits compare by value, so f9 comes
-/// before f10 (a plain string sort would run f10 first and the adaptation would see frames out of order).
-bool naturalLess(const fs::path& a, const fs::path& b) {
-    const std::string x = a.string();
-    const std::string y = b.string();
-    std::size_t i = 0, j = 0;
-    while (i < x.size() && j < y.size()) {
-        const bool dx = std::isdigit(static_cast<unsigned char>(x[i])) != 0;
-        const bool dy = std::isdigit(static_cast<unsigned char>(y[j])) != 0;
-        if (dx && dy) {
-            std::size_t ei = i, ej = j;
-            while (ei < x.size() && std::isdigit(static_cast<unsigned char>(x[ei])) != 0) {
-                ++ei;
-            }
-            while (ej < y.size() && std::isdigit(static_cast<unsigned char>(y[ej])) != 0) {
-                ++ej;
-            }
-            // Compare by value without overflow: leading zeros off, then length, then digits.
-            std::size_t si = i, sj = j;
-            while (si + 1 < ei && x[si] == '0') {
-                ++si;
-            }
-            while (sj + 1 < ej && y[sj] == '0') {
-                ++sj;
-            }
-            if (ei - si != ej - sj) {
-                return ei - si < ej - sj;
-            }
-            const int c = x.compare(si, ei - si, y, sj, ej - sj);
-            if (c != 0) {
-                return c < 0;
-            }
-            i = ei;
-            j = ej;
-            continue;
-        }
-        if (x[i] != y[j]) {
-            return x[i] < y[j];
-        }
-        ++i;
-        ++j;
-    }
-    return x.size() - i < y.size() - j || (x.size() - i == y.size() - j && x < y);
-}
-
 /// The same file, whether or not it exists yet (links and relative paths resolved).
 bool sameFile(const fs::path& a, const fs::path& b) {
     std::error_code ec;
@@ -266,124 +223,6 @@ void requireDistinctOutputs(const std::vector<fs::path>& inputs, const std::vect
             }
         }
     }
-}
-
-/// An input once its patterns are expanded, with the frame number its pattern matched.
-struct InputFile {
-    fs::path path;
-    std::optional<std::int64_t> frame;
-};
-
-std::vector<std::string> folderNames(const fs::path& folder) {
-    std::vector<std::string> names;
-    std::error_code ec;
-    for (fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, ec), end; !ec && it != end;
-         it.increment(ec)) {
-        names.push_back(it->path().filename().string());
-    }
-    return names;
-}
-
-/// The inputs in the order they run: each pattern replaced by its frames (--frames, --start-number), then
-/// everything in natural order. A name that exists as a file is that file, whatever characters it holds.
-FrameSelection frameSelection(const ImageOptions& options) {
-    FrameSelection selection{.range = std::nullopt, .startFrom = options.startNumber};
-    if (!options.frames.empty()) {
-        try {
-            selection.range = parseFrameRange(options.frames);
-        } catch (const std::invalid_argument& e) {
-            throw InputError(fmt::format("--frames: {}", e.what()));
-        }
-    }
-    return selection;
-}
-
-/// Without --frames a pattern takes the frames that exist, so a frame missing in the middle would shift the
-/// adaptation in time without a word: say so (a range makes it an error).
-void warnAboutGaps(const fs::path& pattern, const std::vector<SequenceFrame>& frames) {
-    std::int64_t missing = 0;
-    std::optional<std::int64_t> firstMissing;
-    for (std::size_t i = 1; i < frames.size(); ++i) {
-        const std::int64_t gap = frames[i].frame - frames[i - 1].frame - 1;
-        if (gap > 0 && !firstMissing) {
-            firstMissing = frames[i - 1].frame + 1;
-        }
-        missing += gap;
-    }
-    if (firstMissing) {
-        logWarning(
-            "{}: {} frame(s) missing between {} and {}, the first {}; the sequence runs on without them "
-            "(--frames A-B refuses a gap)",
-            pattern.string(), missing, frames.front().frame, frames.back().frame, *firstMissing);
-    }
-}
-
-std::vector<InputFile> expandInputs(const ImageOptions& options) {
-    const FrameSelection selection = frameSelection(options);
-    std::vector<InputFile> files;
-    bool anyPattern = false;
-    for (const fs::path& in : options.inputs) {
-        std::error_code ec;
-        std::optional<FramePattern> pattern;
-        try {
-            // A file that exists is that file; only a file name holds a frame number, never a folder.
-            pattern = fs::exists(in, ec) ? std::nullopt : parseFramePattern(in.filename().string());
-            if (!pattern) {
-                files.push_back({in, std::nullopt});
-                continue;
-            }
-            anyPattern = true;
-            std::vector<SequenceFrame> frames = expandSequence(in, folderNames(in.parent_path()), selection);
-            warnAboutGaps(in, frames);
-            for (SequenceFrame& f : frames) {
-                files.push_back({std::move(f.path), f.frame});
-            }
-        } catch (const std::invalid_argument& e) { // the messages name the pattern or the missing file
-            throw InputError(e.what());
-        }
-    }
-    if (!anyPattern && (selection.range || selection.startFrom)) {
-        throw InputError("--frames and --start-number pick frames of a pattern input (f%04d.exr, "
-                         "f.####.exr, f@.exr); these inputs are files");
-    }
-    std::stable_sort(files.begin(), files.end(),
-                     [](const InputFile& a, const InputFile& b) { return naturalLess(a.path, b.path); });
-    return files;
-}
-
-/// The last run of digits in a file name's stem ("frame_0012b" -> 12), if it has one that fits.
-std::optional<std::int64_t> numberInName(const fs::path& path) {
-    const std::string stem = path.stem().string();
-    const auto last =
-        std::find_if(stem.rbegin(), stem.rend(), [](unsigned char c) { return std::isdigit(c); });
-    if (last == stem.rend()) {
-        return std::nullopt;
-    }
-    const auto first = std::find_if(last, stem.rend(), [](unsigned char c) { return !std::isdigit(c); });
-    const std::string digits(first.base(), last.base());
-    if (digits.size() > 18) {
-        return std::nullopt;
-    }
-    return std::stoll(digits);
-}
-
-/// The number each input's result takes in an output pattern: the frame its input pattern matched, else the
-/// last number in its file name; when an input has neither, or two inputs would share one, every input is
-/// numbered by its position from 0.
-std::vector<std::int64_t> outputFrameNumbers(const std::vector<InputFile>& inputs) {
-    std::vector<std::int64_t> numbers;
-    for (const InputFile& in : inputs) {
-        const std::optional<std::int64_t> n = in.frame ? in.frame : numberInName(in.path);
-        if (!n || std::find(numbers.begin(), numbers.end(), *n) != numbers.end()) {
-            numbers.clear();
-            for (std::size_t i = 0; i < inputs.size(); ++i) {
-                numbers.push_back(std::int64_t(i));
-            }
-            return numbers;
-        }
-        numbers.push_back(*n);
-    }
-    return numbers;
 }
 
 /// `-o -`, a device or a pipe: one image, as PNG (or EXR into a pipe named .exr), written as it is encoded.
@@ -487,9 +326,6 @@ std::vector<fs::path> plannedOutputs(const ImageOptions& options, const std::vec
 
 } // namespace
 
-namespace {
-
-/// The pipeline for `photopic image`, its creation errors turned into InputError where the user can fix them.
 std::unique_ptr<Pipeline> makeImagePipeline(const PipelineCreateInfo& createInfo) {
     try {
         return std::make_unique<Pipeline>(createInfo);
@@ -497,6 +333,17 @@ std::unique_ptr<Pipeline> makeImagePipeline(const PipelineCreateInfo& createInfo
         throw InputError(fmt::format("autoExposure.mask.path: {}", e.what()));
     }
 }
+
+Settings imageSettings(const ImageOptions& options) {
+    // Photographs get the stills look unless --preset or the settings file names another.
+    Settings settings = resolveSettings(options.settings, Settings::stills());
+    if (options.bitDepth) {
+        settings.output.bitDepth = *options.bitDepth;
+    }
+    return settings;
+}
+
+namespace {
 
 /// The OpenColorIO display/view transform when --ocio-* asks for it, its config and names checked before
 /// any output exists. It makes display images, so every output must be one (PNG, TIFF, JPEG).
@@ -543,16 +390,6 @@ void finishReadBack(TextureReadback& readback, const fs::path& out, int bitDepth
     } else {
         readback.finish(image.display);
     }
-}
-
-/// The run's settings (the stills look under the preset, file and overrides) with --bit-depth over them.
-Settings imageSettings(const ImageOptions& options) {
-    // Photographs get the stills look unless --preset or the settings file names another.
-    Settings settings = resolveSettings(options.settings, Settings::stills());
-    if (options.bitDepth) {
-        settings.output.bitDepth = *options.bitDepth;
-    }
-    return settings;
 }
 
 /// Prints "IN -> OUT (WxH, ms since the frame started)" once the frame is on disk, the progress line taken
@@ -687,51 +524,97 @@ private:
     std::vector<double> mSamples[kStages];
 };
 
-/// The depth, normals and motion layers are decoded and uploaded only where a pass reads them: before the
-/// first upload the pipeline plans what its passes read for every combination of the inputs a frame may
-/// carry (each layer, the camera and the sun direction there or not), so a later frame that carries more or
-/// fewer of them still finds what it needs, and the settings stay the same. A frame decoded before this
-/// (the first) loses the others before its upload. Otherwise they cost up to 24 bytes a pixel on the CPU
-/// and 16 on the GPU for nothing.
-void readOnlyLayersRead(InputDecoder& decoder, Pipeline& pipeline, const DecodedFrame& first) {
-    constexpr Resource kOptional[] = {Resource::Depth, Resource::Normals, Resource::Motion, Resource::Camera,
-                                      Resource::SunDirection};
-    std::bitset<kResourceCount> read;
-    for (unsigned mask = 0; mask < 1u << std::size(kOptional); ++mask) {
-        std::bitset<kResourceCount> inputs;
-        for (std::size_t i = 0; i < std::size(kOptional); ++i)
-            inputs.set(std::size_t(kOptional[i]), (mask >> i & 1u) != 0);
-        read |= pipeline.plannedReads(inputs);
+} // namespace
+
+namespace {
+
+/// The frames a run processes: --preroll's (processed, not written), then the ones it writes, each with its
+/// frame number, which is its time (FrameTime::frameIndex, the telemetry's frame column): a frame renders the
+/// same whichever chunk of its sequence it is run in.
+struct RunFrames {
+    std::vector<fs::path> inputs;
+    std::vector<std::int64_t> numbers;
+    std::size_t prerolled = 0;   ///< the first `prerolled` inputs are not written
+    std::uint64_t firstIndex = 0; ///< the first input's place in its sequence (Halton jitter)
+};
+
+RunFrames runFrames(const ImageOptions& options, const std::vector<InputFile>& written) {
+    std::vector<InputFile> all = prerollInputs(options, written, options.preroll);
+    RunFrames run;
+    run.prerolled = all.size();
+    all.insert(all.end(), written.begin(), written.end());
+    for (const InputFile& f : all) {
+        run.inputs.push_back(f.path);
     }
-    const ExrFrameReader::Layers layers{.depth = read[std::size_t(Resource::Depth)],
-                                        .normals = read[std::size_t(Resource::Normals)],
-                                        .motion = read[std::size_t(Resource::Motion)]};
-    std::string unread;
-    for (const auto& [name, had, kept] : {std::tuple{"depth", !first.depth.empty(), layers.depth},
-                                          std::tuple{"normals", !first.normals.empty(), layers.normals},
-                                          std::tuple{"motion", !first.motion.empty(), layers.motion}}) {
-        if (had && !kept)
-            unread += std::string(unread.empty() ? "" : ", ") + name;
+    run.numbers = outputFrameNumbers(all);
+    if (const std::optional<std::int64_t> start = sequenceStart(options); start && all.front().frame) {
+        run.firstIndex = std::uint64_t(*all.front().frame - *start);
     }
-    if (!unread.empty())
-        logDebug("image: no pass reads the input's {}: left out (decoded for the first frame only)", unread);
-    decoder.readLayers(layers);
+    return run;
+}
+
+/// --exposure-track: the track, checked to hold every frame the run processes before any work.
+std::optional<ExposureTrack> exposureTrackFor(const ImageOptions& options, const RunFrames& run) {
+    if (options.exposureTrack.empty()) {
+        return std::nullopt;
+    }
+    ExposureTrack track;
+    try {
+        track = readExposureTrack(options.exposureTrack);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(fmt::format("--exposure-track: {}", e.what()));
+    }
+    for (const std::int64_t n : run.numbers) {
+        if (track.find(n) == nullptr) {
+            throw InputError(fmt::format("--exposure-track {}: frame {} is not in the track (it holds frames "
+                                         "{} to {}): plan the whole sequence with photopic expose",
+                                         options.exposureTrack.string(), n, track.frames.front().frame,
+                                         track.frames.back().frame));
+        }
+    }
+    if (std::abs(track.fps - options.fps) > 1e-3f * options.fps) {
+        logWarning("--exposure-track {} was planned at {} fps and this run is at {} fps (--fps): the exposures "
+                   "are the track's, but motion blur and the time column follow --fps",
+                   options.exposureTrack.string(), track.fps, options.fps);
+    }
+    return track;
+}
+
+/// A preroll never reaches back past a cut of the track: the histories start again at the cut, so the frames
+/// before it would change nothing that is written.
+void trimPrerollAtCut(RunFrames& run, const ExposureTrack& track) {
+    std::size_t from = 0;
+    for (std::size_t k = 1; k <= run.prerolled && k < run.numbers.size(); ++k) {
+        if (track.find(run.numbers[k])->cut) {
+            from = k;
+        }
+    }
+    run.inputs.erase(run.inputs.begin(), run.inputs.begin() + std::ptrdiff_t(from));
+    run.numbers.erase(run.numbers.begin(), run.numbers.begin() + std::ptrdiff_t(from));
+    run.prerolled -= from;
+    run.firstIndex += from;
 }
 
 } // namespace
 
 int runImage(const ImageOptions& options) {
     const std::vector<InputFile> files = expandInputs(options);
-    std::vector<fs::path> inputs;
-    for (const InputFile& f : files) {
-        inputs.push_back(f.path);
-    }
     if (options.info) {
+        std::vector<fs::path> inputs;
+        for (const InputFile& f : files) {
+            inputs.push_back(f.path);
+        }
         return runImageInfo(inputs, options.camera);
     }
     if (options.output.empty()) {
         throw InputError("image: an output is required (-o FILE, FOLDER/, PATTERN or -), or --info");
     }
+    RunFrames run = runFrames(options, files);
+    const std::optional<ExposureTrack> track = exposureTrackFor(options, run);
+    if (track) {
+        trimPrerollAtCut(run, *track);
+    }
+    const std::vector<fs::path>& inputs = run.inputs;
     Settings settings = imageSettings(options);
     const std::optional<OcioDisplay> ocio = ocioDisplayFor(options);
     std::FILE* const console = consoleFor(options);
@@ -741,8 +624,9 @@ int runImage(const ImageOptions& options) {
     const std::vector<fs::path> outPaths = plannedOutputs(options, files, outputs);
     requireBitDepthFits(outPaths, settings.output.bitDepth,
                         options.bitDepth ? "--bit-depth" : "the settings' output.bitDepth");
+    const std::vector<fs::path> written(inputs.begin() + std::ptrdiff_t(run.prerolled), inputs.end());
     if (options.noOverwrite) {
-        requireNewSideOutputs(options, inputs);
+        requireNewSideOutputs(options, written);
     }
     if (!options.writeAux.empty()) {
         outputs.makeFolder(options.writeAux);
@@ -752,6 +636,7 @@ int runImage(const ImageOptions& options) {
     std::optional<TelemetryCsv> telemetry;
     if (!options.telemetry.empty()) {
         telemetry.emplace(options.telemetry, dt, std::vector<std::string>{});
+        telemetry->skipFramesBefore(std::uint64_t(run.numbers[run.prerolled]));
     }
     const int inFlight = options.inFlight > 0 ? options.inFlight : defaultFramesInFlight();
     const int allCores = int(std::max(std::thread::hardware_concurrency(), 1u));
@@ -759,6 +644,7 @@ int runImage(const ImageOptions& options) {
     InputDecoder decoder(options.camera.empty() ? std::nullopt
                                                 : std::optional<CameraJson>(loadCameraJson(options.camera)),
                          options.jitter == "halton" ? settings.temporal.jitterCycle : 0, options.maxPixels);
+    decoder.setFirstIndex(run.firstIndex);
     StageClock clock;
     FrameReader reader(decoder, inputs, framesDecodedAhead(inFlight));
     const DecodedFrame& first = reader.next(); // a bad first input fails before a GL context is made
@@ -776,7 +662,7 @@ int runImage(const ImageOptions& options) {
     // On the HDR path the colour input is read only by the sanitize pass's texel fetches, so a half EXR's
     // colour can stay half on the GPU (16 MB less at 1080p, same values).
     const bool hdrPath = pipeline->status().path == ColorPath::Hdr;
-    Progress progress("image", inputs.size());
+    Progress progress("image", files.size());
     FrameWriter writer(outputs, pendingWrites(inFlight),
                        {.bitDepth = settings.output.bitDepth, .jpegQuality = options.jpegQuality});
     // Each frame's output is read back one frame late: its read starts once it is processed and finishes
@@ -784,7 +670,7 @@ int runImage(const ImageOptions& options) {
     // the next decode and fills the upload buffer.
     TextureReadback readback(1, "cli.output");
     struct Processed {
-        std::size_t index;
+        std::size_t index; ///< of the outputs
         std::chrono::steady_clock::time_point start;
         Extent size;
     };
@@ -796,7 +682,7 @@ int runImage(const ImageOptions& options) {
         clock.mark(StageClock::ReadBack);
         writer.write(
             out, std::move(image),
-            writtenLine(inputs[processed->index], out, processed->size, processed->start, progress, console));
+            writtenLine(written[processed->index], out, processed->size, processed->start, progress, console));
         clock.mark(StageClock::WriteWait);
         processed.reset();
     };
@@ -809,7 +695,14 @@ int runImage(const ImageOptions& options) {
         const int width = frame.width();
         const int height = frame.height();
         requireTextureFits(inputs[i], width, height);
-        const FrameTime time{.dt = dt, .frameIndex = i};
+        const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(run.numbers[i])};
+        if (track) {
+            const TrackFrame& planned = *track->find(run.numbers[i]);
+            if (planned.cut && i > 0) {
+                pipeline->reset(); // a cut of the plan: the histories start again there, as exposure did
+            }
+            pipeline->setExposureOverride(planned.appliedLog2);
+        }
         if (frame.jittered) {
             pipeline->beginFrame(time); // the renderer jittered this frame, as a two-stage host would
         } else if (settings.temporalAntiAliasing() &&
@@ -823,8 +716,9 @@ int runImage(const ImageOptions& options) {
                                  antiAliasingNames()[std::size_t(settings.antiAliasing())],
                                  inputs[i].string()));
         }
+        const bool writes = i >= run.prerolled;
         const FrameInputs frameInputs = textures.upload(frame, hdrPath);
-        if (!options.writeAux.empty()) {
+        if (writes && !options.writeAux.empty()) {
             outputs.wrote(writeAux(options.writeAux, inputs[i], frame));
         }
         reader.release(); // uploaded: the next frame decodes into its storage while this one is processed
@@ -836,9 +730,12 @@ int runImage(const ImageOptions& options) {
         if (telemetry) {
             telemetry->take(*pipeline, i, i + 1 == inputs.size());
         }
-        startReadBack(readback, *pipeline, display, outPaths[i], settings.output.bitDepth,
-                      ocio ? &*ocio : nullptr);
-        processed = Processed{i, start, {width, height}};
+        if (writes) {
+            const std::size_t o = i - run.prerolled;
+            startReadBack(readback, *pipeline, display, outPaths[o], settings.output.bitDepth,
+                          ocio ? &*ocio : nullptr);
+            processed = Processed{o, start, {width, height}};
+        }
         clock.mark(StageClock::Process);
     }
     if (processed) {
@@ -848,10 +745,10 @@ int runImage(const ImageOptions& options) {
     clock.report(inputs.size());
     progress.clear();
     if (telemetry) {
-        telemetry->commit(inputs.size(), pipeline->droppedTelemetry());
+        telemetry->commit(files.size(), pipeline->droppedTelemetry());
         outputs.wrote(options.telemetry);
         std::fprintf(console, "telemetry -> %s (%zu frames)\n", options.telemetry.string().c_str(),
-                     inputs.size());
+                     files.size());
     }
     outputs.commit();
     return kOk;

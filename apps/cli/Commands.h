@@ -12,6 +12,7 @@
 #include "pipeline/Pipeline.h"
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -69,6 +70,12 @@ struct ImageOptions {
     /// Threads of OpenEXR's pool that decode a frame's chunks, [0, 256]: 0 decodes on the thread that reads
     /// the frame. -1: every core, or 0 with one frame in flight.
     int decodeThreads = -1;
+    /// --exposure-track FILE: each frame's auto exposure from a plan of the whole sequence (`photopic
+    /// expose`) instead of this run's adaptation; empty: none.
+    std::filesystem::path exposureTrack;
+    /// --preroll N: the N frames before the first of --frames are processed first, not written, so the
+    /// histories (TAA, SSR, volumetric light, motion, exposure) are warm at a chunk's border.
+    int preroll = 0;
 };
 
 struct SceneOptions {
@@ -108,6 +115,10 @@ std::string telemetryCsvRow(const ExposureTelemetry& t, float dt, std::size_t sc
                             const std::vector<double>& sceneValues);
 
 int runScene(const SceneOptions& options);
+/// The run's settings (the stills look under the preset, file and overrides) with --bit-depth over them.
+Settings imageSettings(const ImageOptions& options);
+/// The pipeline for `photopic image`, its creation errors turned into InputError where the user can fix them.
+std::unique_ptr<Pipeline> makeImagePipeline(const PipelineCreateInfo& createInfo);
 /// GL and capability report; with settings, also the quality tier and the path frames would take.
 int runInfo(bool forceLdr, const SettingsSources& settings);
 int runImage(const ImageOptions& options);

@@ -51,6 +51,9 @@ public:
     /// `maxPixels`: larger inputs are refused before they are decoded.
     explicit InputDecoder(std::optional<CameraJson> cameraJson = std::nullopt, int haltonCycle = 0,
                           std::int64_t maxPixels = kDefaultMaxPixels);
+    /// The Halton index of the first frame decoded: its place in its sequence (a chunk of a sequence
+    /// starts where the chunk starts, so its frames get the single run's jitter). 0 by default.
+    void setFirstIndex(std::uint64_t index) { mIndex = index; }
     /// Throws InputError naming the file for unreadable files and bad camera attributes.
     [[nodiscard]] DecodedFrame decode(const std::filesystem::path& path);
     /// Gives back a frame decode() returned and the caller is done with: the next decode() reads into its
@@ -120,5 +123,13 @@ int runImageInfo(const std::vector<std::filesystem::path>& inputs, const std::fi
 /// motion.X/Y (UV, y up) and the camera's attributes, for the layers the frame has. Returns the file's path.
 std::filesystem::path writeAux(const std::filesystem::path& folder, const std::filesystem::path& input,
                                const DecodedFrame& frame);
+
+/// The depth, normals and motion layers are decoded and uploaded only where a pass reads them: before the
+/// first upload the pipeline plans what its passes read for every combination of the inputs a frame may
+/// carry (each layer, the camera and the sun direction there or not), so a later frame that carries more or
+/// fewer of them still finds what it needs, and the settings stay the same. A frame decoded before this
+/// (the first) loses the others before its upload. Otherwise they cost up to 24 bytes a pixel on the CPU
+/// and 16 on the GPU for nothing.
+void readOnlyLayersRead(InputDecoder& decoder, Pipeline& pipeline, const DecodedFrame& first);
 
 } // namespace photopic::cli

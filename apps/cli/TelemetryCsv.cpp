@@ -38,6 +38,9 @@ void TelemetryCsv::take(Pipeline& pipeline, std::uint64_t frame, bool last, cons
     static const std::vector<double> kNone;
     std::string text;
     for (const ExposureTelemetry& t : pipeline.drainTelemetry()) {
+        if (t.frame < mFirstFrame) {
+            continue;
+        }
         const auto values = mPending.find(t.frame);
         const std::vector<double>& row = values == mPending.end() ? kNone : values->second;
         text += telemetryCsvRow(t, mDt, mSceneColumns.size(), row);

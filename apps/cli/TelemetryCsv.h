@@ -25,6 +25,8 @@ public:
     /// frame is rendered.
     TelemetryCsv(const std::filesystem::path& path, float dt, std::vector<std::string> sceneColumns);
 
+    /// Frames numbered below `frame` get no row (--preroll's frames, processed only to warm the histories).
+    void skipFramesBefore(std::uint64_t frame) { mFirstFrame = frame; }
     /// The scene's values for `frame`, held until that frame's row is written.
     void sceneValues(std::uint64_t frame, std::vector<double> values);
     /// Called with each record and its scene values as its row is written (analysis that needs them).
@@ -42,6 +44,7 @@ private:
     std::vector<std::string> mSceneColumns;
     std::map<std::uint64_t, std::vector<double>> mPending;
     std::uint64_t mRows = 0;
+    std::uint64_t mFirstFrame = 0;
 };
 
 } // namespace photopic::cli

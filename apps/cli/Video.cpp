@@ -32,9 +32,11 @@ std::string escapePercent(const std::string& text) {
     return out;
 }
 
+} // namespace
+
 /// Runs `args` (args[0] found on PATH) and waits. Returns the exit status, or -ENOENT-style negative errno
 /// when it could not be started.
-int run(const std::vector<std::string>& args) {
+int runProgram(const std::vector<std::string>& args) {
     std::vector<char*> argv;
     for (const std::string& a : args) {
         argv.push_back(const_cast<char*>(a.c_str()));
@@ -58,7 +60,6 @@ int run(const std::vector<std::string>& args) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }
 
-} // namespace
 
 VideoResult encodeFrameSequence(const fs::path& folder, double fps, const fs::path& output) {
     // Absolute paths: a name starting with '-' could read as an option, one like "x:y" as a protocol.
@@ -88,7 +89,7 @@ VideoResult encodeFrameSequence(const fs::path& folder, double fps, const fs::pa
                                            "-f",
                                            "mp4",
                                            temporary.string()};
-    const int status = run(args);
+    const int status = runProgram(args);
     if (status == -ENOENT) {
         return {false, fmt::format("{} skipped (no ffmpeg command)", output.filename().string())};
     }

@@ -4,8 +4,13 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace photopic::cli {
+
+/// Runs `args` (args[0] found on PATH, no shell, standard input from /dev/null) and waits. Returns the exit
+/// status (128 + the signal for a signalled child), or a negative errno when it could not be started.
+int runProgram(const std::vector<std::string>& args);
 
 struct VideoResult {
     bool written = false;

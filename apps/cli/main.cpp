@@ -4,6 +4,7 @@
 #include "Commands.h"
 #include "OrbitDemo.h"
 #include "Progress.h"
+#include "SequenceCommands.h"
 #include "SettingsReference.h"
 #include "TabletopDemo.h"
 
@@ -116,6 +117,12 @@ struct Cli {
     std::int64_t demoMaxPixels = kDefaultMaxPixels;
     CLI::App* bench = nullptr;
     BenchOptions benchOptions;
+    CLI::App* meter = nullptr;
+    ImageOptions meterOptions;
+    CLI::App* expose = nullptr;
+    ExposeOptions exposeOptions;
+    CLI::App* farm = nullptr;
+    FarmOptions farmOptions;
     Verbosity verbosity;
     bool glDebug = false;
 };
@@ -225,12 +232,25 @@ void addImageCommand(CLI::App& app, Cli& c) {
                      "thread that reads the frame; default every core, or 0 with --frames-in-flight 1; the "
                      "pixels are the same whatever the count")
         ->check(CLI::Range(0, 256));
+    c.image
+        ->add_option("--exposure-track", c.imageOptions.exposureTrack,
+                     "each frame's auto exposure from a plan of the whole sequence (photopic expose) instead of "
+                     "this run's adaptation, so a chunk renders the single run's frames (docs/farm.md)")
+        ->check(CLI::ExistingFile);
+    c.image
+        ->add_option("--preroll", c.imageOptions.preroll,
+                     "process the N frames before the first of --frames without writing them, so TAA, the "
+                     "reflections' and volumetric light's histories, the previous camera and exposure are warm "
+                     "at a chunk's first frame (never past a cut of --exposure-track)")
+        ->check(CLI::Range(0, 1000));
     c.image->footer(
         "Examples:\n"
         "  photopic image in.exr -o out.png --tonemap agx --exposure -1.5\n"
         "  photopic image in.exr -o out.png --preset realtime    the scenes' soft glow instead of stills\n"
         "  photopic image f*.exr -o dir/ --fps 24 --telemetry t.csv --set autoExposure.enabled=true\n"
         "  photopic image shot/f%04d.exr --frames 1001-1100 -o out/f%04d.png -n\n"
+        "  photopic image shot/f%04d.exr --frames 1101-1200 --preroll 16 --exposure-track exposure.csv -o "
+        "out/f%04d.png\n"
         "  photopic image in.exr -o out.tif --bit-depth 16\n"
         "  photopic image in.exr -o out.jpg --jpeg-quality 90\n"
         "  photopic image in.exr -o - | display -\n"
@@ -393,6 +413,104 @@ void addBenchCommand(CLI::App& app, Cli& c) {
                     "  photopic bench --scene canvas --set canvas.occupancy=0.3");
 }
 
+/// The inputs of a sequence: files or patterns, --frames, --start-number (as `photopic image` takes them).
+void addSequenceInputs(CLI::App* cmd, ImageOptions& o) {
+    cmd->add_option("inputs", o.inputs,
+                    "input images, or frame-numbered patterns when no such file exists (f%04d.exr, "
+                    "f.####.exr, f@.exr), as photopic image takes them")
+        ->required();
+    auto* frames = cmd->add_option("--frames", o.frames, "frames A-B of a pattern input, inclusive");
+    cmd->add_option("--start-number", o.startNumber, "a pattern input's first frame")
+        ->check(CLI::NonNegativeNumber)
+        ->excludes(frames);
+}
+
+void addMeterCommand(CLI::App& app, Cli& c) {
+    c.meter = app.add_subcommand("meter", "meter each frame of a sequence for photopic expose: one CSV row "
+                                          "per frame (the reading, the histogram's bins); chunks of a sequence "
+                                          "metered apart merge into the whole sequence's metering");
+    addSequenceInputs(c.meter, c.meterOptions);
+    c.meter->add_option("-o,--output", c.meterOptions.output, "the meter CSV")->required();
+    c.meter->add_option("--fps", c.meterOptions.fps, "frame rate (exposure.mode physical: the shutter angle)")
+        ->check(CLI::Range(0.001f, 10000.0f));
+    c.meter
+        ->add_option("--camera", c.meterOptions.camera, "camera JSON for EXR inputs without camera attributes")
+        ->check(CLI::ExistingFile);
+    c.meter->add_flag("--force-ldr", c.meterOptions.forceLdr, "run the LDR (RGBA8) path");
+    addSettingsOptions(c.meter, c.meterOptions.settings, "stills (as photopic image)");
+    addMaxPixelsOption(c.meter, c.meterOptions.maxPixels);
+    c.meter->footer("Examples:\n"
+                    "  photopic meter shot/f%04d.exr --frames 1001-1100 --settings look.json -o meter-1001.csv\n"
+                    "  photopic meter shot/f%04d.exr --set autoExposure.metering=histogram -o meter.csv");
+}
+
+void addExposeCommand(CLI::App& app, Cli& c) {
+    c.expose = app.add_subcommand("expose", "plan a sequence's auto exposure from its meter CSVs: the exposure "
+                                            "controller over every frame in order, one row per frame, for "
+                                            "photopic image --exposure-track");
+    c.expose->add_option("meter", c.exposeOptions.meterFiles, "meter CSVs (photopic meter), in any order")
+        ->required()
+        ->check(CLI::ExistingFile);
+    c.expose->add_option("-o,--output", c.exposeOptions.output, "the exposure track CSV")->required();
+    c.expose->add_option("--fps", c.exposeOptions.fps, "frame rate: one frame is 1/fps seconds of adaptation")
+        ->check(CLI::Range(0.001f, 10000.0f))
+        ->capture_default_str();
+    c.expose->add_option("--cut", c.exposeOptions.cuts,
+                         "a frame where exposure snaps to its target (a camera cut; photopic image "
+                         "--exposure-track restarts the histories there too); repeatable")
+        ->take_all()
+        ->allow_extra_args(false);
+    c.expose->add_flag("--allow-gaps", c.exposeOptions.allowGaps,
+                       "plan over frames missing from the meter files as photopic image runs over a pattern's "
+                       "gaps (one frame time apart); without it a missing frame is an error");
+    addSettingsOptions(c.expose, c.exposeOptions.settings, "stills (as photopic image)");
+    c.expose->footer("Examples:\n"
+                     "  photopic expose meter-*.csv --fps 24 --settings look.json -o exposure.csv\n"
+                     "  photopic expose meter.csv --fps 24 --cut 1040 --set autoExposure.enabled=true -o e.csv");
+}
+
+void addFarmCommand(CLI::App& app, Cli& c) {
+    FarmOptions& o = c.farmOptions;
+    c.farm = app.add_subcommand("farm", "write a sequence's meter, expose and render stages as a Slurm job set "
+                                        "(job arrays with afterok dependencies), and submit it with --submit");
+    c.farm->add_option("input", o.input, "the sequence: a frame-numbered pattern (shot/f%04d.exr)")->required();
+    c.farm->add_option("-o,--output", o.output, "the output pattern (out/f%04d.png)")->required();
+    c.farm->add_option("--jobs", o.jobDir, "folder for the job scripts, settings, meter files and logs")
+        ->required();
+    c.farm->add_option("--frames", o.frames, "frames A-B (default: every frame of the pattern)");
+    c.farm->add_option("--chunk", o.chunk, "frames per meter and render job")
+        ->check(CLI::Range(1, 1000000))
+        ->capture_default_str();
+    c.farm->add_option("--preroll", o.preroll,
+                       "frames each render job processes before its chunk (default " +
+                           std::to_string(kDefaultFarmPreroll) + ")")
+        ->check(CLI::Range(0, 1000));
+    c.farm->add_option("--fps", o.fps, "frame rate")->check(CLI::Range(0.001f, 10000.0f))->capture_default_str();
+    c.farm->add_option("--cut", o.cuts,
+                       "a camera cut: exposure snaps and the histories (TAA, SSR, motion blur) restart there, "
+                       "and no preroll reaches back past it; repeatable")
+        ->take_all()
+        ->allow_extra_args(false);
+    c.farm->add_option("--photopic", o.photopic,
+                       "the photopic command the jobs run (default: this program's path, which the nodes must "
+                       "see)");
+    c.farm->add_option("--sbatch-option", o.sbatchOptions,
+                       "an #SBATCH line for every job, e.g. --sbatch-option=--partition=render; repeatable")
+        ->take_all()
+        ->allow_extra_args(false);
+    c.farm->add_option("--image-option", o.imageOptions,
+                       "an option for each render's photopic image, e.g. --image-option=--bit-depth "
+                       "--image-option=16; repeatable")
+        ->take_all()
+        ->allow_extra_args(false);
+    c.farm->add_flag("--submit", o.submit, "submit the job set with sbatch now (else print the commands)");
+    addSettingsOptions(c.farm, o.settings, "stills (as photopic image)");
+    c.farm->footer("Examples:\n"
+                   "  photopic farm shot/f%04d.exr -o out/f%04d.png --jobs farm/ --chunk 100 --fps 24 "
+                   "--settings look.json --submit\n"
+                   "  photopic farm shot/f%04d.exr -o out/f%04d.png --jobs farm/ --sbatch-option=--partition=gpu");
+}
+
 /// Runs the subcommand that was parsed; throws the errors main() turns into exit codes.
 int runCommand(Cli& c) {
     if (*c.info) {
@@ -429,6 +547,15 @@ int runCommand(Cli& c) {
     }
     if (*c.bench) {
         return runBench(c.benchOptions);
+    }
+    if (*c.meter) {
+        return MeterCommand(c.meterOptions).run();
+    }
+    if (*c.expose) {
+        return ExposeCommand(c.exposeOptions).run();
+    }
+    if (*c.farm) {
+        return FarmCommand(c.farmOptions).run();
     }
     if (*c.demo) {
         if (c.demoImages) {
@@ -472,9 +599,12 @@ int main(int argc, char** argv) {
     addSceneCommand(app, c);
     addDemoCommand(app, c);
     addBenchCommand(app, c);
+    addMeterCommand(app, c);
+    addExposeCommand(app, c);
+    addFarmCommand(app, c);
     // -q, -v and --log-level read the same before or after the subcommand's name.
     addVerbosityOptions(app, c.verbosity);
-    for (CLI::App* sub : {c.info, c.image, c.settings, c.scene, c.demo, c.bench}) {
+    for (CLI::App* sub : {c.info, c.image, c.settings, c.scene, c.demo, c.bench, c.meter, c.expose, c.farm}) {
         addVerbosityOptions(*sub, c.verbosity);
     }
     // A KHR_debug context costs CPU time in every GL call on some drivers: only when asked for.
@@ -484,7 +614,7 @@ int main(int argc, char** argv) {
                    "also PHOTOPIC_GL_DEBUG=1");
     };
     addGlDebug(app);
-    for (CLI::App* sub : {c.info, c.image, c.scene, c.demo, c.bench}) {
+    for (CLI::App* sub : {c.info, c.image, c.scene, c.demo, c.bench, c.meter}) {
         addGlDebug(*sub);
     }
     app.footer("Examples:\n"

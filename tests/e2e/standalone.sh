@@ -6,7 +6,9 @@
 #     photopic::findDataDir), not this checkout's,
 #   - the io tests and the other e2e scripts pass on the copy's files. The viewer script is left out: it reads no
 #     file of the repository (built-in scenes only), and a second Xvfb server beside e2e.viewer's only doubles the
-#     exposure to xvfb-run's race when it removes its temporary folder (exit 5, seen under load).
+#     exposure to xvfb-run's race when it removes its temporary folder (exit 5, seen under load). So are the two
+#     Slurm scripts (farm, slurm_smoke): they read no file of the repository either, and a second Slurm cluster
+#     beside theirs would only race them for the node's CPUs.
 # It builds nothing: it runs this build's binaries, which is what a fresh clone's build would produce from the same
 # sources. A full build-and-test of a clone is too slow for every `make test`; the README says how to run one.
 source "$(dirname "$0")/lib.bash"
@@ -43,7 +45,7 @@ if [ -x "$BUILD/tests/photopic_io_tests" ]; then
 fi
 for script in "$COPY"/tests/e2e/*.sh; do
     name="$(basename "$script" .sh)"
-    case "$name" in standalone | install | viewer) continue ;; esac
+    case "$name" in standalone | install | viewer | farm | slurm_smoke) continue ;; esac
     expect 0 "e2e $name on the copy" -- bash "$script" "$PHOTOPIC" "$COPY/data" "$TMP/scratch/$name"
 done
 

@@ -1,0 +1,96 @@
+#include "SequenceCommands.h"
+
+#include "common/ExposureTrack.h"
+#include "core/ExposurePlan.h"
+#include "io/ImageIO.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+namespace photopic::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+AtomicFileWriter openTrackFile(const fs::path& path) {
+    try {
+        return AtomicFileWriter(path);
+    } catch (const IoError& e) {
+        throw InputError(fmt::format("expose {}", e.what()));
+    }
+}
+
+} // namespace
+
+int ExposeCommand::run() {
+    if (mOptions.output.empty()) {
+        throw InputError("expose: an output is required (-o exposure.csv)");
+    }
+    const Settings settings = resolveSettings(mOptions.settings, Settings::stills());
+    if (!settings.autoExposure.enabled) {
+        throw InputError("expose: autoExposure.enabled is false in these settings, so there is nothing to plan: "
+                         "--set autoExposure.enabled=true (and the same settings for every stage)");
+    }
+    std::vector<MeterFile> files;
+    for (const fs::path& path : mOptions.meterFiles) {
+        try {
+            files.push_back(readMeterCsv(path));
+        } catch (const std::invalid_argument& e) {
+            throw InputError(e.what());
+        }
+    }
+    MeterFile merged;
+    try {
+        merged = mergeMeterFiles(mOptions.meterFiles, files);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(e.what());
+    }
+    const std::string metering = meteringDescription(settings.autoExposure);
+    if (merged.metering != metering) {
+        throw InputError(fmt::format("expose: {} was metered with \"{}\", and these settings meter with \"{}\": "
+                                     "meter again with the same autoExposure settings",
+                                     mOptions.meterFiles.front().string(), merged.metering, metering));
+    }
+    if (merged.records.empty()) {
+        throw InputError("expose: the meter files hold no frame");
+    }
+    const std::vector<MeterRecord>& records = merged.records;
+    std::int64_t missing = 0;
+    std::int64_t firstMissing = -1;
+    for (std::size_t i = 1; i < records.size(); ++i) {
+        const std::int64_t gap = records[i].frame - records[i - 1].frame - 1;
+        if (gap > 0 && firstMissing < 0) {
+            firstMissing = records[i - 1].frame + 1;
+        }
+        missing += gap;
+    }
+    if (missing > 0 && !mOptions.allowGaps) {
+        throw InputError(fmt::format("expose: {} frame(s) between {} and {} are in no meter file, the first {}: "
+                                     "meter them (a chunk's file missing?), or --allow-gaps to plan without "
+                                     "them",
+                                     missing, records.front().frame, records.back().frame, firstMissing));
+    }
+    for (const std::int64_t cut : mOptions.cuts) {
+        if (std::none_of(records.begin(), records.end(), [cut](const MeterRecord& r) { return r.frame == cut; })) {
+            throw InputError(fmt::format("expose: --cut {} is not a metered frame ({} to {})", cut,
+                                         records.front().frame, records.back().frame));
+        }
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<PlannedExposure> plan = planExposure(settings.autoExposure, records, 1.0f / mOptions.fps,
+                                                           settings.tonemapping.exposure, mOptions.cuts);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    AtomicFileWriter file = openTrackFile(mOptions.output);
+    file.write(exposureTrackCsv(plan, mOptions.fps, metering));
+    file.commit();
+    std::printf("expose -> %s (%zu frames, %lld to %lld, planned in %.3f ms)\n", mOptions.output.string().c_str(),
+                plan.size(), static_cast<long long>(records.front().frame),
+                static_cast<long long>(records.back().frame), ms);
+    return kOk;
+}
+
+} // namespace photopic::cli

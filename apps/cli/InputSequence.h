@@ -1,0 +1,45 @@
+#pragma once
+// The inputs of a sequence command (`photopic image`, `meter`, `farm`): files, or frame-numbered patterns
+// expanded from their folder (--frames, --start-number), in the order frames run, each with its frame number.
+
+#include "Commands.h"
+
+#include "common/SequencePattern.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+namespace photopic::cli {
+
+/// An input once its patterns are expanded, with the frame number its pattern matched.
+struct InputFile {
+    std::filesystem::path path;
+    std::optional<std::int64_t> frame;
+};
+
+/// Natural order of file names (runs of digits compare by value: f9 before f10).
+[[nodiscard]] bool naturalLess(const std::filesystem::path& a, const std::filesystem::path& b);
+
+/// The inputs in the order they run: each pattern replaced by its frames (--frames, --start-number), then
+/// everything in natural order. A name that exists as a file is that file, whatever characters it holds.
+/// Throws InputError naming a pattern with no frames, a missing frame of a range, or a bad range.
+[[nodiscard]] std::vector<InputFile> expandInputs(const ImageOptions& options);
+
+/// The number each input's result takes in an output pattern: the frame its input pattern matched, else the
+/// last number in its file name; when an input has neither, or two inputs would share one, every input is
+/// numbered by its position from 0. It is also the frame's number in time (FrameTime::frameIndex, the
+/// telemetry's frame column), so a frame renders the same whichever chunk of its sequence it is run in.
+[[nodiscard]] std::vector<std::int64_t> outputFrameNumbers(const std::vector<InputFile>& inputs);
+
+/// The lowest frame that exists of the inputs' one frame-numbered pattern (where its sequence starts, whatever
+/// --frames picks); nullopt when the inputs are not one pattern.
+[[nodiscard]] std::optional<std::int64_t> sequenceStart(const ImageOptions& options);
+
+/// --preroll N: up to `count` frames of the one pattern input that come just before the first of `chunk`
+/// (fewer at the sequence's start), in frame order. Throws InputError when the inputs are not one pattern.
+[[nodiscard]] std::vector<InputFile> prerollInputs(const ImageOptions& options,
+                                                   const std::vector<InputFile>& chunk, int count);
+
+} // namespace photopic::cli

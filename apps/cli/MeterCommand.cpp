@@ -1,0 +1,133 @@
+#include "SequenceCommands.h"
+
+#include "FrameStream.h"
+#include "ImageInputs.h"
+#include "InputSequence.h"
+#include "Progress.h"
+
+#include "common/ExposureTrack.h"
+#include "core/Log.h"
+#include "core/PhysicalExposure.h"
+#include "gl/Context.h"
+#include "io/ImageIO.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <map>
+
+namespace photopic::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The run's settings with what comes after metering in the frame order turned off (it cannot change a
+/// reading) and TAA off: every frame is metered on its own, as the first frame of a shot, so a chunk's
+/// readings are the whole sequence's. What comes before metering (ambient occlusion, reflections,
+/// volumetric light, the outline) stays as the render will have it.
+Settings meteringSettings(Settings s) {
+    s.aa.mode = AntiAliasing::None;
+    s.taa.enabled = false;
+    s.fxaa.enabled = false;
+    s.bloom.enabled = false;
+    s.dof.enabled = false;
+    s.motionBlur.enabled = false;
+    s.lensFlare.enabled = false;
+    s.debug.view = DebugView::None;
+    return s;
+}
+
+AtomicFileWriter openMeterFile(const fs::path& path) {
+    try {
+        return AtomicFileWriter(path);
+    } catch (const IoError& e) {
+        throw InputError(fmt::format("meter {}", e.what()));
+    }
+}
+
+} // namespace
+
+int MeterCommand::run() {
+    if (mOptions.output.empty()) {
+        throw InputError("meter: an output is required (-o meter.csv)");
+    }
+    const std::vector<InputFile> files = expandInputs(mOptions);
+    std::vector<fs::path> inputs;
+    for (const InputFile& f : files) {
+        inputs.push_back(f.path);
+    }
+    const std::vector<std::int64_t> numbers = outputFrameNumbers(files);
+    const Settings settings = meteringSettings(imageSettings(mOptions));
+    const AutoExposureSettings& ae = settings.autoExposure;
+    const bool histogram = ae.metering == MeteringMode::Histogram;
+    const bool physical = settings.exposure.mode == ExposureMode::Physical;
+    const float dt = 1.0f / mOptions.fps;
+
+    AtomicFileWriter file = openMeterFile(mOptions.output);
+    file.write(meterCsvHeader(meteringDescription(ae), histogram));
+
+    InputDecoder decoder(mOptions.camera.empty() ? std::nullopt
+                                                 : std::optional<CameraJson>(loadCameraJson(mOptions.camera)),
+                         0, mOptions.maxPixels);
+    setExrThreads(mOptions.decodeThreads >= 0 ? mOptions.decodeThreads : 0);
+    FrameReader reader(decoder, inputs, 1);
+    const DecodedFrame& first = reader.next();
+    HeadlessContext context(commandContext());
+    requireTextureFits(inputs.front(), first.width(), first.height());
+    const std::unique_ptr<Pipeline> pipeline =
+        makeImagePipeline({.settings = settings, .forceLdr = mOptions.forceLdr, .keepTelemetryHistory = true});
+    readOnlyLayersRead(decoder, *pipeline, first);
+    reader.decodeAhead();
+    const bool hdrPath = pipeline->status().path == ColorPath::Hdr;
+    InputTextures textures;
+    Progress progress("meter", inputs.size());
+    std::map<std::uint64_t, float> cameraLog2; // frame -> the camera's exposure, physical mode only
+    std::uint64_t rows = 0;
+    const auto writeRows = [&] {
+        std::string text;
+        for (const ExposureTelemetry& t : pipeline->drainTelemetry()) {
+            MeterRecord r{.frame = std::int64_t(t.frame),
+                          .reading = t.frameLuminance,
+                          .cameraLog2 = cameraLog2[t.frame],
+                          .minLuminance = t.minLuminance,
+                          .maxLuminance = t.maxLuminance,
+                          .histogram = std::nullopt};
+            if (histogram) {
+                r.histogram = Histogram{.bins = t.histogram, .log2Min = ae.histogramLog2Min,
+                                        .log2Max = ae.histogramLog2Max};
+            }
+            text += meterCsvRow(r, t.histogramLowLog2, t.histogramHighLog2, t.histogramAverageLog2);
+            cameraLog2.erase(t.frame);
+            ++rows;
+        }
+        file.write(text);
+    };
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        const DecodedFrame& frame = reader.next();
+        requireTextureFits(inputs[i], frame.width(), frame.height());
+        const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(numbers[i])};
+        if (physical && frame.camera) {
+            cameraLog2[time.frameIndex] = cameraExposureLog2(frame.camera->lens, dt);
+        }
+        const FrameInputs frameInputs = textures.upload(frame, hdrPath);
+        reader.release();
+        pipeline->reset(); // each frame metered as the first of a shot: no history reaches its reading
+        (void)pipeline->execute(frameInputs, time);
+        if ((i + 1) % 64 == 0 || i + 1 == inputs.size()) {
+            writeRows();
+        }
+        progress.advance();
+    }
+    progress.clear();
+    if (rows != inputs.size()) {
+        throw std::runtime_error(fmt::format("meter: {} of {} frames came back ({} dropped)", rows,
+                                             inputs.size(), pipeline->droppedTelemetry()));
+    }
+    file.commit();
+    std::printf("meter -> %s (%zu frames, %s metering)\n", mOptions.output.string().c_str(), inputs.size(),
+                std::string(meteringModeNames()[std::size_t(ae.metering)]).c_str());
+    return kOk;
+}
+
+} // namespace photopic::cli
