@@ -14,17 +14,13 @@ namespace photopic::cli {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-AtomicFileWriter openTrackFile(const fs::path& path) {
+AtomicFileWriter openCommandOutput(std::string_view command, const fs::path& path) {
     try {
         return AtomicFileWriter(path);
     } catch (const IoError& e) {
-        throw InputError(fmt::format("expose {}", e.what()));
+        throw InputError(fmt::format("{} {}", command, e.what()));
     }
 }
-
-} // namespace
 
 int ExposeCommand::run() {
     if (mOptions.output.empty()) {
@@ -84,7 +80,7 @@ int ExposeCommand::run() {
     const std::vector<PlannedExposure> plan = planExposure(settings.autoExposure, records, 1.0f / mOptions.fps,
                                                            settings.tonemapping.exposure, mOptions.cuts);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    AtomicFileWriter file = openTrackFile(mOptions.output);
+    AtomicFileWriter file = openCommandOutput("expose", mOptions.output);
     file.write(exposureTrackCsv(plan, mOptions.fps, metering));
     file.commit();
     std::printf("expose -> %s (%zu frames, %lld to %lld, planned in %.3f ms)\n", mOptions.output.string().c_str(),

@@ -38,14 +38,6 @@ Settings meteringSettings(Settings s) {
     return s;
 }
 
-AtomicFileWriter openMeterFile(const fs::path& path) {
-    try {
-        return AtomicFileWriter(path);
-    } catch (const IoError& e) {
-        throw InputError(fmt::format("meter {}", e.what()));
-    }
-}
-
 } // namespace
 
 int MeterCommand::run() {
@@ -64,7 +56,7 @@ int MeterCommand::run() {
     const bool physical = settings.exposure.mode == ExposureMode::Physical;
     const float dt = 1.0f / mOptions.fps;
 
-    AtomicFileWriter file = openMeterFile(mOptions.output);
+    AtomicFileWriter file = openCommandOutput("meter", mOptions.output);
     file.write(meterCsvHeader(meteringDescription(ae), histogram));
 
     InputDecoder decoder(mOptions.camera.empty() ? std::nullopt

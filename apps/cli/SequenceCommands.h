@@ -10,9 +10,13 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace photopic::cli {
+
+/// The output file of `photopic meter` or `expose`, written atomically; an error names the command and the file.
+AtomicFileWriter openCommandOutput(std::string_view command, const std::filesystem::path& path);
 
 /// `photopic meter INPUTS -o meter.csv`: the inputs, frames and settings as `photopic image` takes them.
 class MeterCommand {
