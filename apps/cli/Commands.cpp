@@ -573,9 +573,10 @@ std::optional<ExposureTrack> exposureTrackFor(const ImageOptions& options, const
         }
     }
     if (std::abs(track.fps - options.fps) > 1e-3f * options.fps) {
-        logWarning("--exposure-track {} was planned at {} fps and this run is at {} fps (--fps): the exposures "
-                   "are the track's, but motion blur and the time column follow --fps",
-                   options.exposureTrack.string(), track.fps, options.fps);
+        logWarning(
+            "--exposure-track {} was planned at {} fps and this run is at {} fps (--fps): the exposures "
+            "are the track's, but motion blur and the time column follow --fps",
+            options.exposureTrack.string(), track.fps, options.fps);
     }
     return track;
 }
@@ -680,9 +681,9 @@ int runImage(const ImageOptions& options) {
         FrameImage image = writer.storage();
         finishReadBack(readback, out, settings.output.bitDepth, ocio ? &*ocio : nullptr, image);
         clock.mark(StageClock::ReadBack);
-        writer.write(
-            out, std::move(image),
-            writtenLine(written[processed->index], out, processed->size, processed->start, progress, console));
+        writer.write(out, std::move(image),
+                     writtenLine(written[processed->index], out, processed->size, processed->start, progress,
+                                 console));
         clock.mark(StageClock::WriteWait);
         processed.reset();
     };

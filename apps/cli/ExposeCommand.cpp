@@ -28,8 +28,9 @@ int ExposeCommand::run() {
     }
     const Settings settings = resolveSettings(mOptions.settings, Settings::stills());
     if (!settings.autoExposure.enabled) {
-        throw InputError("expose: autoExposure.enabled is false in these settings, so there is nothing to plan: "
-                         "--set autoExposure.enabled=true (and the same settings for every stage)");
+        throw InputError(
+            "expose: autoExposure.enabled is false in these settings, so there is nothing to plan: "
+            "--set autoExposure.enabled=true (and the same settings for every stage)");
     }
     std::vector<MeterFile> files;
     for (const fs::path& path : mOptions.meterFiles) {
@@ -77,8 +78,8 @@ int ExposeCommand::run() {
         }
     }
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<PlannedExposure> plan = planExposure(settings.autoExposure, records, 1.0f / mOptions.fps,
-                                                           settings.tonemapping.exposure, mOptions.cuts);
+    const std::vector<PlannedExposure> plan = planExposure(
+        settings.autoExposure, records, 1.0f / mOptions.fps, settings.tonemapping.exposure, mOptions.cuts);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     AtomicFileWriter file = openCommandOutput("expose", mOptions.output);
     file.write(exposureTrackCsv(plan, mOptions.fps, metering));

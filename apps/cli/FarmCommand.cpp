@@ -19,8 +19,9 @@ namespace {
 
 /// One word of a POSIX shell command line, quoted so the shell takes it as it is.
 std::string shellWord(const std::string& word) {
-    if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
-                                                "_-+=.,/:@%") == std::string::npos) {
+    if (!word.empty() &&
+        word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
+                               "_-+=.,/:@%") == std::string::npos) {
         return word;
     }
     std::string quoted = "'";
@@ -138,8 +139,9 @@ JobSet prepareJobSet(const FarmOptions& o) {
     // file, so the meter, the plan and the renders cannot disagree.
     const Settings settings = resolveSettings(o.settings, Settings::stills());
     if (!settings.autoExposure.enabled) {
-        throw InputError("farm: autoExposure.enabled is false in these settings: a sequence without auto "
-                         "exposure needs no plan; render its chunks with photopic image --frames A-B --preroll N");
+        throw InputError(
+            "farm: autoExposure.enabled is false in these settings: a sequence without auto "
+            "exposure needs no plan; render its chunks with photopic image --frames A-B --preroll N");
     }
     set.dir = fs::absolute(o.jobDir);
     set.logs = set.dir / "logs";
@@ -159,11 +161,11 @@ JobSet prepareJobSet(const FarmOptions& o) {
 
 /// meter.sbatch, expose.sbatch and render.sbatch.
 void writeStageScripts(const FarmOptions& o, const JobSet& set) {
-    const std::string meter = chunkRange(set.range, o.chunk) +
-                              shellLine({set.exe, "meter", set.input, "--settings", set.settingsFile, "--fps",
-                                         set.fps, "-q"}) +
-                              " --frames \"$first-$last\" -o " + shellWord((set.dir / "meter").string()) +
-                              "/chunk-\"$SLURM_ARRAY_TASK_ID\".csv\n";
+    const std::string meter =
+        chunkRange(set.range, o.chunk) +
+        shellLine({set.exe, "meter", set.input, "--settings", set.settingsFile, "--fps", set.fps, "-q"}) +
+        " --frames \"$first-$last\" -o " + shellWord((set.dir / "meter").string()) +
+        "/chunk-\"$SLURM_ARRAY_TASK_ID\".csv\n";
     std::vector<std::string> expose = {set.exe, "expose", "--settings", set.settingsFile, "--fps", set.fps, "-q",
                                        "-o", (set.dir / "exposure.csv").string()};
     for (const std::int64_t cut : o.cuts) {
@@ -190,7 +192,8 @@ void writeStageScripts(const FarmOptions& o, const JobSet& set) {
 void writeRunners(const JobSet& set) {
     const std::string submit =
         "#!/bin/bash\n"
-        "# The three stages as Slurm jobs: the meter array, then (afterok) the plan, then (afterok) the render\n"
+        "# The three stages as Slurm jobs: the meter array, then (afterok) the plan, then (afterok) the "
+        "render\n"
         "# array. Prints the three job ids.\n"
         "set -euo pipefail\n"
         "cd \"$(dirname \"$0\")\"\n"

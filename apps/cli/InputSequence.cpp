@@ -213,8 +213,9 @@ std::vector<InputFile> prerollInputs(const ImageOptions& options, const std::vec
     }
     std::optional<std::vector<SequenceFrame>> all = wholeSequence(options);
     if (!all || !chunk.front().frame) {
-        throw InputError("--preroll renders the frames before the first of a pattern input's frames: give one "
-                         "frame-numbered pattern (f%04d.exr) with --frames A-B");
+        throw InputError(
+            "--preroll renders the frames before the first of a pattern input's frames: give one "
+            "frame-numbered pattern (f%04d.exr) with --frames A-B");
     }
     std::vector<InputFile> before;
     for (SequenceFrame& f : *all) {

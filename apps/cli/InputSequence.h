@@ -33,7 +33,8 @@ struct InputFile {
 /// telemetry's frame column), so a frame renders the same whichever chunk of its sequence it is run in.
 [[nodiscard]] std::vector<std::int64_t> outputFrameNumbers(const std::vector<InputFile>& inputs);
 
-/// The lowest frame that exists of the inputs' one frame-numbered pattern (where its sequence starts, whatever
+/// The lowest frame that exists of the inputs' one frame-numbered pattern (where its sequence starts,
+/// whatever
 /// --frames picks); nullopt when the inputs are not one pattern.
 [[nodiscard]] std::optional<std::int64_t> sequenceStart(const ImageOptions& options);
 

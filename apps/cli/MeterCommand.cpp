@@ -38,6 +38,21 @@ Settings meteringSettings(Settings s) {
     return s;
 }
 
+/// One frame's row of the meter file from the pipeline's telemetry of it.
+std::string meterRow(const ExposureTelemetry& t, const AutoExposureSettings& ae, float cameraLog2) {
+    MeterRecord r{.frame = std::int64_t(t.frame),
+                  .reading = t.frameLuminance,
+                  .cameraLog2 = cameraLog2,
+                  .minLuminance = t.minLuminance,
+                  .maxLuminance = t.maxLuminance,
+                  .histogram = std::nullopt};
+    if (ae.metering == MeteringMode::Histogram) {
+        r.histogram =
+            Histogram{.bins = t.histogram, .log2Min = ae.histogramLog2Min, .log2Max = ae.histogramLog2Max};
+    }
+    return meterCsvRow(r, t.histogramLowLog2, t.histogramHighLog2, t.histogramAverageLog2);
+}
+
 } // namespace
 
 int MeterCommand::run() {
@@ -67,8 +82,8 @@ int MeterCommand::run() {
     const DecodedFrame& first = reader.next();
     HeadlessContext context(commandContext());
     requireTextureFits(inputs.front(), first.width(), first.height());
-    const std::unique_ptr<Pipeline> pipeline =
-        makeImagePipeline({.settings = settings, .forceLdr = mOptions.forceLdr, .keepTelemetryHistory = true});
+    const std::unique_ptr<Pipeline> pipeline = makeImagePipeline(
+        {.settings = settings, .forceLdr = mOptions.forceLdr, .keepTelemetryHistory = true});
     readOnlyLayersRead(decoder, *pipeline, first);
     reader.decodeAhead();
     const bool hdrPath = pipeline->status().path == ColorPath::Hdr;
@@ -79,17 +94,7 @@ int MeterCommand::run() {
     const auto writeRows = [&] {
         std::string text;
         for (const ExposureTelemetry& t : pipeline->drainTelemetry()) {
-            MeterRecord r{.frame = std::int64_t(t.frame),
-                          .reading = t.frameLuminance,
-                          .cameraLog2 = cameraLog2[t.frame],
-                          .minLuminance = t.minLuminance,
-                          .maxLuminance = t.maxLuminance,
-                          .histogram = std::nullopt};
-            if (histogram) {
-                r.histogram = Histogram{.bins = t.histogram, .log2Min = ae.histogramLog2Min,
-                                        .log2Max = ae.histogramLog2Max};
-            }
-            text += meterCsvRow(r, t.histogramLowLog2, t.histogramHighLog2, t.histogramAverageLog2);
+            text += meterRow(t, ae, cameraLog2[t.frame]);
             cameraLog2.erase(t.frame);
             ++rows;
         }

@@ -15,7 +15,8 @@
 
 namespace photopic::cli {
 
-/// The output file of `photopic meter` or `expose`, written atomically; an error names the command and the file.
+/// The output file of `photopic meter` or `expose`, written atomically; an error names the command and the
+/// file.
 AtomicFileWriter openCommandOutput(std::string_view command, const std::filesystem::path& path);
 
 /// `photopic meter INPUTS -o meter.csv`: the inputs, frames and settings as `photopic image` takes them.

@@ -233,15 +233,17 @@ void addImageCommand(CLI::App& app, Cli& c) {
                      "pixels are the same whatever the count")
         ->check(CLI::Range(0, 256));
     c.image
-        ->add_option("--exposure-track", c.imageOptions.exposureTrack,
-                     "each frame's auto exposure from a plan of the whole sequence (photopic expose) instead of "
-                     "this run's adaptation, so a chunk renders the single run's frames (docs/farm.md)")
+        ->add_option(
+            "--exposure-track", c.imageOptions.exposureTrack,
+            "each frame's auto exposure from a plan of the whole sequence (photopic expose) instead of "
+            "this run's adaptation, so a chunk renders the single run's frames (docs/farm.md)")
         ->check(CLI::ExistingFile);
     c.image
-        ->add_option("--preroll", c.imageOptions.preroll,
-                     "process the N frames before the first of --frames without writing them, so TAA, the "
-                     "reflections' and volumetric light's histories, the previous camera and exposure are warm "
-                     "at a chunk's first frame (never past a cut of --exposure-track)")
+        ->add_option(
+            "--preroll", c.imageOptions.preroll,
+            "process the N frames before the first of --frames without writing them, so TAA, the "
+            "reflections' and volumetric light's histories, the previous camera and exposure are warm "
+            "at a chunk's first frame (never past a cut of --exposure-track)")
         ->check(CLI::Range(0, 1000));
     c.image->footer(
         "Examples:\n"
@@ -455,9 +457,10 @@ void addExposeCommand(CLI::App& app, Cli& c) {
     c.expose->add_option("--fps", c.exposeOptions.fps, "frame rate: one frame is 1/fps seconds of adaptation")
         ->check(CLI::Range(0.001f, 10000.0f))
         ->capture_default_str();
-    c.expose->add_option("--cut", c.exposeOptions.cuts,
-                         "a frame where exposure snaps to its target (a camera cut; photopic image "
-                         "--exposure-track restarts the histories there too); repeatable")
+    c.expose
+        ->add_option("--cut", c.exposeOptions.cuts,
+                     "a frame where exposure snaps to its target (a camera cut; photopic image "
+                     "--exposure-track restarts the histories there too); repeatable")
         ->take_all()
         ->allow_extra_args(false);
     c.expose->add_flag("--allow-gaps", c.exposeOptions.allowGaps,
@@ -481,14 +484,16 @@ void addFarmCommand(CLI::App& app, Cli& c) {
     c.farm->add_option("--chunk", o.chunk, "frames per meter and render job")
         ->check(CLI::Range(1, 1000000))
         ->capture_default_str();
-    c.farm->add_option("--preroll", o.preroll,
-                       "frames each render job processes before its chunk (default " +
-                           std::to_string(kDefaultFarmPreroll) + ")")
+    c.farm
+        ->add_option("--preroll", o.preroll,
+                     "frames each render job processes before its chunk (default " +
+                         std::to_string(kDefaultFarmPreroll) + ")")
         ->check(CLI::Range(0, 1000));
     c.farm->add_option("--fps", o.fps, "frame rate")->check(CLI::Range(0.001f, 10000.0f))->capture_default_str();
-    c.farm->add_option("--cut", o.cuts,
-                       "a camera cut: exposure snaps and the histories (TAA, SSR, motion blur) restart there, "
-                       "and no preroll reaches back past it; repeatable")
+    c.farm
+        ->add_option("--cut", o.cuts,
+                     "a camera cut: exposure snaps and the histories (TAA, SSR, motion blur) restart there, "
+                     "and no preroll reaches back past it; repeatable")
         ->take_all()
         ->allow_extra_args(false);
     c.farm->add_option("--photopic", o.photopic,

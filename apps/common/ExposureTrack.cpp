@@ -89,7 +89,8 @@ public:
     [[nodiscard]] std::size_t column(const std::string& name) const {
         const auto it = mColumns.find(name);
         if (it == mColumns.end()) {
-            throw std::invalid_argument(fmt::format("{}: the header has no column \"{}\"", mPath.string(), name));
+            throw std::invalid_argument(
+                fmt::format("{}: the header has no column \"{}\"", mPath.string(), name));
         }
         return it->second;
     }

@@ -6,7 +6,8 @@
 // settings are refused rather than mixed. Columns are found by their header names.
 //
 // Meter file:     frame,reading,camera_log2,min_luma,max_luma,histogram_count,histogram_low_log2,
-//                 histogram_high_log2,histogram_average_log2[,bin_000,...,bin_255]   (bins: histogram metering)
+//                 histogram_high_log2,histogram_average_log2[,bin_000,...,bin_255]   (bins: histogram
+//                 metering)
 // Exposure track: frame,time_s,cut,reading,target_log2,applied_log2,exposure
 
 #include "core/ExposurePlan.h"

@@ -27,7 +27,8 @@ float planReading(const AutoExposureSettings& settings, const MeterRecord& recor
     if (settings.metering != MeteringMode::Histogram || !record.histogram) {
         return record.reading;
     }
-    const HistogramStats stats = histogramAverage(*record.histogram, settings.lowPercent, settings.highPercent);
+    const HistogramStats stats =
+        histogramAverage(*record.histogram, settings.lowPercent, settings.highPercent);
     return stats.counted > 0 ? std::exp2(stats.averageLog2) : 0.0f;
 }
 

@@ -152,9 +152,9 @@ public:
     /// A new shot: exposure snaps and every temporal history is dropped on the next frame.
     void reset();
     /// The auto exposure (EV, without the manual EV) to apply from the next frame on in place of the adapted
-    /// value, until cleared with nullopt: a plan made on the CPU for the whole sequence (core/ExposurePlan.h),
-    /// so a chunk of it renders as the single run would. Frames are still metered and their targets
-    /// reported in the telemetry.
+    /// value, until cleared with nullopt: a plan made on the CPU for the whole sequence
+    /// (core/ExposurePlan.h), so a chunk of it renders as the single run would. Frames are still metered and
+    /// their targets reported in the telemetry.
     void setExposureOverride(std::optional<float> appliedLog2) { mExposureOverride = appliedLog2; }
 
     /// The newest exposure telemetry that has arrived, without blocking. When nothing new has finished, the

@@ -61,7 +61,8 @@ TEST(ExposureTrack, MeterFilesRoundTripEveryValue) {
 TEST(ExposureTrack, MergedChunksAreOneSequenceInFrameOrder) {
     const std::vector<MeterFile> files = {
         {.metering = "average", .records = {record(12, 1, false), record(13, 2, false)}},
-        {.metering = "average", .records = {record(10, 3, false), record(11, 4, false), record(12, 1, false)}}};
+        {.metering = "average",
+         .records = {record(10, 3, false), record(11, 4, false), record(12, 1, false)}}};
     const MeterFile merged = mergeMeterFiles({"b.csv", "a.csv"}, files);
     ASSERT_EQ(merged.records.size(), 4u);
     for (std::size_t i = 0; i < 4; ++i) {

@@ -40,8 +40,8 @@ TEST(ExposurePlan, IsTheControllerRunOverTheFramesInOrder) {
         EXPECT_EQ(plan[i].state.exposure, want.exposure);
         EXPECT_EQ(plan[i].cut, i == 0);
     }
-    // It adapted: 20 frames after the step the exposure is past half way from the dark target to the bright one,
-    // not at it (the eye's lag).
+    // It adapted: 20 frames after the step the exposure is past half way from the dark target to the bright
+    // one, not at it (the eye's lag).
     const float dark = exposureTargetLog2(s, 0.02f);
     const float bright = exposureTargetLog2(s, 2.0f);
     EXPECT_LT(plan.back().state.appliedLog2, 0.5f * (dark + bright));

@@ -61,8 +61,10 @@ static_assert(sizeof(ExposureParameters::CurvePoint) == 16);
 static_assert(sizeof(ExposureParameters) == 368);
 static_assert(offsetof(ExposureParameters, reset) == 16 && offsetof(ExposureParameters, maxEV) == 40 &&
               offsetof(ExposureParameters, curve) == 48 && offsetof(ExposureParameters, curveCount) == 304 &&
-              offsetof(ExposureParameters, maxDt) == 336 && offsetof(ExposureParameters, highPercent) == 352 &&
-              offsetof(ExposureParameters, overrideApplied) == 356 && offsetof(ExposureParameters, overrideLog2) == 360);
+              offsetof(ExposureParameters, maxDt) == 336 &&
+              offsetof(ExposureParameters, highPercent) == 352 &&
+              offsetof(ExposureParameters, overrideApplied) == 356 &&
+              offsetof(ExposureParameters, overrideLog2) == 360);
 
 /// One frame's exposure as the GPU computed it, read back through the ring (never blocking the frame).
 struct ExposureTelemetry {
