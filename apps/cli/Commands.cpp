@@ -10,7 +10,6 @@
 #include "TelemetryCsv.h"
 
 #include "common/ExposureTrack.h"
-
 #include "common/SequencePattern.h"
 #include "core/Environment.h"
 #include "core/Log.h"
@@ -523,10 +522,6 @@ private:
     std::chrono::steady_clock::time_point mBegin;
     std::vector<double> mSamples[kStages];
 };
-
-} // namespace
-
-namespace {
 
 /// The frames a run processes: --preroll's (processed, not written), then the ones it writes, each with its
 /// frame number, which is its time (FrameTime::frameIndex, the telemetry's frame column): a frame renders the

@@ -1,5 +1,7 @@
 #include "SequenceCommands.h"
 
+#include "InputSequence.h"
+
 #include "common/ExposureTrack.h"
 #include "core/ExposurePlan.h"
 #include "io/ImageIO.h"
@@ -56,20 +58,13 @@ int ExposeCommand::run() {
         throw InputError("expose: the meter files hold no frame");
     }
     const std::vector<MeterRecord>& records = merged.records;
-    std::int64_t missing = 0;
-    std::int64_t firstMissing = -1;
-    for (std::size_t i = 1; i < records.size(); ++i) {
-        const std::int64_t gap = records[i].frame - records[i - 1].frame - 1;
-        if (gap > 0 && firstMissing < 0) {
-            firstMissing = records[i - 1].frame + 1;
-        }
-        missing += gap;
-    }
-    if (missing > 0 && !mOptions.allowGaps) {
+    const FrameGaps gaps = frameGaps(records, [](const MeterRecord& r) { return r.frame; });
+    if (gaps.firstMissing && !mOptions.allowGaps) {
         throw InputError(fmt::format("expose: {} frame(s) between {} and {} are in no meter file, the first {}: "
                                      "meter them (a chunk's file missing?), or --allow-gaps to plan without "
                                      "them",
-                                     missing, records.front().frame, records.back().frame, firstMissing));
+                                     gaps.missing, records.front().frame, records.back().frame,
+                                     *gaps.firstMissing));
     }
     for (const std::int64_t cut : mOptions.cuts) {
         if (std::none_of(records.begin(), records.end(), [cut](const MeterRecord& r) { return r.frame == cut; })) {

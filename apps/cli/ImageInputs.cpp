@@ -457,12 +457,6 @@ fs::path writeAux(const fs::path& folder, const fs::path& input, const DecodedFr
     return path;
 }
 
-/// The depth, normals and motion layers are decoded and uploaded only where a pass reads them: before the
-/// first upload the pipeline plans what its passes read for every combination of the inputs a frame may
-/// carry (each layer, the camera and the sun direction there or not), so a later frame that carries more or
-/// fewer of them still finds what it needs, and the settings stay the same. A frame decoded before this
-/// (the first) loses the others before its upload. Otherwise they cost up to 24 bytes a pixel on the CPU
-/// and 16 on the GPU for nothing.
 void readOnlyLayersRead(InputDecoder& decoder, Pipeline& pipeline, const DecodedFrame& first) {
     constexpr Resource kOptional[] = {Resource::Depth, Resource::Normals, Resource::Motion, Resource::Camera,
                                       Resource::SunDirection};
@@ -487,6 +481,5 @@ void readOnlyLayersRead(InputDecoder& decoder, Pipeline& pipeline, const Decoded
         logDebug("image: no pass reads the input's {}: left out (decoded for the first frame only)", unread);
     decoder.readLayers(layers);
 }
-
 
 } // namespace photopic::cli

@@ -86,20 +86,12 @@ FrameSelection frameSelection(const ImageOptions& options) {
 /// Without --frames a pattern takes the frames that exist, so a frame missing in the middle would shift the
 /// adaptation in time without a word: say so (a range makes it an error).
 void warnAboutGaps(const fs::path& pattern, const std::vector<SequenceFrame>& frames) {
-    std::int64_t missing = 0;
-    std::optional<std::int64_t> firstMissing;
-    for (std::size_t i = 1; i < frames.size(); ++i) {
-        const std::int64_t gap = frames[i].frame - frames[i - 1].frame - 1;
-        if (gap > 0 && !firstMissing) {
-            firstMissing = frames[i - 1].frame + 1;
-        }
-        missing += gap;
-    }
-    if (firstMissing) {
+    const FrameGaps gaps = frameGaps(frames, [](const SequenceFrame& f) { return f.frame; });
+    if (gaps.firstMissing) {
         logWarning(
             "{}: {} frame(s) missing between {} and {}, the first {}; the sequence runs on without them "
             "(--frames A-B refuses a gap)",
-            pattern.string(), missing, frames.front().frame, frames.back().frame, *firstMissing);
+            pattern.string(), gaps.missing, frames.front().frame, frames.back().frame, *gaps.firstMissing);
     }
 }
 

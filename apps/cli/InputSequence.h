@@ -6,12 +6,34 @@
 
 #include "common/SequencePattern.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <vector>
 
 namespace photopic::cli {
+
+/// The frame numbers missing between the first and the last of a sequence in ascending order.
+struct FrameGaps {
+    std::int64_t missing = 0;                ///< how many
+    std::optional<std::int64_t> firstMissing; ///< the first of them
+};
+
+/// FrameGaps of `items` (ascending by frame), `frameOf(item)` giving each one's frame number.
+template <class Items, class FrameOf>
+FrameGaps frameGaps(const Items& items, FrameOf frameOf) {
+    FrameGaps gaps;
+    for (std::size_t i = 1; i < items.size(); ++i) {
+        const std::int64_t previous = frameOf(items[i - 1]);
+        const std::int64_t gap = frameOf(items[i]) - previous - 1;
+        if (gap > 0 && !gaps.firstMissing) {
+            gaps.firstMissing = previous + 1;
+        }
+        gaps.missing += std::max<std::int64_t>(gap, 0);
+    }
+    return gaps;
+}
 
 /// An input once its patterns are expanded, with the frame number its pattern matched.
 struct InputFile {

@@ -1,5 +1,7 @@
 #include "core/ExposurePlan.h"
 
+#include "core/PhysicalExposure.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -38,21 +40,19 @@ std::vector<PlannedExposure> planExposure(const AutoExposureSettings& settings,
     std::vector<PlannedExposure> plan;
     plan.reserve(records.size());
     ExposureController controller(settings);
-    AutoExposureSettings frameSettings = settings;
     for (const MeterRecord& r : records) {
         const bool cut = plan.empty() || std::find(cuts.begin(), cuts.end(), r.frame) != cuts.end();
         if (cut) {
             controller.reset();
         }
-        // exposure.mode physical, as physicalExposure() hands it to the GPU: the camera's exposure joins the
-        // manual EV and the target is lowered by the same amount.
-        frameSettings.compensationEV = settings.compensationEV - r.cameraLog2;
-        controller.setSettings(frameSettings);
+        // exposure.mode physical, as the pipeline hands it to the GPU (0 in the other modes: no change).
+        const PhysicalExposureInputs frame = physicalExposure(settings, manualEV, r.cameraLog2);
+        controller.setSettings(frame.autoExposure);
         const float reading = planReading(settings, r);
         plan.push_back({.frame = r.frame,
                         .cut = cut,
                         .reading = reading,
-                        .state = controller.update(reading, dt, manualEV + r.cameraLog2)});
+                        .state = controller.update(reading, dt, frame.manualEV)});
     }
     return plan;
 }

@@ -19,7 +19,11 @@ float cameraExposureLog2(const Lens& lens, float dt) noexcept {
 
 PhysicalExposureInputs physicalExposure(const AutoExposureSettings& autoExposure, float manualEV,
                                         const Lens& lens, float dt) noexcept {
-    const float camera = cameraExposureLog2(lens, dt);
+    return physicalExposure(autoExposure, manualEV, cameraExposureLog2(lens, dt));
+}
+
+PhysicalExposureInputs physicalExposure(const AutoExposureSettings& autoExposure, float manualEV,
+                                        float camera) noexcept {
     PhysicalExposureInputs out{autoExposure, manualEV};
     if (!std::isfinite(camera)) {
         return out;

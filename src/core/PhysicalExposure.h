@@ -24,5 +24,9 @@ struct PhysicalExposureInputs {
 };
 [[nodiscard]] PhysicalExposureInputs physicalExposure(const AutoExposureSettings& autoExposure,
                                                       float manualEV, const Lens& lens, float dt) noexcept;
+/// The same around a camera exposure already known (`cameraLog2`, cameraExposureLog2's value, e.g. from a
+/// meter file); a non-finite one leaves the inputs as they are.
+[[nodiscard]] PhysicalExposureInputs physicalExposure(const AutoExposureSettings& autoExposure,
+                                                      float manualEV, float cameraLog2) noexcept;
 
 } // namespace photopic
