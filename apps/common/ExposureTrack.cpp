@@ -1,5 +1,7 @@
 #include "common/ExposureTrack.h"
 
+#include "core/Csv.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -18,19 +20,6 @@ constexpr std::string_view kMeterMagic = "# photopic meter 1";
 constexpr std::string_view kTrackMagic = "# photopic exposure track 1";
 constexpr const char* kMeterColumns = "frame,reading,camera_log2,min_luma,max_luma,histogram_count,"
                                       "histogram_low_log2,histogram_high_log2,histogram_average_log2";
-
-std::vector<std::string_view> splitCsv(std::string_view line) {
-    std::vector<std::string_view> fields;
-    std::size_t start = 0;
-    for (;;) {
-        const std::size_t comma = line.find(',', start);
-        fields.push_back(line.substr(start, comma == std::string_view::npos ? comma : comma - start));
-        if (comma == std::string_view::npos) {
-            return fields;
-        }
-        start = comma + 1;
-    }
-}
 
 /// A CSV file of this project's: the `# photopic ...` line, the header, the rows; errors say file:line.
 class CsvReader {
@@ -70,7 +59,7 @@ public:
         if (mLines.size() < 2) {
             throw std::invalid_argument(fmt::format("{}: no header line", path.string()));
         }
-        const auto names = splitCsv(mLines[1]);
+        const auto names = splitCsvLine(mLines[1]);
         for (std::size_t i = 0; i < names.size(); ++i) {
             mColumns[std::string(names[i])] = i;
         }
@@ -101,7 +90,7 @@ public:
             if (mLines[i].empty()) {
                 continue;
             }
-            const auto fields = splitCsv(mLines[i]);
+            const auto fields = splitCsvLine(mLines[i]);
             if (fields.size() != mColumns.size()) {
                 throw std::invalid_argument(fmt::format("{}:{}: {} fields where the header has {}",
                                                         mPath.string(), i + 1, fields.size(),

@@ -1,5 +1,7 @@
 #include "core/Motion.h"
 
+#include "core/Csv.h"
+
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
@@ -31,16 +33,11 @@ std::string_view trim(std::string_view s) {
 }
 
 std::vector<std::string_view> splitCells(std::string_view line) {
-    std::vector<std::string_view> cells;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t comma = line.find(',', start);
-        cells.push_back(trim(line.substr(start, comma == std::string_view::npos ? comma : comma - start)));
-        if (comma == std::string_view::npos) {
-            return cells;
-        }
-        start = comma + 1;
+    std::vector<std::string_view> cells = splitCsvLine(line);
+    for (std::string_view& cell : cells) {
+        cell = trim(cell);
     }
+    return cells;
 }
 
 bool parseNumber(std::string_view cell, double& value) {
