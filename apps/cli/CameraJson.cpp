@@ -2,6 +2,9 @@
 
 #include "InputError.h"
 
+#include "core/JsonText.h"
+#include "core/ShownText.h"
+
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
@@ -22,7 +25,7 @@ using nlohmann::json;
 namespace {
 
 [[noreturn]] void badKey(const fs::path& path, const std::string& key, const std::string& problem) {
-    throw InputError(fmt::format("{}: camera key \"{}\": {}", path.string(), key, problem));
+    throw InputError(fmt::format("{}: camera key \"{}\": {}", path.string(), shownText(key), problem));
 }
 
 /// A JSON number that a float holds as a finite value.
@@ -130,8 +133,8 @@ Camera CameraJson::camera(int width, int height) const {
 CameraJson parseCameraJson(std::string_view text, const fs::path& path) {
     json root;
     try {
-        root = json::parse(text);
-    } catch (const json::exception& e) {
+        root = parseJsonText(text);
+    } catch (const JsonTextError& e) {
         throw InputError(fmt::format("{}: not valid JSON: {}", path.string(), e.what()));
     }
     if (!root.is_object())
@@ -171,6 +174,11 @@ CameraJson parseCameraJson(std::string_view text, const fs::path& path) {
 }
 
 CameraJson loadCameraJson(const fs::path& path) {
+    // Checked before opening: opening a named pipe for reading waits for a writer, possibly forever.
+    std::error_code ec;
+    const auto status = fs::status(path, ec);
+    if (fs::exists(status) && !fs::is_regular_file(status))
+        throw InputError(fmt::format("{}: the camera file is not a regular file", path.string()));
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw InputError(fmt::format("{}: cannot open the camera file", path.string()));

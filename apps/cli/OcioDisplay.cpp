@@ -2,6 +2,8 @@
 
 #include "Commands.h"
 
+#include "core/ShownText.h"
+
 #include <OpenColorIO/OpenColorIO.h>
 #include <fmt/format.h>
 
@@ -71,7 +73,7 @@ std::string pickDisplay(const OCIO::Config& config, const OcioOptions& options, 
     }
     if (std::find(displays.begin(), displays.end(), options.display) == displays.end()) {
         throw InputError(fmt::format("--ocio-display: config {} has no display '{}' (displays: {})",
-                                     path.string(), options.display, joinQuoted(displays)));
+                                     path.string(), shownText(options.display), joinQuoted(displays)));
     }
     return options.display;
 }
@@ -87,7 +89,8 @@ std::string pickView(const OCIO::Config& config, const std::string& display, con
     }
     if (std::find(views.begin(), views.end(), options.view) == views.end()) {
         throw InputError(fmt::format("--ocio-view: display '{}' of config {} has no view '{}' (views: {})",
-                                     display, path.string(), options.view, joinQuoted(views)));
+                                     shownText(display), path.string(), shownText(options.view),
+                                     joinQuoted(views)));
     }
     return options.view;
 }

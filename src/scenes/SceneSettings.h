@@ -2,6 +2,7 @@
 // Scene settings use the same reflection as the post settings (core/settings/Reflect.h): a struct with
 // visit(V&).
 
+#include "core/JsonText.h"
 #include "core/settings/JsonVisitors.h"
 #include "core/settings/SettingsDescriber.h"
 
@@ -17,9 +18,14 @@ template <class S>
 std::vector<SettingsIssue> applySceneOverride(S& settings, std::string_view sceneName,
                                               std::string_view assignment) {
     nlohmann::json patch;
-    if (!settings_json::parseAssignment(assignment, patch)) {
-        return {{SettingsIssueCode::BadOverride, std::string(sceneName) + "." + std::string(assignment),
-                 "expected " + std::string(sceneName) + ".key=value"}};
+    try {
+        if (!settings_json::parseAssignment(assignment, patch)) {
+            return {{SettingsIssueCode::BadOverride, std::string(sceneName) + "." + shownText(assignment),
+                     "expected " + std::string(sceneName) + ".key=value"}};
+        }
+    } catch (const JsonTextError& e) {
+        return {
+            {SettingsIssueCode::ParseError, std::string(sceneName) + "." + shownText(assignment), e.what()}};
     }
     S candidate = settings;
     auto issues = settings_json::readObject(patch, std::string(sceneName), candidate);

@@ -3,6 +3,7 @@
 // too): JsonWriter writes every field; JsonReader reads present keys, validates type and range, and records
 // issues by JSON path without touching fields that have issues.
 
+#include "core/ShownText.h"
 #include "core/settings/Reflect.h"
 
 #include <fmt/format.h>
@@ -32,10 +33,10 @@ inline std::string typeName(const json& j) {
     return j.type_name();
 }
 
-/// A value as JSON text for a message. Never throws: bytes that are not UTF-8 (a `--set` value is raw
-/// command-line text) become U+FFFD instead of making dump() throw type_error.316.
+/// A value as JSON text for a message: bounded in length and depth (shownJson). Never throws: bytes that are
+/// not UTF-8 (a `--set` value is raw command-line text) become U+FFFD.
 inline std::string shown(const json& j) {
-    return j.dump(-1, ' ', false, json::error_handler_t::replace);
+    return shownJson(j);
 }
 
 /// `value` as the double whose shortest decimal is the float's own shortest (0.02f is written as 0.02, not
@@ -237,7 +238,8 @@ public:
                 return;
             }
         }
-        add(SettingsIssueCode::BadEnum, key, fmt::format("\"{}\" is not one of: {}", s, joinNames(names)));
+        add(SettingsIssueCode::BadEnum, key,
+            fmt::format("\"{}\" is not one of: {}", shownText(s), joinNames(names)));
     }
     template <class S>
     void object(std::string_view key, S& sub) {
@@ -278,7 +280,7 @@ public:
                 for (const auto& k : mKnown) {
                     known += (known.empty() ? "" : ", ") + k;
                 }
-                add(SettingsIssueCode::UnknownKey, key, fmt::format("known keys: {}", known));
+                add(SettingsIssueCode::UnknownKey, shownText(key), fmt::format("known keys: {}", known));
             }
         }
     }
@@ -365,8 +367,13 @@ json writeObject(const S& source) {
     return out;
 }
 
+/// Keys of an override have at most this many dot-separated parts (the settings tree is 3 deep).
+inline constexpr std::size_t kMaxOverrideParts = 16;
+
 /// Parses "a.b=value" into {"a": {"b": value}} (value as JSON when valid JSON, else a string). Returns false
-/// when the text is not of the form path=value.
+/// when the text is not of the form path=value; throws JsonTextError when the value is JSON that breaks a
+/// limit of parseJsonText (1e400, nesting, a duplicate key), is an array or object that does not parse, or
+/// the key has more than kMaxOverrideParts parts.
 bool parseAssignment(std::string_view assignment, json& patch);
 
 } // namespace photopic::settings_json

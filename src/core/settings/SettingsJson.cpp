@@ -1,5 +1,7 @@
 #include "core/settings/SettingsJson.h"
 
+#include "core/JsonText.h"
+#include "core/ShownText.h"
 #include "core/settings/JsonVisitors.h"
 
 #include <fmt/format.h>
@@ -38,16 +40,6 @@ std::string_view issueText(SettingsIssueCode code) {
 #undef PHOTOPIC_X
     }
     return "";
-}
-
-std::string escapeInvalidUtf8(std::string_view text) {
-    std::string out;
-    while (const auto bad = invalidUtf8Offset(text)) {
-        out += text.substr(0, *bad);
-        out += fmt::format("\\x{:02x}", static_cast<unsigned char>(text[*bad]));
-        text.remove_prefix(*bad + 1);
-    }
-    return out + std::string(text);
 }
 
 /// The document's "preset", laid over `settings` when `use` says so. False when it is not a preset's name.
@@ -93,7 +85,7 @@ std::vector<SettingsIssue> readDocument(const json& doc, Settings& settings,
         if (key != "version" && key != "preset" && key != "postEffects") {
             // A settings group written at the top ({"bloom": ...}) is the likeliest slip: say where it goes.
             const bool group = writeObject(Settings{}).contains(key);
-            issues.push_back({SettingsIssueCode::UnknownKey, key,
+            issues.push_back({SettingsIssueCode::UnknownKey, shownText(key),
                               group ? fmt::format("known keys: version, preset, postEffects; \"{}\" belongs "
                                                   "inside postEffects: {{\"postEffects\": {{\"{}\": ...}}}}",
                                                   key, key)
@@ -138,8 +130,15 @@ SettingsError::SettingsError(std::string source, std::vector<SettingsIssue> issu
     , mIssues(std::move(issues)) {}
 
 std::string formatSettingsIssues(const std::vector<SettingsIssue>& issues) {
+    // A document can hold any number of mistakes; the first ones say what is wrong, the count the rest.
+    constexpr std::size_t kMaxListed = 20;
     std::string out;
-    for (const auto& issue : issues) {
+    for (std::size_t i = 0; i < issues.size(); ++i) {
+        if (i == kMaxListed) {
+            out += fmt::format("  ... and {} more\n", issues.size() - kMaxListed);
+            break;
+        }
+        const SettingsIssue& issue = issues[i];
         const std::string path = issue.path.empty() ? "(document)" : issue.path;
         // An unknown key's message is the keys that would have been read there: "unknown key" once.
         if (issue.code == SettingsIssueCode::UnknownKey) {
@@ -151,53 +150,15 @@ std::string formatSettingsIssues(const std::vector<SettingsIssue>& issues) {
     return out;
 }
 
-std::optional<std::size_t> invalidUtf8Offset(std::string_view text) {
-    const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
-    std::size_t i = 0;
-    while (i < text.size()) {
-        const unsigned char lead = byte(i);
-        std::size_t length = 0;
-        unsigned char low = 0x80; // bounds of the second byte (they exclude overlong forms and surrogates)
-        unsigned char high = 0xbf;
-        if (lead < 0x80) {
-            ++i;
-            continue;
-        } else if (lead >= 0xc2 && lead <= 0xdf) {
-            length = 2;
-        } else if (lead >= 0xe0 && lead <= 0xef) {
-            length = 3;
-            low = lead == 0xe0 ? 0xa0 : 0x80;
-            high = lead == 0xed ? 0x9f : 0xbf;
-        } else if (lead >= 0xf0 && lead <= 0xf4) {
-            length = 4;
-            low = lead == 0xf0 ? 0x90 : 0x80;
-            high = lead == 0xf4 ? 0x8f : 0xbf;
-        } else {
-            return i;
-        }
-        if (i + length > text.size() || byte(i + 1) < low || byte(i + 1) > high) {
-            return i;
-        }
-        for (std::size_t k = 2; k < length; ++k) {
-            if (byte(i + k) < 0x80 || byte(i + k) > 0xbf) {
-                return i;
-            }
-        }
-        i += length;
-    }
-    return std::nullopt;
-}
-
 std::string unknownPresetMessage(std::string_view name) {
-    return fmt::format("unknown preset '{}' (known presets: {})", name, joinNames(presetNames()));
+    return fmt::format("unknown preset '{}' (known presets: {})", shownText(name), joinNames(presetNames()));
 }
 
 std::vector<SettingsIssue> readSettingsJson(std::string_view text, Settings& settings,
                                             DocumentPreset preset) {
-    // nlohmann's exceptions all derive from json::exception: a parse error, but also out_of_range.406 for a
-    // number beyond double range (1e400). One catch of the base keeps every one of them inside the issues.
+    // parseJsonText turns every parse failure (syntax, nesting, a duplicate key, 1e400) into one error.
     try {
-        const json doc = json::parse(text);
+        const json doc = parseJsonText(text);
         // Read into a copy so a document with issues leaves `settings` exactly as it was.
         Settings candidate = settings;
         auto issues = readDocument(doc, candidate, preset);
@@ -205,6 +166,8 @@ std::vector<SettingsIssue> readSettingsJson(std::string_view text, Settings& set
             settings = std::move(candidate);
         }
         return issues;
+    } catch (const JsonTextError& e) {
+        return {{SettingsIssueCode::ParseError, "", e.what()}};
     } catch (const json::exception& e) {
         return {{SettingsIssueCode::ParseError, "", e.what()}};
     }
@@ -216,12 +179,19 @@ Settings loadSettingsFile(const std::filesystem::path& file, Settings base, Docu
         throw SettingsError(file.string(), {{SettingsIssueCode::MissingFile, "",
                                              fmt::format("settings file {} does not exist", file.string())}});
     }
-    std::ifstream in(file, std::ios::binary);
-    if (!in || std::filesystem::is_directory(file, ec)) {
+    // Checked before opening: opening a named pipe for reading waits for a writer, possibly forever.
+    if (!std::filesystem::is_regular_file(file, ec)) {
         throw SettingsError(
             file.string(),
             {{SettingsIssueCode::UnreadableFile, "",
-              fmt::format("settings file {} cannot be read (a folder, or no permission)", file.string())}});
+              fmt::format("settings file {} is not a regular file (a folder, a pipe or a device)",
+                          file.string())}});
+    }
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        throw SettingsError(
+            file.string(), {{SettingsIssueCode::UnreadableFile, "",
+                             fmt::format("settings file {} cannot be read (no permission)", file.string())}});
     }
     std::stringstream ss;
     ss << in.rdbuf();
@@ -248,17 +218,28 @@ bool parseAssignment(std::string_view assignment, json& patch) {
     if (eq == std::string_view::npos || eq == 0) {
         return false;
     }
-    const std::string valueText(assignment.substr(eq + 1));
-    patch = json::parse(valueText, nullptr, /*allow_exceptions=*/false);
-    if (patch.is_discarded()) {
-        patch = valueText; // bare words such as agx are strings
-    }
     std::vector<std::string> parts;
     std::string_view rest = assignment.substr(0, eq);
     while (!rest.empty()) {
         const auto dot = rest.find('.');
         parts.emplace_back(rest.substr(0, dot));
         rest = dot == std::string_view::npos ? std::string_view{} : rest.substr(dot + 1);
+        if (parts.size() > kMaxOverrideParts) {
+            throw JsonTextError(JsonTextError::Kind::TooDeep,
+                                fmt::format("the key has more than {} parts", kMaxOverrideParts));
+        }
+    }
+    const std::string valueText(assignment.substr(eq + 1));
+    try {
+        patch = parseJsonText(valueText);
+    } catch (const JsonTextError& e) {
+        // Bare words such as agx are strings; text that is JSON but breaks a limit (1e400, an array nested
+        // too deep, a key twice) or an array or object that does not parse is an error, not a string.
+        const bool container = valueText.starts_with('[') || valueText.starts_with('{');
+        if (e.kind != JsonTextError::Kind::Syntax || container) {
+            throw;
+        }
+        patch = valueText;
     }
     for (auto it = parts.rbegin(); it != parts.rend(); ++it) {
         patch = json{{*it, patch}};
@@ -272,7 +253,7 @@ void applySettingsOverride(Settings& settings, std::string_view assignment, std:
     // Command-line text is raw bytes: say so when it is not UTF-8 (JSON strings must be), and print it with
     // \xNN in place of the bad bytes so the message itself stays valid text.
     const std::string source =
-        option.empty() ? fmt::format("--set {}", escapeInvalidUtf8(assignment)) : escapeInvalidUtf8(option);
+        option.empty() ? fmt::format("--set {}", shownText(assignment)) : shownText(option);
     if (const auto bad = invalidUtf8Offset(assignment)) {
         throw SettingsError(source, {{SettingsIssueCode::InvalidUtf8, "",
                                       fmt::format("at byte {} (0x{:02x}); settings text must be UTF-8", *bad,
@@ -282,7 +263,7 @@ void applySettingsOverride(Settings& settings, std::string_view assignment, std:
         // Build {"postEffects": {"a": {"b": value}}} and read it like a file, so errors carry the same paths.
         json patch;
         if (!parseAssignment(assignment, patch)) {
-            throw SettingsError(source, {{SettingsIssueCode::BadOverride, std::string(assignment),
+            throw SettingsError(source, {{SettingsIssueCode::BadOverride, shownText(assignment),
                                           "expected path=value, e.g. tonemapping.mode=agx"}});
         }
         Settings candidate = settings;
@@ -291,6 +272,8 @@ void applySettingsOverride(Settings& settings, std::string_view assignment, std:
             throw SettingsError(source, std::move(issues));
         }
         settings = std::move(candidate);
+    } catch (const JsonTextError& e) {
+        throw SettingsError(source, {{SettingsIssueCode::ParseError, "", e.what()}});
     } catch (const json::exception& e) {
         throw SettingsError(source, {{SettingsIssueCode::ParseError, "", e.what()}});
     }

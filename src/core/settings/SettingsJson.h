@@ -3,6 +3,7 @@
 // settings files kept where they exist.
 
 #include "core/Settings.h"
+#include "core/ShownText.h" // invalidUtf8Offset, for callers that check command-line text
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -61,9 +62,6 @@ void applySettingsOverride(Settings& settings, std::string_view assignment, std:
 /// Every issue `settings` has (a value out of its range, a NaN), by JSON path: what loading the same values
 /// from JSON would report. Empty when the settings can be used.
 std::vector<SettingsIssue> validateSettings(const Settings& settings);
-/// The offset of the first byte that does not belong to well-formed UTF-8 (RFC 3629: no overlong forms, no
-/// surrogates, nothing above U+10FFFF), or nullopt when all of `text` is UTF-8.
-[[nodiscard]] std::optional<std::size_t> invalidUtf8Offset(std::string_view text);
 
 /// "postEffects.a.b: message (allowed ...)" lines, one per issue; an unknown key reads "postEffects.a.b:
 /// unknown key (known keys: ...)".

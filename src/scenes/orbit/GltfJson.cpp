@@ -1,5 +1,7 @@
 #include "scenes/orbit/GltfJson.h"
 
+#include "core/JsonText.h"
+
 #include <algorithm>
 #include <climits>
 #include <string>
@@ -277,25 +279,15 @@ void checkAsset(const Checker& c, const json& root) {
 } // namespace
 
 json parseGltfJson(std::span<const std::uint8_t> text, const fs::path& file, int maxDepth) {
-    // Thrown from the parser's callback, so a deeply nested file stops as soon as it is too deep.
-    struct TooDeep {};
-    const json::parser_callback_t depthLimit = [maxDepth](int depth, json::parse_event_t, json&) {
-        if (depth > maxDepth) {
-            throw TooDeep{};
-        }
-        return true;
-    };
+    // The nesting limit stops a deeply nested file as soon as it is too deep. Duplicate keys are left to the
+    // glTF schema's own checks (the last one wins, as in every glTF reader).
     try {
-        return json::parse(text.begin(), text.end(), depthLimit);
-    } catch (const TooDeep&) {
-        throw ModelError(file, ModelIssue::ParseError, "",
-                         "JSON nested deeper than " + std::to_string(maxDepth) + " levels");
-    } catch (const json::exception& e) {
-        // nlohmann's messages open with "[json.exception.parse_error.101] "; the rest reads on its own.
+        return parseJsonText({reinterpret_cast<const char*>(text.data()), text.size()},
+                             {.maxDepth = maxDepth, .rejectDuplicateKeys = false});
+    } catch (const JsonTextError& e) {
         std::string message = e.what();
-        if (const auto close = message.find("] ");
-            message.starts_with("[json.") && close != std::string::npos) {
-            message.erase(0, close + 2);
+        if (e.kind == JsonTextError::Kind::TooDeep) {
+            throw ModelError(file, ModelIssue::ParseError, "", "JSON " + message);
         }
         // A file that does not even open as a JSON object is not a glTF file at all (an image passed as the
         // model, say): say that first.
