@@ -30,6 +30,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <span>
@@ -298,6 +299,15 @@ bool exrChannelListFits(std::span<const unsigned char> value) {
 /// go on reading the next attribute from the wrong place, where a size it then trusted was never checked.
 void checkExrAttributeSizes(const fs::path& path, std::span<const unsigned char> bytes) {
     const bool multiPart = bytes.size() >= 8 && (bytes[5] & 0x10) != 0; // version flag 0x1000
+    // Deep data (any number of samples a pixel, version flag 0x800 or a part of type deepscanline or
+    // deeptile) has no flat colour to read; refused here, before OpenEXR's deep reader sees the file.
+    const auto refuseDeep = [&](const std::string& what) {
+        throw IoError(
+            path, "OpenEXR deep data is not read (" + what +
+                      "): flatten it first, e.g. with your renderer's or compositor's deep-to-image step");
+    };
+    if (bytes.size() >= 8 && (bytes[5] & 0x08) != 0)
+        refuseDeep("the file's version field says it holds deep data");
     std::size_t pos = 8;
     const auto cString = [&]() {
         const auto end =
@@ -339,6 +349,12 @@ void checkExrAttributeSizes(const fs::path& path, std::span<const unsigned char>
             throw IoError(path, "OpenEXR header is corrupt: attribute \"" + name + "\" (" + type +
                                     ") declares " + std::to_string(size) + " bytes, a " + type + " has " +
                                     std::to_string(*fixed));
+        if (name == "type" && type == "string") {
+            const std::string partType(bytes.begin() + std::ptrdiff_t(pos),
+                                       bytes.begin() + std::ptrdiff_t(pos + size));
+            if (partType.starts_with("deep"))
+                refuseDeep("a part of type " + partType.substr(0, 16));
+        }
         if (type == "chlist" && !exrChannelListFits(bytes.subspan(pos, size)))
             throw IoError(path, "OpenEXR header is corrupt: channel list \"" + name +
                                     "\" does not end where its declared " + std::to_string(size) +
@@ -615,12 +631,31 @@ void pngWarn(png_structp, png_const_charp) {} // ancillary-chunk complaints; the
 
 /// Reads the header and sets the transforms to RGBA at 8 bits (`eightBit`: a 16-bit file keeps its high
 /// byte) or at the file's own depth.
-bool pngReadInfo(png_structp png, png_infop info, bool eightBit) {
+/// The smallest number of bytes the file's compressed rows can take: rows as the file stores them (its own
+/// channels and bit depth, one filter byte a row; Adam7's passes have at least as many rows and bits), over
+/// deflate's largest expansion, 1032:1.
+std::uint64_t pngMinimumCompressedBytes(std::uint32_t width, std::uint32_t height, int colorType,
+                                        int bitDepth) {
+    int channels = 1; // grey, palette
+    if (colorType == PNG_COLOR_TYPE_RGB)
+        channels = 3;
+    else if (colorType == PNG_COLOR_TYPE_GRAY_ALPHA)
+        channels = 2;
+    else if (colorType == PNG_COLOR_TYPE_RGB_ALPHA)
+        channels = 4;
+    const std::uint64_t bits =
+        std::uint64_t(width) * height * std::uint64_t(channels) * std::uint64_t(bitDepth);
+    return (height + bits / 8) / 1032;
+}
+
+bool pngReadInfo(png_structp png, png_infop info, bool eightBit, std::uint64_t& minimumBytes) {
     if (setjmp(png_jmpbuf(png)))
         return false;
     png_read_info(png, info);
     const int colorType = png_get_color_type(png, info);
     const int bitDepth = png_get_bit_depth(png, info);
+    minimumBytes = pngMinimumCompressedBytes(png_get_image_width(png, info), png_get_image_height(png, info),
+                                             colorType, bitDepth);
     if (colorType == PNG_COLOR_TYPE_PALETTE)
         png_set_palette_to_rgb(png);
     if (colorType == PNG_COLOR_TYPE_GRAY && bitDepth < 8)
@@ -681,7 +716,8 @@ PngPixels decodePng(const fs::path& path, std::span<const unsigned char> bytes, 
     const auto fail = [&](const char* what) {
         throw IoError(path, std::string(what) + (source.error[0] ? source.error.data() : "corrupt file"));
     };
-    if (!pngReadInfo(png, info, eightBit))
+    std::uint64_t minimumBytes = 0;
+    if (!pngReadInfo(png, info, eightBit, minimumBytes))
         fail("cannot decode PNG: ");
 
     PngPixels pixels;
@@ -689,13 +725,10 @@ PngPixels decodePng(const fs::path& path, std::span<const unsigned char> bytes, 
     pixels.height = int(png_get_image_height(png, info));
     pixels.sixteenBit = png_get_bit_depth(png, info) == 16;
     checkSize(path, png_get_image_width(png, info), png_get_image_height(png, info), limits);
-    // Deflate expands at most 1032:1, so the compressed rows (one filter byte each) cannot come from fewer
-    // than 1/1032 of their size in bytes.
     const std::size_t rowBytes = png_get_rowbytes(png, info);
     if (rowBytes != std::size_t(pixels.width) * 4 * (pixels.sixteenBit ? 2 : 1))
         throw IoError(path, "cannot decode PNG: unexpected row layout");
-    const std::uint64_t filtered = std::uint64_t(pixels.height) * (1 + (std::uint64_t(pixels.width) * 4));
-    checkBytesHold(path, pixels.width, pixels.height, filtered / 1032, bytes.size() - source.pos, "PNG");
+    checkBytesHold(path, pixels.width, pixels.height, minimumBytes, bytes.size() - source.pos, "PNG");
 
     pixels.samples.resize(rowBytes * std::size_t(pixels.height));
     std::vector<png_bytep> rows(std::size_t(pixels.height));
@@ -1063,6 +1096,29 @@ void AtomicFileWriter::write(std::string_view text) {
         fail("cannot write: " + errnoMessage(errno));
 }
 
+namespace {
+
+std::mutex gBeforeReplaceMutex;
+BeforeReplace gBeforeReplace;
+
+void beforeReplace(const fs::path& path) {
+    BeforeReplace hook;
+    {
+        const std::lock_guard lock(gBeforeReplaceMutex);
+        hook = gBeforeReplace;
+    }
+    std::error_code ec;
+    if (hook && fs::is_regular_file(fs::symlink_status(path, ec)))
+        hook(path);
+}
+
+} // namespace
+
+void setBeforeReplace(BeforeReplace hook) {
+    const std::lock_guard lock(gBeforeReplaceMutex);
+    gBeforeReplace = std::move(hook);
+}
+
 void AtomicFileWriter::commit() {
     if (!mFile)
         throw IoError(mPath, "committed twice or after a failure");
@@ -1080,6 +1136,13 @@ void AtomicFileWriter::commit() {
     if (closed != 0) {
         fs::remove(mTemporary, ec);
         throw IoError(mPath, "cannot write: " + errnoMessage(errno));
+    }
+    try {
+        beforeReplace(mPath);
+    } catch (const IoError&) {
+        std::error_code ignored;
+        fs::remove(mTemporary, ignored);
+        throw;
     }
     fs::rename(mTemporary, mPath, ec);
     if (ec) {

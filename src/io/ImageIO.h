@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -117,6 +118,14 @@ void writeTextFile(const std::filesystem::path& path, std::string_view text);
 /// writable. Throws IoError saying which of these fails. For
 /// validating every output before a long run starts.
 void requireWritableFile(const std::filesystem::path& path);
+
+/// Called by AtomicFileWriter::commit (and so by every writer here) just before its finished file replaces
+/// an existing file at `path`; never for a new file or a stream. For a program that must be able to put back
+/// what a failed run replaced: the CLI moves the old file aside here and restores it if the run fails. May be
+/// called from several threads at once; throwing IoError stops the commit (the temporary is removed and
+/// `path` is left as it was). Process-wide; an empty function (the default) replaces files outright.
+using BeforeReplace = std::function<void(const std::filesystem::path& path)>;
+void setBeforeReplace(BeforeReplace hook);
 
 /// A file written piece by piece and published atomically: the pieces go to a temporary beside `path` (named
 /// like writePng's), commit() flushes it to disk and renames it over `path`; destroyed without commit(), it
