@@ -369,6 +369,88 @@ TEST_F(GltfHostile, AnImageViewPastItsBufferIsCaughtBeforeTinygltfReadsIt) {
     EXPECT_EQ(issueOf(write()), ModelIssue::OutOfBounds);
 }
 
+TEST_F(GltfHostile, EveryFileAModelNamesLiesInsideItsFolder) {
+    // A file beside the model's folder, which no spelling of a uri may reach.
+    write();
+    const fs::path outside = mDir.parent_path() / (mDir.filename().string() + "-outside.bin");
+    fs::copy_file(mDir / "tri.bin", outside, fs::copy_options::overwrite_existing);
+    fs::create_directories(mDir / "sub");
+    fs::create_symlink(outside, mDir / "link.bin");
+    const std::string name = outside.filename().string();
+    for (const std::string& uri : {"../" + name, "..%2F" + name, "..%2f" + name, "sub/../../" + name,
+                                   "sub%2F..%2F..%2F" + name, "./../" + name, std::string("link.bin")}) {
+        mGltf["buffers"][0]["uri"] = uri;
+        std::string message;
+        EXPECT_EQ(issueOf(write(), &message), ModelIssue::Unsupported) << uri;
+        EXPECT_NE(message.find("outside the model's folder"), std::string::npos) << message;
+    }
+    // Inside, however it is spelled, loads; so does a link to a file inside.
+    fs::create_symlink(mDir / "tri.bin", mDir / "sub" / "inside.bin");
+    for (const std::string uri : {"tri.bin", "./tri.bin", "sub/../tri.bin", "sub/inside.bin"}) {
+        mGltf["buffers"][0]["uri"] = uri;
+        EXPECT_NO_THROW((void)loadModel(write())) << uri;
+    }
+    // An image's uri goes through the same resolver.
+    mGltf["buffers"][0]["uri"] = "tri.bin";
+    mGltf["meshes"][0]["primitives"][0]["material"] = 0;
+    mGltf["materials"] = json::parse(R"([{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}])");
+    mGltf["textures"] = json::parse(R"([{"source": 0}])");
+    mGltf["images"] = json::array({{{"uri", "..%2F" + name}}});
+    std::string message;
+    (void)issueOf(write(), &message);
+    EXPECT_NE(message.find("outside the model's folder"), std::string::npos) << message;
+    fs::remove(outside);
+}
+
+/// A PNG's signature and IHDR, then an IDAT of `idatBytes` zeros: what a header check sees of a real file.
+std::vector<std::uint8_t> pngOfSize(std::uint32_t width, std::uint32_t height, std::uint8_t bitDepth,
+                                    std::uint8_t colourType, std::size_t idatBytes) {
+    std::vector<std::uint8_t> out = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    const auto be32 = [&](std::uint32_t v) {
+        for (int shift = 24; shift >= 0; shift -= 8) {
+            out.push_back(std::uint8_t(v >> shift));
+        }
+    };
+    const auto chunk = [&](const char* kind, const std::vector<std::uint8_t>& data) {
+        be32(std::uint32_t(data.size()));
+        out.insert(out.end(), kind, kind + 4);
+        out.insert(out.end(), data.begin(), data.end());
+        be32(0); // stb_image does not check CRCs
+    };
+    std::vector<std::uint8_t> ihdr;
+    for (const std::uint32_t v : {width, height}) {
+        for (int shift = 24; shift >= 0; shift -= 8) {
+            ihdr.push_back(std::uint8_t(v >> shift));
+        }
+    }
+    ihdr.insert(ihdr.end(), {bitDepth, colourType, 0, 0, 0});
+    chunk("IHDR", ihdr);
+    chunk("IDAT", std::vector<std::uint8_t>(idatBytes, 0));
+    chunk("IEND", {});
+    return out;
+}
+
+TEST_F(GltfHostile, TextureBombsAreRefusedFromTheHeader) {
+    mGltf["meshes"][0]["primitives"][0]["material"] = 0;
+    mGltf["materials"] = json::parse(R"([{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}])");
+    mGltf["textures"] = json::parse(R"([{"source": 0}])");
+    mGltf["images"] = json::parse(R"([{"uri": "tex.png"}])");
+    const auto writePng = [&](const std::vector<std::uint8_t>& png) {
+        std::ofstream(mDir / "tex.png", std::ios::binary)
+            .write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
+    };
+    // 16384 x 16384 at 1 bit fits in 33 KB of deflate and would decode to 1 GiB of RGBA.
+    writePng(pngOfSize(16384, 16384, 1, 0, 40000));
+    std::string message;
+    EXPECT_EQ(issueOf(write(), &message), ModelIssue::TooLarge);
+    EXPECT_NE(message.find("over the limit of 67108864 pixels"), std::string::npos) << message;
+    // A header that claims more than its bytes can hold, under every size limit.
+    writePng(pngOfSize(4096, 4096, 8, 2, 100));
+    EXPECT_EQ(issueOf(write(), &message), ModelIssue::BadImage);
+    EXPECT_NE(message.find("cannot hold the 4096 x 4096 image"), std::string::npos) << message;
+    EXPECT_EQ(issueOf(write(), &message, {.maxImagePixels = 1000}), ModelIssue::TooLarge);
+}
+
 TEST_F(GltfHostile, ExternalReferencesStayRelative) {
     mGltf["buffers"][0]["uri"] = "/etc/passwd";
     EXPECT_EQ(issueOf(write()), ModelIssue::Unsupported);

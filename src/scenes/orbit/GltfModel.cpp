@@ -2,6 +2,8 @@
 
 #include "scenes/orbit/GltfJson.h"
 
+#include "core/ShownText.h"
+
 // tinygltf parses (JSON through the system nlohmann-json). Images are neither read nor decoded by it: the
 // loader reads the files it names and decodes with stb_image (libstb) itself, after checking their size.
 #define TINYGLTF_IMPLEMENTATION
@@ -127,22 +129,66 @@ bool isDataUri(const std::string& uri) {
     return uri.starts_with("data:");
 }
 
-/// A relative reference beside the model. Absolute paths and other schemes (http:) are refused: a model
-/// names its own files, and a viewer should not fetch or read anything else on its behalf.
+/// The fewest bytes an encoded image of this size can take: its samples as stored (a PNG's own channels and
+/// bit depth from its header, else `channels` bytes a pixel) plus a PNG's filter byte a row, over the largest
+/// expansion of deflate (1032:1), which no JPEG reaches either (at best about 2 bits an 8x8 block).
+std::uint64_t minimumEncodedBytes(std::span<const std::uint8_t> encoded, int width, int height,
+                                  int channels) {
+    constexpr std::uint8_t kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    std::uint64_t bits = std::uint64_t(width) * std::uint64_t(height) * std::uint64_t(channels) * 8;
+    std::uint64_t rows = 0;
+    if (encoded.size() >= 26 && std::memcmp(encoded.data(), kPngSignature, 8) == 0 &&
+        std::memcmp(encoded.data() + 12, "IHDR", 4) == 0) {
+        const int bitDepth = encoded[24];
+        const int colorType = encoded[25];
+        const int stored = colorType == 2 ? 3 : colorType == 4 ? 2 : colorType == 6 ? 4 : 1;
+        bits = std::uint64_t(width) * std::uint64_t(height) * std::uint64_t(stored) * std::uint64_t(bitDepth);
+        rows = std::uint64_t(height);
+    }
+    return (rows + bits / 8) / 1032;
+}
+
+/// Whether `file` (canonical: symbolic links resolved) lies inside `folder` (canonical too).
+bool liesInside(const fs::path& file, const fs::path& folder) {
+    const auto [folderEnd, fileAt] = std::mismatch(folder.begin(), folder.end(), file.begin(), file.end());
+    // A trailing separator leaves an empty last element in `folder`: it matches anything.
+    return folderEnd == folder.end() || (std::next(folderEnd) == folder.end() && folderEnd->empty());
+}
+
+/// `file` with every symbolic link and "." or ".." resolved (the parts that do not exist yet kept as
+/// written).
+fs::path canonicalPath(const fs::path& file) {
+    std::error_code ec;
+    fs::path out = fs::weakly_canonical(fs::absolute(file, ec), ec);
+    return ec ? fs::path() : out;
+}
+
+/// The one resolver of every file a model names (a buffer's or an image's uri): percent-decoded first, then
+/// joined to the model's folder, then every symbolic link and ".." resolved, and the result required to lie
+/// inside the model's folder. Absolute paths and other schemes (http:, file:) are refused: a model names its
+/// own files, and a viewer should not fetch or read anything else on its behalf.
 fs::path resolveUri(const std::string& uri, const fs::path& baseDir, const fs::path& model,
                     const std::string& where) {
     const std::string decoded = tinygltf::dlib::urldecode(uri);
     const auto colon = decoded.find(':');
-    if (decoded.empty() || decoded.front() == '/' ||
+    if (decoded.empty() || decoded.front() == '/' || decoded.find('\0') != std::string::npos ||
         (colon != std::string::npos && colon < decoded.find('/'))) {
         throw ModelError(model, ModelIssue::Unsupported, where,
-                         "URI \"" + uri + "\" is not a relative file reference or a data: URI");
+                         "URI \"" + shownText(uri) + "\" is not a relative file reference or a data: URI");
     }
     if (baseDir.empty()) {
         throw ModelError(model, ModelIssue::MissingFile, where,
-                         "file \"" + decoded + "\" not found (a model read from memory is self-contained)");
+                         "file \"" + shownText(decoded) +
+                             "\" not found (a model read from memory is self-contained)");
     }
-    return baseDir / decoded;
+    const fs::path folder = canonicalPath(baseDir);
+    const fs::path file = canonicalPath(baseDir / decoded);
+    if (folder.empty() || file.empty() || !liesInside(file, folder)) {
+        throw ModelError(model, ModelIssue::Unsupported, where,
+                         "URI \"" + shownText(uri) + "\" names a file outside the model's folder " +
+                             baseDir.string());
+    }
+    return file;
 }
 
 /// The JSON chunk of a GLB (after its header checks); tinygltf checks the rest of the container.
@@ -168,18 +214,29 @@ std::span<const std::uint8_t> glbJson(std::span<const std::uint8_t> bytes, const
     return bytes.subspan(20, jsonLength);
 }
 
-// tinygltf's file system, restricted to regular files within the size limit.
+// tinygltf's file system, restricted to regular files within the size limit inside the model's folder
+// (every uri passed resolveUri before tinygltf looks; this holds its own path building to the same rule).
 struct FsContext {
     std::uint64_t maxBytes = 0;
+    fs::path folder; ///< canonical; empty for a model from memory, which may read no file
 };
-bool fsFileExists(const std::string& file, void*) {
+bool fsInside(const std::string& file, void* user) {
+    const auto* context = static_cast<FsContext*>(user);
+    const fs::path canonical = canonicalPath(file);
+    return !context->folder.empty() && !canonical.empty() && liesInside(canonical, context->folder);
+}
+bool fsFileExists(const std::string& file, void* user) {
     std::error_code ec;
-    return fs::is_regular_file(file, ec);
+    return fsInside(file, user) && fs::is_regular_file(file, ec);
 }
 std::string fsExpandPath(const std::string& file, void*) {
     return file;
 }
 bool fsReadFile(std::vector<unsigned char>* out, std::string* err, const std::string& file, void* user) {
+    if (!fsInside(file, user)) {
+        *err = "\"" + shownText(file) + "\" lies outside the model's folder";
+        return false;
+    }
     try {
         *out = readFile(file, file, "", static_cast<FsContext*>(user)->maxBytes);
         return true;
@@ -918,6 +975,20 @@ int Builder::decodeImage(int image, const std::string& where, Model& model) {
              std::to_string(width) + " x " + std::to_string(height) + " pixels, over the limit of " +
                  std::to_string(mLimits.maxImageSide));
     }
+    const std::uint64_t pixelCount = std::uint64_t(width) * std::uint64_t(height);
+    if (pixelCount > mLimits.maxImagePixels) {
+        fail(ModelIssue::TooLarge, imageWhere,
+             fmt::format("{} x {} pixels, over the limit of {} pixels", width, height,
+                         mLimits.maxImagePixels));
+    }
+    // Checked before decoding, from the header: an image whose stored samples could not come from this
+    // many bytes is a decompression bomb or lies about its size.
+    if (const std::uint64_t needed = minimumEncodedBytes(encoded, width, height, channels);
+        encoded.size() < needed) {
+        fail(ModelIssue::BadImage, imageWhere,
+             fmt::format("{} bytes cannot hold the {} x {} image its header declares (at least {} needed)",
+                         encoded.size(), width, height, needed));
+    }
     reserve(0, 0, std::uint64_t(width) * std::uint64_t(height) * 4, imageWhere);
     stbi_uc* pixels =
         stbi_load_from_memory(encoded.data(), int(encoded.size()), &width, &height, &channels, 4);
@@ -979,7 +1050,8 @@ void checkBufferFiles(const nlohmann::json& root, const fs::path& model, const f
 
 tinygltf::Model parseWithTinygltf(std::span<const std::uint8_t> bytes, bool binary, const fs::path& name,
                                   const fs::path& baseDir, const ModelLimits& limits) {
-    FsContext context{limits.maxFileBytes};
+    FsContext context{.maxBytes = limits.maxFileBytes,
+                      .folder = baseDir.empty() ? fs::path() : canonicalPath(baseDir)};
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks({fsFileExists, fsExpandPath, fsReadFile, fsWriteFile, &context});
     loader.SetImageLoader(keepEncodedImage, nullptr);

@@ -66,8 +66,10 @@ struct ModelLimits {
     std::uint64_t maxVertices = std::uint64_t(1) << 26;  ///< output vertices, all instances together
     std::uint64_t maxIndices = std::uint64_t(1) << 28;   ///< output indices (3 per triangle), all together
     int maxImageSide = 16384;                            ///< pixels, an image's width or height
-    std::uint64_t maxBytes = std::uint64_t(1) << 31;     ///< bytes of output: vertices, indices and pixels
-    int maxJsonDepth = 64;                               ///< nesting of JSON arrays and objects
+    std::uint64_t maxImagePixels = std::uint64_t(1)
+                                   << 26;            ///< pixels, an image's width x height (8192 x 8192)
+    std::uint64_t maxBytes = std::uint64_t(1) << 31; ///< bytes of output: vertices, indices and pixels
+    int maxJsonDepth = 64;                           ///< nesting of JSON arrays and objects
 };
 
 struct Bounds {
