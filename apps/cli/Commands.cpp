@@ -1,6 +1,7 @@
 #include "Commands.h"
 
 #include "Bench.h"
+#include "Interrupt.h"
 #include "Progress.h"
 
 #include "FrameStream.h"
@@ -684,6 +685,7 @@ int runImage(const ImageOptions& options) {
     };
     clock.restart("GL context and pipeline");
     for (std::size_t i = 0; i < inputs.size(); ++i) {
+        throwIfInterrupted();
         const DecodedFrame& frame = reader.next();
         clock.mark(StageClock::DecodeWait);
         clock.add(StageClock::Decode, reader.decodeMs());

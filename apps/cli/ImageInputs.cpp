@@ -102,6 +102,17 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
     }
     const int width = frame.width();
     const int height = frame.height();
+    const glm::ivec2 dataEnd = frame.dataOrigin + glm::ivec2(width, height);
+    if (frame.dataOrigin.x < 0 || frame.dataOrigin.y < 0 || dataEnd.x > frame.displaySize.x ||
+        dataEnd.y > frame.displaySize.y) {
+        // Overscan (or a window entirely elsewhere): every stored pixel is processed and written, as the
+        // data window's size, like a crop within the display window.
+        warnOnce("cli.dataWindowOutsideDisplay",
+                 fmt::format("{}: its data window ({}x{} at {},{}) reaches outside its display window ({}x{} "
+                             "at 0,0): the whole data window is processed and written, at {}x{}",
+                             path.string(), width, height, frame.dataOrigin.x, frame.dataOrigin.y,
+                             frame.displaySize.x, frame.displaySize.y, width, height));
+    }
     try {
         out.camera = frameCamera(frame, mPrevious ? &*mPrevious : nullptr);
     } catch (const std::invalid_argument& e) {

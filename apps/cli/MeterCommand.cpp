@@ -3,6 +3,8 @@
 #include "FrameStream.h"
 #include "ImageInputs.h"
 #include "InputSequence.h"
+#include "Interrupt.h"
+#include "Outputs.h"
 #include "Progress.h"
 
 #include "common/ExposureTrack.h"
@@ -71,6 +73,7 @@ int MeterCommand::run() {
     const bool physical = settings.exposure.mode == ExposureMode::Physical;
     const float dt = 1.0f / mOptions.fps;
 
+    RunOutputs outputs; // a replaced meter file comes back, and a signal unwinds, if the run fails
     AtomicFileWriter file = openCommandOutput("meter", mOptions.output);
     file.write(meterCsvHeader(meteringDescription(ae), histogram));
 
@@ -101,6 +104,7 @@ int MeterCommand::run() {
         file.write(text);
     };
     for (std::size_t i = 0; i < inputs.size(); ++i) {
+        throwIfInterrupted();
         const DecodedFrame& frame = reader.next();
         requireTextureFits(inputs[i], frame.width(), frame.height());
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(numbers[i])};
@@ -122,6 +126,7 @@ int MeterCommand::run() {
                                              inputs.size(), pipeline->droppedTelemetry()));
     }
     file.commit();
+    outputs.commit();
     std::printf("meter -> %s (%zu frames, %s metering)\n", mOptions.output.string().c_str(), inputs.size(),
                 std::string(meteringModeNames()[std::size_t(ae.metering)]).c_str());
     return kOk;

@@ -2,6 +2,7 @@
 
 #include "Commands.h"
 #include "DemoFiles.h"
+#include "Interrupt.h"
 #include "Outputs.h"
 #include "Progress.h"
 #include "TabletopDemo.h"
@@ -84,6 +85,7 @@ OrbitRun renderOrbit(const OrbitDemoOptions& options, RunOutputs& outputs) {
     };
     Progress progress("demo --scene orbit", std::size_t(run.frames));
     for (int i = 0; i < run.frames; ++i) {
+        throwIfInterrupted();
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
         std::vector<double> values;
         const FrameInputs frame = scene.render(time, pipeline, values);

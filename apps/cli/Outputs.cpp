@@ -6,26 +6,61 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>
+
 namespace photopic::cli {
 
 namespace fs = std::filesystem;
 
+RunOutputs::RunOutputs() {
+    setBeforeReplace([this](const fs::path& path) { moveAside(path); });
+}
+
 RunOutputs::~RunOutputs() {
+    setBeforeReplace({});
+    std::error_code ignored;
     if (mCommitted) {
+        for (const std::string& path : mReplaced) {
+            fs::remove(previousCopy(path), ignored);
+        }
         return;
     }
-    std::error_code ignored;
     for (const fs::path& file : mFiles) {
         fs::remove(file, ignored);
     }
     for (std::size_t i = 0; mSequenceName && i < mSequenceCount; ++i) {
         fs::remove(mSequenceName(i), ignored);
     }
+    // Files replaced by frames whose write was still in flight are put back too: moveAside listed them.
+    for (const std::string& path : mReplaced) {
+        fs::rename(previousCopy(path), path, ignored);
+    }
     for (auto it = mCreatedFolders.rbegin(); it != mCreatedFolders.rend(); ++it) {
         if (fs::is_empty(*it, ignored)) {
             fs::remove(*it, ignored);
         }
     }
+}
+
+fs::path RunOutputs::previousCopy(const fs::path& path) {
+    // ".NAME.previous-PID", built by appends: GCC 12 warns of a false overlap in `"." + std::string`.
+    std::string name(1, '.');
+    name.append(path.filename().string()).append(".previous-").append(std::to_string(::getpid()));
+    return path.parent_path() / name;
+}
+
+void RunOutputs::moveAside(const fs::path& path) {
+    const std::lock_guard lock(mReplacedMutex);
+    if (mReplaced.contains(path.string())) {
+        return; // this run's own file, written twice: its first version need not come back
+    }
+    std::error_code ec;
+    fs::rename(path, previousCopy(path), ec);
+    if (ec) {
+        throw IoError(path, fmt::format("cannot move the existing file aside to {} before replacing it: {}",
+                                        previousCopy(path).filename().string(), ec.message()));
+    }
+    mReplaced.insert(path.string());
 }
 
 void RunOutputs::makeFolder(const fs::path& folder) {

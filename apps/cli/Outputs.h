@@ -1,20 +1,28 @@
 #pragma once
-// What a CLI run writes, checked before any work starts and taken back if the run fails: a run either
-// finishes with all its outputs or leaves nothing behind (no frames, no half-written file, no folder it
-// made).
+// What a CLI run writes, checked before any work starts and taken back if the run fails or is interrupted:
+// a run either finishes with all its outputs, or leaves the outputs as they were before it (no new frames,
+// no half-written file, no folder it made, and every file it replaced put back).
+
+#include "Interrupt.h"
 
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <mutex>
+#include <string>
+#include <unordered_set>
 #include <vector>
 
 namespace photopic::cli {
 
 class RunOutputs {
 public:
-    RunOutputs() = default;
+    /// From here until destruction, a file that any atomic writer replaces is first moved aside (beside it,
+    /// as ".NAME.previous-PID"), to be put back if the run fails or removed once it succeeds.
+    RunOutputs();
     /// Unless commit() was called: removes every file recorded by wrote() and wroteSequenceItem(), then each
-    /// folder makeFolder() created, if it is empty.
+    /// folder makeFolder() created, if it is empty, and puts back every file the run replaced. After
+    /// commit(): removes the replaced files' old copies.
     ~RunOutputs();
     RunOutputs(const RunOutputs&) = delete;
     RunOutputs& operator=(const RunOutputs&) = delete;
@@ -34,9 +42,22 @@ public:
     void sequence(std::function<std::filesystem::path(std::size_t)> name) { mSequenceName = std::move(name); }
     void wroteSequenceItem() { ++mSequenceCount; }
 
-    void commit() { mCommitted = true; } ///< the run succeeded: keep everything
+    /// The run succeeded: keep everything. A signal noted since the last frame still takes everything back
+    /// (throws Interrupted), so no run ends with exit 0 after a SIGTERM.
+    void commit() {
+        throwIfInterrupted();
+        mCommitted = true;
+    }
+
+    /// Where a replaced file waits while the run lasts: ".NAME.previous-PID" beside it.
+    static std::filesystem::path previousCopy(const std::filesystem::path& path);
 
 private:
+    void moveAside(const std::filesystem::path& path);
+
+    InterruptScope mInterrupts; ///< SIGINT/SIGTERM/SIGHUP unwind the run (throwIfInterrupted) while it lasts
+    std::mutex mReplacedMutex;  ///< moveAside runs on the frame writers' threads
+    std::unordered_set<std::string> mReplaced;          ///< files moved aside, by path
     std::vector<std::filesystem::path> mCreatedFolders; ///< outermost first
     std::vector<std::filesystem::path> mFiles;
     std::function<std::filesystem::path(std::size_t)> mSequenceName;

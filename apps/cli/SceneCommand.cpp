@@ -2,6 +2,7 @@
 
 #include "Commands.h"
 #include "FrameStream.h"
+#include "Interrupt.h"
 #include "Outputs.h"
 #include "Progress.h"
 #include "TelemetryCsv.h"
@@ -188,6 +189,7 @@ int runTruth(const SceneOptions& options, Scene& scene, const fs::path& outDir, 
         const testbed::TruthOptions truth = testbedScene->truthOptions(time);
         const Camera camera = testbed::truthCamera(truth);
         for (const testbed::TruthKind kind : kinds) {
+            throwIfInterrupted();
             const auto begin = std::chrono::steady_clock::now();
             const ImageF image = testbed::renderTruth(kind, truth);
             const double seconds =
@@ -309,6 +311,7 @@ int runScene(const SceneOptions& options) {
     glm::vec2 previousJitter(0.0f); ///< the last scene EXR's jitter attribute (pixels, y down)
     Progress progress("scene " + options.name, std::size_t(options.frames));
     for (int i = 0; i < options.frames; ++i) {
+        throwIfInterrupted();
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
         std::vector<double> values;
         const FrameInputs inputs = scene->render(time, pipeline, values);

@@ -5,6 +5,7 @@
 
 #include "Commands.h"
 #include "DemoFiles.h"
+#include "Interrupt.h"
 #include "Outputs.h"
 #include "Progress.h"
 #include "TelemetryCsv.h"
@@ -131,6 +132,7 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     };
     Progress progress("demo", std::size_t(frames));
     for (int i = 0; i < frames; ++i) {
+        throwIfInterrupted();
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
         std::vector<double> values;
         // The scene registers its tokens with the pipeline; exposure follows the player on the GPU.

@@ -2,6 +2,7 @@
 
 #include "Bench.h"
 #include "Commands.h"
+#include "Interrupt.h"
 #include "OrbitDemo.h"
 #include "Progress.h"
 #include "SequenceCommands.h"
@@ -10,6 +11,7 @@
 
 #include "common/Verbosity.h"
 #include "core/Log.h"
+#include "core/ShownText.h"
 #include "core/ToneCurves.h"
 #include "core/settings/SettingsJson.h"
 #include "gl/Gl.h"
@@ -30,6 +32,17 @@ using namespace photopic;
 using namespace photopic::cli;
 
 namespace {
+
+/// An output path that reads as an option ("-o -y" would make a folder named "-y") is refused; "-" alone is
+/// standard output, and "./-y" names such a file on purpose.
+const CLI::Validator kOutputPath(
+    [](std::string& value) {
+        return value.size() > 1 && value.front() == '-'
+                   ? "\"" + shownText(value) + "\" looks like an option, not a path (write ./" +
+                         shownText(value) + " for a file of that name)"
+                   : std::string();
+    },
+    "PATH");
 
 /// "a, b, c": an enum's names as its option's help lists them, from the same list the settings reader checks.
 template <class Names>
@@ -162,15 +175,17 @@ void addImageCommand(CLI::App& app, Cli& c) {
             "as ffmpeg), f.####.exr (one # a digit), f@.exr (unpadded); several are frames of a sequence, "
             "in natural order (f9 before f10)")
         ->required();
-    c.image->add_option(
-        "-o,--output", c.imageOptions.output,
-        "where results go, required unless --info: an extension means a file (.png, .tif, .tiff, "
-        ".jpg, .jpeg: the display image; .exr: scene-referred); a trailing '/', an existing folder or "
-        "no extension means a folder (NAME.png, --format), and several inputs need one (or a pattern); "
-        "a frame number means a pattern (out/f%04d.png: each input's frame number, or 0, 1, ... when "
-        "the inputs carry none); '-', a device or a pipe is streamed (one input, PNG). An output that "
-        "is an input, or that two inputs would share, is refused. Existing files are replaced "
-        "(atomically) unless -n");
+    c.image
+        ->add_option(
+            "-o,--output", c.imageOptions.output,
+            "where results go, required unless --info: an extension means a file (.png, .tif, .tiff, "
+            ".jpg, .jpeg: the display image; .exr: scene-referred); a trailing '/', an existing folder or "
+            "no extension means a folder (NAME.png, --format), and several inputs need one (or a pattern); "
+            "a frame number means a pattern (out/f%04d.png: each input's frame number, or 0, 1, ... when "
+            "the inputs carry none); '-', a device or a pipe is streamed (one input, PNG). An output that "
+            "is an input, or that two inputs would share, is refused. Existing files are replaced "
+            "(atomically) unless -n")
+        ->check(kOutputPath);
     auto* noOverwrite = c.image->add_flag("-n,--no-overwrite", c.imageOptions.noOverwrite,
                                           "never overwrite: an output that exists is refused (exit 2) "
                                           "before any work, like ffmpeg -n");
@@ -194,9 +209,11 @@ void addImageCommand(CLI::App& app, Cli& c) {
     c.image->add_option("--fps", c.imageOptions.fps, "frame rate of a sequence")
         ->check(CLI::Range(0.001f, 10000.0f));
     c.image->add_flag("--force-ldr", c.imageOptions.forceLdr, "run the LDR (RGBA8) path");
-    c.image->add_option("--telemetry", c.imageOptions.telemetry,
-                        "write exposure telemetry as CSV, one row per frame (frame,time_s,measured_luma,"
-                        "target_log2,applied_log2,exposure,...)");
+    c.image
+        ->add_option("--telemetry", c.imageOptions.telemetry,
+                     "write exposure telemetry as CSV, one row per frame (frame,time_s,measured_luma,"
+                     "target_log2,applied_log2,exposure,...)")
+        ->check(kOutputPath);
     c.image->add_flag(
         "--info", c.imageOptions.info,
         "list each input's channels and attributes and what each feeds (depth, normals, motion, "
@@ -205,10 +222,11 @@ void addImageCommand(CLI::App& app, Cli& c) {
         ->add_option("--camera", c.imageOptions.camera,
                      "camera JSON for EXR inputs without worldToCamera/worldToNDC (docs/camera-json.md)")
         ->check(CLI::ExistingFile);
-    c.image->add_option(
-        "--write-aux", c.imageOptions.writeAux,
-        "write each frame's decoded depth (linear view), normals (view space) and motion (UV, "
-        "y up) as DIR/NAME.aux.exr");
+    c.image
+        ->add_option("--write-aux", c.imageOptions.writeAux,
+                     "write each frame's decoded depth (linear view), normals (view space) and motion (UV, "
+                     "y up) as DIR/NAME.aux.exr")
+        ->check(kOutputPath);
     c.image
         ->add_option("--jitter", c.imageOptions.jitter,
                      "how a sequence's frames were jittered, for TAA and the motion unjitter: attribute (the "
@@ -289,7 +307,8 @@ void addSceneCommand(CLI::App& app, Cli& c) {
                         "scene name: " + builtInSceneNames() +
                             " (photopic scene --list says what each shows)");
     c.scene->add_flag("--list", c.listScenes, "list the built-in scenes");
-    c.scene->add_option("-o,--output", c.sceneOptions.output, "output folder (default out/scene-NAME)");
+    c.scene->add_option("-o,--output", c.sceneOptions.output, "output folder (default out/scene-NAME)")
+        ->check(kOutputPath);
     c.scene->add_option("--frames", c.sceneOptions.frames, "number of frames")->check(CLI::Range(1, 100000));
     c.scene->add_option("--fps", c.sceneOptions.fps, "frame rate")->check(CLI::Range(0.001f, 10000.0f));
     c.scene->add_option("--size", c.sceneOptions.size, "WIDTHxHEIGHT");
@@ -336,7 +355,7 @@ void addSceneCommand(CLI::App& app, Cli& c) {
 void addDemoCommand(CLI::App& app, Cli& c) {
     c.demo = app.add_subcommand(
         "demo", "the main demo: the tabletop walk (eye adaptation) into out/demo (or -o DIR)");
-    c.demo->add_option("-o,--output", c.walk.output, "output folder");
+    c.demo->add_option("-o,--output", c.walk.output, "output folder")->check(kOutputPath);
     c.demo->add_option("--size", c.demoSize, "WIDTHxHEIGHT")->capture_default_str();
     c.demo->add_option("--fps", c.walk.fps, "frame rate")
         ->check(CLI::Range(1.0f, 240.0f))
@@ -392,7 +411,8 @@ void addBenchCommand(CLI::App& app, Cli& c) {
                      "the bytes for the first passes to read); the bandwidth reference copies this format")
         ->check(CLI::IsMember({"rgba32f", "rgba16f"}))
         ->capture_default_str();
-    c.bench->add_option("--json", c.benchOptions.json, "also write the table as JSON to FILE (atomically)");
+    c.bench->add_option("--json", c.benchOptions.json, "also write the table as JSON to FILE (atomically)")
+        ->check(kOutputPath);
     c.bench->add_flag("--force-ldr", c.benchOptions.forceLdr, "run the LDR (RGBA8) path");
     CLI::Option* sync = c.bench->add_flag(
         "--sync", c.benchOptions.sync,
@@ -428,32 +448,40 @@ void addSequenceInputs(CLI::App* cmd, ImageOptions& o) {
 }
 
 void addMeterCommand(CLI::App& app, Cli& c) {
-    c.meter = app.add_subcommand("meter", "meter each frame of a sequence for photopic expose: one CSV row "
-                                          "per frame (the reading, the histogram's bins); chunks of a sequence "
-                                          "metered apart merge into the whole sequence's metering");
+    c.meter =
+        app.add_subcommand("meter", "meter each frame of a sequence for photopic expose: one CSV row "
+                                    "per frame (the reading, the histogram's bins); chunks of a sequence "
+                                    "metered apart merge into the whole sequence's metering");
     addSequenceInputs(c.meter, c.meterOptions);
-    c.meter->add_option("-o,--output", c.meterOptions.output, "the meter CSV")->required();
+    c.meter->add_option("-o,--output", c.meterOptions.output, "the meter CSV")
+        ->check(kOutputPath)
+        ->required();
     c.meter->add_option("--fps", c.meterOptions.fps, "frame rate (exposure.mode physical: the shutter angle)")
         ->check(CLI::Range(0.001f, 10000.0f));
     c.meter
-        ->add_option("--camera", c.meterOptions.camera, "camera JSON for EXR inputs without camera attributes")
+        ->add_option("--camera", c.meterOptions.camera,
+                     "camera JSON for EXR inputs without camera attributes")
         ->check(CLI::ExistingFile);
     c.meter->add_flag("--force-ldr", c.meterOptions.forceLdr, "run the LDR (RGBA8) path");
     addSettingsOptions(c.meter, c.meterOptions.settings, "stills (as photopic image)");
     addMaxPixelsOption(c.meter, c.meterOptions.maxPixels);
-    c.meter->footer("Examples:\n"
-                    "  photopic meter shot/f%04d.exr --frames 1001-1100 --settings look.json -o meter-1001.csv\n"
-                    "  photopic meter shot/f%04d.exr --set autoExposure.metering=histogram -o meter.csv");
+    c.meter->footer(
+        "Examples:\n"
+        "  photopic meter shot/f%04d.exr --frames 1001-1100 --settings look.json -o meter-1001.csv\n"
+        "  photopic meter shot/f%04d.exr --set autoExposure.metering=histogram -o meter.csv");
 }
 
 void addExposeCommand(CLI::App& app, Cli& c) {
-    c.expose = app.add_subcommand("expose", "plan a sequence's auto exposure from its meter CSVs: the exposure "
-                                            "controller over every frame in order, one row per frame, for "
-                                            "photopic image --exposure-track");
+    c.expose =
+        app.add_subcommand("expose", "plan a sequence's auto exposure from its meter CSVs: the exposure "
+                                     "controller over every frame in order, one row per frame, for "
+                                     "photopic image --exposure-track");
     c.expose->add_option("meter", c.exposeOptions.meterFiles, "meter CSVs (photopic meter), in any order")
         ->required()
         ->check(CLI::ExistingFile);
-    c.expose->add_option("-o,--output", c.exposeOptions.output, "the exposure track CSV")->required();
+    c.expose->add_option("-o,--output", c.exposeOptions.output, "the exposure track CSV")
+        ->check(kOutputPath)
+        ->required();
     c.expose->add_option("--fps", c.exposeOptions.fps, "frame rate: one frame is 1/fps seconds of adaptation")
         ->check(CLI::Range(0.001f, 10000.0f))
         ->capture_default_str();
@@ -463,22 +491,29 @@ void addExposeCommand(CLI::App& app, Cli& c) {
                      "--exposure-track restarts the histories there too); repeatable")
         ->take_all()
         ->allow_extra_args(false);
-    c.expose->add_flag("--allow-gaps", c.exposeOptions.allowGaps,
-                       "plan over frames missing from the meter files as photopic image runs over a pattern's "
-                       "gaps (one frame time apart); without it a missing frame is an error");
+    c.expose->add_flag(
+        "--allow-gaps", c.exposeOptions.allowGaps,
+        "plan over frames missing from the meter files as photopic image runs over a pattern's "
+        "gaps (one frame time apart); without it a missing frame is an error");
     addSettingsOptions(c.expose, c.exposeOptions.settings, "stills (as photopic image)");
-    c.expose->footer("Examples:\n"
-                     "  photopic expose meter-*.csv --fps 24 --settings look.json -o exposure.csv\n"
-                     "  photopic expose meter.csv --fps 24 --cut 1040 --set autoExposure.enabled=true -o e.csv");
+    c.expose->footer(
+        "Examples:\n"
+        "  photopic expose meter-*.csv --fps 24 --settings look.json -o exposure.csv\n"
+        "  photopic expose meter.csv --fps 24 --cut 1040 --set autoExposure.enabled=true -o e.csv");
 }
 
 void addFarmCommand(CLI::App& app, Cli& c) {
     FarmOptions& o = c.farmOptions;
-    c.farm = app.add_subcommand("farm", "write a sequence's meter, expose and render stages as a Slurm job set "
-                                        "(job arrays with afterok dependencies), and submit it with --submit");
-    c.farm->add_option("input", o.input, "the sequence: a frame-numbered pattern (shot/f%04d.exr)")->required();
-    c.farm->add_option("-o,--output", o.output, "the output pattern (out/f%04d.png)")->required();
+    c.farm =
+        app.add_subcommand("farm", "write a sequence's meter, expose and render stages as a Slurm job set "
+                                   "(job arrays with afterok dependencies), and submit it with --submit");
+    c.farm->add_option("input", o.input, "the sequence: a frame-numbered pattern (shot/f%04d.exr)")
+        ->required();
+    c.farm->add_option("-o,--output", o.output, "the output pattern (out/f%04d.png)")
+        ->check(kOutputPath)
+        ->required();
     c.farm->add_option("--jobs", o.jobDir, "folder for the job scripts, settings, meter files and logs")
+        ->check(kOutputPath)
         ->required();
     c.farm->add_option("--frames", o.frames, "frames A-B (default: every frame of the pattern)");
     c.farm->add_option("--chunk", o.chunk, "frames per meter and render job")
@@ -489,31 +524,37 @@ void addFarmCommand(CLI::App& app, Cli& c) {
                      "frames each render job processes before its chunk (default " +
                          std::to_string(kDefaultFarmPreroll) + ")")
         ->check(CLI::Range(0, 1000));
-    c.farm->add_option("--fps", o.fps, "frame rate")->check(CLI::Range(0.001f, 10000.0f))->capture_default_str();
+    c.farm->add_option("--fps", o.fps, "frame rate")
+        ->check(CLI::Range(0.001f, 10000.0f))
+        ->capture_default_str();
     c.farm
         ->add_option("--cut", o.cuts,
                      "a camera cut: exposure snaps and the histories (TAA, SSR, motion blur) restart there, "
                      "and no preroll reaches back past it; repeatable")
         ->take_all()
         ->allow_extra_args(false);
-    c.farm->add_option("--photopic", o.photopic,
-                       "the photopic command the jobs run (default: this program's path, which the nodes must "
-                       "see)");
-    c.farm->add_option("--sbatch-option", o.sbatchOptions,
-                       "an #SBATCH line for every job, e.g. --sbatch-option=--partition=render; repeatable")
+    c.farm->add_option(
+        "--photopic", o.photopic,
+        "the photopic command the jobs run (default: this program's path, which the nodes must "
+        "see)");
+    c.farm
+        ->add_option("--sbatch-option", o.sbatchOptions,
+                     "an #SBATCH line for every job, e.g. --sbatch-option=--partition=render; repeatable")
         ->take_all()
         ->allow_extra_args(false);
-    c.farm->add_option("--image-option", o.imageOptions,
-                       "an option for each render's photopic image, e.g. --image-option=--bit-depth "
-                       "--image-option=16; repeatable")
+    c.farm
+        ->add_option("--image-option", o.imageOptions,
+                     "an option for each render's photopic image, e.g. --image-option=--bit-depth "
+                     "--image-option=16; repeatable")
         ->take_all()
         ->allow_extra_args(false);
     c.farm->add_flag("--submit", o.submit, "submit the job set with sbatch now (else print the commands)");
     addSettingsOptions(c.farm, o.settings, "stills (as photopic image)");
-    c.farm->footer("Examples:\n"
-                   "  photopic farm shot/f%04d.exr -o out/f%04d.png --jobs farm/ --chunk 100 --fps 24 "
-                   "--settings look.json --submit\n"
-                   "  photopic farm shot/f%04d.exr -o out/f%04d.png --jobs farm/ --sbatch-option=--partition=gpu");
+    c.farm->footer(
+        "Examples:\n"
+        "  photopic farm shot/f%04d.exr -o out/f%04d.png --jobs farm/ --chunk 100 --fps 24 "
+        "--settings look.json --submit\n"
+        "  photopic farm shot/f%04d.exr -o out/f%04d.png --jobs farm/ --sbatch-option=--partition=gpu");
 }
 
 /// Runs the subcommand that was parsed; throws the errors main() turns into exit codes.
@@ -638,6 +679,11 @@ int main(int argc, char** argv) {
     Progress::setEnabled(!c.verbosity.quiet);
     try {
         return runCommand(c);
+    } catch (const Interrupted& e) {
+        // The outputs were taken back on the way here (RunOutputs), as after any failure.
+        std::fprintf(stderr, "photopic: interrupted by %s; the run's outputs were taken back\n",
+                     signalName(e.signal));
+        return 128 + e.signal;
     } catch (const InputError& e) {
         std::fprintf(stderr, "photopic: %s\n", e.what());
         return kBadInput;
