@@ -51,15 +51,17 @@ bench: build
 	build/release/photopic bench --scene canvas --size 1920x1080 --frames $(BENCH_FRAMES) --json out/bench/canvas.json
 
 # Fuzzing (fuzz/): libFuzzer + ASan/UBSan harnesses built by clang in their own tree, each run for FUZZ_SECONDS
-# on one core. The committed corpus also runs in `make test` (photopic_fuzz_corpus_tests), with any compiler.
+# on one core, FUZZ_PARALLEL at a time. The committed corpus also runs in `make test`
+# (photopic_fuzz_corpus_tests), with any compiler.
 FUZZ_SECONDS ?= 60
+FUZZ_PARALLEL ?= 1
 FUZZ_TARGETS ?= settings override motion camera exr exrframe hdr png gltf
 fuzz: deps
 	@CC=clang CXX=clang++ cmake -S . -B build/fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPHOTOPIC_BUILD_FUZZERS=ON \
 		-DPHOTOPIC_BUILD_TESTS=OFF -DPHOTOPIC_BUILD_APPS=OFF -DPHOTOPIC_BUILD_BENCH=OFF > build-configure-fuzz.log 2>&1 \
 		|| (cat build-configure-fuzz.log; exit 1)
 	cmake --build build/fuzz -j$(JOBS) --target $(addprefix photopic_fuzz_,$(FUZZ_TARGETS))
-	FUZZ_SECONDS=$(FUZZ_SECONDS) fuzz/run.sh build/fuzz $(FUZZ_TARGETS)
+	FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_PARALLEL=$(FUZZ_PARALLEL) fuzz/run.sh build/fuzz $(FUZZ_TARGETS)
 
 # Memory over a long run: 100,000 tabletop frames at 64x36 (every 1000th written), resident memory printed
 # after the first and the last frame; fails when it grew by more than SOAK_MAX_GROWTH_KB.

@@ -7,8 +7,9 @@
 // input (IoError, SettingsError, MotionError, ModelError, the CLI's InputError; std::invalid_argument from
 // cameraFromExr). Anything else -- another exception, a crash, a sanitizer report -- is a finding. Where the
 // reader promises more than "no crash" (finite motion, a settings round-trip, layers of the colour's size, a
-// valid camera, the same frame whatever storage a sequence reader kept), the entry point checks that too and
-// aborts when it does not hold.
+// valid camera, the same frame whatever storage a sequence reader kept, no file read outside a model's
+// folder, every PNG that libpng reads read), the entry point checks that too and aborts when it does not
+// hold.
 
 #include <cstddef>
 #include <cstdint>
@@ -22,9 +23,12 @@ void motionCsv(const std::uint8_t* data, std::size_t size);        ///< parseMot
 void exrImage(const std::uint8_t* data, std::size_t size);         ///< decodeImage on OpenEXR bytes
 /// decodeExrFrame (layers, camera attributes, cameraFromExr), and the sequence reader into kept storage
 void exrFrame(const std::uint8_t* data, std::size_t size);
-void hdrImage(const std::uint8_t* data, std::size_t size);   ///< decodeImage on Radiance bytes
-void pngImage(const std::uint8_t* data, std::size_t size);   ///< decodeImage and decodePng8 on PNG bytes
-void gltfModel(const std::uint8_t* data, std::size_t size);  ///< loadModelFromMemory on GLB or glTF bytes
+void hdrImage(const std::uint8_t* data, std::size_t size); ///< decodeImage on Radiance bytes
+/// decodeImage and decodePng8 on PNG bytes; a file they refuse must be one libpng refuses too
+void pngImage(const std::uint8_t* data, std::size_t size);
+/// loadModelFromMemory on GLB or glTF bytes, with no base folder and with a sandbox's model folder (a file
+/// read outside it aborts)
+void gltfModel(const std::uint8_t* data, std::size_t size);
 void cameraJson(const std::uint8_t* data, std::size_t size); ///< parseCameraJson (`photopic image --camera`)
 
 // To add a target (say `cube`, a LUT reader in the io library): declare its entry point here (cubeLut) and

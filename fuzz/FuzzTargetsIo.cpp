@@ -1,5 +1,6 @@
 // Entry points for the image readers: OpenEXR (colour alone, and frames with their layers and camera),
-// Radiance .hdr and PNG, from bytes in memory.
+// Radiance .hdr and PNG, from bytes in memory. A PNG that photopic refuses is also given to libpng itself:
+// a file libpng reads must be read.
 
 #include "FuzzTargets.h"
 
@@ -8,6 +9,8 @@
 #include "io/ImageIO.h"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <png.h>
+#include <zlib.h>
 
 #include <array>
 #include <cmath>
@@ -15,6 +18,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -40,11 +44,116 @@ void checkShape(const Image& image, const ImageReadLimits& limits = kLimits) {
     }
 }
 
-void decode(const std::uint8_t* data, std::size_t size, const char* name) {
+/// decodeImage: nothing when it read the image, else its IoError's message.
+std::optional<std::string> decode(const std::uint8_t* data, std::size_t size, const char* name) {
     try {
         checkShape(decodeImage({data, size}, name, kLimits));
-    } catch (const IoError&) {
+    } catch (const IoError& e) {
+        return e.what();
     }
+    return std::nullopt;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// PNG against libpng
+
+/// The bytes as libpng is to judge them. A fuzzing build of photopic's reader takes chunks whatever their
+/// CRC (a fuzzer seldom makes a right one), so there libpng gets a copy with every CRC recomputed and judges
+/// the same content; elsewhere both check the CRCs as stored.
+std::vector<unsigned char> bytesForLibpng(std::span<const unsigned char> bytes) {
+    std::vector<unsigned char> copy(bytes.begin(), bytes.end());
+#ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
+    // After the 8-byte signature, each chunk: length (4, big-endian), type (4), data, CRC of type and data.
+    std::size_t pos = 8;
+    while (copy.size() >= pos + 12) {
+        const std::size_t length = std::size_t(copy[pos]) << 24 | std::size_t(copy[pos + 1]) << 16 |
+                                   std::size_t(copy[pos + 2]) << 8 | std::size_t(copy[pos + 3]);
+        if (length > copy.size() - pos - 12)
+            break;
+        const uLong crc = crc32(0, copy.data() + pos + 4, uInt(length + 4));
+        unsigned char* out = copy.data() + pos + 8 + length;
+        for (int i = 0; i < 4; ++i)
+            out[i] = static_cast<unsigned char>(crc >> (24 - 8 * i));
+        pos += length + 12;
+    }
+#endif
+    return copy;
+}
+
+/// libpng's simplified API decodes the file to RGBA; nullopt where the image is over kLimits' pixels (which
+/// photopic refuses by design), so not compared.
+std::optional<bool> libpngDecodes(std::span<const unsigned char> bytes) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size())) {
+        png_image_free(&image);
+        return false;
+    }
+    // The pixel limit bounds the buffer too: 4 bytes a pixel, 4 MiB at most.
+    if (std::int64_t(image.width) * std::int64_t(image.height) > kLimits.maxPixels) {
+        png_image_free(&image);
+        return std::nullopt;
+    }
+    image.format = PNG_FORMAT_RGBA;
+    std::vector<png_byte> pixels(std::size_t(image.width) * image.height * 4);
+    const bool decoded = png_image_finish_read(&image, nullptr, pixels.data(), 0, nullptr) != 0;
+    png_image_free(&image);
+    return decoded;
+}
+
+struct LibpngSource {
+    std::span<const unsigned char> bytes;
+    std::size_t pos = 0;
+};
+
+void libpngRead(png_structp png, png_bytep out, png_size_t count) {
+    auto* source = static_cast<LibpngSource*>(png_get_io_ptr(png));
+    if (count > source->bytes.size() - source->pos)
+        png_error(png, "read past the end");
+    std::memcpy(out, source->bytes.data() + source->pos, count);
+    source->pos += count;
+}
+
+[[noreturn]] void libpngError(png_structp png, png_const_charp) {
+    png_longjmp(png, 1);
+}
+
+void libpngWarning(png_structp, png_const_charp) {}
+
+/// Under setjmp, so no object with a destructor lives here: `row` is the caller's.
+bool libpngReadRowsAndEnd(png_structp png, png_infop info, LibpngSource& source, std::vector<png_byte>& row) {
+    if (setjmp(png_jmpbuf(png)))
+        return false;
+    png_set_read_fn(png, &source, libpngRead);
+    png_read_info(png, info);
+    const int passes = png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    row.resize(png_get_rowbytes(png, info));
+    for (int pass = 0; pass < passes; ++pass) {
+        for (png_uint_32 y = 0; y < png_get_image_height(png, info); ++y)
+            png_read_row(png, row.data(), nullptr);
+    }
+    png_read_end(png, nullptr);
+    return true;
+}
+
+/// libpng's sequential reader takes the file through IEND, as photopic's reader does (a file cut after the
+/// pixel data is truncated); the simplified API stops after the last row and cannot tell. Only called once
+/// the simplified API decoded the file within the pixel limit, so the rows are bounded.
+bool libpngReadsToEnd(std::span<const unsigned char> bytes) {
+    LibpngSource source{.bytes = bytes, .pos = 0};
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, libpngError, libpngWarning);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    std::vector<png_byte> row;
+    const bool read = png && info && libpngReadRowsAndEnd(png, info, source, row);
+    png_destroy_read_struct(&png, &info, nullptr);
+    return read;
+}
+
+/// Whether libpng accepts the PNG as photopic's reader promises to: decoded, and read through IEND.
+bool libpngAccepts(std::span<const unsigned char> original) {
+    const std::vector<unsigned char> bytes = bytesForLibpng(original);
+    return libpngDecodes(bytes).value_or(false) && libpngReadsToEnd(bytes);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -224,11 +333,18 @@ void hdrImage(const std::uint8_t* data, std::size_t size) {
 }
 
 void pngImage(const std::uint8_t* data, std::size_t size) {
-    decode(data, size, "fuzz.png");
+    std::optional<std::string> refused = decode(data, size, "fuzz.png");
+    if (refused)
+        refused = "decodeImage: " + *refused;
     try {
         checkShape(decodePng8({data, size}, "fuzz.png", kLimits));
-    } catch (const IoError&) {
+    } catch (const IoError& e) {
+        refused = std::string("decodePng8: ") + e.what();
     }
+    // libpng is asked only about a file photopic refused: it may be stricter, never more accepting.
+    if (refused && libpngAccepts({data, size}))
+        broken("libpng reads this PNG (within the pixel limit, through IEND) but photopic refuses it: " +
+               *refused);
 }
 
 void exrFrame(const std::uint8_t* data, std::size_t size) {

@@ -46,8 +46,14 @@ constexpr Reproducer kReproducers[] = {
     {"override_invalid_utf8.txt", "override"},
     {"motion_nan_time.csv", "motion"},
     {"motion_lerp_overflow.csv", "motion"},
+    {"settings_nested_70000.json", "settings"},
+    {"override_nested_70000.txt", "override"},
 #ifdef PHOTOPIC_FUZZ_WITH_IO
     {"png_zero_len_idat.min.png", "png"},
+    {"png_flat_rgb_1000x1000.png", "png"},
+    {"png_white_1bit_1024x1024.png", "png"},
+    {"exr_deep_truncated.exr", "exr"},
+    {"exr_deep_truncated.exr", "exrframe"},
     {"exrframe_channels_untyped.min.exr", "exrframe"},
     {"exrframe_chlist_overruns_size.min.exr", "exrframe"},
     {"exrframe_stored_chunk_short.exr", "exrframe"},
@@ -112,7 +118,8 @@ TEST_P(FuzzReproducer, IsHandled) {
 
 INSTANTIATE_TEST_SUITE_P(Files, FuzzReproducer, testing::ValuesIn(kReproducers),
                          [](const testing::TestParamInfo<Reproducer>& info) {
-                             std::string name = info.param.file;
+                             // The target too: one file may be a reproducer for two readers.
+                             std::string name = std::string(info.param.target) + "_" + info.param.file;
                              std::replace_if(
                                  name.begin(), name.end(), [](char c) { return !std::isalnum(c); }, '_');
                              return name;
