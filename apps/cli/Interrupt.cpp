@@ -32,7 +32,11 @@ InterruptScope::InterruptScope()
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_RESTART; // reads and writes in progress complete; the loops look between frames
     for (std::size_t i = 0; i < std::size(kSignals); ++i) {
-        sigaction(kSignals[i], &action, &mPrevious[i]);
+        sigaction(kSignals[i], nullptr, &mPrevious[i]);
+        // A signal the parent ignores stays ignored: SIGHUP under nohup, SIGINT for a shell's background job.
+        if (mPrevious[i].sa_handler != SIG_IGN) {
+            sigaction(kSignals[i], &action, nullptr);
+        }
     }
 }
 

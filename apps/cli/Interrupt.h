@@ -15,7 +15,8 @@ struct Interrupted {
 };
 
 /// Installs the handlers for as long as it lives (a run that writes outputs holds one; RunOutputs does), and
-/// puts the previous ones back after. A signal outside such a run has its default action.
+/// puts the previous ones back after. A signal outside such a run has its default action; a signal the
+/// process was started with ignored (nohup's SIGHUP, a background job's SIGINT) stays ignored.
 class InterruptScope {
 public:
     InterruptScope();
