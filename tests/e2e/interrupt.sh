@@ -45,6 +45,16 @@ count_written() {
     fi
 }
 
+# wait_for PID COUNT N: until the command COUNT prints at least N (at most 15 s), or PID has ended.
+wait_for() {
+    local pid="$1" count="$2" n="$3"
+    for _ in $(seq 3000); do
+        [ "$($count)" -ge "$n" ] && return
+        kill -0 "$pid" 2> /dev/null || return
+        sleep 0.005
+    done
+}
+
 # interrupt SIGNAL AT STATE: starts the run into cut/, sends SIGNAL once AT frames are in place, and checks
 # the exit status, the leftovers and that cut/ is as before (absent when STATE is fresh, else whole/).
 interrupt() {
@@ -54,11 +64,7 @@ interrupt() {
     python3 -c 'import os, signal, sys; signal.signal(signal.SIGINT, signal.SIG_DFL); os.execv(sys.argv[1], sys.argv[1:])' \
         "$PHOTOPIC" image seq/*.exr -o cut/f%04d.png --telemetry cut.csv "${AE[@]}" -q > run.log 2>&1 &
     local pid=$!
-    for _ in $(seq 3000); do
-        [ "$(count_written cut "$state")" -ge "$at" ] && break
-        kill -0 "$pid" 2> /dev/null || break
-        sleep 0.005
-    done
+    wait_for "$pid" "count_written cut $state" "$at"
     kill "-$signal" "$pid" 2> /dev/null
     wait "$pid"
     local status=$?
@@ -107,10 +113,7 @@ check "at least 4 of the 7 signals interrupted a run ($interrupted did)" test "$
 rm -rf cut cut.csv
 nohup "$PHOTOPIC" image seq/*.exr -o cut/f%04d.png --telemetry cut.csv "${AE[@]}" -q > run.log 2>&1 &
 pid=$!
-for _ in $(seq 3000); do
-    [ "$(count_written cut fresh)" -ge 5 ] && break
-    sleep 0.005
-done
+wait_for "$pid" "count_written cut fresh" 5
 kill -HUP "$pid"
 wait "$pid"
 check "SIGHUP under nohup: the run completes (exit 0)" test $? = 0
@@ -119,10 +122,8 @@ check "SIGHUP under nohup: the whole run" same_dir whole cut
 # --- the scenes' own runs
 "$PHOTOPIC" scene tabletop --frames 400 --size 64x36 -o scenecut -q > run.log 2>&1 &
 pid=$!
-for _ in $(seq 3000); do
-    [ "$(find scenecut -maxdepth 1 -name 'frame_*' 2> /dev/null | wc -l)" -ge 10 ] && break
-    sleep 0.005
-done
+scene_frames() { find scenecut -maxdepth 1 -name 'frame_*' 2> /dev/null | wc -l; }
+wait_for "$pid" scene_frames 10
 kill -TERM "$pid"
 wait "$pid"
 check "scene: SIGTERM part way exits 143" test $? = 143
