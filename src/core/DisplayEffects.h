@@ -1,5 +1,5 @@
 #pragma once
-// CPU references of the display-effects pass (passes/display/display_effects.frag.glsl), for tests.
+// CPU references of the display-effects pass (passes/display/display_effects.comp.glsl), for tests.
 
 namespace photopic {
 

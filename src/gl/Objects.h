@@ -173,9 +173,8 @@ private:
 /// to the struct): one immutable buffer per block, updated with glNamedBufferSubData and bound to its
 /// binding index before a dispatch or draw. An update that repeats the block's contents writes nothing:
 /// a pass whose parameters hold still updates no buffer in a frame, so the driver never has to version a
-/// buffer that a dispatch still reads (on an H200, one block rewritten before each of the bloom chain's
-/// levels cost about 20 us a frame). Shaders cannot write a uniform block, so what it last wrote is what
-/// it holds.
+/// buffer that a dispatch still reads (a measurable cost a frame on a GPU, docs/bench/LOG.md). Shaders cannot
+/// write a uniform block, so what it last wrote is what it holds.
 template <class T>
 class ParameterBlock {
     static_assert(std::is_trivially_copyable_v<T>, "a parameter block's contents are compared as bytes");

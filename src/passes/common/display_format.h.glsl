@@ -16,8 +16,8 @@ const float kDisplayCodes = 255.0;
 // A display value in [0, 1] (clamped here) put on its nearest code, ties to even, before the image store
 // (DISPLAY_ROUNDING, on GPUs: passes/DisplayProgram.h displayStoresRound). The store's own conversion to
 // unorm may round a value within a tenth of a code of the midpoint either way (GL lets it take either
-// neighbour; D3D's rules allow 0.6 of a code step): an NVIDIA H200 sent 16% of a dithered grey to the code
-// below and 10% to the code above, where round to nearest gives 12.5% each. On its code already, the value
+// neighbour; D3D's rules allow 0.6 of a code step), and GPUs were seen to send a dithered grey to the code
+// below more often than to the code above, where round to nearest sends it to each equally. On its code already, the value
 // converts to that code on any device. A software renderer's store rounds to nearest even itself: the same
 // bits without it.
 #ifdef DISPLAY_ROUNDING

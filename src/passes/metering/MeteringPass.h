@@ -121,10 +121,9 @@ private:
     Buffer mMetering;
     Buffer mMeteringReset; ///< the header each frame starts from (copied on the GPU)
     /// The row shader for the weighted mean (beside the histogram kernel when a histogram is wanted too), on
-    /// a software renderer only: it and the block shader give the same
-    /// reading bit for bit, but on llvmpipe the block shader's barriers cost 9x the row shader's time
-    /// (265 against 29 ms at 1920x1080) while on an H200 the row shader's uncoalesced reads cost 4x the block
-    /// shader's (0.106 against 0.027 ms).
+    /// a software renderer only: it and the block shader give the same reading bit for bit, but a software
+    /// renderer pays for the block shader's workgroup barriers in CPU time, while a GPU pays for the row
+    /// shader's uncoalesced reads (the figures are in docs/bench/LOG.md).
     bool mRowsWithoutHistogram = false;
     bool mMeterForTelemetry = false;
     /// The bins and the header hold their cleared state and nothing has written them since (the last frame
