@@ -630,32 +630,15 @@ void pngFail(png_structp png, png_const_charp message) {
 void pngWarn(png_structp, png_const_charp) {} // ancillary-chunk complaints; the pixels are still good
 
 /// Reads the header and sets the transforms to RGBA at 8 bits (`eightBit`: a 16-bit file keeps its high
-/// byte) or at the file's own depth.
-/// The smallest number of bytes the file's compressed rows can take: rows as the file stores them (its own
-/// channels and bit depth, one filter byte a row; Adam7's passes have at least as many rows and bits), over
-/// deflate's largest expansion, 1032:1.
-std::uint64_t pngMinimumCompressedBytes(std::uint32_t width, std::uint32_t height, int colorType,
-                                        int bitDepth) {
-    int channels = 1; // grey, palette
-    if (colorType == PNG_COLOR_TYPE_RGB)
-        channels = 3;
-    else if (colorType == PNG_COLOR_TYPE_GRAY_ALPHA)
-        channels = 2;
-    else if (colorType == PNG_COLOR_TYPE_RGB_ALPHA)
-        channels = 4;
-    const std::uint64_t bits =
-        std::uint64_t(width) * height * std::uint64_t(channels) * std::uint64_t(bitDepth);
-    return (height + bits / 8) / 1032;
-}
-
+/// byte) or at the file's own depth; `minimumBytes` is pngMinimumEncodedBytes of the header.
 bool pngReadInfo(png_structp png, png_infop info, bool eightBit, std::uint64_t& minimumBytes) {
     if (setjmp(png_jmpbuf(png)))
         return false;
     png_read_info(png, info);
     const int colorType = png_get_color_type(png, info);
     const int bitDepth = png_get_bit_depth(png, info);
-    minimumBytes = pngMinimumCompressedBytes(png_get_image_width(png, info), png_get_image_height(png, info),
-                                             colorType, bitDepth);
+    minimumBytes = pngMinimumEncodedBytes(png_get_image_width(png, info), png_get_image_height(png, info),
+                                          colorType, bitDepth);
     if (colorType == PNG_COLOR_TYPE_PALETTE)
         png_set_palette_to_rgb(png);
     if (colorType == PNG_COLOR_TYPE_GRAY && bitDepth < 8)
@@ -1094,6 +1077,19 @@ void AtomicFileWriter::write(std::string_view text) {
         throw IoError(mPath, "written after commit or after a failure");
     if (std::fwrite(text.data(), 1, text.size(), mFile) != text.size())
         fail("cannot write: " + errnoMessage(errno));
+}
+
+std::uint64_t pngMinimumEncodedBytes(std::uint32_t width, std::uint32_t height, int colorType, int bitDepth) {
+    int channels = 1; // grey, palette
+    if (colorType == PNG_COLOR_TYPE_RGB)
+        channels = 3;
+    else if (colorType == PNG_COLOR_TYPE_GRAY_ALPHA)
+        channels = 2;
+    else if (colorType == PNG_COLOR_TYPE_RGB_ALPHA)
+        channels = 4;
+    const std::uint64_t bits =
+        std::uint64_t(width) * height * std::uint64_t(channels) * std::uint64_t(bitDepth);
+    return (height + bits / 8) / 1032;
 }
 
 namespace {

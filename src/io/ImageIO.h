@@ -119,6 +119,13 @@ void writeTextFile(const std::filesystem::path& path, std::string_view text);
 /// validating every output before a long run starts.
 void requireWritableFile(const std::filesystem::path& path);
 
+/// The fewest bytes a PNG's compressed rows can take: the rows as the file stores them (its IHDR's colour
+/// type and bit depth, one filter byte a row; Adam7's passes have at least as many rows and bits), over
+/// deflate's largest expansion, 1032:1. A file with fewer is truncated or lies about its size: a lower bound
+/// to check before allocating the decoded image.
+[[nodiscard]] std::uint64_t pngMinimumEncodedBytes(std::uint32_t width, std::uint32_t height, int colorType,
+                                                   int bitDepth);
+
 /// Called by AtomicFileWriter::commit (and so by every writer here) just before its finished file replaces
 /// an existing file at `path`; never for a new file or a stream. For a program that must be able to put back
 /// what a failed run replaced: the CLI moves the old file aside here and restores it if the run fails. May be

@@ -3,6 +3,7 @@
 #include "scenes/orbit/GltfJson.h"
 
 #include "core/ShownText.h"
+#include "io/ImageIO.h"
 
 // tinygltf parses (JSON through the system nlohmann-json). Images are neither read nor decoded by it: the
 // loader reads the files it names and decodes with stb_image (libstb) itself, after checking their size.
@@ -129,23 +130,17 @@ bool isDataUri(const std::string& uri) {
     return uri.starts_with("data:");
 }
 
-/// The fewest bytes an encoded image of this size can take: its samples as stored (a PNG's own channels and
-/// bit depth from its header, else `channels` bytes a pixel) plus a PNG's filter byte a row, over the largest
-/// expansion of deflate (1032:1), which no JPEG reaches either (at best about 2 bits an 8x8 block).
+/// The fewest bytes an encoded image of this size can take: a PNG's rows as its header says they are stored
+/// (pngMinimumEncodedBytes), anything else its samples at a byte each over deflate's largest expansion
+/// (1032:1), which no JPEG reaches either (at best about 2 bits an 8x8 block).
 std::uint64_t minimumEncodedBytes(std::span<const std::uint8_t> encoded, int width, int height,
                                   int channels) {
     constexpr std::uint8_t kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    std::uint64_t bits = std::uint64_t(width) * std::uint64_t(height) * std::uint64_t(channels) * 8;
-    std::uint64_t rows = 0;
     if (encoded.size() >= 26 && std::memcmp(encoded.data(), kPngSignature, 8) == 0 &&
         std::memcmp(encoded.data() + 12, "IHDR", 4) == 0) {
-        const int bitDepth = encoded[24];
-        const int colorType = encoded[25];
-        const int stored = colorType == 2 ? 3 : colorType == 4 ? 2 : colorType == 6 ? 4 : 1;
-        bits = std::uint64_t(width) * std::uint64_t(height) * std::uint64_t(stored) * std::uint64_t(bitDepth);
-        rows = std::uint64_t(height);
+        return pngMinimumEncodedBytes(std::uint32_t(width), std::uint32_t(height), encoded[25], encoded[24]);
     }
-    return (rows + bits / 8) / 1032;
+    return std::uint64_t(width) * std::uint64_t(height) * std::uint64_t(channels) / 1032;
 }
 
 /// Whether `file` (canonical: symbolic links resolved) lies inside `folder` (canonical too).
