@@ -12,6 +12,7 @@ packages=(
     libopengl-dev libgl-dev python3-glad doxygen
     libgtest-dev libgmock-dev libbenchmark-dev
     slurm-wlm munge
+    blender
 )
 
 missing=()
