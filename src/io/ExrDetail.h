@@ -60,6 +60,22 @@ private:
     std::size_t mPos = 0;
 };
 
+/// The channels colour is read from: R, G, B and A, or Y and A (luminance), under any names; an empty alpha
+/// name means none (alpha 1). The standard names by default, where a file of Y, RY and BY is read as
+/// luminance/chroma.
+struct ExrColorChannels {
+    std::string r = "R";
+    std::string g = "G";
+    std::string b = "B";
+    std::string a = "A";
+    std::string y = "Y";
+    bool luminance = false; ///< Y (and A) only: r, g and b are not read
+    /// The standard names, the file's own choice of RGB, Y or luminance/chroma.
+    [[nodiscard]] bool standard() const { return r == "R" && g == "G" && b == "B" && a == "A" && !luminance; }
+    /// From a mapping's colour names: 1 or 2 (Y[, A]) or 3 or 4 (R, G, B[, A]).
+    [[nodiscard]] static ExrColorChannels of(const std::vector<std::string>& names);
+};
+
 /// Called once the data window is known (width x height pixels, checked) to add the caller's slices to the
 /// frame buffer the colour is read through.
 using ExrExtraSlices =
@@ -85,14 +101,14 @@ void convertExrToRec709(const std::filesystem::path& path, const Imf::Header& he
 [[nodiscard]] bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& header,
                                     const Imf::FrameBuffer& frameBuffer);
 
-/// Throws IoError naming `path` unless every chunk Imf::InputFile would read from the first part (every
+/// Throws IoError naming `path` unless every chunk Imf::InputFile would read from part `part` (every
 /// scanline chunk, or every tile of the full-resolution level) has a readable leader within the file and
 /// holds all the bytes its lines need: stored chunks their full size, RLE chunks a run sequence of that
 /// length, ZIP/ZIPS chunks a stream inflating to exactly that length (ExrZip.cpp). OpenEXR 3.1's reader
 /// fills the rest of a short chunk's lines from its buffers' earlier contents, so a corrupt file would give
 /// pixels of whatever the process held there before. PIZ, PXR24, B44 and DWA decoders check their output's
 /// size themselves. Deep parts are left to Imf::InputFile, which refuses them.
-void checkExrChunks(const std::filesystem::path& path, std::span<const unsigned char> bytes);
+void checkExrChunks(const std::filesystem::path& path, std::span<const unsigned char> bytes, int part = 0);
 
 /// The colour of an OpenEXR file open over `bytes`, as readImage returns it (in linear Rec.709: other
 /// chromaticities are converted), into `image` (its storage kept
@@ -100,12 +116,12 @@ void checkExrChunks(const std::filesystem::path& path, std::span<const unsigned 
 /// OpenEXR's exceptions pass through (callers wrap them).
 void readExrColor(const std::filesystem::path& path, std::span<const unsigned char> bytes,
                   Imf::InputFile& file, ImageF& image, const ExrExtraSlices& extra = {},
-                  const ImageReadLimits& limits = {});
+                  const ImageReadLimits& limits = {}, const ExrColorChannels& names = {});
 
 /// Whether the header's colour is halves as stored, to the bit, with nothing to convert: R, G, B (or Y
 /// alone, not luminance/chroma) and A, those present all HALF, in Rec.709 primaries (readExrColor converts
 /// others in float).
-[[nodiscard]] bool exrColorIsHalves(const Imf::Header& header);
+[[nodiscard]] bool exrColorIsHalves(const Imf::Header& header, const ExrColorChannels& names = {});
 
 /// readExrColor for a file whose colour is halves (exrColorIsHalves): the halves as stored, into `image`
 /// (its storage kept when large enough; A is 1.0 where absent, Y copied to R, G and B as readExrColor does).
@@ -113,7 +129,7 @@ void readExrColor(const std::filesystem::path& path, std::span<const unsigned ch
 /// IoError and OpenEXR's exceptions as readExrColor does.
 void readExrColorHalves(const std::filesystem::path& path, std::span<const unsigned char> bytes,
                         Imf::InputFile& file, ImageH& image, const ExrExtraSlices& extra = {},
-                        const ImageReadLimits& limits = {});
+                        const ImageReadLimits& limits = {}, const ExrColorChannels& names = {});
 
 /// Throws IoError naming `path` unless `image` (ImageF, Image8 or Image16) can be written: not empty, its
 /// samples matching its size, within kDefaultMaxPixels.

@@ -7,7 +7,9 @@
 #include <ImfDoubleAttribute.h>
 #include <ImfFloatAttribute.h>
 #include <ImfHeader.h>
+#include <ImfInputPart.h>
 #include <ImfMatrixAttribute.h>
+#include <ImfMultiPartInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfStdIO.h>
 #include <ImfVecAttribute.h>
@@ -19,8 +21,10 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <type_traits>
 
 namespace photopic {
@@ -32,47 +36,48 @@ namespace {
 // ---------------------------------------------------------------------------------------------------------------
 // Layers
 
-/// A layer's channels: the first candidate prefix with any component present wins, and then it must have all.
-struct Layer {
-    std::string prefix; ///< "" for a bare channel like Z
-    std::vector<std::string> names;
-};
-
-std::optional<Layer> findLayer(const fs::path& path, const Imf::ChannelList& channels,
-                               std::initializer_list<const char*> prefixes,
-                               std::initializer_list<const char*> components) {
-    for (const char* prefix : prefixes) {
-        Layer layer{prefix, {}};
-        std::vector<std::string> missing;
-        for (const char* component : components) {
-            const std::string name = layer.prefix + component;
-            (channels.findChannel(name) != nullptr ? layer.names : missing).push_back(name);
-        }
-        if (layer.names.empty())
-            continue;
-        if (!missing.empty()) {
-            std::string present;
-            std::string absent;
-            for (const auto& n : layer.names)
-                present += (present.empty() ? "" : ", ") + n;
-            for (const auto& n : missing)
-                absent += (absent.empty() ? "" : ", ") + n;
-            throw IoError(path, "incomplete layer: has " + present + " but not " + absent);
-        }
-        return layer;
-    }
-    return std::nullopt;
-}
-
 /// Adds each of the layer's channels as a FLOAT slice interleaved into `values` (resized to hold them).
-void addLayerSlices(Imf::FrameBuffer& frameBuffer, const Layer& layer, std::vector<float>& values,
-                    const Imath::Box2i& dataWindow, int width, int height) {
-    const std::size_t count = layer.names.size();
+void addLayerSlices(Imf::FrameBuffer& frameBuffer, const std::vector<std::string>& names,
+                    std::vector<float>& values, const Imath::Box2i& dataWindow, int width, int height) {
+    const std::size_t count = names.size();
     values.assign(std::size_t(width) * std::size_t(height) * count, 0.0f);
     const std::size_t xStride = count * sizeof(float);
     for (std::size_t c = 0; c < count; ++c) {
-        frameBuffer.insert(layer.names[c], Imf::Slice::Make(Imf::FLOAT, values.data() + c, dataWindow,
-                                                            xStride, xStride * std::size_t(width)));
+        frameBuffer.insert(names[c], Imf::Slice::Make(Imf::FLOAT, values.data() + c, dataWindow, xStride,
+                                                      xStride * std::size_t(width)));
+    }
+}
+
+/// Motion as the mapping stores it -> pixels, current minus previous, x right, y down, in place.
+/// `size`: the display window's, which NDC and UV units span.
+void canonicalMotion(std::vector<float>& motion, const AovConventions& c, glm::ivec2 size) {
+    using C = AovConventions;
+    glm::vec2 scale(1.0f);
+    if (c.motionUnits == C::MotionUnits::Ndc)
+        scale = 0.5f * glm::vec2(size);
+    else if (c.motionUnits == C::MotionUnits::Uv)
+        scale = glm::vec2(size);
+    // The way to the previous position is the negated displacement; the way to the next one stands for it
+    // at constant velocity, and the way back from there for its negation.
+    if (c.motionSense == C::MotionSense::PreviousMinusCurrent ||
+        c.motionSense == C::MotionSense::CurrentMinusNext)
+        scale = -scale;
+    if (c.motionYUp)
+        scale.y = -scale.y;
+    if (scale == glm::vec2(1.0f))
+        return;
+    for (std::size_t i = 0; i + 1 < motion.size(); i += 2) {
+        motion[i] *= scale.x;
+        motion[i + 1] *= scale.y;
+    }
+}
+
+/// Z-up world normals -> Y-up: (x, y, z) -> (x, z, -y), in place.
+void yUpNormals(std::vector<float>& normals) {
+    for (std::size_t i = 0; i + 2 < normals.size(); i += 3) {
+        const float y = normals[i + 1];
+        normals[i + 1] = normals[i + 2];
+        normals[i + 2] = -y;
     }
 }
 
@@ -359,33 +364,160 @@ void emptyKeepingStorage(Image& image) {
     image.rgba.clear();
 }
 
+/// The header's attributes as "name (type)", its display window's size and the data window's origin in it.
+void describeHeader(const Imf::Header& header, ExrFrame& frame) {
+    frame.attributes.clear();
+    for (auto it = header.begin(); it != header.end(); ++it)
+        frame.attributes.push_back(std::string(it.name()) + " (" + it.attribute().typeName() + ")");
+    const Imath::Box2i display = header.displayWindow();
+    const Imath::Box2i data = header.dataWindow();
+    frame.displaySize = {display.max.x - display.min.x + 1, display.max.y - display.min.y + 1};
+    frame.dataOrigin = {data.min.x - display.min.x, data.min.y - display.min.y};
+}
+
+/// A channel of a multi-part file: the part that holds it and its name there.
+struct PartChannel {
+    int part = 0;
+    std::string name;
+};
+
+/// The frame in a multi-part file's parts, already checked by detail::checkExrBytes, into `frame`: every
+/// channel the mapping names read from its part (each such part's data window the colour's), colour as
+/// floats.
+void readMultipartFrame(const fs::path& path, std::span<const unsigned char> bytes,
+                        Imf::MultiPartInputFile& file, ExrFrame& frame, ExrFrameReader::Layers wanted,
+                        const AovRequest& request) {
+    std::map<std::string, PartChannel> where;
+    frame.channels.clear();
+    frame.parts.clear();
+    for (int k = 0; k < file.parts(); ++k) {
+        const Imf::Header& header = file.header(k);
+        const std::string part = header.hasName() ? header.name() : "";
+        frame.parts.push_back(part.empty() ? "(part " + std::to_string(k) + ")" : part);
+        for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
+            const std::string name = it.name();
+            const std::string full =
+                k > 0 && !part.empty() && name.find('.') == std::string::npos ? part + "." + name : name;
+            if (where.emplace(full, PartChannel{k, name}).second)
+                frame.channels.push_back(full);
+        }
+    }
+    try {
+        frame.aovs = resolveAovs(frame.channels,
+                                 findAttribute(file.header(0), "BlenderMultiChannel") != nullptr, request);
+    } catch (const AovError& e) {
+        throw IoError(path, e.what());
+    }
+    const AovChannels& aovs = frame.aovs;
+    const std::vector<std::string>& colorNames = aovs.of(Aov::Color);
+    const int colorPart = where.at(colorNames.front()).part;
+    const Imf::Header& header = file.header(colorPart);
+    describeHeader(header, frame);
+    const Imath::Box2i data = header.dataWindow();
+    frame.camera = readCameraAttributes(path, header);
+    const int width = data.max.x - data.min.x + 1;
+    const int height = data.max.y - data.min.y + 1;
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+
+    // The slices, by part: colour (four floats a pixel, absent components their fill) and each layer.
+    std::map<int, Imf::FrameBuffer> buffers;
+    const auto insert = [&](const std::string& full, float* base, std::size_t stride, double fill) {
+        const PartChannel& c = where.at(full);
+        const Imf::Header& h = file.header(c.part);
+        if (h.dataWindow() != data)
+            throw IoError(path, "channel " + full + " is in part " + frame.parts[std::size_t(c.part)] +
+                                    ", whose data window differs from the colour's part " +
+                                    frame.parts[std::size_t(colorPart)] + ": the parts read must share one");
+        buffers[c.part].insert(c.name,
+                               Imf::Slice::Make(Imf::FLOAT, base, data, stride * sizeof(float),
+                                                stride * sizeof(float) * std::size_t(width), 1, 1, fill));
+    };
+    frame.color.width = width;
+    frame.color.height = height;
+    frame.color.rgba.assign(pixels * 4, 0.0f);
+    const bool luminance = colorNames.size() <= 2;
+    if (luminance && (where.contains("RY") || where.contains("BY")))
+        throw IoError(path, "luminance/chroma colour (Y, RY, BY) is read from single-part files only");
+    for (std::size_t c = 0; c < colorNames.size(); ++c) {
+        const std::size_t component = luminance ? (c == 0 ? 0 : 3) : c;
+        insert(colorNames[c], frame.color.rgba.data() + component, 4, component == 3 ? 1.0 : 0.0);
+    }
+    if (colorNames.size() == 1 || colorNames.size() == 3) {
+        for (std::size_t i = 0; i < pixels; ++i)
+            frame.color.rgba[i * 4 + 3] = 1.0f;
+    }
+    for (const auto& [aov, values, read] : {std::tuple{Aov::Depth, &frame.depth, wanted.depth},
+                                            std::tuple{Aov::Normals, &frame.normals, wanted.normals},
+                                            std::tuple{Aov::Motion, &frame.motion, wanted.motion},
+                                            std::tuple{Aov::ObjectId, &frame.objectId, wanted.objectId}}) {
+        const std::vector<std::string>& names = aovs.of(aov);
+        if (names.empty() || !read)
+            continue;
+        values->assign(pixels * names.size(), 0.0f);
+        for (std::size_t c = 0; c < names.size(); ++c)
+            insert(names[c], values->data() + c, names.size(), 0.0);
+    }
+    for (auto& [part, buffer] : buffers) {
+        detail::checkExrChunks(path, bytes, part);
+        Imf::InputPart input(file, part);
+        if (!input.isComplete())
+            throw IoError(path, "OpenEXR part " + frame.parts[std::size_t(part)] +
+                                    " is truncated or incomplete (pixel blocks are missing)");
+        input.setFrameBuffer(buffer);
+        input.readPixels(data.min.y, data.max.y);
+    }
+    if (luminance) {
+        for (std::size_t i = 0; i < pixels; ++i)
+            frame.color.rgba[i * 4 + 1] = frame.color.rgba[i * 4 + 2] = frame.color.rgba[i * 4];
+    }
+    detail::convertExrToRec709(path, header, frame.color);
+    emptyKeepingStorage(frame.colorHalves);
+    frame.halfColor = false;
+    canonicalMotion(frame.motion, aovs.conventions, frame.displaySize);
+    if (aovs.conventions.normals == AovConventions::Normals::WorldZUp)
+        yUpNormals(frame.normals);
+}
+
 /// The frame in `bytes`, already checked by detail::checkExrBytes, into `frame`'s storage.
 void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes, ExrFrame& frame,
                       const ImageReadLimits& limits, ExrFrameReader::Color color,
-                      ExrFrameReader::Layers wanted) {
+                      ExrFrameReader::Layers wanted, const AovRequest& request) {
     try {
         detail::MemoryIStream stream(path, bytes);
+        const bool multiPart = bytes.size() >= 8 && (bytes[5] & 0x10) != 0; // version flag 0x1000
+        if (multiPart) {
+            Imf::MultiPartInputFile parts(stream);
+            if (parts.parts() > 1) {
+                frame.depth.clear();
+                frame.normals.clear();
+                frame.motion.clear();
+                frame.objectId.clear();
+                readMultipartFrame(path, bytes, parts, frame, wanted, request);
+                return;
+            }
+            stream.seekg(0);
+        }
         Imf::InputFile file(stream);
         const Imf::Header& header = file.header();
+        frame.parts.clear();
         const Imf::ChannelList& channels = header.channels();
 
         frame.channels.clear();
         for (auto it = channels.begin(); it != channels.end(); ++it)
             frame.channels.emplace_back(it.name());
-        frame.attributes.clear();
-        for (auto it = header.begin(); it != header.end(); ++it)
-            frame.attributes.push_back(std::string(it.name()) + " (" + it.attribute().typeName() + ")");
-        const Imath::Box2i display = header.displayWindow();
-        const Imath::Box2i data = header.dataWindow();
-        frame.displaySize = {display.max.x - display.min.x + 1, display.max.y - display.min.y + 1};
-        frame.dataOrigin = {data.min.x - display.min.x, data.min.y - display.min.y};
+        describeHeader(header, frame);
 
-        const std::optional<Layer> depth = findLayer(path, channels, {"", "depth."}, {"Z"});
-        const std::optional<Layer> normals = findLayer(path, channels, {"N.", "normal."}, {"X", "Y", "Z"});
-        const std::optional<Layer> motion = findLayer(path, channels, {"motion."}, {"X", "Y"});
+        try {
+            frame.aovs =
+                resolveAovs(frame.channels, findAttribute(header, "BlenderMultiChannel") != nullptr, request);
+        } catch (const AovError& e) {
+            throw IoError(path, e.what());
+        }
+        const AovChannels& aovs = frame.aovs;
+        const detail::ExrColorChannels colorNames = detail::ExrColorChannels::of(aovs.of(Aov::Color));
         frame.camera = readCameraAttributes(path, header);
         frame.halfColor = true;
-        for (const char* name : {"R", "G", "B", "A", "Y"}) {
+        for (const std::string& name : aovs.of(Aov::Color)) {
             const Imf::Channel* channel = channels.findChannel(name);
             frame.halfColor = frame.halfColor && (channel == nullptr || channel->type == Imf::HALF);
         }
@@ -395,24 +527,31 @@ void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes
         frame.depth.clear();
         frame.normals.clear();
         frame.motion.clear();
+        frame.objectId.clear();
 
         const auto layers = [&](Imf::FrameBuffer& frameBuffer, const Imath::Box2i& dataWindow, int width,
                                 int height) {
-            if (depth && wanted.depth)
-                addLayerSlices(frameBuffer, *depth, frame.depth, dataWindow, width, height);
-            if (normals && wanted.normals)
-                addLayerSlices(frameBuffer, *normals, frame.normals, dataWindow, width, height);
-            if (motion && wanted.motion)
-                addLayerSlices(frameBuffer, *motion, frame.motion, dataWindow, width, height);
+            for (const auto& [aov, values, read] :
+                 {std::tuple{Aov::Depth, &frame.depth, wanted.depth},
+                  std::tuple{Aov::Normals, &frame.normals, wanted.normals},
+                  std::tuple{Aov::Motion, &frame.motion, wanted.motion},
+                  std::tuple{Aov::ObjectId, &frame.objectId, wanted.objectId}}) {
+                if (aovs.has(aov) && read)
+                    addLayerSlices(frameBuffer, aovs.of(aov), *values, dataWindow, width, height);
+            }
         };
         // The colour not read is emptied, its storage kept for a later frame that reads it.
-        if (color == ExrFrameReader::Color::HalvesWhenStored && detail::exrColorIsHalves(header)) {
+        if (color == ExrFrameReader::Color::HalvesWhenStored &&
+            detail::exrColorIsHalves(header, colorNames)) {
             emptyKeepingStorage(frame.color);
-            detail::readExrColorHalves(path, bytes, file, frame.colorHalves, layers, limits);
+            detail::readExrColorHalves(path, bytes, file, frame.colorHalves, layers, limits, colorNames);
         } else {
             emptyKeepingStorage(frame.colorHalves);
-            detail::readExrColor(path, bytes, file, frame.color, layers, limits);
+            detail::readExrColor(path, bytes, file, frame.color, layers, limits, colorNames);
         }
+        canonicalMotion(frame.motion, aovs.conventions, frame.displaySize);
+        if (aovs.conventions.normals == AovConventions::Normals::WorldZUp)
+            yUpNormals(frame.normals);
     } catch (const IoError&) {
         throw;
     } catch (const std::exception& e) {
@@ -427,8 +566,11 @@ void clearFrame(ExrFrame& frame) {
     frame.depth.clear();
     frame.normals.clear();
     frame.motion.clear();
+    frame.objectId.clear();
     frame.camera = {};
+    frame.aovs = {};
     frame.channels.clear();
+    frame.parts.clear();
     frame.attributes.clear();
     frame.displaySize = {0, 0};
     frame.dataOrigin = {0, 0};
@@ -437,8 +579,9 @@ void clearFrame(ExrFrame& frame) {
 
 } // namespace
 
-ExrFrame readExrFrame(const fs::path& path, const ImageReadLimits& limits) {
+ExrFrame readExrFrame(const fs::path& path, const ImageReadLimits& limits, const AovRequest& aovs) {
     ExrFrameReader reader;
+    reader.setAovs(aovs);
     ExrFrame frame;
     reader.read(path, frame, limits);
     return frame;
@@ -455,7 +598,7 @@ ExrFrame decodeExrFrame(std::span<const unsigned char> bytes, const fs::path& na
 void ExrFrameReader::read(const fs::path& path, ExrFrame& frame, const ImageReadLimits& limits) {
     try {
         detail::readCheckedExrBytes(path, mBytes, limits);
-        readCheckedFrame(path, mBytes, frame, limits, mColor, mLayers);
+        readCheckedFrame(path, mBytes, frame, limits, mColor, mLayers, mAovs);
     } catch (const IoError&) {
         clearFrame(frame);
         throw;
@@ -466,7 +609,7 @@ void ExrFrameReader::decode(std::span<const unsigned char> bytes, const fs::path
                             const ImageReadLimits& limits) {
     try {
         detail::checkExrBytes(name, bytes, limits);
-        readCheckedFrame(name, bytes, frame, limits, mColor, mLayers);
+        readCheckedFrame(name, bytes, frame, limits, mColor, mLayers, mAovs);
     } catch (const IoError&) {
         clearFrame(frame);
         throw;

@@ -1,10 +1,13 @@
 #pragma once
-// A renderer's EXR frame with the 3D layers Photopic's passes use: colour, depth, normals, motion and the
-// camera, in the conventions renderers write (docs/architecture.md, "EXR input"):
-// - depth: channel `Z` (or `depth.Z`), linear view depth in scene units; the background at or beyond the far
-//   plane, or infinite;
-// - normals: `N.X`/`N.Y`/`N.Z` (or `normal.X/Y/Z`), world space;
-// - motion: `motion.X`/`motion.Y`, pixels, current minus previous position, x right, y down in file rows;
+// A renderer's EXR frame with the 3D layers Photopic's passes use: colour, depth, normals, motion, object ids
+// and the camera. Which channels feed which, and their conventions, come from io/ExrChannels.h (a preset, a
+// layer, --aov overrides; docs/interop.md); the reader turns them into these:
+// - depth: linear depth in scene units, planar unless the mapping says radial (the caller, who has the
+//   camera, turns radial depth planar); the background at or beyond the far plane, or infinite;
+// - normals: world space, Y up (Z-up files are turned), or GL view space when the mapping says camera;
+// - motion: pixels, current minus previous position, x right, y down in file rows; jittered only when the
+//   mapping says so;
+// - object ids: one float channel holding integers (Cycles' IndexOB);
 // - camera: the standard attributes `worldToCamera` and `worldToNDC` (Imath row-vector matrices; OpenEXR
 //   camera space is left-handed with +z forward, its NDC has (0, 0) at the top-left and (1, 1) at the
 //   bottom-right of the display window), `focus` (m), `aperture` (f-number), `expTime` (s), `isoSpeed`, and,
@@ -22,6 +25,7 @@
 
 #include "core/Camera.h"
 #include "core/Image.h"
+#include "io/ExrChannels.h"
 #include "io/ImageIO.h"
 
 #include <glm/glm.hpp>
@@ -64,9 +68,18 @@ struct ExrFrame {
     std::vector<float> normals; ///< width*height*3 world-space normals; empty when none
     std::vector<float>
         motion; ///< width*height*2 pixels (x right, y down), current minus previous; empty when none
+    std::vector<float> objectId; ///< width*height object ids as stored (integers); empty when none
     ExrCameraAttributes camera;
-    std::vector<std::string> channels; ///< every channel of the first part, as named in the file
-    /// Every attribute of the first part's header as "name (type)", in the header's (alphabetical) order.
+    /// The channels read for each kind and the file's conventions (of which the reader has applied those of
+    /// motion and of Z-up normals; radial depth, camera-space normals and jittered motion are the caller's).
+    AovChannels aovs;
+    /// Every channel, as the mapping names it: a single-part file's as they are; in a multi-part file the
+    /// first part's as they are and another part's bare names (no '.') behind its part's name ("depth.Z").
+    std::vector<std::string> channels;
+    /// A multi-part file's parts by name ("(part N)" for one without), in file order; empty for one part.
+    std::vector<std::string> parts;
+    /// Every attribute of the first part's header (of a multi-part file, the colour's part) as
+    /// "name (type)", in the header's (alphabetical) order.
     std::vector<std::string> attributes;
     /// The display window's size and the data window's top-left corner in it: the layers above hold the
     /// data window (like readImage), while worldToNDC refers to the display window.
@@ -84,10 +97,13 @@ struct ExrFrame {
 
 /// Reads colour as readImage does, plus the layers and attributes above when present, in one pass: each
 /// layer the file has holds the colour's width*height pixels, the display window has at least one pixel.
+/// The channels are the file's own preset's (Blender's when it carries BlenderMultiChannel), of its only
+/// layer; several layers are an IoError listing them (ExrFrameReader::setAovs picks one).
 /// Values are kept as stored (NaN, infinite), the attributes too except `jitter`, which is finite. Throws
 /// IoError naming the file for anything readImage rejects, a layer with some of its components missing
 /// (N.X and N.Y without N.Z), a camera attribute of the wrong type and a non-finite `jitter`.
-[[nodiscard]] ExrFrame readExrFrame(const std::filesystem::path& path, const ImageReadLimits& limits = {});
+[[nodiscard]] ExrFrame readExrFrame(const std::filesystem::path& path, const ImageReadLimits& limits = {},
+                                    const AovRequest& aovs = {});
 /// readExrFrame on bytes in memory; `name` only names the source in errors. Any byte string gives a frame
 /// or an IoError (the fuzzers hold it to that).
 [[nodiscard]] ExrFrame decodeExrFrame(std::span<const unsigned char> bytes, const std::filesystem::path& name,
@@ -110,8 +126,12 @@ public:
         bool depth = true;
         bool normals = true;
         bool motion = true;
+        bool objectId = true;
     };
     void setLayers(Layers layers) { mLayers = layers; }
+    /// Which channels feed what (io/ExrChannels.h): resolved for each file read after this call, an
+    /// AovError becoming an IoError naming the file. Default: the file's own preset and only layer.
+    void setAovs(AovRequest request) { mAovs = std::move(request); }
 
     /// readExrFrame into `frame`, every field replaced; its vectors' capacity is reused. On IoError
     /// `frame` is left empty (as a default ExrFrame, its capacity kept), never half filled.
@@ -124,6 +144,7 @@ private:
     std::vector<unsigned char> mBytes;
     Color mColor;
     Layers mLayers;
+    AovRequest mAovs;
 };
 /// Writes colour (half RGBA: `color` rounded, or `colorHalves` as they are when `color` is empty), Z (float),
 /// N.X/Y/Z (half), motion.X/Y (float) for the layers that are not

@@ -547,7 +547,7 @@ std::string chunkProblem(exr_compression_t compression, const exr_chunk_info_t& 
 
 } // namespace
 
-void checkExrChunks(const std::filesystem::path& path, std::span<const unsigned char> bytes) {
+void checkExrChunks(const std::filesystem::path& path, std::span<const unsigned char> bytes, int part) {
     MemorySource source{bytes, {}};
     Context context;
     const auto corrupt = [&](const std::string& where) {
@@ -559,10 +559,11 @@ void checkExrChunks(const std::filesystem::path& path, std::span<const unsigned 
     exr_storage_t storage{};
     exr_compression_t compression{};
     exr_attr_box2i_t window{};
-    if (exr_get_storage(context.handle, 0, &storage) != EXR_ERR_SUCCESS ||
-        exr_get_compression(context.handle, 0, &compression) != EXR_ERR_SUCCESS ||
-        exr_get_data_window(context.handle, 0, &window) != EXR_ERR_SUCCESS)
-        corrupt("the first part's layout cannot be read");
+    if (exr_get_storage(context.handle, part, &storage) != EXR_ERR_SUCCESS ||
+        exr_get_compression(context.handle, part, &compression) != EXR_ERR_SUCCESS ||
+        exr_get_data_window(context.handle, part, &window) != EXR_ERR_SUCCESS)
+        corrupt(part == 0 ? std::string("the first part's layout cannot be read")
+                          : "the layout of part " + std::to_string(part) + " cannot be read");
     if (storage != EXR_STORAGE_SCANLINE && storage != EXR_STORAGE_TILED)
         return; // deep data: Imf::InputFile refuses it itself
 
@@ -580,12 +581,12 @@ void checkExrChunks(const std::filesystem::path& path, std::span<const unsigned 
     };
     if (storage == EXR_STORAGE_SCANLINE) {
         int32_t linesPerChunk = 0;
-        if (exr_get_scanlines_per_chunk(context.handle, 0, &linesPerChunk) != EXR_ERR_SUCCESS ||
+        if (exr_get_scanlines_per_chunk(context.handle, part, &linesPerChunk) != EXR_ERR_SUCCESS ||
             linesPerChunk < 1)
             corrupt("the lines per chunk cannot be read");
         for (std::int64_t y = window.min.y; y <= window.max.y; y += linesPerChunk) {
             exr_chunk_info_t chunk{};
-            check(exr_read_scanline_chunk_info(context.handle, 0, int(y), &chunk), chunk,
+            check(exr_read_scanline_chunk_info(context.handle, part, int(y), &chunk), chunk,
                   "the chunk of line " + std::to_string(y));
         }
         return;
@@ -595,8 +596,8 @@ void checkExrChunks(const std::filesystem::path& path, std::span<const unsigned 
     int32_t tileHeight = 0;
     int32_t levelWidth = 0;
     int32_t levelHeight = 0;
-    if (exr_get_tile_sizes(context.handle, 0, 0, 0, &tileWidth, &tileHeight) != EXR_ERR_SUCCESS ||
-        exr_get_level_sizes(context.handle, 0, 0, 0, &levelWidth, &levelHeight) != EXR_ERR_SUCCESS ||
+    if (exr_get_tile_sizes(context.handle, part, 0, 0, &tileWidth, &tileHeight) != EXR_ERR_SUCCESS ||
+        exr_get_level_sizes(context.handle, part, 0, 0, &levelWidth, &levelHeight) != EXR_ERR_SUCCESS ||
         tileWidth < 1 || tileHeight < 1 || levelWidth < 1 || levelHeight < 1)
         corrupt("the tile layout cannot be read");
     const int tilesX = int((std::int64_t(levelWidth) + tileWidth - 1) / tileWidth);
@@ -604,7 +605,7 @@ void checkExrChunks(const std::filesystem::path& path, std::span<const unsigned 
     for (int ty = 0; ty < tilesY; ++ty) {
         for (int tx = 0; tx < tilesX; ++tx) {
             exr_chunk_info_t chunk{};
-            check(exr_read_tile_chunk_info(context.handle, 0, tx, ty, 0, 0, &chunk), chunk,
+            check(exr_read_tile_chunk_info(context.handle, part, tx, ty, 0, 0, &chunk), chunk,
                   "tile (" + std::to_string(tx) + ", " + std::to_string(ty) + ")");
         }
     }

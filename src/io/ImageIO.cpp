@@ -37,6 +37,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -363,6 +364,9 @@ void checkExrAttributeSizes(const fs::path& path, std::span<const unsigned char>
     }
 }
 
+/// Parts a multi-part file may have: renderers write one a layer, tens at most.
+constexpr int kMaxExrParts = 1024;
+
 /// Tiles no larger than the image, or than kMaxTileBeyondImage where the image is smaller: Imf::InputFile
 /// allocates a buffer of a whole row of tiles (the data window's width times the tile height) and one tile
 /// per thread, by what the header says, before it reads a byte of them (a fuzzed 2 x 100663298 tile asked for
@@ -398,14 +402,26 @@ void checkExrHeader(const fs::path& path, std::span<const unsigned char> bytes,
                       std::uint32_t(std::uint8_t(magicAndVersion[5])) << 8 |
                       std::uint32_t(std::uint8_t(magicAndVersion[6])) << 16 |
                       std::uint32_t(std::uint8_t(magicAndVersion[7])) << 24);
-    Imf::Header header;
-    header.readFrom(stream, version);
-    const Imath::Box2i dataWindow = header.dataWindow();
-    const std::int64_t width = std::int64_t(dataWindow.max.x) - dataWindow.min.x + 1;
-    const std::int64_t height = std::int64_t(dataWindow.max.y) - dataWindow.min.y + 1;
-    checkSize(path, width, height, limits);
-    checkTileSize(path, header, version, width, height);
-    checkBytesHold(path, width, height, exrMinimumBytes(header, width, height), bytes.size(), "OpenEXR");
+    // Every part's header: a multi-part reader opens them all, each allocating by its own data window.
+    const bool multiPart = Imf::isMultiPart(version);
+    for (int part = 0;; ++part) {
+        Imf::Header header;
+        header.readFrom(stream, version);
+        const Imath::Box2i dataWindow = header.dataWindow();
+        const std::int64_t width = std::int64_t(dataWindow.max.x) - dataWindow.min.x + 1;
+        const std::int64_t height = std::int64_t(dataWindow.max.y) - dataWindow.min.y + 1;
+        checkSize(path, width, height, limits);
+        checkTileSize(path, header, version, width, height);
+        checkBytesHold(path, width, height, exrMinimumBytes(header, width, height), bytes.size(), "OpenEXR");
+        if (!multiPart)
+            return;
+        // An empty header (a lone null byte) ends a multi-part file's list of headers.
+        const std::uint64_t next = stream.tellg();
+        if (next >= bytes.size() || bytes[next] == 0)
+            return;
+        if (part + 1 >= kMaxExrParts)
+            throw IoError(path, "OpenEXR file has more than " + std::to_string(kMaxExrParts) + " parts");
+    }
 }
 
 ImageF readExr(const fs::path& path, std::span<const unsigned char> bytes, const ImageReadLimits& limits) {
@@ -902,22 +918,24 @@ std::pair<int, int> exrColorSize(const fs::path& path, const Imf::InputFile& fil
     return {int(width64), int(height64)};
 }
 
-bool hasChannel(const Imf::Header& header, const char* name) {
-    return header.channels().findChannel(name) != nullptr;
+bool hasChannel(const Imf::Header& header, const std::string& name) {
+    return !name.empty() && header.channels().findChannel(name) != nullptr;
 }
 
-bool hasRgbChannel(const Imf::Header& header) {
-    return hasChannel(header, "R") || hasChannel(header, "G") || hasChannel(header, "B");
+bool hasRgbChannel(const Imf::Header& header, const detail::ExrColorChannels& names) {
+    return !names.luminance &&
+           (hasChannel(header, names.r) || hasChannel(header, names.g) || hasChannel(header, names.b));
 }
 
 /// Throws IoError naming `path` and the file's channels when it has no R, G, B or Y channel.
-void requireColorChannels(const fs::path& path, const Imf::Header& header) {
-    if (hasRgbChannel(header) || hasChannel(header, "Y"))
+void requireColorChannels(const fs::path& path, const Imf::Header& header,
+                          const detail::ExrColorChannels& names) {
+    if (hasRgbChannel(header, names) || hasChannel(header, names.y))
         return;
-    std::string names;
+    std::string channels;
     for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
-        names += std::string(names.empty() ? "" : ", ") + it.name();
-    throw IoError(path, "OpenEXR file has no R, G, B or Y channel (channels: " + names + ")");
+        channels += std::string(channels.empty() ? "" : ", ") + it.name();
+    throw IoError(path, "OpenEXR file has no R, G, B or Y channel (channels: " + channels + ")");
 }
 
 /// Reads R, G, B (or Y, copied to all three) and A (1 where absent) as `type` values, four a pixel, into
@@ -925,26 +943,27 @@ void requireColorChannels(const fs::path& path, const Imf::Header& header) {
 template <class Value>
 void readRgbaSlices(const fs::path& path, std::span<const unsigned char> bytes, Imf::InputFile& file,
                     Imf::PixelType type, Value* rgba, int width, int height,
-                    const detail::ExrExtraSlices& extra) {
+                    const detail::ExrExtraSlices& extra, const detail::ExrColorChannels& names) {
     const Imf::Header& header = file.header();
     const Imath::Box2i dataWindow = header.dataWindow();
-    const bool hasRgb = hasRgbChannel(header);
+    const bool hasRgb = hasRgbChannel(header, names);
     Imf::FrameBuffer frameBuffer;
     const std::size_t xStride = 4 * sizeof(Value);
     const std::size_t yStride = xStride * std::size_t(width);
     // Absent channels take the fill value.
-    const auto addSlice = [&](const char* name, std::size_t component, double fill) {
+    const auto addSlice = [&](const std::string& name, std::size_t component, double fill) {
         frameBuffer.insert(
             name, Imf::Slice::Make(type, rgba + component, dataWindow, xStride, yStride, 1, 1, fill));
     };
     if (hasRgb) {
-        addSlice("R", 0, 0.0);
-        addSlice("G", 1, 0.0);
-        addSlice("B", 2, 0.0);
+        addSlice(names.r, 0, 0.0);
+        addSlice(names.g, 1, 0.0);
+        addSlice(names.b, 2, 0.0);
     } else {
-        addSlice("Y", 0, 0.0);
+        addSlice(names.y, 0, 0.0);
     }
-    addSlice("A", 3, 1.0);
+    if (!names.a.empty())
+        addSlice(names.a, 3, 1.0);
     if (extra)
         extra(frameBuffer, dataWindow, width, height);
     if (!detail::readZipScanlines(bytes, header, frameBuffer)) {
@@ -952,22 +971,45 @@ void readRgbaSlices(const fs::path& path, std::span<const unsigned char> bytes, 
         file.setFrameBuffer(frameBuffer);
         file.readPixels(dataWindow.min.y, dataWindow.max.y);
     }
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
     if (!hasRgb) {
-        const std::size_t pixels = std::size_t(width) * std::size_t(height);
         for (std::size_t i = 0; i < pixels; ++i)
             rgba[i * 4 + 1] = rgba[i * 4 + 2] = rgba[i * 4];
+    }
+    if (names.a.empty()) { // no alpha channel named: opaque, as an absent A reads
+        constexpr Value kOne = std::is_same_v<Value, float> ? Value(1) : Value(0x3C00); // 1.0 as half bits
+        for (std::size_t i = 0; i < pixels; ++i)
+            rgba[i * 4 + 3] = kOne;
     }
 }
 
 } // namespace
 
+detail::ExrColorChannels detail::ExrColorChannels::of(const std::vector<std::string>& names) {
+    ExrColorChannels c;
+    if (names.size() <= 2) {
+        c.luminance = true;
+        c.y = names.empty() ? "Y" : names[0];
+        c.a = names.size() == 2 ? names[1] : "";
+    } else {
+        c.r = names[0];
+        c.g = names[1];
+        c.b = names[2];
+        c.a = names.size() == 4 ? names[3] : "";
+    }
+    return c;
+}
+
 void detail::readExrColor(const fs::path& path, std::span<const unsigned char> bytes, Imf::InputFile& file,
-                          ImageF& image, const ExrExtraSlices& extra, const ImageReadLimits& limits) {
+                          ImageF& image, const ExrExtraSlices& extra, const ImageReadLimits& limits,
+                          const ExrColorChannels& names) {
     const auto [width, height] = exrColorSize(path, file, limits);
     const Imf::Header& header = file.header();
     const Imath::Box2i dataWindow = header.dataWindow();
-    const bool hasRgb = hasRgbChannel(header);
-    if (!hasRgb && hasChannel(header, "Y") && (hasChannel(header, "RY") || hasChannel(header, "BY"))) {
+    const bool hasRgb = hasRgbChannel(header, names);
+    const bool lumaChroma = names.y == "Y" && (names.standard() || names.luminance) &&
+                            hasChannel(header, "Y") && (hasChannel(header, "RY") || hasChannel(header, "BY"));
+    if (!hasRgb && lumaChroma) {
         checkExrChunks(path, bytes);
         image = readExrLuminanceChroma(path, bytes, width, height);
         detail::convertExrToRec709(path, header, image);
@@ -982,24 +1024,26 @@ void detail::readExrColor(const fs::path& path, std::span<const unsigned char> b
         }
         return;
     }
-    requireColorChannels(path, header);
+    requireColorChannels(path, header, names);
     // Every value is written (absent channels take their fill), so storage kept from an earlier frame needs
     // no clearing.
     image.width = width;
     image.height = height;
     image.rgba.resize(image.pixelCount() * 4);
-    readRgbaSlices(path, bytes, file, Imf::FLOAT, image.rgba.data(), width, height, extra);
+    readRgbaSlices(path, bytes, file, Imf::FLOAT, image.rgba.data(), width, height, extra, names);
     detail::convertExrToRec709(path, header, image);
 }
 
-bool detail::exrColorIsHalves(const Imf::Header& header) {
-    const bool hasRgb = hasRgbChannel(header);
-    if (!hasRgb && !hasChannel(header, "Y"))
+bool detail::exrColorIsHalves(const Imf::Header& header, const ExrColorChannels& names) {
+    const bool hasRgb = hasRgbChannel(header, names);
+    if (!hasRgb && !hasChannel(header, names.y))
         return false;
-    if (!hasRgb && (hasChannel(header, "RY") || hasChannel(header, "BY")))
+    if (!hasRgb && names.y == "Y" && (hasChannel(header, "RY") || hasChannel(header, "BY")))
         return false; // luminance/chroma: rebuilt as RGB in float
-    for (const char* name : {"R", "G", "B", "A", "Y"}) {
-        const Imf::Channel* channel = header.channels().findChannel(name);
+    for (const std::string* name : {&names.r, &names.g, &names.b, &names.a, &names.y}) {
+        if (name->empty())
+            continue;
+        const Imf::Channel* channel = header.channels().findChannel(*name);
         if (channel != nullptr && channel->type != Imf::HALF)
             return false;
     }
@@ -1008,15 +1052,15 @@ bool detail::exrColorIsHalves(const Imf::Header& header) {
 
 void detail::readExrColorHalves(const fs::path& path, std::span<const unsigned char> bytes,
                                 Imf::InputFile& file, ImageH& image, const ExrExtraSlices& extra,
-                                const ImageReadLimits& limits) {
-    if (!exrColorIsHalves(file.header()))
+                                const ImageReadLimits& limits, const ExrColorChannels& names) {
+    if (!exrColorIsHalves(file.header(), names))
         throw std::invalid_argument("readExrColorHalves: the colour of \"" + path.string() +
                                     "\" is not halves as stored");
     const auto [width, height] = exrColorSize(path, file, limits);
     image.width = width;
     image.height = height;
     image.rgba.resize(image.pixelCount() * 4);
-    readRgbaSlices(path, bytes, file, Imf::HALF, image.rgba.data(), width, height, extra);
+    readRgbaSlices(path, bytes, file, Imf::HALF, image.rgba.data(), width, height, extra, names);
 }
 
 void detail::writeAtomically(const fs::path& path, std::span<const unsigned char> bytes) {
