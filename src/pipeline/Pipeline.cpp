@@ -281,6 +281,23 @@ const LightingOutputs& Pipeline::renderLighting(const FrameInputs& inputs, const
     return mLighting;
 }
 
+void Pipeline::warnLightingStageMissing() const {
+    try {
+        if (mSettings.ssao.enabled && mSettings.ssao.apply == AoApply::Lighting)
+            warnOnce(
+                "ssao.no-lighting",
+                "ssao.apply is lighting but the host does not call renderLighting(): no ambient occlusion "
+                "is computed; ssao.apply=multiply applies it to the scene colour instead");
+        if (mSettings.contactShadows.enabled)
+            warnOnce(
+                "contactShadows.no-lighting",
+                "contactShadows.enabled but the host does not call renderLighting(): contact shadows are "
+                "the sun's visibility for the host's own sun term, so without the lighting stage they "
+                "darken nothing");
+    } catch (...) { // logging must not take the frame down
+    }
+}
+
 const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& time) {
     const GlStateScope hostState;
     // The lighting stage's outputs stay bound for the post stage when the host ran it this frame.
@@ -346,6 +363,8 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
         }
     }
     mBeganFrame = false;
+    if (!lightingRan)
+        warnLightingStageMissing();
     mOutput = mPostSequencer.run(mOrder->post(), {.resources = kPostOutputs, .firstAvailable = true}, ctx,
                                  mResources);
     mResourcesRead = mPostSequencer.neededReads();

@@ -198,6 +198,8 @@ private:
     /// Binds the frame's inputs (those that pass validation) to the blackboard.
     bool bindInputs(const FrameInputs& inputs);
     FrameContext makeContext(const FrameInputs& inputs, const FrameTime& time, const QualityTier& tier);
+    /// Warns once of each enabled effect that runs only in the lighting stage, for a frame without it.
+    void warnLightingStageMissing() const;
 
     /// The host's GL state while the constructor runs (declared first: restored after everything else).
     std::unique_ptr<GlStateScope> mConstructionScope;

@@ -40,10 +40,13 @@ enum class DebugView {
     /// Volumetric light: the light it adds (RGB), raw values in an EXR; needs volumetricLight.enabled,
     /// depth, a camera and the sun's direction
     VolumetricLight,
+    /// Ambient occlusion's visibility (GTAO, after its denoise, before ssao.power) as grey: raw values in an
+    /// EXR; needs ssao.enabled, depth, normals and a camera
+    Ao,
 };
 
 inline std::span<const std::string_view> debugViewNames() {
-    static constexpr std::array<std::string_view, 18> kNames{"none",
+    static constexpr std::array<std::string_view, 19> kNames{"none",
                                                              "exposure",
                                                              "luma",
                                                              "ev",
@@ -60,7 +63,8 @@ inline std::span<const std::string_view> debugViewNames() {
                                                              "coc",
                                                              "ssr",
                                                              "velocity-tiles",
-                                                             "volumetric-light"};
+                                                             "volumetric-light",
+                                                             "ao"};
     return kNames;
 }
 

@@ -40,12 +40,14 @@ constexpr ResourceUse kVelocityTilesViewUses[] = {{Resource::VelocityTiles, Acce
                                                   {Resource::DebugColor, Access::Write}};
 constexpr ResourceUse kVolumetricLightViewUses[] = {{Resource::VolumetricLight, Access::Read},
                                                     {Resource::DebugColor, Access::Write}};
+constexpr ResourceUse kAoViewUses[] = {{Resource::AmbientOcclusion, Access::Read},
+                                       {Resource::DebugColor, Access::Write}};
 
 /// Views of data rather than of the image: written to EXR, they keep their values.
 bool isDataView(DebugView view) {
     return view == DebugView::ContactShadows || view == DebugView::ContactShadowSteps ||
            view == DebugView::Coc || view == DebugView::Ssr || view == DebugView::VelocityTiles ||
-           view == DebugView::VolumetricLight;
+           view == DebugView::VolumetricLight || view == DebugView::Ao;
 }
 
 bool isInputView(DebugView view) {
@@ -84,6 +86,8 @@ std::span<const ResourceUse> DebugViewPass::uses() const {
         return kVelocityTilesViewUses;
     case DebugView::VolumetricLight:
         return kVolumetricLightViewUses;
+    case DebugView::Ao:
+        return kAoViewUses;
     default:
         return kSceneViewUses;
     }
@@ -173,6 +177,7 @@ void DebugViewPass::bindInputView(const FrameContext& ctx, const FrameResources&
                             : mView == DebugView::Ssr                ? Resource::Reflections
                             : mView == DebugView::VelocityTiles      ? Resource::VelocityTiles
                             : mView == DebugView::VolumetricLight    ? Resource::VolumetricLight
+                            : mView == DebugView::Ao                 ? Resource::AmbientOcclusion
                                                                      : Resource::TaaDebug;
     const Program& p = (raw ? mInputRawProgram : mInputProgram).at(bitDepth);
     const Camera* camera = ctx.inputs.camera;

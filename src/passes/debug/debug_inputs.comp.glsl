@@ -1,5 +1,6 @@
 // Debug views of the 3D inputs, shown as they are (never tone mapped): linear depth, view-space normals and
-// motion vectors, as the pipeline sees them after decoding, and the lighting stage's contact shadows.
+// motion vectors, as the pipeline sees them after decoding, and the data views of the effects (contact
+// shadows, ambient occlusion, CoC, reflections, velocity tiles, volumetric light).
 // A compute pass (8x8 groups, one pixel each, image store); with RAW the same values also go, unclamped, to an
 // RGBA32F image (what an EXR of a data view holds).
 #include "passes/common/display_format.h.glsl"
@@ -17,7 +18,7 @@ layout(binding = 1, rgba32f) uniform writeonly image2D uRaw;
 layout(std140, binding = BINDING_PARAMETERS) uniform DebugInputViewParameters {
     int uView; // DebugView: 7 depth, 8 normals, 9 motion, 10 TAA history weight, 11 disocclusion,
                // 12 contact shadows, 13 contact-shadow steps, 14 depth of field's CoC, 15 ssr,
-               // 16 velocity tiles, 17 volumetric light
+               // 16 velocity tiles, 17 volumetric light, 18 ambient occlusion
     int uOctahedral;
     float uNear;
     float uFar;
@@ -114,6 +115,8 @@ void main() {
         c = t.rgb; // motion blur's neighbourhood maximum radius: x, y (pixels, y up), length
     } else if (uView == 17) {
         c = t.rgb; // the light volumetric light added (scene-referred)
+    } else if (uView == 18) {
+        c = vec3(t.r); // ambient occlusion's visibility, 1: unoccluded
     }
     store(p, vec4(c, 1.0));
 }

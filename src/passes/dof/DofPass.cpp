@@ -1,7 +1,10 @@
 #include "passes/dof/DofPass.h"
 
 #include "core/DepthOfField.h"
+#include "core/Log.h"
 #include "passes/Bindings.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -53,6 +56,21 @@ void DofPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Extent half{std::max(1, (e.width + 1) / 2), std::max(1, (e.height + 1) / 2)};
     const Extent tiles{(half.width + kTileSize - 1) / kTileSize, (half.height + kTileSize - 1) / kTileSize};
     const CocModel model = cocModel(s, ctx.inputs.camera->lens, e.height);
+    if (s.mode == DofMode::Physical) {
+        // r(z) = scale / z + bias is monotonic in 1 / z: its largest size lies at the near plane or at
+        // infinity.
+        const float largest =
+            std::max(std::abs(model.bias), std::abs(model.scale / ctx.inputs.camera->nearPlane + model.bias));
+        if (largest < 0.1f) {
+            const Lens& lens = ctx.inputs.camera->lens;
+            warnOnce(
+                "dof-invisible",
+                fmt::format("dof.enabled: the lens (f/{:g}, {:g} mm, focus {:g}) blurs nothing visibly: its "
+                            "largest circle of confusion is {:.3f} pixels, under a tenth of a pixel at every "
+                            "depth",
+                            lens.fNumber, lens.focalLengthMm, lens.focusDistance, largest));
+        }
+    }
 
     DofParameters p{};
     p.fullSize = glm::vec2(float(e.width), float(e.height));

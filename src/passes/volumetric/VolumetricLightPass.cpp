@@ -136,6 +136,12 @@ void VolumetricLightPass::execute(FrameContext& ctx, FrameResources& resources) 
                  "screen-space rays run instead");
     }
     const bool march = marchesShadowMap(mode, shadowMap != nullptr);
+    if (!march && !(sunOnScreen(*ctx.inputs.camera, *ctx.inputs.sunDirection).fade > 0.0f)) {
+        warnOnce(
+            "volumetric-light-sun-off-screen",
+            "volumetricLight.enabled: the sun is behind the camera or off the screen, so the screen-space "
+            "rays add no light (mode shadowmap with a sun shadow map lights the air without seeing it)");
+    }
     if (march != mLastRanShadowMap) {
         invalidateHistory(); // the other mode's history holds something else
         mLastRanShadowMap = march;
