@@ -335,15 +335,75 @@ std::unique_ptr<Pipeline> makeImagePipeline(const PipelineCreateInfo& createInfo
 }
 
 Settings imageSettings(const ImageOptions& options) {
-    // Photographs get the stills look unless --preset or the settings file names another.
-    Settings settings = resolveSettings(options.settings, Settings::stills());
+    // Photographs get the stills look unless --preset or the settings file names another. An image has no
+    // lighting stage to hand ambient occlusion to, so it multiplies the scene colour unless the settings
+    // say otherwise: resolved over both bases, an ssao.apply the user gave comes out the same.
+    Settings base = Settings::stills();
+    base.ssao.apply = AoApply::Multiply;
+    Settings settings = resolveSettings(options.settings, base);
+    base.ssao.apply = AoApply::Lighting;
+    const bool lightingAsked = resolveSettings(options.settings, base).ssao.apply == AoApply::Lighting &&
+                               settings.ssao.apply == AoApply::Lighting;
     if (options.bitDepth) {
         settings.output.bitDepth = *options.bitDepth;
+    }
+    // Said in the CLI's words; the keys are the pipeline's own, so its host-API wording stays unsaid.
+    if (settings.ssao.enabled && lightingAsked) {
+        warnOnce("ssao.no-lighting",
+                 "ssao.apply=lighting: an image has no lighting stage to hand ambient occlusion to, so none "
+                 "is applied; ssao.apply=multiply (photopic image's default) multiplies the colour by it");
+    }
+    if (settings.contactShadows.enabled) {
+        warnOnce("contactShadows.no-lighting",
+                 "contactShadows.enabled: contact shadows darken a renderer's sun term as it lights the "
+                 "scene, and an image's sun is already in its colour, so photopic image cannot apply them");
     }
     return settings;
 }
 
 namespace {
+
+/// The setting that turns on the effect a data view shows, for the error of a view that could not be made.
+const char* debugViewSwitch(DebugView view) {
+    switch (view) {
+    case DebugView::Ao:
+        return "ssao.enabled=true";
+    case DebugView::Coc:
+        return "dof.enabled=true";
+    case DebugView::Ssr:
+        return "ssr.enabled=true";
+    case DebugView::VelocityTiles:
+        return "motionBlur.enabled=true";
+    case DebugView::VolumetricLight:
+        return "volumetricLight.enabled=true";
+    case DebugView::TaaHistoryWeight:
+    case DebugView::Disocclusion:
+        return "aa.mode=taa";
+    case DebugView::ContactShadows:
+    case DebugView::ContactShadowSteps:
+        return "a host's lighting stage (photopic scene; an image has none)";
+    default:
+        return nullptr;
+    }
+}
+
+/// A debug view the frame cannot make is an error naming what it lacks, not the plain image the pipeline
+/// would show instead.
+void requireDebugViewMade(const Pipeline& pipeline, const Settings& settings, const fs::path& input) {
+    if (settings.debug.view == DebugView::None)
+        return;
+    for (const SkippedPass& skipped : pipeline.status().skipped) {
+        if (skipped.pass != "debug view")
+            continue;
+        std::string missing;
+        for (const std::string& name : skipped.missing)
+            missing += (missing.empty() ? "" : ", ") + name;
+        const char* effect = debugViewSwitch(settings.debug.view);
+        throw InputError(fmt::format(
+            "--debug {}: {} gives the view no {}{}", debugViewNames()[std::size_t(settings.debug.view)],
+            input.string(), missing, effect ? fmt::format(" (it shows what {} makes)", effect) : ""));
+    }
+}
 
 /// The OpenColorIO display/view transform when --ocio-* asks for it, its config and names checked before
 /// any output exists. It makes display images, so every output must be one (PNG, TIFF, JPEG).
@@ -530,7 +590,7 @@ private:
 struct RunFrames {
     std::vector<fs::path> inputs;
     std::vector<std::int64_t> numbers;
-    std::size_t prerolled = 0;   ///< the first `prerolled` inputs are not written
+    std::size_t prerolled = 0;    ///< the first `prerolled` inputs are not written
     std::uint64_t firstIndex = 0; ///< the first input's place in its sequence (Halton jitter)
 };
 
@@ -596,17 +656,31 @@ void trimPrerollAtCut(RunFrames& run, const ExposureTrack& track) {
 
 int runImage(const ImageOptions& options) {
     const std::vector<InputFile> files = expandInputs(options);
+    const AovRequest aovs = aovRequest(options.aovPreset, options.layer, options.aovs);
+    const LensOverride lens = options.lens.empty() ? LensOverride{} : parseLensOverride(options.lens);
     if (options.info) {
         std::vector<fs::path> inputs;
         for (const InputFile& f : files) {
             inputs.push_back(f.path);
         }
-        return runImageInfo(inputs, options.camera);
+        return runImageInfo(inputs, options.camera, aovs, inputFrameNumbers(files));
     }
     if (options.output.empty()) {
         throw InputError("image: an output is required (-o FILE, FOLDER/, PATTERN or -), or --info");
     }
     RunFrames run = runFrames(options, files);
+    // A camera track covers every frame the run reads, preroll included, or nothing runs.
+    const std::optional<CameraTrack> cameras =
+        options.camera.empty() ? std::nullopt : std::optional<CameraTrack>(loadCameraTrack(options.camera));
+    std::map<fs::path, std::int64_t> frameNumbers = inputFrameNumbers(files);
+    frameNumbers.merge(inputFrameNumbers(prerollInputs(options, files, options.preroll)));
+    if (cameras) {
+        for (const fs::path& input : run.inputs) {
+            const auto number = frameNumbers.find(input);
+            (void)cameras->at(number == frameNumbers.end() ? std::nullopt : std::optional(number->second),
+                              input);
+        }
+    }
     const std::optional<ExposureTrack> track = exposureTrackFor(options, run);
     if (track) {
         trimPrerollAtCut(run, *track);
@@ -638,10 +712,12 @@ int runImage(const ImageOptions& options) {
     const int inFlight = options.inFlight > 0 ? options.inFlight : defaultFramesInFlight();
     const int allCores = int(std::max(std::thread::hardware_concurrency(), 1u));
     setExrThreads(options.decodeThreads >= 0 ? options.decodeThreads : inFlight > 1 ? allCores : 0);
-    InputDecoder decoder(options.camera.empty() ? std::nullopt
-                                                : std::optional<CameraJson>(loadCameraJson(options.camera)),
-                         options.jitter == "halton" ? settings.temporal.jitterCycle : 0, options.maxPixels);
+    InputDecoder decoder(cameras, options.jitter == "halton" ? settings.temporal.jitterCycle : 0,
+                         options.maxPixels);
+    decoder.setFrameNumbers(frameNumbers);
+    decoder.setLens(lens);
     decoder.setFirstIndex(run.firstIndex);
+    decoder.setAovs(aovs);
     StageClock clock;
     FrameReader reader(decoder, inputs, framesDecodedAhead(inFlight));
     const DecodedFrame& first = reader.next(); // a bad first input fails before a GL context is made
@@ -725,6 +801,7 @@ int runImage(const ImageOptions& options) {
             writeProcessed();
         }
         const Texture& display = pipeline->execute(frameInputs, time);
+        requireDebugViewMade(*pipeline, settings, inputs[i]);
         if (telemetry) {
             telemetry->take(*pipeline, i, i + 1 == inputs.size());
         }

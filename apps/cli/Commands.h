@@ -55,7 +55,14 @@ struct ImageOptions {
     float fps = 30.0f;
     std::filesystem::path telemetry; ///< CSV, one row per frame; empty: none
     bool info = false; ///< list each input's channels and attributes and what they feed; no rendering
-    std::filesystem::path camera;   ///< camera JSON for EXR files without camera attributes; empty: none
+    std::filesystem::path camera; ///< camera JSON for EXR files without camera attributes; empty: none
+    /// --aovs NAME, --layer NAME, --aov KIND=CHANNELS[:CONVENTIONS] (repeatable): which channels of an EXR
+    /// feed what (io/ExrChannels.h, docs/interop.md); empty: the file's own preset and only layer.
+    std::string aovPreset;
+    std::string layer;
+    std::vector<std::string> aovs;
+    std::string
+        lens; ///< --lens fNumber=..,focus=..,shutter=..: replaces each frame's lens values; empty: none
     std::filesystem::path writeAux; ///< folder for the decoded depth/normals/motion; empty: none
     std::string jitter =
         "attribute"; ///< attribute: the EXR `jitter` attribute when present; halton: Photopic's

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <bitset>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -39,21 +40,41 @@ void viewSpaceNormals(std::vector<float>& normals, const glm::mat4& view) {
     }
 }
 
+/// Camera-space normals made unit length in place; zero or non-finite normals (no surface) become zero.
+void unitNormals(std::vector<float>& normals) {
+    viewSpaceNormals(normals, glm::mat4(1.0f));
+}
+
+/// Radial depth (distance from the camera's centre) -> planar (along the view axis), in place: each pixel
+/// centre's view ray d, scaled to unit depth, is |d| times longer than its depth.
+void planarDepth(std::vector<float>& depth, int width, int height, const Camera& camera) {
+    const glm::mat4 inverse = glm::inverse(camera.projection);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const glm::vec4 ndc(2.0f * (float(x) + 0.5f) / float(width) - 1.0f,
+                                1.0f - 2.0f * (float(y) + 0.5f) / float(height), 0.5f, 1.0f);
+            const glm::vec4 p = inverse * ndc;
+            const glm::vec3 ray = glm::vec3(p) / -p.z; // p.w cancels out: only the direction counts
+            depth[std::size_t(y) * std::size_t(width) + std::size_t(x)] /= glm::length(ray);
+        }
+    }
+}
+
 /// Gives back the storage of the layers `layers` leaves out.
 void freeUnreadLayers(ExrFrameReader::Layers layers, std::vector<float>& depth, std::vector<float>& normals,
-                      std::vector<float>& motion) {
+                      std::vector<float>& motion, std::vector<float>& objectId) {
     for (auto [layer, read] : {std::pair{&depth, layers.depth}, std::pair{&normals, layers.normals},
-                               std::pair{&motion, layers.motion}}) {
+                               std::pair{&motion, layers.motion}, std::pair{&objectId, layers.objectId}}) {
         if (!read)
             *layer = std::vector<float>();
     }
 }
 
-/// Pixels (x right, y down, current minus previous, samples jittered) -> UV (y up), jitter removed, in
-/// place: a jittered sample of the current frame sits at p + j_current, of the previous frame at
+/// Pixels (x right, y down, current minus previous) -> UV (y up), in place. Motion measured between the
+/// frames' jittered samples (`unjitter` = previous jitter - current jitter, else zero) has the jitter taken
+/// out: a jittered sample of the current frame sits at p + j_current, of the previous frame at
 /// p' + j_previous, so the surface's own motion is m - j_current + j_previous.
-void uvMotion(std::vector<float>& motion, int width, int height, glm::vec2 jitter, glm::vec2 previousJitter) {
-    const glm::vec2 unjitter = previousJitter - jitter;
+void uvMotion(std::vector<float>& motion, int width, int height, glm::vec2 unjitter) {
     for (std::size_t i = 0; i + 1 < motion.size(); i += 2) {
         motion[i] = (motion[i] + unjitter.x) / float(width);
         motion[i + 1] = -(motion[i + 1] + unjitter.y) / float(height);
@@ -69,8 +90,42 @@ bool isExr(const fs::path& path) {
 
 } // namespace
 
-InputDecoder::InputDecoder(std::optional<CameraJson> cameraJson, int haltonCycle, std::int64_t maxPixels)
-    : mCameraJson(std::move(cameraJson))
+LensOverride parseLensOverride(const std::string& text) {
+    LensOverride lens;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find(',', start), text.size());
+        const std::string item = text.substr(start, end - start);
+        const std::size_t equals = item.find('=');
+        const std::string key = item.substr(0, equals);
+        float value = 0.0f;
+        const char* first = item.data() + (equals == std::string::npos ? item.size() : equals + 1);
+        const char* last = item.data() + item.size();
+        const auto [ptr, ec] = std::from_chars(first, last, value);
+        if (equals == std::string::npos || ec != std::errc() || ptr != last || !std::isfinite(value))
+            throw InputError(fmt::format(
+                "--lens {}: \"{}\" is not KEY=NUMBER (keys: fNumber, focus, shutter)", text, item));
+        const auto range = [&](float lo, float hi, const char* unit) {
+            if (!(value >= lo && value <= hi) || (key == "focus" && !(value > 0.0f)))
+                throw InputError(fmt::format("--lens {}: {} = {} is outside {}", text, key, value, unit));
+            return value;
+        };
+        if (key == "fNumber")
+            lens.fNumber = range(0.5f, 256.0f, "[0.5, 256]");
+        else if (key == "focus")
+            lens.focusDistance = range(0.0f, 3.0e38f, "(0, inf) scene units");
+        else if (key == "shutter")
+            lens.shutterAngleDeg = range(0.0f, 360.0f, "[0, 360] degrees");
+        else
+            throw InputError(
+                fmt::format("--lens {}: unknown key \"{}\" (keys: fNumber, focus, shutter)", text, key));
+        start = end + 1;
+    }
+    return lens;
+}
+
+InputDecoder::InputDecoder(std::optional<CameraTrack> cameras, int haltonCycle, std::int64_t maxPixels)
+    : mCameras(std::move(cameras))
     , mHaltonCycle(haltonCycle)
     , mMaxPixels(maxPixels) {}
 
@@ -82,9 +137,10 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
         } catch (const IoError& e) {
             throw InputError(e.what());
         }
-        if (mCameraJson) {
-            out.camera = mCameraJson->camera(out.color.width, out.color.height);
+        out.camera = trackCamera(path, out.color.width, out.color.height, out.sunDirection);
+        if (out.camera) {
             out.camera->cut = mFirst;
+            applyLens(*out.camera);
         }
         mPrevious.reset();
         mFirst = false;
@@ -94,7 +150,7 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
     const ExrFrameReader::Layers layers = layersRead();
     mReader.setLayers(layers);
     // Storage kept for a layer no longer read (the frames decoded before readLayers() had it) goes back.
-    freeUnreadLayers(layers, frame.depth, frame.normals, frame.motion);
+    freeUnreadLayers(layers, frame.depth, frame.normals, frame.motion, frame.objectId);
     try {
         mReader.read(path, frame, {.maxPixels = mMaxPixels});
     } catch (const IoError& e) {
@@ -118,13 +174,35 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
     } catch (const std::invalid_argument& e) {
         throw InputError(fmt::format("\"{}\": bad camera attributes: {}", path.string(), e.what()));
     }
-    if (!out.camera && mCameraJson)
-        out.camera = mCameraJson->camera(width, height);
-    if (out.camera)
+    std::optional<glm::vec3> trackSun;
+    if (!out.camera)
+        out.camera = trackCamera(path, width, height, trackSun);
+    else
+        mPreviousTrackViewProjection.reset();
+    if (out.camera) {
         out.camera->cut = mFirst;
+        applyLens(*out.camera);
+    }
 
+    const AovConventions& conventions = frame.aovs.conventions;
     out.depth = std::move(frame.depth);
-    if (!frame.normals.empty()) {
+    if (!out.depth.empty() && conventions.depth == AovConventions::Depth::Radial) {
+        if (out.camera) {
+            planarDepth(out.depth, width, height, *out.camera);
+        } else {
+            warnOnce(
+                "cli.radialDepthWithoutCamera",
+                fmt::format("{}: depth skipped: turning radial depth planar needs a camera (worldToCamera/"
+                            "worldToNDC attributes or --camera)",
+                            path.string()));
+            out.depth.clear();
+        }
+    }
+    out.objectId = std::move(frame.objectId);
+    if (!frame.normals.empty() && conventions.normals == AovConventions::Normals::Camera) {
+        out.normals = std::move(frame.normals);
+        unitNormals(out.normals);
+    } else if (!frame.normals.empty()) {
         if (out.camera) {
             out.normals = std::move(frame.normals);
             viewSpaceNormals(out.normals, out.camera->view);
@@ -152,11 +230,15 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
                             "direction",
                             path.string(), sun->x, sun->y, sun->z));
         out.sunDirection = sun;
+    } else {
+        out.sunDirection = trackSun;
     }
     if (!frame.motion.empty()) {
         out.motion = std::move(frame.motion);
-        uvMotion(out.motion, width, height, jitter.value_or(glm::vec2(0.0f)),
-                 mPreviousJitter.value_or(glm::vec2(0.0f)));
+        const glm::vec2 unjitter = conventions.motionJittered ? mPreviousJitter.value_or(glm::vec2(0.0f)) -
+                                                                    jitter.value_or(glm::vec2(0.0f))
+                                                              : glm::vec2(0.0f);
+        uvMotion(out.motion, width, height, unjitter);
     }
     out.color = std::move(frame.color);
     out.colorHalves = std::move(frame.colorHalves);
@@ -165,6 +247,32 @@ DecodedFrame InputDecoder::decode(const fs::path& path) {
     ++mIndex;
     mFirst = false;
     return out;
+}
+
+void InputDecoder::applyLens(Camera& camera) const {
+    if (mLens.fNumber)
+        camera.lens.fNumber = *mLens.fNumber;
+    if (mLens.focusDistance)
+        camera.lens.focusDistance = *mLens.focusDistance;
+    if (mLens.shutterAngleDeg)
+        camera.lens.shutterAngleDeg = *mLens.shutterAngleDeg;
+}
+
+std::optional<Camera> InputDecoder::trackCamera(const fs::path& path, int width, int height,
+                                                std::optional<glm::vec3>& sun) {
+    if (!mCameras) {
+        mPreviousTrackViewProjection.reset();
+        return std::nullopt;
+    }
+    const auto number = mFrameNumbers.find(path);
+    const CameraJson& json =
+        mCameras->at(number == mFrameNumbers.end() ? std::nullopt : std::optional(number->second), path);
+    Camera camera = json.camera(width, height);
+    if (mPreviousTrackViewProjection)
+        camera.prevViewProjection = *mPreviousTrackViewProjection;
+    mPreviousTrackViewProjection = camera.viewProjection();
+    sun = json.sunDirection;
+    return camera;
 }
 
 void InputDecoder::readLayers(ExrFrameReader::Layers layers) {
@@ -178,7 +286,7 @@ ExrFrameReader::Layers InputDecoder::layersRead() {
 }
 
 void InputDecoder::leaveOutUnread(DecodedFrame& frame) {
-    freeUnreadLayers(layersRead(), frame.depth, frame.normals, frame.motion);
+    freeUnreadLayers(layersRead(), frame.depth, frame.normals, frame.motion, frame.objectId);
 }
 
 void InputDecoder::recycle(DecodedFrame&& frame) {
@@ -192,6 +300,8 @@ void InputDecoder::recycle(DecodedFrame&& frame) {
         mFrame.normals = std::move(frame.normals);
     if (frame.motion.capacity() > mFrame.motion.capacity())
         mFrame.motion = std::move(frame.motion);
+    if (frame.objectId.capacity() > mFrame.objectId.capacity())
+        mFrame.objectId = std::move(frame.objectId);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -212,6 +322,7 @@ struct SlotLayout {
     std::size_t depth = 0;
     std::size_t normals = 0;
     std::size_t motion = 0;
+    std::size_t objectId = 0;
     std::size_t bytes = 0;
 };
 
@@ -229,6 +340,8 @@ SlotLayout slotLayout(const DecodedFrame& frame, bool halfColor) {
         place(layout.normals, 4 * sizeof(std::uint16_t));
     if (!frame.motion.empty())
         place(layout.motion, 2 * sizeof(std::uint16_t));
+    if (!frame.objectId.empty())
+        place(layout.objectId, sizeof(std::uint32_t));
     return layout;
 }
 
@@ -267,6 +380,20 @@ void writeHalvesAsFloatRows(std::byte* out, const std::uint16_t* halves, Extent 
         // Widened in cached memory, then copied: the slot may be write-combined.
         halfToFloat(halves + std::size_t(extent.height - 1 - y) * row, scratch.data(), row);
         std::memcpy(out + std::size_t(y) * row * sizeof(float), scratch.data(), row * sizeof(float));
+    }
+}
+
+/// Object ids stored as floats (Cycles' IndexOB) as unsigned integers, rounded; negative or non-finite: 0.
+void writeIdRows(std::byte* out, const float* ids, Extent extent) {
+    const std::size_t width = std::size_t(extent.width);
+    for (int y = 0; y < extent.height; ++y) {
+        const float* row = ids + std::size_t(extent.height - 1 - y) * width;
+        for (std::size_t x = 0; x < width; ++x) {
+            const float id = row[x];
+            const std::uint32_t value =
+                id >= 0.5f && id < 4.0e9f ? std::uint32_t(std::lround(double(id))) : 0u;
+            std::memcpy(out + (std::size_t(y) * width + x) * sizeof(value), &value, sizeof(value));
+        }
     }
 }
 
@@ -330,11 +457,17 @@ FrameInputs InputTextures::upload(const DecodedFrame& frame, bool halfTexture) {
         mRing.upload(mMotion, layout.motion, GL_RG, GL_HALF_FLOAT);
         inputs.motion = &mMotion;
     }
+    if (!frame.objectId.empty()) {
+        ensure(mObjectId, extent, GL_R32UI, "cli.input.objectId");
+        writeIdRows(slot + layout.objectId, frame.objectId.data(), extent);
+        mRing.upload(mObjectId, layout.objectId, GL_RED_INTEGER, GL_UNSIGNED_INT);
+        inputs.objectId = &mObjectId;
+    }
     mRing.end();
     // A layer this frame lacks gives its texture back.
     for (auto [texture, present] :
          {std::pair{&mDepth, !frame.depth.empty()}, std::pair{&mNormals, !frame.normals.empty()},
-          std::pair{&mMotion, !frame.motion.empty()}}) {
+          std::pair{&mMotion, !frame.motion.empty()}, std::pair{&mObjectId, !frame.objectId.empty()}}) {
         if (!present && texture->valid())
             *texture = Texture();
     }
@@ -351,21 +484,63 @@ FrameInputs InputTextures::upload(const DecodedFrame& frame, bool halfTexture) {
 
 namespace {
 
-std::string channelUse(const std::string& name) {
-    if (name == "R" || name == "G" || name == "B" || name == "A" || name == "Y" || name == "RY" ||
-        name == "BY")
+std::string motionUse(const AovConventions& c) {
+    using C = AovConventions;
+    const char* units = c.motionUnits == C::MotionUnits::Pixels ? "pixels"
+                        : c.motionUnits == C::MotionUnits::Ndc  ? "NDC units"
+                                                                : "UV units";
+    const char* sense = c.motionSense == C::MotionSense::CurrentMinusPrevious   ? "current minus previous"
+                        : c.motionSense == C::MotionSense::PreviousMinusCurrent ? "previous minus current"
+                        : c.motionSense == C::MotionSense::NextMinusCurrent
+                            ? "next minus current, read as constant velocity"
+                            : "current minus next, read as constant velocity";
+    return fmt::format("motion ({}, {}, y {}, {}; turned into UV, y up, current minus previous{})", units,
+                       sense, c.motionYUp ? "up" : "down",
+                       c.motionJittered ? "between jittered samples" : "unjittered",
+                       c.motionJittered ? ", jitter removed" : "");
+}
+
+/// What `name` feeds under `aovs`, in words.
+std::string channelUse(const std::string& name, const AovChannels& aovs) {
+    const std::optional<Aov> aov = aovs.feeds(name);
+    if (!aov) {
+        if (name == "RY" || name == "BY")
+            return aovs.has(Aov::Color) && aovs.of(Aov::Color)[0] == "Y" ? "colour (chroma)" : "not used";
+        // The other pair of 4-channel motion.
+        const std::vector<std::string>& motion = aovs.of(Aov::Motion);
+        if (!motion.empty() && name.size() == motion[0].size() &&
+            name.compare(0, name.rfind('.') + 1, motion[0], 0, motion[0].rfind('.') + 1) == 0 &&
+            name.rfind('.') != std::string::npos)
+            return "not used (motion's other pair: --aov motion=:pair=" +
+                   std::string(aovs.conventions.motionPair == 2 ? "1" : "2") + " reads it)";
+        return "not used";
+    }
+    const AovConventions& c = aovs.conventions;
+    switch (*aov) {
+    case Aov::Color:
         return "colour";
-    if (name == "Z" || name == "depth.Z")
-        return "depth (linear view depth)";
-    if (name.starts_with("N.") || name.starts_with("normal."))
-        return "normals (world space, turned into view space with the camera)";
-    if (name == "motion.X" || name == "motion.Y")
-        return "motion (pixels, turned into UV, y up, current minus previous, jitter removed)";
+    case Aov::Depth:
+        return c.depth == AovConventions::Depth::Planar
+                   ? "depth (linear view depth, planar)"
+                   : "depth (linear view depth, radial: made planar with the camera)";
+    case Aov::Normals:
+        return c.normals == AovConventions::Normals::Camera ? "normals (camera space)"
+               : c.normals == AovConventions::Normals::WorldZUp
+                   ? "normals (world space, Z up: turned Y up, then into view space with the camera)"
+                   : "normals (world space, turned into view space with the camera)";
+    case Aov::Motion:
+        return motionUse(c);
+    case Aov::Ao:
+        return "ambient occlusion: not read (Photopic computes its own; --debug ao writes it)";
+    case Aov::ObjectId:
+        return "object ids (contactShadows.mask)";
+    }
     return "not used";
 }
 
 std::string attributeUse(const std::string& name) {
     static const std::vector<std::pair<std::string, std::string>> uses{
+        {"BlenderMultiChannel", "the blender preset, unless --aovs says otherwise"},
         {"worldToCamera", "camera view"},
         {"worldToNDC", "camera projection"},
         {"nearClipPlane", "camera near plane"},
@@ -377,7 +552,7 @@ std::string attributeUse(const std::string& name) {
         {"pinholeFocalLength", "lens focal length"},
         {"sensorOverallDimensions", "lens sensor height"},
         {"shutterAngle", "lens shutter angle"},
-        {"jitter", "motion unjitter"},
+        {"jitter", "sample jitter (TAA; the motion unjitter with --aov motion=:jittered)"},
         {"sunDirection", "sun direction (contact shadows, volumetric light)"},
         {"dataWindow", "pixels read"},
         {"displayWindow", "NDC frame of the camera"},
@@ -392,16 +567,40 @@ std::string attributeUse(const std::string& name) {
     return "not used";
 }
 
-void printInfo(const fs::path& path, const std::optional<CameraJson>& cameraJson) {
-    const ExrFrame frame = readExrFrame(path);
+void printInfo(const fs::path& path, const std::optional<CameraTrack>& cameras,
+               std::optional<std::int64_t> number, const AovRequest& request) {
+    const ExrFrame frame = readExrFrame(path, {}, request);
     std::printf("%s: %dx%d", path.string().c_str(), frame.color.width, frame.color.height);
     if (frame.displaySize != glm::ivec2(frame.color.width, frame.color.height) ||
         frame.dataOrigin != glm::ivec2(0))
         std::printf(" (data window at %d,%d of a %dx%d display window)", frame.dataOrigin.x,
                     frame.dataOrigin.y, frame.displaySize.x, frame.displaySize.y);
-    std::printf("\nchannels:\n");
-    for (const auto& name : frame.channels)
-        std::printf("  %s -> %s\n", name.c_str(), channelUse(name).c_str());
+    const AovChannels& aovs = frame.aovs;
+    std::string layers;
+    for (const std::string& layer : aovLayers(frame.channels, aovs.preset))
+        layers += (layers.empty() ? "" : ", ") + (layer.empty() ? std::string("(unprefixed)") : layer);
+    std::printf("\nchannels: the %s preset%s, layer %s (layers: %s)\n", aovPresetName(aovs.preset),
+                request.preset ? " (--aovs)" : " (the file's)",
+                aovs.layer.empty() ? "(unprefixed)" : aovs.layer.c_str(),
+                layers.empty() ? "none" : layers.c_str());
+    if (!frame.parts.empty()) {
+        std::string parts;
+        for (const std::string& part : frame.parts)
+            parts += (parts.empty() ? "" : ", ") + part;
+        std::printf("parts: %zu (%s); another part's channels are named PART.CHANNEL\n", frame.parts.size(),
+                    parts.c_str());
+    }
+    std::vector<std::string> unused;
+    for (const auto& name : frame.channels) {
+        const std::string use = channelUse(name, aovs);
+        std::printf("  %s -> %s\n", name.c_str(), use.c_str());
+        if (use.starts_with("not used"))
+            unused.push_back(name);
+    }
+    std::string unusedList;
+    for (const std::string& name : unused)
+        unusedList += (unusedList.empty() ? "" : ", ") + name;
+    std::printf("unused channels: %s\n", unused.empty() ? "none" : unusedList.c_str());
     std::printf("attributes:\n");
     for (const auto& attribute : frame.attributes) {
         const std::string name = attribute.substr(0, attribute.find(' '));
@@ -414,8 +613,8 @@ void printInfo(const fs::path& path, const std::optional<CameraJson>& cameraJson
         throw InputError(fmt::format("\"{}\": bad camera attributes: {}", path.string(), e.what()));
     }
     const char* source = camera ? "file attributes" : "--camera";
-    if (!camera && cameraJson)
-        camera = cameraJson->camera(frame.color.width, frame.color.height);
+    if (!camera && cameras)
+        camera = cameras->at(number, path).camera(frame.color.width, frame.color.height);
     if (!camera) {
         std::printf("camera: none (no worldToCamera/worldToNDC; normals will be skipped)\n");
         return;
@@ -431,9 +630,25 @@ void printInfo(const fs::path& path, const std::optional<CameraJson>& cameraJson
 
 } // namespace
 
-int runImageInfo(const std::vector<fs::path>& inputs, const fs::path& cameraJsonPath) {
-    const std::optional<CameraJson> cameraJson =
-        cameraJsonPath.empty() ? std::nullopt : std::optional<CameraJson>(loadCameraJson(cameraJsonPath));
+AovRequest aovRequest(const std::string& preset, const std::string& layer,
+                      const std::vector<std::string>& overrides) {
+    AovRequest request;
+    try {
+        if (!preset.empty())
+            request.preset = parseAovPreset(preset);
+        request.layer = layer;
+        for (const std::string& text : overrides)
+            request.overrides.push_back(parseAovOverride(text));
+    } catch (const AovError& e) {
+        throw InputError(e.what());
+    }
+    return request;
+}
+
+int runImageInfo(const std::vector<fs::path>& inputs, const fs::path& cameraJsonPath, const AovRequest& aovs,
+                 const std::map<fs::path, std::int64_t>& numbers) {
+    const std::optional<CameraTrack> cameras =
+        cameraJsonPath.empty() ? std::nullopt : std::optional<CameraTrack>(loadCameraTrack(cameraJsonPath));
     for (const auto& path : inputs) {
         if (!isExr(path)) {
             try {
@@ -446,7 +661,9 @@ int runImageInfo(const std::vector<fs::path>& inputs, const fs::path& cameraJson
             continue;
         }
         try {
-            printInfo(path, cameraJson);
+            const auto number = numbers.find(path);
+            printInfo(path, cameras, number == numbers.end() ? std::nullopt : std::optional(number->second),
+                      aovs);
         } catch (const IoError& e) {
             throw InputError(e.what());
         }
@@ -469,8 +686,8 @@ fs::path writeAux(const fs::path& folder, const fs::path& input, const DecodedFr
 }
 
 void readOnlyLayersRead(InputDecoder& decoder, Pipeline& pipeline, const DecodedFrame& first) {
-    constexpr Resource kOptional[] = {Resource::Depth, Resource::Normals, Resource::Motion, Resource::Camera,
-                                      Resource::SunDirection};
+    constexpr Resource kOptional[] = {Resource::Depth,  Resource::Normals,      Resource::Motion,
+                                      Resource::Camera, Resource::SunDirection, Resource::ObjectId};
     std::bitset<kResourceCount> read;
     for (unsigned mask = 0; mask < 1u << std::size(kOptional); ++mask) {
         std::bitset<kResourceCount> inputs;
@@ -480,11 +697,14 @@ void readOnlyLayersRead(InputDecoder& decoder, Pipeline& pipeline, const Decoded
     }
     const ExrFrameReader::Layers layers{.depth = read[std::size_t(Resource::Depth)],
                                         .normals = read[std::size_t(Resource::Normals)],
-                                        .motion = read[std::size_t(Resource::Motion)]};
+                                        .motion = read[std::size_t(Resource::Motion)],
+                                        .objectId = read[std::size_t(Resource::ObjectId)]};
     std::string unread;
-    for (const auto& [name, had, kept] : {std::tuple{"depth", !first.depth.empty(), layers.depth},
-                                          std::tuple{"normals", !first.normals.empty(), layers.normals},
-                                          std::tuple{"motion", !first.motion.empty(), layers.motion}}) {
+    for (const auto& [name, had, kept] :
+         {std::tuple{"depth", !first.depth.empty(), layers.depth},
+          std::tuple{"normals", !first.normals.empty(), layers.normals},
+          std::tuple{"motion", !first.motion.empty(), layers.motion},
+          std::tuple{"object ids", !first.objectId.empty(), layers.objectId}}) {
         if (had && !kept)
             unread += std::string(unread.empty() ? "" : ", ") + name;
     }

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -30,6 +31,7 @@ struct DecodedFrame {
     std::vector<float> depth;   ///< width*height linear view depth (inf or >= far: background); or empty
     std::vector<float> normals; ///< width*height*3 view-space unit normals; or empty
     std::vector<float> motion; ///< width*height*2 UV (y up), current minus previous, jitter removed; or empty
+    std::vector<float> objectId; ///< width*height object ids (integers as floats); or empty
     std::optional<Camera> camera;
     /// World space, towards the sun: the EXR's `sunDirection` attribute (finite, non-zero), else none.
     std::optional<glm::vec3> sunDirection;
@@ -42,6 +44,16 @@ struct DecodedFrame {
     [[nodiscard]] int height() const { return halfColor() ? colorHalves.height : color.height; }
 };
 
+/// `--lens fNumber=N,focus=D,shutter=DEG`: lens values that replace the file's (or the camera track's).
+struct LensOverride {
+    std::optional<float> fNumber;         ///< [0.5, 256]
+    std::optional<float> focusDistance;   ///< scene units, > 0
+    std::optional<float> shutterAngleDeg; ///< [0, 360]
+    [[nodiscard]] bool empty() const { return !fNumber && !focusDistance && !shutterAngleDeg; }
+};
+/// Parses --lens text; throws InputError naming the key or value.
+[[nodiscard]] LensOverride parseLensOverride(const std::string& text);
+
 /// Decodes a sequence in order, remembering the previous frame's camera attributes (prevViewProjection and
 /// the previous jitter). Layers that need a camera the frame lacks are dropped with one warning per run.
 class InputDecoder {
@@ -49,11 +61,20 @@ public:
     /// `haltonCycle` > 0: frames without a `jitter` attribute were rendered with Halton(2, 3) jitter of that
     /// cycle, from index 1 for the first frame (the jitter Pipeline::beginFrame hands out).
     /// `maxPixels`: larger inputs are refused before they are decoded.
-    explicit InputDecoder(std::optional<CameraJson> cameraJson = std::nullopt, int haltonCycle = 0,
+    explicit InputDecoder(std::optional<CameraTrack> cameras = std::nullopt, int haltonCycle = 0,
                           std::int64_t maxPixels = kDefaultMaxPixels);
     /// The Halton index of the first frame decoded: its place in its sequence (a chunk of a sequence
     /// starts where the chunk starts, so its frames get the single run's jitter). 0 by default.
     void setFirstIndex(std::uint64_t index) { mIndex = index; }
+    /// Each input's frame number, by which a camera track (--camera) is looked up: the pattern's, else the
+    /// last number in the file name. A file not here has none.
+    void setFrameNumbers(std::map<std::filesystem::path, std::int64_t> numbers) {
+        mFrameNumbers = std::move(numbers);
+    }
+    /// Lens values that replace each frame's camera's (--lens).
+    void setLens(LensOverride lens) { mLens = lens; }
+    /// Which channels feed what (--aovs, --layer, --aov), for every file decoded after this call.
+    void setAovs(AovRequest request) { mReader.setAovs(std::move(request)); }
     /// Throws InputError naming the file for unreadable files and bad camera attributes.
     [[nodiscard]] DecodedFrame decode(const std::filesystem::path& path);
     /// Gives back a frame decode() returned and the caller is done with: the next decode() reads into its
@@ -74,7 +95,17 @@ private:
     /// The storage decode() reads into; its layers move out to the caller (normals and motion converted
     /// in place) and come back through recycle().
     ExrFrame mFrame;
-    std::optional<CameraJson> mCameraJson;
+    /// `camera`'s lens with --lens's values.
+    void applyLens(Camera& camera) const;
+    /// The camera for `path` from the track, its prevViewProjection the previous frame's track camera, and
+    /// the track's sun direction; nothing without a track.
+    [[nodiscard]] std::optional<Camera> trackCamera(const std::filesystem::path& path, int width, int height,
+                                                    std::optional<glm::vec3>& sun);
+
+    std::optional<CameraTrack> mCameras;
+    LensOverride mLens;
+    std::map<std::filesystem::path, std::int64_t> mFrameNumbers;
+    std::optional<glm::mat4> mPreviousTrackViewProjection; ///< the last frame's, when it came from the track
     std::optional<ExrCameraAttributes> mPrevious;
     std::optional<glm::vec2> mPreviousJitter; ///< pixels, x right, y down
     int mHaltonCycle = 0;
@@ -111,13 +142,20 @@ private:
     Texture mDepth;
     Texture mNormals;
     Texture mMotion;
+    Texture mObjectId;
     Camera mCamera;
     std::vector<std::uint16_t> mHalfRow; ///< a row of normals as halves, before they are spread to four
     std::vector<float> mFloatRow;        ///< a row of half colour widened, for a float texture
 };
 
-/// `photopic image --info`: the channels and attributes of each input and what each feeds.
-int runImageInfo(const std::vector<std::filesystem::path>& inputs, const std::filesystem::path& cameraJson);
+/// --aovs, --layer and --aov as the reader takes them; throws InputError naming a bad value.
+[[nodiscard]] AovRequest aovRequest(const std::string& preset, const std::string& layer,
+                                    const std::vector<std::string>& overrides);
+
+/// `photopic image --info`: the channels and attributes of each input and what each feeds under `aovs`.
+int runImageInfo(const std::vector<std::filesystem::path>& inputs, const std::filesystem::path& cameraJson,
+                 const AovRequest& aovs = {},
+                 const std::map<std::filesystem::path, std::int64_t>& numbers = {});
 
 /// `--write-aux DIR`: DIR/<input stem>.aux.exr with colour, Z (linear view depth), N.X/Y/Z (view space),
 /// motion.X/Y (UV, y up) and the camera's attributes, for the layers the frame has. Returns the file's path.

@@ -150,6 +150,15 @@ std::optional<std::int64_t> numberInName(const fs::path& path) {
 
 } // namespace
 
+std::map<fs::path, std::int64_t> inputFrameNumbers(const std::vector<InputFile>& inputs) {
+    std::map<fs::path, std::int64_t> numbers;
+    for (const InputFile& in : inputs) {
+        if (const std::optional<std::int64_t> n = in.frame ? in.frame : numberInName(in.path))
+            numbers.emplace(in.path, *n);
+    }
+    return numbers;
+}
+
 std::vector<std::int64_t> outputFrameNumbers(const std::vector<InputFile>& inputs) {
     std::vector<std::int64_t> numbers;
     for (const InputFile& in : inputs) {

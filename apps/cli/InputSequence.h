@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -16,7 +17,7 @@ namespace photopic::cli {
 
 /// The frame numbers missing between the first and the last of a sequence in ascending order.
 struct FrameGaps {
-    std::int64_t missing = 0;                ///< how many
+    std::int64_t missing = 0;                 ///< how many
     std::optional<std::int64_t> firstMissing; ///< the first of them
 };
 
@@ -54,6 +55,11 @@ struct InputFile {
 /// numbered by its position from 0. It is also the frame's number in time (FrameTime::frameIndex, the
 /// telemetry's frame column), so a frame renders the same whichever chunk of its sequence it is run in.
 [[nodiscard]] std::vector<std::int64_t> outputFrameNumbers(const std::vector<InputFile>& inputs);
+
+/// Each input's own frame number, where it has one (a pattern's, else the last run of digits in its name):
+/// what a camera track (--camera) is keyed by.
+[[nodiscard]] std::map<std::filesystem::path, std::int64_t>
+inputFrameNumbers(const std::vector<InputFile>& inputs);
 
 /// The lowest frame that exists of the inputs' one frame-numbered pattern (where its sequence starts,
 /// whatever

@@ -77,9 +77,11 @@ int MeterCommand::run() {
     AtomicFileWriter file = openCommandOutput("meter", mOptions.output);
     file.write(meterCsvHeader(meteringDescription(ae), histogram));
 
-    InputDecoder decoder(mOptions.camera.empty() ? std::nullopt
-                                                 : std::optional<CameraJson>(loadCameraJson(mOptions.camera)),
-                         0, mOptions.maxPixels);
+    InputDecoder decoder(
+        mOptions.camera.empty() ? std::nullopt : std::optional<CameraTrack>(loadCameraTrack(mOptions.camera)),
+        0, mOptions.maxPixels);
+    decoder.setFrameNumbers(inputFrameNumbers(files));
+    decoder.setAovs(aovRequest(mOptions.aovPreset, mOptions.layer, mOptions.aovs));
     setExrThreads(mOptions.decodeThreads >= 0 ? mOptions.decodeThreads : 0);
     FrameReader reader(decoder, inputs, 1);
     const DecodedFrame& first = reader.next();

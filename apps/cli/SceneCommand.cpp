@@ -146,21 +146,14 @@ ExrFrame truthExr(testbed::TruthKind kind, const ImageF& image, const Camera& ca
 
 /// `--truth KIND`: the testbed's ray-traced references for frames [start, start + frames).
 /// A 3D scene's frame as `photopic image` reads it: scene-referred colour, depth, normals, motion and camera.
-/// A jittered frame carries its sample offset, so TAA over the files knows the frames were jittered, and the
-/// motion of its jittered samples, as a renderer writes it (the reader takes the jitter out again). Moving
+/// A jittered frame carries its sample offset, so TAA over the files knows the frames were jittered; its
+/// motion is the surfaces' own (between unjittered positions), as renderers and engines write it. Moving
 /// the image by j (x right, y up) samples it at the pixel centre - j: in the file's convention (y down) that
-/// offset is (-j.x, j.y). `previousJitter` is the last file's, and becomes this one's.
-ExrFrame sceneExr(const FrameInputs& inputs, glm::vec2 pipelineJitter, glm::vec2& previousJitter) {
+/// offset is (-j.x, j.y).
+ExrFrame sceneExr(const FrameInputs& inputs, glm::vec2 pipelineJitter) {
     ExrFrame exr = exrFrameFromInputs(inputs);
-    if (pipelineJitter != glm::vec2(0.0f)) {
-        const glm::vec2 jitter(-pipelineJitter.x, pipelineJitter.y);
-        for (std::size_t m = 0; m + 1 < exr.motion.size(); m += 2) {
-            exr.motion[m] += jitter.x - previousJitter.x;
-            exr.motion[m + 1] += jitter.y - previousJitter.y;
-        }
-        exr.camera.jitter = jitter;
-        previousJitter = jitter;
-    }
+    if (pipelineJitter != glm::vec2(0.0f))
+        exr.camera.jitter = glm::vec2(-pipelineJitter.x, pipelineJitter.y);
     return exr;
 }
 
@@ -308,7 +301,6 @@ int runScene(const SceneOptions& options) {
 
     Pipeline pipeline({.settings = resolved, .forceLdr = options.forceLdr, .keepTelemetryHistory = true});
     const int every = std::max(1, options.every);
-    glm::vec2 previousJitter(0.0f); ///< the last scene EXR's jitter attribute (pixels, y down)
     Progress progress("scene " + options.name, std::size_t(options.frames));
     for (int i = 0; i < options.frames; ++i) {
         throwIfInterrupted();
@@ -319,7 +311,7 @@ int runScene(const SceneOptions& options) {
         if (i % every == 0) {
             if (inputs.camera != nullptr) {
                 const fs::path path = outDir / fmt::format("scene_{:04d}.exr", i / every);
-                writeExrFrame(path, sceneExr(inputs, pipeline.jitter(), previousJitter));
+                writeExrFrame(path, sceneExr(inputs, pipeline.jitter()));
                 outputs.wrote(path);
             }
             if (reading) {

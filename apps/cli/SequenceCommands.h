@@ -60,7 +60,7 @@ struct FarmOptions {
     float fps = 30.0f;
     SettingsSources settings;
     std::vector<std::int64_t> cuts;
-    std::string photopic;         ///< the command the jobs run; empty: this program's own path
+    std::string photopic;                   ///< the command the jobs run; empty: this program's own path
     std::vector<std::string> sbatchOptions; ///< --sbatch-option, added to every job (-p, --account, ...)
     std::vector<std::string> imageOptions;  ///< --image-option, added to each render's command line
     bool submit = false;
@@ -68,7 +68,7 @@ struct FarmOptions {
 
 /// Frames a farm template renders before each chunk's first when nothing says otherwise (docs/farm.md has
 /// the residual against the single run for 0, 8, 16 and 32).
-inline constexpr int kDefaultFarmPreroll = 16;
+inline constexpr int kDefaultFarmPreroll = 24;
 
 /// `photopic farm PATTERN -o OUT --chunk N --jobs DIR [--submit]`.
 class FarmCommand {

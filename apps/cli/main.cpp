@@ -165,6 +165,29 @@ void addDisplayEncodingOptions(CLI::App* cmd, std::optional<int>& bitDepth, int&
         ->capture_default_str();
 }
 
+/// --aovs, --layer and --aov: which channels of an EXR feed what (docs/interop.md).
+void addChannelOptions(CLI::App* cmd, std::string& preset, std::string& layer,
+                       std::vector<std::string>& aovs) {
+    cmd->add_option(
+           "--aovs", preset,
+           "the channel names and conventions of a renderer: photopic (R G B A, Z, N.*, motion.*) or "
+           "blender (<layer>.Combined, .Depth, .Normal, .Vector, .AO, .IndexOB); default: blender "
+           "for files that carry Blender's BlenderMultiChannel attribute, else photopic")
+        ->check(CLI::IsMember({"photopic", "blender"}));
+    cmd->add_option("--layer", layer,
+                    "the layer to read (Blender's view layer, or P of P.R/P.G/P.B); default: the only one, "
+                    "or the unprefixed channels; several and none chosen is an error listing them");
+    cmd->add_option("--aov", aovs,
+                    "KIND=CHANNELS[:CONVENTIONS], repeatable: feed KIND (color, depth, normals, motion, ao, "
+                    "objectid) from these channels (full names, names in the layer, or a prefix its "
+                    "components complete; 'none' reads none), in these conventions (depth: planar|radial; "
+                    "normals: world|world-zup|camera; motion: pixels|ndc|uv, current-minus-previous|"
+                    "previous-minus-current|next-minus-current, y-up|y-down, jittered|unjittered, "
+                    "pair=1|pair=2), e.g. --aov depth=P.Z:radial --aov motion=:jittered")
+        ->take_all()
+        ->allow_extra_args(false);
+}
+
 void addImageCommand(CLI::App& app, Cli& c) {
     c.image = app.add_subcommand("image", "process HDR images (EXR, HDR, PNG) into PNG, TIFF or JPEG "
                                           "(display) or EXR (scene-referred, before tone mapping)");
@@ -220,8 +243,13 @@ void addImageCommand(CLI::App& app, Cli& c) {
         "camera); no rendering");
     c.image
         ->add_option("--camera", c.imageOptions.camera,
-                     "camera JSON for EXR inputs without worldToCamera/worldToNDC (docs/camera-json.md)")
+                     "camera JSON for inputs without worldToCamera/worldToNDC: one camera, or a track of one "
+                     "per frame number ({\"frames\": {\"1001\": {...}}}, as tools/blender/photopic_camera.py "
+                     "writes it); a frame the track lacks is an error (docs/camera-json.md)")
         ->check(CLI::ExistingFile);
+    c.image->add_option("--lens", c.imageOptions.lens,
+                        "lens values that replace the file's or the camera's: fNumber=N,focus=D,shutter=DEG "
+                        "(any of them), e.g. --lens fNumber=2.8,focus=3.5");
     c.image
         ->add_option("--write-aux", c.imageOptions.writeAux,
                      "write each frame's decoded depth (linear view), normals (view space) and motion (UV, "
@@ -233,6 +261,7 @@ void addImageCommand(CLI::App& app, Cli& c) {
                      "EXR `jitter` attribute, pixels, x right, y down; none when absent) or halton "
                      "(Photopic's Halton(2,3) from index 1, as Pipeline::beginFrame hands it out)")
         ->check(CLI::IsMember({"attribute", "halton"}));
+    addChannelOptions(c.image, c.imageOptions.aovPreset, c.imageOptions.layer, c.imageOptions.aovs);
     addSettingsOptions(c.image, c.imageOptions.settings, "stills");
     addOcioOptions(c.image, c.imageOptions.ocio);
     addMaxPixelsOption(c.image, c.imageOptions.maxPixels);
@@ -269,12 +298,13 @@ void addImageCommand(CLI::App& app, Cli& c) {
         "  photopic image in.exr -o out.png --preset realtime    the scenes' soft glow instead of stills\n"
         "  photopic image f*.exr -o dir/ --fps 24 --telemetry t.csv --set autoExposure.enabled=true\n"
         "  photopic image shot/f%04d.exr --frames 1001-1100 -o out/f%04d.png -n\n"
-        "  photopic image shot/f%04d.exr --frames 1101-1200 --preroll 16 --exposure-track exposure.csv -o "
+        "  photopic image shot/f%04d.exr --frames 1101-1200 --preroll 24 --exposure-track exposure.csv -o "
         "out/f%04d.png\n"
         "  photopic image in.exr -o out.tif --bit-depth 16\n"
         "  photopic image in.exr -o out.jpg --jpeg-quality 90\n"
         "  photopic image in.exr -o - | display -\n"
         "  photopic image in.exr -o view.png --debug histogram\n"
+        "  photopic image render/frame_%04d.exr --camera track.json --set dof.enabled=true -o out/f%04d.png\n"
         "  photopic image in.exr -o out.png --ocio-config config.ocio --ocio-display sRGB --ocio-view "
         "Standard");
 }
@@ -460,8 +490,9 @@ void addMeterCommand(CLI::App& app, Cli& c) {
         ->check(CLI::Range(0.001f, 10000.0f));
     c.meter
         ->add_option("--camera", c.meterOptions.camera,
-                     "camera JSON for EXR inputs without camera attributes")
+                     "camera JSON or track for EXR inputs without camera attributes")
         ->check(CLI::ExistingFile);
+    addChannelOptions(c.meter, c.meterOptions.aovPreset, c.meterOptions.layer, c.meterOptions.aovs);
     c.meter->add_flag("--force-ldr", c.meterOptions.forceLdr, "run the LDR (RGBA8) path");
     addSettingsOptions(c.meter, c.meterOptions.settings, "stills (as photopic image)");
     addMaxPixelsOption(c.meter, c.meterOptions.maxPixels);

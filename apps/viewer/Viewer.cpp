@@ -1,6 +1,7 @@
 #include "Viewer.h"
 
 #include "FileScene.h"
+#include "InputSequence.h"
 #include "SettingsEditor.h"
 #include "ViewerKeys.h"
 
@@ -499,13 +500,40 @@ void drawUi(GLFWwindow* window, Scene& scene, Pipeline& pipeline, const ViewerOp
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
+namespace {
+
+/// The files to view (patterns expanded) and how to read them, as `photopic image` has them.
+std::pair<std::vector<std::filesystem::path>, FileInputs> fileInputs(const ViewerOptions& options) {
+    try {
+        cli::ImageOptions image;
+        image.inputs = options.files;
+        const std::vector<cli::InputFile> expanded = cli::expandInputs(image);
+        std::vector<std::filesystem::path> paths;
+        for (const cli::InputFile& f : expanded)
+            paths.push_back(f.path);
+        FileInputs inputs;
+        inputs.aovs = cli::aovRequest(options.aovPreset, options.layer, options.aovs);
+        if (!options.camera.empty())
+            inputs.cameras = cli::loadCameraTrack(options.camera);
+        if (!options.lens.empty())
+            inputs.lens = cli::parseLensOverride(options.lens);
+        inputs.frameNumbers = cli::inputFrameNumbers(expanded);
+        return {std::move(paths), std::move(inputs)};
+    } catch (const cli::InputError& e) {
+        throw InputError(e.what());
+    }
+}
+
+} // namespace
+
 int run(const ViewerOptions& givenOptions) {
     const SplitOverrides overrides = checkOptions(givenOptions);
     ViewerOptions options = givenOptions;
     std::unique_ptr<Scene> files;
     if (!options.files.empty()) {
+        auto [paths, inputs] = fileInputs(options);
         try {
-            files = makeFileScene(options.files);
+            files = makeFileScene(std::move(paths), std::move(inputs));
         } catch (const SceneInputError& e) {
             throw InputError(e.what());
         }

@@ -33,6 +33,13 @@ struct ViewerOptions {
     /// Image files (EXR, Radiance HDR, PNG) to view instead of a scene: one is a still, several play as a
     /// sequence in the order given.
     std::vector<std::filesystem::path> files;
+    /// How EXR files are read, as `photopic image` reads them: --aovs, --layer, --aov, --camera (one camera
+    /// or a track by frame number) and --lens.
+    std::string aovPreset;
+    std::string layer;
+    std::vector<std::string> aovs;
+    std::filesystem::path camera;
+    std::string lens;
     bool sizeGiven = false; ///< --size was named; otherwise a file sets the window's size
     std::filesystem::path settingsFile;
     /// --preset: the look over the scene's defaults; empty: stills for files (as `photopic image`), the

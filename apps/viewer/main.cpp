@@ -53,8 +53,24 @@ int main(int argc, char** argv) {
     ViewerOptions options;
     std::string size = "1280x720";
     float fixedDt = 0.0f;
-    app.add_option("files", options.files,
-                   "image files (EXR, HDR, PNG) to view instead of a scene; several play as a sequence");
+    app.add_option(
+        "files", options.files,
+        "image files (EXR, HDR, PNG) to view instead of a scene, or frame-numbered patterns "
+        "(f%04d.exr, f.####.exr); several play as a sequence. EXR files bring their depth, normals, "
+        "motion and camera as photopic image reads them");
+    app.add_option("--aovs", options.aovPreset,
+                   "the channel names of a renderer: photopic or blender "
+                   "(default: blender for Blender's files)")
+        ->check(CLI::IsMember({"photopic", "blender"}));
+    app.add_option("--layer", options.layer, "the EXR layer to read (Blender's view layer)");
+    app.add_option("--aov", options.aovs,
+                   "KIND=CHANNELS[:CONVENTIONS], as photopic image takes it (docs/interop.md)")
+        ->take_all()
+        ->allow_extra_args(false);
+    app.add_option("--camera", options.camera, "camera JSON or track for files without a camera")
+        ->check(CLI::ExistingFile);
+    app.add_option("--lens", options.lens,
+                   "fNumber=N,focus=D,shutter=DEG: replaces the cameras' lens values");
     auto* sceneOption =
         app.add_option("--scene", options.scene, "built-in scene: " + photopic::builtInSceneNames())
             ->capture_default_str();

@@ -98,5 +98,98 @@ TEST(CameraJson, LoadNamesAMissingFile) {
     }
 }
 
+// A physical camera as Blender gives it: cameraToWorld, focal length over a sensor with a fit, and a shift of
+// the view window in fractions of the fitted side. A world point projects where the pinhole puts it.
+TEST(CameraTrack, PhysicalCamerasProjectAsAPinhole) {
+    const CameraJson c = parseCameraJson(
+        R"({"cameraToWorld": [[1, 0, 0, 0.5], [0, 1, 0, 1], [0, 0, 1, 4], [0, 0, 0, 1]], "focalLengthMm": 50,
+            "sensor": {"widthMm": 36, "heightMm": 24, "fit": "auto"}, "shift": [0.1, 0.05], "near": 0.1,
+            "far": 100, "lens": {"fNumber": 2}, "sunDirection": [0, 2, 0]})",
+        kName);
+    ASSERT_TRUE(c.cameraToWorld.has_value());
+    ASSERT_TRUE(c.sunDirection.has_value());
+    EXPECT_EQ(*c.sunDirection, glm::vec3(0.0f, 1.0f, 0.0f));
+    const Camera camera = c.camera(160, 90);
+    // 2 m in front of the camera, 0.3 right and 0.2 up of its axis.
+    const glm::vec4 clip = camera.viewProjection() * glm::vec4(0.5f + 0.3f, 1.0f + 0.2f, 4.0f - 2.0f, 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    const float pixels = 50.0f / 36.0f * 160.0f; // the focal length in pixels: the sensor width spans 160
+    const float u = 80.0f - 0.1f * 160.0f + pixels * 0.3f / 2.0f; // u right, v down
+    const float v = 45.0f + 0.05f * 160.0f - pixels * 0.2f / 2.0f;
+    EXPECT_NEAR((ndc.x * 0.5f + 0.5f) * 160.0f, u, 1e-3f);
+    EXPECT_NEAR((0.5f - ndc.y * 0.5f) * 90.0f, v, 1e-3f);
+    EXPECT_NEAR(camera.lens.focalLengthMm, 50.0f, 1e-5f);
+    EXPECT_NEAR(camera.lens.sensorHeightMm, 36.0f * 90.0f / 160.0f, 1e-4f);
+    EXPECT_EQ(camera.lens.fNumber, 2.0f);
+    // Fit vertical: the sensor height spans the frame's height.
+    const CameraJson vertical = parseCameraJson(
+        R"({"position": [0, 0, 0], "target": [0, 0, -1], "focalLengthMm": 24,
+            "sensor": {"widthMm": 36, "heightMm": 24, "fit": "vertical"}})",
+        kName);
+    EXPECT_NEAR(glm::degrees(vertical.camera(160, 90).verticalFov), 2.0f * glm::degrees(std::atan(0.5f)),
+                1e-3f);
+}
+
+TEST(CameraTrack, FramesAreKeyedByFrameNumber) {
+    const CameraTrack track = parseCameraTrack(
+        R"({"fps": 24, "source": "a test", "frames": {
+            "1001": {"position": [0, 0, 5], "target": [0, 0, 0]},
+            "1002": {"position": [1, 0, 5], "target": [0, 0, 0], "lens": {"fNumber": 4}}}})",
+        kName);
+    EXPECT_FALSE(track.single.has_value());
+    ASSERT_EQ(track.frames.size(), 2u);
+    ASSERT_TRUE(track.fps.has_value());
+    EXPECT_EQ(*track.fps, 24.0f);
+    EXPECT_EQ(track.at(1002, "f1002.exr").lens.fNumber, 4.0f);
+    try {
+        (void)track.at(1003, "shot/f1003.exr");
+        ADD_FAILURE() << "a frame the track lacks was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(
+            std::string(e.what()).find("no camera for frame 1003 (shot/f1003.exr); the track holds frames "
+                                       "1001 to 1002"),
+            std::string::npos)
+            << e.what();
+    }
+    EXPECT_THROW((void)track.at(std::nullopt, "still.exr"), InputError);
+    // One camera is every frame's.
+    const CameraTrack single = parseCameraTrack(R"({"position": [0, 0, 5], "target": [0, 0, 0]})", kName);
+    EXPECT_EQ(&single.at(std::nullopt, "a.exr"), &*single.single);
+}
+
+TEST(CameraTrack, ErrorsNameTheFrameAndTheKey) {
+    const auto trackError = [](const std::string& text) {
+        try {
+            (void)parseCameraTrack(text, kName);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    const std::string ok = R"("position": [0, 0, 5], "target": [0, 0, 0])";
+    EXPECT_NE(
+        trackError(R"({"frames": {"7": {)" + ok + R"(, "fov": 3}}})").find("camera key \"frames.7.fov\""),
+        std::string::npos);
+    EXPECT_NE(trackError(R"({"frames": {"x": {)" + ok + "}}}").find("camera key \"frames.x\""),
+              std::string::npos);
+    EXPECT_NE(trackError(R"({"frames": {}})").find("camera key \"frames\""), std::string::npos);
+    EXPECT_NE(trackError(R"({"frames": {"1": {"cameraToWorld": [[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0],
+              [0, 0, 0, 1]]}}})")
+                  .find("frames.1.cameraToWorld\": the upper 3x3 must be a rotation"),
+              std::string::npos);
+    EXPECT_NE(trackError(R"({"frames": {"1": {)" + ok + R"(, "shift": [0.1, 0]}}})")
+                  .find("frames.1.shift\": needs focalLengthMm"),
+              std::string::npos);
+    EXPECT_NE(trackError(R"({"frames": {"1": {)" + ok + R"(, "focalLengthMm": 50, "verticalFovDeg": 40}}})")
+                  .find("give either verticalFovDeg or focalLengthMm"),
+              std::string::npos);
+    EXPECT_NE(trackError(R"({"frames": {"1": {)" + ok +
+                         R"(, "focalLengthMm": 50, "sensor": {"fit": "diagonal"}}}})")
+                  .find("frames.1.sensor.fit"),
+              std::string::npos);
+    EXPECT_NE(trackError(R"({"fps": -1, "frames": {"1": {)" + ok + "}}}").find("camera key \"fps\""),
+              std::string::npos);
+}
+
 } // namespace
 } // namespace photopic::cli

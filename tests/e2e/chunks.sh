@@ -65,7 +65,7 @@ TAA=(--set aa.mode=taa --jitter halton)
 expect 0 "the single TAA run" -- "$PHOTOPIC" image "$IN" "${AE[@]}" "${TAA[@]}" --exposure-track "$S/exp.csv" \
     -o "$S/taa/f%04d.png"
 for range in 0-11 12-23; do
-    expect 0 "TAA chunk $range, preroll 16" -- "$PHOTOPIC" image "$IN" --frames "$range" --preroll 16 "${AE[@]}" \
+    expect 0 "TAA chunk $range, preroll 24" -- "$PHOTOPIC" image "$IN" --frames "$range" --preroll 24 "${AE[@]}" \
         "${TAA[@]}" --exposure-track "$S/exp.csv" -o "$S/taa-chunks/f%04d.png"
 done
 expect 0 "compare TAA chunks with the single run" -- "$FIX" "$S/taa" "$S/taa-chunks"

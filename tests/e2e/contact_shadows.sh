@@ -36,9 +36,12 @@ check "steps frame written" test -s "$S/steps/frame_0001.exr"
 expect 0 "the view as PNG" -- "$PHOTOPIC" scene testbed -o "$S/png" --frames 2 --size 96x54 \
     --set contactShadows.enabled=true --set debug.view=contact-shadows "${STILL[@]}"
 check "PNG written" test -s "$S/png/frame_0001.png"
-expect 0 "without the lighting stage (an image), the view is skipped and says so" -- "$PHOTOPIC" image \
-    "$S/view/scene_0000.exr" -o "$S/img.png" --set contactShadows.enabled=true --set debug.view=contact-shadows
-check "reports the missing contactShadows" contains "contactShadows"
+expect 2 "without the lighting stage (an image), the view cannot be made: an error, not a plain image" -- \
+    "$PHOTOPIC" image "$S/view/scene_0000.exr" -o "$S/img.png" --set contactShadows.enabled=true \
+    --set debug.view=contact-shadows
+check "says once why contact shadows cannot run" contains "cannot apply them"
+check "names the view and what it lacks" contains "--debug contact-shadows"
+check "no image written" test ! -e "$S/img.png"
 
 expect 2 "a thickness out of range names the key" -- "$PHOTOPIC" scene testbed -o "$S/bad" --frames 1 \
     --size 32x18 --set contactShadows.thickness=-1

@@ -8,15 +8,17 @@ FIXTURE="${PHOTOPIC_EXR3D_FIXTURE:?the test sets PHOTOPIC_EXR3D_FIXTURE to the f
 expect 0 "fixture writes a 3D EXR sequence" -- "$FIXTURE" write "$S"
 
 expect 0 "--info on a 3D EXR, no output needed" -- "$PHOTOPIC" image --info "$S/seq/frame_0003.exr"
-check "--info lists Z as depth" contains "Z -> depth (linear view depth)"
+check "--info names the preset and layer" contains "channels: the photopic preset (the file's), layer (unprefixed)"
+check "--info lists Z as depth" contains "Z -> depth (linear view depth, planar)"
 check "--info lists the normals" contains "N.Z -> normals (world space"
-check "--info lists the motion" contains "motion.X -> motion (pixels"
+check "--info lists the motion" contains "motion.X -> motion (pixels, current minus previous, y down, unjittered"
+check "--info lists the unused channels" contains "unused channels: none"
 check "--info lists colour" contains "R -> colour"
 check "--info: worldToCamera feeds the view" contains "worldToCamera (m44f) -> camera view"
 check "--info: worldToNDC feeds the projection" contains "worldToNDC (m44f) -> camera projection"
 check "--info: lens attributes" contains "pinholeFocalLength (float) -> lens focal length"
 check "--info: aperture" contains "aperture (float) -> lens f-number"
-check "--info: jitter" contains "jitter (v2f) -> motion unjitter"
+check "--info: jitter" contains "jitter (v2f) -> sample jitter"
 check "--info: the camera it derives" contains "camera (file attributes): near 0.1, far 100"
 check "--info: unused attributes say so" contains "screenWindowWidth (float) -> not used"
 
@@ -24,6 +26,19 @@ expect 0 "a 3D EXR sequence renders" -- "$PHOTOPIC" image "$S"/seq/*.exr -o "$S/
 check "one PNG per frame" test "$(ls "$S/out"/*.png | wc -l)" -eq 10
 check "one aux EXR per frame" test "$(ls "$S/aux"/*.aux.exr | wc -l)" -eq 10
 expect 0 "aux depth, view-space normals and UV motion hold the expected values" -- "$FIXTURE" check-aux "$S/aux"
+# Motion is the surfaces' own unless the mapping says it was measured between the jittered samples.
+expect 0 "motion between jittered samples, said so" -- "$PHOTOPIC" image "$S"/seq-jittered-motion/*.exr \
+    -o "$S/outj" --write-aux "$S/auxj" --aov motion=:jittered
+expect 0 "the jitter is taken out of it" -- "$FIXTURE" check-aux "$S/auxj"
+expect 0 "--info says so" -- "$PHOTOPIC" image --info "$S/seq-jittered-motion/frame_0002.exr" --aov motion=:jittered
+check "--info: jittered motion" contains "between jittered samples; turned into UV, y up, current minus previous, jitter removed"
+expect 2 "an --aov convention a kind does not take" -- "$PHOTOPIC" image "$S/seq/frame_0001.exr" -o "$S/x.png" \
+    --aov depth=Z:jittered
+check "the error names the word and lists the kind's" contains '"jittered" is no convention of depth (conventions: planar, radial)'
+expect 2 "an --aov channel the file lacks" -- "$PHOTOPIC" image "$S/seq/frame_0001.exr" -o "$S/x.png" \
+    --aov depth=P.Z
+check "the error names the channel and lists the file's" contains "the file has no channel P.Z"
+check "no output for a bad mapping" test ! -e "$S/x.png"
 
 # Layers that no pass reads (the default settings read none) are left out (decoded for the first frame only,
 # never uploaded), and the images are the same as the run above, which kept every layer for --write-aux;

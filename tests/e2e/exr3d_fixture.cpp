@@ -1,4 +1,4 @@
-// Test fixture for exr3d.sh: writes a small 3D EXR sequence (colour, Z, world-space N, jittered pixel motion
+// Test fixture for exr3d.sh: writes a small 3D EXR sequence (colour, Z, world-space N, pixel motion
 // and the camera attributes) plus malformed files, and checks the files `photopic image --write-aux` writes
 // back against the values the sequence was built from, in the pipeline's conventions.
 //
@@ -67,14 +67,17 @@ glm::vec2 trueMotion(int f) {
     return {0.5f + 0.1f * float(f), -0.25f};
 }
 
-ExrFrame makeFrame(int f) {
+/// Frame f; `jitteredMotion`: its motion measured between the frames' jittered samples, as a renderer that
+/// says so (--aov motion=:jittered) writes it, instead of the surfaces' own.
+ExrFrame makeFrame(int f, bool jitteredMotion = false) {
     ExrFrame frame;
     frame.color = ImageF(kWidth, kHeight);
     const std::size_t pixels = std::size_t(kWidth) * kHeight;
     frame.depth.resize(pixels);
     frame.normals.resize(pixels * 3);
     frame.motion.resize(pixels * 2);
-    const glm::vec2 motion = trueMotion(f) + frameJitter(f) - frameJitter(f - 1);
+    const glm::vec2 motion =
+        jitteredMotion ? trueMotion(f) + frameJitter(f) - frameJitter(f - 1) : trueMotion(f);
     for (std::size_t i = 0; i < pixels; ++i) {
         frame.color.rgba[i * 4 + 0] = 0.1f + 0.02f * float(i % kWidth);
         frame.color.rgba[i * 4 + 1] = 0.2f;
@@ -116,10 +119,13 @@ void writeMissingNz(const fs::path& path) {
 
 void writeAll(const fs::path& dir) {
     fs::create_directories(dir / "seq");
+    fs::create_directories(dir / "seq-jittered-motion");
     fs::create_directories(dir / "plain");
     fs::create_directories(dir / "bad");
-    for (int f = 0; f < kFrames; ++f)
+    for (int f = 0; f < kFrames; ++f) {
         writeExrFrame(dir / "seq" / (frameName(f) + ".exr"), makeFrame(f));
+        writeExrFrame(dir / "seq-jittered-motion" / (frameName(f) + ".exr"), makeFrame(f, true));
+    }
 
     ExrFrame plain = makeFrame(0); // normals but no camera: --camera supplies it
     plain.camera = {};

@@ -58,7 +58,7 @@ check "every frame the single run's bytes" bash -c \
 
 # With TAA, jitter and the default preroll: within the measured residual (docs/farm.md).
 submit taa --set aa.mode=taa --image-option=--jitter --image-option=halton
-check "the default preroll is in the render jobs" grep -q -- "--preroll 16" "$S/taa/render.sbatch"
+check "the default preroll is in the render jobs" grep -q -- "--preroll 24" "$S/taa/render.sbatch"
 expect 0 "the single TAA run with the farm's track" -- "$PHOTOPIC" image "$IN" --settings "$S/taa/settings.json" \
     --fps 24 --jitter halton --exposure-track "$S/taa/exposure.csv" -o "$S/single-taa/f%04d.png"
 expect 0 "compare the TAA farm with the single run" -- "$FIX" "$S/single-taa" "$S/taa/out"

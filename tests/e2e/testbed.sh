@@ -22,7 +22,7 @@ check "no input problem reported" bash -c "! grep -qi 'ignored\|skipped' <<< \"\
 expect 0 "testbed with TAA writes jittered scene EXRs" -- "$PHOTOPIC" scene testbed -o "$S/tbtaa" --frames 4 \
     --size 96x54 --set aa.mode=taa
 expect 0 "image --info finds their jitter" -- "$PHOTOPIC" image --info "$S/tbtaa/scene_0002.exr"
-check "jitter attribute listed" contains "jitter (v2f) -> motion unjitter"
+check "jitter attribute listed" contains "jitter (v2f) -> sample jitter"
 expect 0 "TAA over the jittered sequence" -- "$PHOTOPIC" image "$S"/tbtaa/scene_*.exr -o "$S/taa/" --set aa.mode=taa
 check "no warning that the frames are unjittered" bash -c "! grep -q 'not jittered' <<< \"\$1\"" _ "$OUTPUT"
 expect 0 "TAA over unjittered frames" -- "$PHOTOPIC" image "$S"/tb/scene_*.exr -o "$S/taa2/" --set aa.mode=taa

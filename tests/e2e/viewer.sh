@@ -148,4 +148,15 @@ expect 2 "a missing file exits 2 before any window" -- "$VIEW" "$S/nosuch.exr" -
 check "names the missing file" contains "nosuch.exr"
 expect 2 "a file and --scene together exit 2" -- "$VIEW" "$DESK" --scene testbed --frames 1
 
+# A renderer's frames as photopic image reads them: Blender's multilayer EXRs by pattern, the camera track, a
+# debug view of their depth (which needs the track's camera).
+ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
+expect 0 "Blender's frames with their camera track" -- "$VIEW" "$ROOT/tests/data/blender/passes/frame_%04d.exr" \
+    --camera "$ROOT/tests/data/blender/track.json" --frames 3 --fixed-dt 0.0417 --set dof.enabled=true \
+    --set debug.view=depth
+check "no skipped pass (the depth view has its camera)" eval '! contains "skipped"'
+expect 2 "an --aov the files lack" -- "$VIEW" "$ROOT/tests/data/blender/passes/frame_0003.exr" --aov depth=P.Z \
+    --frames 1
+check "names the channel" contains "the file has no channel P.Z"
+
 finish

@@ -2,6 +2,7 @@
 // the no-history frame, moving objects leave no trail with motion vectors (and do without them), and broken
 // inputs never reach the output.
 
+#include "EdgeError.h"
 #include "GlTest.h"
 
 #include "gl/TextureIo.h"
@@ -20,19 +21,6 @@ namespace {
 constexpr int kW = 160;
 constexpr int kH = 90;
 constexpr float kDt = 1.0f / 30.0f;
-
-/// Display settings for measuring: fixed exposure, no bloom, no dither, so the truth and the renders go
-/// through the same curve.
-Settings measuring(AntiAliasing aa) {
-    Settings s;
-    s.tonemapping.mode = ToneMapper::AcesFitted;
-    s.tonemapping.exposure = -1.0f;
-    s.autoExposure.enabled = false;
-    s.bloom.enabled = false;
-    s.output.dither = false;
-    s.aa.mode = aa;
-    return s;
-}
 
 std::unique_ptr<TestbedScene> stillScene(float cameraTime) {
     auto scene = std::make_unique<TestbedScene>();
@@ -59,37 +47,6 @@ Image8 run(TestbedScene& scene, Pipeline& pipeline, std::uint64_t first, std::ui
     return out;
 }
 
-/// Pixels whose 3x3 neighbourhood in the ray tracer's object ids holds more than one object.
-std::vector<bool> edgePixels(const ImageF& ids) {
-    std::vector<bool> edge(std::size_t(kW * kH), false);
-    for (int y = 1; y < kH - 1; ++y) {
-        for (int x = 1; x < kW - 1; ++x) {
-            for (int d = 0; d < 9 && !edge[std::size_t(y * kW + x)]; ++d) {
-                edge[std::size_t(y * kW + x)] = ids.at(x + d % 3 - 1, y + d / 3 - 1)[0] != ids.at(x, y)[0];
-            }
-        }
-    }
-    return edge;
-}
-
-double rmse(const Image8& a, const Image8& b, const std::vector<bool>& mask) {
-    double sum = 0.0;
-    long n = 0;
-    for (int y = 0; y < kH; ++y) {
-        for (int x = 0; x < kW; ++x) {
-            if (!mask[std::size_t(y * kW + x)]) {
-                continue;
-            }
-            for (int c = 0; c < 3; ++c) {
-                const double d = (double(a.at(x, y)[c]) - double(b.at(x, y)[c])) / 255.0;
-                sum += d * d;
-            }
-            ++n;
-        }
-    }
-    return std::sqrt(sum / double(3 * n));
-}
-
 } // namespace
 
 // Static camera, converged after 32 frames: edge RMSE in display-referred sRGB against the 16x16 supersampled
@@ -100,7 +57,7 @@ TEST_F(GlTest, TaaConvergesTowardsTheSupersampledTruthOnEdges) {
     const testbed::TruthOptions truthOptions = scene->truthOptions({.dt = kDt, .frameIndex = 0});
     const ImageF ids = testbed::renderTruth(testbed::TruthKind::ObjectId, truthOptions);
     const std::vector<bool> edges = edgePixels(ids);
-    Pipeline truthPipeline({.settings = measuring(AntiAliasing::None)});
+    Pipeline truthPipeline({.settings = aaMeasuringSettings(AntiAliasing::None)});
     const Image8 truth =
         processImage(truthPipeline, testbed::renderTruth(testbed::TruthKind::Color, truthOptions));
 
@@ -113,10 +70,10 @@ TEST_F(GlTest, TaaConvergesTowardsTheSupersampledTruthOnEdges) {
     std::printf("edge RMSE (sRGB) vs 16x16 truth, static, after 32 frames and on the first (no history):\n"
                 "  | aa.mode | edge RMSE | of no-AA's | first frame | of no-AA's |\n");
     for (int i = 0; i < kModes; ++i) {
-        Pipeline pipeline({.settings = measuring(modes[i])});
-        error[i] = rmse(run(*scene, pipeline, 0, 31), truth, edges);
-        Pipeline fresh({.settings = measuring(modes[i])});
-        first[i] = rmse(run(*scene, fresh, 0, 0), truth, edges);
+        Pipeline pipeline({.settings = aaMeasuringSettings(modes[i])});
+        error[i] = edgeRmse(run(*scene, pipeline, 0, 31), truth, edges);
+        Pipeline fresh({.settings = aaMeasuringSettings(modes[i])});
+        first[i] = edgeRmse(run(*scene, fresh, 0, 0), truth, edges);
         std::printf("  | %s | %.4f | %.0f%% | %.4f | %.0f%% |\n", names[i], error[i],
                     100.0 * error[i] / error[0], first[i], 100.0 * first[i] / first[0]);
     }
@@ -130,7 +87,7 @@ TEST_F(GlTest, TaaConvergesTowardsTheSupersampledTruthOnEdges) {
 TEST_F(GlTest, TaaSmaaLeavesSubPixelRidgesToTaa) {
     auto scene = stillScene(0.3f);
     auto render = [&](AntiAliasing aa, float subpixel) {
-        Settings s = measuring(aa);
+        Settings s = aaMeasuringSettings(aa);
         s.smaa.subpixel = subpixel;
         Pipeline pipeline({.settings = s});
         return run(*scene, pipeline, 0, 3).rgba;
@@ -143,14 +100,14 @@ TEST_F(GlTest, TaaSmaaLeavesSubPixelRidgesToTaa) {
 TEST_F(GlTest, TaaFrameAfterACutEqualsTheNoHistoryFrame) {
     TestbedScene scene;
     scene.resize({kW, kH});
-    Pipeline running({.settings = measuring(AntiAliasing::Taa)});
+    Pipeline running({.settings = aaMeasuringSettings(AntiAliasing::Taa)});
     const Image8 afterCut = run(scene, running, 28, 36);
-    Pipeline fresh({.settings = measuring(AntiAliasing::Taa)});
+    Pipeline fresh({.settings = aaMeasuringSettings(AntiAliasing::Taa)});
     const Image8 noHistory = run(scene, fresh, 36, 36);
     EXPECT_EQ(afterCut.rgba, noHistory.rgba);
     // And frame 35, with history, differs from its no-history frame (the test can fail).
-    Pipeline running35({.settings = measuring(AntiAliasing::Taa)});
-    Pipeline fresh35({.settings = measuring(AntiAliasing::Taa)});
+    Pipeline running35({.settings = aaMeasuringSettings(AntiAliasing::Taa)});
+    Pipeline fresh35({.settings = aaMeasuringSettings(AntiAliasing::Taa)});
     EXPECT_NE(run(scene, running35, 28, 35).rgba, run(scene, fresh35, 35, 35).rgba);
 }
 
@@ -166,7 +123,7 @@ TEST_F(GlTest, TaaOutputStaysFiniteWithBrokenInputs) {
     }
     const Texture colorTexture = makeTexture(color, "color");
     const Texture motionTexture = makeTexture(motion, "motion");
-    Settings s = measuring(AntiAliasing::Taa);
+    Settings s = aaMeasuringSettings(AntiAliasing::Taa);
     s.debug.view = DebugView::TaaHistoryWeight; // shows that history was used on the later frames
     Pipeline pipeline({.settings = s});
     for (std::uint64_t f = 0; f < 4; ++f) {
@@ -185,7 +142,7 @@ TEST_F(GlTest, TaaOutputStaysFiniteWithBrokenInputs) {
 
 TEST_F(GlTest, TaaWithoutMotionOrDepthIsSkippedAndReported) {
     const Texture color = makeTexture(ImageF(16, 16, 0.5f), "color");
-    Pipeline pipeline({.settings = measuring(AntiAliasing::Taa)});
+    Pipeline pipeline({.settings = aaMeasuringSettings(AntiAliasing::Taa)});
     pipeline.beginFrame({});
     pipeline.execute({.color = &color}, {});
     const PipelineStatus st = pipeline.status();
@@ -254,13 +211,13 @@ ImageF truthHdr(const TestbedScene& scene, std::uint64_t frame, const Settings& 
 TEST_F(GlTest, TaaLeavesNoTrailBehindAMovingObjectWithMotionVectors) {
     auto scene = sceneWith({"cameraSpeed=0", "cameraStart=0", "objectStart=4"}); // moving left over the wall
     const std::uint64_t last = 8;
-    const Settings settings = measuring(AntiAliasing::Taa);
+    const Settings settings = aaMeasuringSettings(AntiAliasing::Taa);
     std::vector<ImageF> ids;
     for (std::uint64_t f = last - 8; f <= last; ++f) {
         ids.push_back(testbed::renderTruth(testbed::TruthKind::ObjectId,
                                            scene->truthOptions({.dt = kDt, .frameIndex = f})));
     }
-    const ImageF truth = truthHdr(*scene, last, measuring(AntiAliasing::None));
+    const ImageF truth = truthHdr(*scene, last, aaMeasuringSettings(AntiAliasing::None));
     Pipeline withPipeline({.settings = settings});
     const ImageF with = runHdr(*scene, withPipeline, 0, last, true);
     Pipeline withoutPipeline({.settings = settings});
@@ -325,7 +282,7 @@ TEST_F(GlTest, TaaCalmsFlickerOnASlowPan) {
     const char* names[kModes] = {"none", "taa", "fxaa", "smaa", "smaa, subpixel 0"};
     double variance[kModes] = {};
     for (int m = 0; m < kModes; ++m) {
-        Settings settings = measuring(modes[m]);
+        Settings settings = aaMeasuringSettings(modes[m]);
         if (m == 4) {
             settings.smaa.subpixel = 0.0f;
         }
@@ -389,8 +346,8 @@ TEST_F(GlTest, TaaKeepsACheckerSharpUnderMotion) {
         }
         return sum / double(n);
     };
-    const double truth = gradient(truthHdr(*scene, last, measuring(AntiAliasing::None)));
-    Settings s = measuring(AntiAliasing::Taa);
+    const double truth = gradient(truthHdr(*scene, last, aaMeasuringSettings(AntiAliasing::None)));
+    Settings s = aaMeasuringSettings(AntiAliasing::Taa);
     Pipeline catmullRom({.settings = s});
     const double sharp = gradient(runHdr(*scene, catmullRom, 0, last, true));
     s.taa.historyFilter = HistoryFilter::Bilinear;
@@ -416,19 +373,19 @@ TEST_F(GlTest, SsaaLevelTwoConvergesOnEdgesInOneFrame) {
     const testbed::TruthOptions truthOptions = scene->truthOptions({.dt = kDt, .frameIndex = 0});
     const std::vector<bool> edges =
         edgePixels(testbed::renderTruth(testbed::TruthKind::ObjectId, truthOptions));
-    Pipeline truthPipeline({.settings = measuring(AntiAliasing::None)});
+    Pipeline truthPipeline({.settings = aaMeasuringSettings(AntiAliasing::None)});
     const Image8 truth =
         processImage(truthPipeline, testbed::renderTruth(testbed::TruthKind::Color, truthOptions));
-    Pipeline none({.settings = measuring(AntiAliasing::None)});
-    const double noAa = rmse(run(*scene, none, 0, 0), truth, edges);
+    Pipeline none({.settings = aaMeasuringSettings(AntiAliasing::None)});
+    const double noAa = edgeRmse(run(*scene, none, 0, 0), truth, edges);
     double error[3] = {};
     for (int i = 0; i < 3; ++i) {
-        Settings s = measuring(AntiAliasing::Ssaa);
+        Settings s = aaMeasuringSettings(AntiAliasing::Ssaa);
         s.aa.level = i < 2 ? 2 : 4;
         s.aa.ssaaFilter = i == 1 ? SsaaFilter::BlackmanHarris : SsaaFilter::Box;
         Pipeline pipeline({.settings = s});
         EXPECT_EQ(pipeline.subframeCount(), i < 2 ? 4 : 16);
-        error[i] = rmse(run(*scene, pipeline, 0, 0), truth, edges);
+        error[i] = edgeRmse(run(*scene, pipeline, 0, 0), truth, edges);
     }
     std::printf(
         "edge RMSE (sRGB) vs 16x16 truth, one frame: none %.4f, ssaa 4 box %.4f (%.0f%%), 4 blackman-harris "
