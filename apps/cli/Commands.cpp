@@ -114,7 +114,16 @@ Settings resolveSettings(const SettingsSources& sources, Settings base) {
 
 namespace {
 bool gGlDebug = false;
+bool gStatusLines = true;
 } // namespace
+
+bool statusLines() {
+    return gStatusLines;
+}
+
+void setStatusLines(bool on) {
+    gStatusLines = on;
+}
 
 void setGlDebug(bool on) {
     gGlDebug = on;
@@ -461,9 +470,11 @@ std::function<void()> writtenLine(const fs::path& in, const fs::path& out, Exten
         progress.clear();
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(console, "%s -> %s (%dx%d, %.1f ms)\n", in.string().c_str(), out.string().c_str(),
-                     size.width, size.height, ms);
-        std::fflush(console);
+        if (statusLines()) {
+            std::fprintf(console, "%s -> %s (%dx%d, %.1f ms)\n", in.string().c_str(), out.string().c_str(),
+                         size.width, size.height, ms);
+            std::fflush(console);
+        }
         progress.advance();
     };
 }
@@ -822,8 +833,9 @@ int runImage(const ImageOptions& options) {
     if (telemetry) {
         telemetry->commit(files.size(), pipeline->droppedTelemetry());
         outputs.wrote(options.telemetry);
-        std::fprintf(console, "telemetry -> %s (%zu frames)\n", options.telemetry.string().c_str(),
-                     files.size());
+        if (statusLines())
+            std::fprintf(console, "telemetry -> %s (%zu frames)\n", options.telemetry.string().c_str(),
+                         files.size());
     }
     outputs.commit();
     return kOk;

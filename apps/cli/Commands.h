@@ -34,6 +34,13 @@ struct SettingsSources {
 };
 Settings resolveSettings(const SettingsSources& sources, Settings base = {});
 
+/// Whether the status lines (each frame written, a command's summary) are printed: not under -q or
+/// --log-level warning/error, which print errors (and warnings) only, as ffmpeg's -loglevel does. What a
+/// command was asked to print (--info, settings, bench tables) is printed whatever the level. Set once
+/// from the command line (main), true until then.
+[[nodiscard]] bool statusLines();
+void setStatusLines(bool on);
+
 struct ImageOptions {
     /// Files, or frame-numbered patterns (f%04d.exr, f.####.exr, f@.exr) expanded from their folder; a
     /// name that exists as a file is a file.

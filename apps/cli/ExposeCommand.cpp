@@ -50,9 +50,10 @@ int ExposeCommand::run() {
     }
     const std::string metering = meteringDescription(settings.autoExposure);
     if (merged.metering != metering) {
-        throw InputError(fmt::format("expose: {} was metered with \"{}\", and these settings meter with \"{}\": "
-                                     "meter again with the same autoExposure settings",
-                                     mOptions.meterFiles.front().string(), merged.metering, metering));
+        throw InputError(
+            fmt::format("expose: {} was metered with \"{}\", and these settings meter with \"{}\": "
+                        "meter again with the same autoExposure settings",
+                        mOptions.meterFiles.front().string(), merged.metering, metering));
     }
     if (merged.records.empty()) {
         throw InputError("expose: the meter files hold no frame");
@@ -60,14 +61,15 @@ int ExposeCommand::run() {
     const std::vector<MeterRecord>& records = merged.records;
     const FrameGaps gaps = frameGaps(records, [](const MeterRecord& r) { return r.frame; });
     if (gaps.firstMissing && !mOptions.allowGaps) {
-        throw InputError(fmt::format("expose: {} frame(s) between {} and {} are in no meter file, the first {}: "
-                                     "meter them (a chunk's file missing?), or --allow-gaps to plan without "
-                                     "them",
-                                     gaps.missing, records.front().frame, records.back().frame,
-                                     *gaps.firstMissing));
+        throw InputError(
+            fmt::format("expose: {} frame(s) between {} and {} are in no meter file, the first {}: "
+                        "meter them (a chunk's file missing?), or --allow-gaps to plan without "
+                        "them",
+                        gaps.missing, records.front().frame, records.back().frame, *gaps.firstMissing));
     }
     for (const std::int64_t cut : mOptions.cuts) {
-        if (std::none_of(records.begin(), records.end(), [cut](const MeterRecord& r) { return r.frame == cut; })) {
+        if (std::none_of(records.begin(), records.end(),
+                         [cut](const MeterRecord& r) { return r.frame == cut; })) {
             throw InputError(fmt::format("expose: --cut {} is not a metered frame ({} to {})", cut,
                                          records.front().frame, records.back().frame));
         }
@@ -75,13 +77,16 @@ int ExposeCommand::run() {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<PlannedExposure> plan = planExposure(
         settings.autoExposure, records, 1.0f / mOptions.fps, settings.tonemapping.exposure, mOptions.cuts);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     AtomicFileWriter file = openCommandOutput("expose", mOptions.output);
     file.write(exposureTrackCsv(plan, mOptions.fps, metering));
     file.commit();
-    std::printf("expose -> %s (%zu frames, %lld to %lld, planned in %.3f ms)\n", mOptions.output.string().c_str(),
-                plan.size(), static_cast<long long>(records.front().frame),
-                static_cast<long long>(records.back().frame), ms);
+    if (statusLines())
+        std::printf("expose -> %s (%zu frames, %lld to %lld, planned in %.3f ms)\n",
+                    mOptions.output.string().c_str(), plan.size(),
+                    static_cast<long long>(records.front().frame),
+                    static_cast<long long>(records.back().frame), ms);
     return kOk;
 }
 

@@ -79,9 +79,10 @@ FrameRange sequenceRange(const FarmOptions& options) {
     }
     const FrameRange range{*files.front().frame, *files.back().frame};
     if (std::int64_t(files.size()) != range.last - range.first + 1) {
-        throw InputError(fmt::format("farm: {} has frames missing between {} and {}: chunks are frame ranges, "
-                                     "so give --frames A-B over frames that all exist",
-                                     options.input.string(), range.first, range.last));
+        throw InputError(
+            fmt::format("farm: {} has frames missing between {} and {}: chunks are frame ranges, "
+                        "so give --frames A-B over frames that all exist",
+                        options.input.string(), range.first, range.last));
     }
     return range;
 }
@@ -127,8 +128,9 @@ JobSet prepareJobSet(const FarmOptions& o) {
         throw InputError(fmt::format("farm: --chunk {} must be at least 1", o.chunk));
     }
     if (o.output.empty() || !parseFramePattern(o.output.filename().string())) {
-        throw InputError("farm: -o must be a frame-numbered output pattern (out/f%04d.png): each chunk writes "
-                         "its own frames");
+        throw InputError(
+            "farm: -o must be a frame-numbered output pattern (out/f%04d.png): each chunk writes "
+            "its own frames");
     }
     JobSet set;
     set.range = sequenceRange(o);
@@ -166,18 +168,36 @@ void writeStageScripts(const FarmOptions& o, const JobSet& set) {
         shellLine({set.exe, "meter", set.input, "--settings", set.settingsFile, "--fps", set.fps, "-q"}) +
         " --frames \"$first-$last\" -o " + shellWord((set.dir / "meter").string()) +
         "/chunk-\"$SLURM_ARRAY_TASK_ID\".csv\n";
-    std::vector<std::string> expose = {set.exe, "expose", "--settings", set.settingsFile, "--fps", set.fps, "-q",
-                                       "-o", (set.dir / "exposure.csv").string()};
+    std::vector<std::string> expose = {set.exe,
+                                       "expose",
+                                       "--settings",
+                                       set.settingsFile,
+                                       "--fps",
+                                       set.fps,
+                                       "-q",
+                                       "-o",
+                                       (set.dir / "exposure.csv").string()};
     for (const std::int64_t cut : o.cuts) {
         expose.insert(expose.end(), {"--cut", std::to_string(cut)});
     }
-    std::vector<std::string> render = {set.exe, "image", set.input, "--settings", set.settingsFile, "--fps",
-                                       set.fps, "--preroll", std::to_string(set.preroll), "--exposure-track",
-                                       (set.dir / "exposure.csv").string(), "-o",
-                                       fs::absolute(o.output).string(), "-q"};
+    std::vector<std::string> render = {set.exe,
+                                       "image",
+                                       set.input,
+                                       "--settings",
+                                       set.settingsFile,
+                                       "--fps",
+                                       set.fps,
+                                       "--preroll",
+                                       std::to_string(set.preroll),
+                                       "--exposure-track",
+                                       (set.dir / "exposure.csv").string(),
+                                       "-o",
+                                       fs::absolute(o.output).string(),
+                                       "-q"};
     render.insert(render.end(), o.imageOptions.begin(), o.imageOptions.end());
 
-    writeFile(set.dir / "meter.sbatch", jobScript("meter", set.logs, o.sbatchOptions, set.chunks, meter), true);
+    writeFile(set.dir / "meter.sbatch", jobScript("meter", set.logs, o.sbatchOptions, set.chunks, meter),
+              true);
     writeFile(set.dir / "expose.sbatch",
               jobScript("expose", set.logs, o.sbatchOptions, std::nullopt,
                         shellLine(expose) + " " + shellWord((set.dir / "meter").string()) + "/chunk-*.csv\n"),
@@ -203,15 +223,15 @@ void writeRunners(const JobSet& set) {
         "echo \"${meter%%;*} ${expose%%;*} ${render%%;*}\"\n";
     writeFile(set.dir / "submit.sh", submit, true);
     // Without a scheduler: the same job scripts run one chunk at a time (SLURM_ARRAY_TASK_ID set by hand).
-    const std::string local = fmt::format(
-        "#!/bin/bash\n"
-        "# The three stages without a scheduler, chunk after chunk on this machine.\n"
-        "set -euo pipefail\n"
-        "cd \"$(dirname \"$0\")\"\n"
-        "for i in $(seq 0 {0}); do SLURM_ARRAY_TASK_ID=$i bash meter.sbatch; done\n"
-        "bash expose.sbatch\n"
-        "for i in $(seq 0 {0}); do SLURM_ARRAY_TASK_ID=$i bash render.sbatch; done\n",
-        set.chunks - 1);
+    const std::string local =
+        fmt::format("#!/bin/bash\n"
+                    "# The three stages without a scheduler, chunk after chunk on this machine.\n"
+                    "set -euo pipefail\n"
+                    "cd \"$(dirname \"$0\")\"\n"
+                    "for i in $(seq 0 {0}); do SLURM_ARRAY_TASK_ID=$i bash meter.sbatch; done\n"
+                    "bash expose.sbatch\n"
+                    "for i in $(seq 0 {0}); do SLURM_ARRAY_TASK_ID=$i bash render.sbatch; done\n",
+                    set.chunks - 1);
     writeFile(set.dir / "local.sh", local, true);
 }
 
@@ -222,9 +242,10 @@ int FarmCommand::run() {
     const JobSet set = prepareJobSet(o);
     writeStageScripts(o, set);
     writeRunners(set);
-    std::printf("farm: frames %lld to %lld in %d chunk(s) of %d, preroll %d, job set in %s\n",
-                static_cast<long long>(set.range.first), static_cast<long long>(set.range.last), set.chunks,
-                o.chunk, set.preroll, set.dir.string().c_str());
+    if (statusLines())
+        std::printf("farm: frames %lld to %lld in %d chunk(s) of %d, preroll %d, job set in %s\n",
+                    static_cast<long long>(set.range.first), static_cast<long long>(set.range.last),
+                    set.chunks, o.chunk, set.preroll, set.dir.string().c_str());
     if (!o.submit) {
         std::printf("submit with:\n  %s\nor by hand:\n  sbatch --parsable %s\n  sbatch --parsable "
                     "--dependency=afterok:METER_ID %s\n  sbatch --dependency=afterok:EXPOSE_ID %s\n",

@@ -129,8 +129,9 @@ int MeterCommand::run() {
     }
     file.commit();
     outputs.commit();
-    std::printf("meter -> %s (%zu frames, %s metering)\n", mOptions.output.string().c_str(), inputs.size(),
-                std::string(meteringModeNames()[std::size_t(ae.metering)]).c_str());
+    if (statusLines())
+        std::printf("meter -> %s (%zu frames, %s metering)\n", mOptions.output.string().c_str(),
+                    inputs.size(), std::string(meteringModeNames()[std::size_t(ae.metering)]).c_str());
     return kOk;
 }
 

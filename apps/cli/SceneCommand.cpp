@@ -193,14 +193,17 @@ int runTruth(const SceneOptions& options, Scene& scene, const fs::path& outDir, 
             writePng(outDir / (stem + ".png"), truthPreview(kind, image));
             outputs.wrote(outDir / (stem + ".png"));
             progress.clear();
-            std::printf("%s: %.3f s\n", stem.c_str(), seconds);
-            std::fflush(stdout);
+            if (statusLines()) {
+                std::printf("%s: %.3f s\n", stem.c_str(), seconds);
+                std::fflush(stdout);
+            }
             progress.advance();
         }
     }
     outputs.commit();
-    std::printf("testbed truth: %zu kind(s) x %d frame(s) from frame %d -> %s\n", kinds.size(),
-                options.frames, options.start, outDir.string().c_str());
+    if (statusLines())
+        std::printf("testbed truth: %zu kind(s) x %d frame(s) from frame %d -> %s\n", kinds.size(),
+                    options.frames, options.start, outDir.string().c_str());
     return kOk;
 }
 
@@ -341,8 +344,9 @@ int runScene(const SceneOptions& options) {
     telemetry.commit(std::uint64_t(options.frames), pipeline.droppedTelemetry());
     outputs.wrote(telemetryPath);
     outputs.commit();
-    std::printf("%s: %d frames at %dx%d, %.3g fps -> %s (frames + telemetry.csv)\n", options.name.c_str(),
-                options.frames, size.width, size.height, double(options.fps), outDir.string().c_str());
+    if (statusLines())
+        std::printf("%s: %d frames at %dx%d, %.3g fps -> %s (frames + telemetry.csv)\n", options.name.c_str(),
+                    options.frames, size.width, size.height, double(options.fps), outDir.string().c_str());
     return kOk;
 }
 

@@ -706,6 +706,8 @@ int main(int argc, char** argv) {
         return code == 0 ? kOk : kBadInput;
     }
     applyVerbosity(c.verbosity);
+    setStatusLines(!c.verbosity.quiet &&
+                   (c.verbosity.verbose || (c.verbosity.level != "warning" && c.verbosity.level != "error")));
     setGlDebug(c.glDebug);
     Progress::setEnabled(!c.verbosity.quiet);
     try {

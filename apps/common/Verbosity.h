@@ -20,7 +20,8 @@ struct Verbosity {
 /// Adds -q/--quiet, -v/--verbose and --log-level to `app`.
 inline void addVerbosityOptions(CLI::App& app, Verbosity& verbosity) {
     app.add_flag("-q,--quiet", verbosity.quiet,
-                 "print only errors and the results: --log-level error, and no progress line");
+                 "print errors only: --log-level error; no progress line, no line per frame or summary "
+                 "(what a command is asked to print, --info or a table, is still printed)");
     app.add_flag("-v,--verbose", verbosity.verbose, "print debug messages too: --log-level debug");
     app.add_option("--log-level", verbosity.level,
                    "the least severe message printed: debug, info (the default), warning or error")

@@ -44,10 +44,14 @@ check "it gives the rate and the time left" contains " images/s, ETA "
 check "the results are still printed" contains "testbed truth: 1 kind(s) x 4 frame(s)"
 on_pty "$PHOTOPIC" "${LONG[@]}" -o "$S/truth_quiet" -q
 check "-q on a terminal: no progress line" lacks "images/s"
-check "-q still prints the results" contains "testbed truth: 1 kind(s) x 4 frame(s)"
+check "-q prints errors only: no line per image" lacks "truth_color_"
+check "-q prints errors only: no summary" lacks "testbed truth:"
+check "-q wrote the work all the same" test -s "$S/truth_quiet/truth_color_0003.exr"
 expect 0 "the same work into a pipe" -- "$PHOTOPIC" "${LONG[@]}" -o "$S/truth_pipe"
 check "no progress line in a pipe" lacks "images/s"
 check "no terminal control codes in a pipe" lacks $'\e[K'
+expect 0 "-q on an image sequence" -- "$PHOTOPIC" image "$S/truth_pipe/truth_color_%04d.exr" -o "$S/quiet/" -q
+check "-q: nothing printed for a sequence of frames" test -z "$OUTPUT"
 
 # -q, -v and --log-level, before or after the command's name.
 expect 0 "-v prints debug messages" -- "$PHOTOPIC" scene gradient -o "$S/verbose" --frames 2 --size 32x18 -v
