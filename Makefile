@@ -20,6 +20,7 @@ demo: build
 
 test: build
 	@scripts/check-standalone.sh
+	@scripts/check-paths.py
 	cd build/release && ctest $(CTEST_FLAGS)
 	@echo "== core tests under AddressSanitizer + UndefinedBehaviorSanitizer"
 	@cmake --preset asan > build-configure-asan.log 2>&1 || (cat build-configure-asan.log; exit 1)
