@@ -29,7 +29,7 @@ void pngImage(const std::uint8_t* data, std::size_t size);
 /// loadModelFromMemory on GLB or glTF bytes, with no base folder and with a sandbox's model folder (a file
 /// read outside it aborts)
 void gltfModel(const std::uint8_t* data, std::size_t size);
-void cameraJson(const std::uint8_t* data, std::size_t size); ///< parseCameraJson (`photopic image --camera`)
+void cameraJson(const std::uint8_t* data, std::size_t size); ///< parseCameraTrack (`photopic image --camera`)
 
 // To add a target (say `cube`, a LUT reader in the io library): declare its entry point here (cubeLut) and
 // define it in FuzzTargetsCore.cpp (no GL, no image IO), FuzzTargetsIo.cpp, FuzzTargetsScenes.cpp or

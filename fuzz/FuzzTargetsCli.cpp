@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace photopic::fuzz {
 
@@ -24,20 +25,28 @@ constexpr std::string_view kName = "fuzz-camera.json";
 } // namespace
 
 void cameraJson(const std::uint8_t* data, std::size_t size) {
-    cli::CameraJson camera;
+    cli::CameraTrack track;
     try {
-        camera = cli::parseCameraJson({reinterpret_cast<const char*>(data), size}, kName);
+        track = cli::parseCameraTrack({reinterpret_cast<const char*>(data), size}, kName);
     } catch (const cli::InputError& e) {
         if (!std::string_view(e.what()).starts_with(kName))
             broken(std::string("the error does not start with the file's name: ") + e.what());
         return;
     }
-    // Every frame shape the camera may be asked for: the extreme aspects bound every entry of the matrices.
+    // Every camera of the track (or the one) at every frame shape it may be asked for: the extreme aspects
+    // bound every entry of the matrices.
+    std::vector<const cli::CameraJson*> cameras;
+    if (track.single)
+        cameras.push_back(&*track.single);
+    for (const auto& [frame, camera] : track.frames)
+        cameras.push_back(&camera);
     constexpr int kMax = cli::kCameraJsonMaxSide;
-    for (const auto& [width, height] : {std::pair{1, 1}, {16, 9}, {kMax, 1}, {1, kMax}, {kMax, kMax}}) {
-        if (const char* reason = invalidCameraReason(camera.camera(width, height)))
-            broken("an accepted camera at " + std::to_string(width) + "x" + std::to_string(height) + ": " +
-                   reason);
+    for (const cli::CameraJson* camera : cameras) {
+        for (const auto& [width, height] : {std::pair{1, 1}, {16, 9}, {kMax, 1}, {1, kMax}, {kMax, kMax}}) {
+            if (const char* reason = invalidCameraReason(camera->camera(width, height)))
+                broken("an accepted camera at " + std::to_string(width) + "x" + std::to_string(height) +
+                       ": " + reason);
+        }
     }
 }
 
