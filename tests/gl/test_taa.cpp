@@ -51,7 +51,8 @@ Image8 run(TestbedScene& scene, Pipeline& pipeline, std::uint64_t first, std::ui
 
 // Static camera, converged after 32 frames: edge RMSE in display-referred sRGB against the 16x16 supersampled
 // ray-traced truth shown through the same settings. TAA must be at most 40% of no-AA's, SMAA (one frame, so
-// the same in both columns) at most 70%; FXAA and taa+smaa are reported. This is the README's table.
+// the same in both columns) at most 70%; FXAA and taa+smaa are reported. This is the table of
+// docs/effects.md.
 TEST_F(GlTest, TaaConvergesTowardsTheSupersampledTruthOnEdges) {
     auto scene = stillScene(0.3f);
     const testbed::TruthOptions truthOptions = scene->truthOptions({.dt = kDt, .frameIndex = 0});
