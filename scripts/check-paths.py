@@ -10,6 +10,9 @@ that are patterns (f%04d, *.exr, <name>, {a,b}, ####) and the folders programs m
 each with the reason) are not checked. docs/bench/ is a log of past measurements and is not checked.
 
     scripts/check-paths.py        exit 0 when every path exists, else 1 listing FILE:LINE PATH
+
+Run in a checkout it reads the files git tracks; in a copy of the tree without .git (the standalone test's), every
+file below the current folder but build/ and out/.
 """
 
 import os
@@ -29,14 +32,26 @@ MADE_AT_RUN_TIME = {
 }
 
 
-def tracked_files(root):
-    out = subprocess.run(["git", "ls-files"], cwd=root, capture_output=True, text=True, check=True).stdout
-    keep = (".md", ".h", ".cpp", ".glsl", ".sh", ".bash", ".py", ".cmake", ".txt")
-    for name in out.splitlines():
-        if name.startswith("docs/bench/") or name.startswith("tests/data/"):
-            continue
-        if name.endswith(keep) or os.path.basename(name) in ("Makefile", "CMakeLists.txt"):
-            yield name
+KEEP = (".md", ".h", ".cpp", ".glsl", ".sh", ".bash", ".py", ".cmake", ".txt")
+
+
+def checked(name):
+    if name.startswith("docs/bench/") or name.startswith("tests/data/"):
+        return False
+    return name.endswith(KEEP) or os.path.basename(name) in ("Makefile", "CMakeLists.txt")
+
+
+def tracked_files(root, in_git):
+    """The files git tracks; outside a checkout (a copy of the tree), every file but the build's."""
+    if in_git:
+        out = subprocess.run(["git", "ls-files"], cwd=root, capture_output=True, text=True, check=True).stdout
+        names = out.splitlines()
+    else:
+        names = []
+        for folder, dirs, files in os.walk(root):
+            dirs[:] = [d for d in dirs if d not in (".git", "build", "out") and not d.startswith(".")]
+            names += [os.path.relpath(os.path.join(folder, f), root) for f in files]
+    return sorted(n for n in names if checked(n))
 
 
 def commentOf(name, line):
@@ -64,10 +79,12 @@ def exists(root, base, path):
 
 
 def main():
-    root = subprocess.run(["git", "rev-parse", "--show-toplevel"], capture_output=True, text=True,
-                          check=True).stdout.strip()
+    # The checkout around the current folder; outside one (a copy of the tree), the current folder.
+    top = subprocess.run(["git", "rev-parse", "--show-toplevel"], capture_output=True, text=True)
+    in_git = top.returncode == 0
+    root = top.stdout.strip() if in_git else os.getcwd()
     missing = []
-    for name in tracked_files(root):
+    for name in tracked_files(root, in_git):
         base = os.path.dirname(os.path.join(root, name))
         with open(os.path.join(root, name), encoding="utf-8", errors="replace") as f:
             for number, line in enumerate(f, 1):
