@@ -346,13 +346,11 @@ std::unique_ptr<Pipeline> makeImagePipeline(const PipelineCreateInfo& createInfo
 Settings imageSettings(const ImageOptions& options) {
     // Photographs get the stills look unless --preset or the settings file names another. An image has no
     // lighting stage to hand ambient occlusion to, so it multiplies the scene colour unless the settings
-    // say otherwise: resolved over both bases, an ssao.apply the user gave comes out the same.
+    // say otherwise: no look sets ssao.apply (Settings::applyLook), so lighting over this base is the user's.
     Settings base = Settings::stills();
     base.ssao.apply = AoApply::Multiply;
     Settings settings = resolveSettings(options.settings, base);
-    base.ssao.apply = AoApply::Lighting;
-    const bool lightingAsked = resolveSettings(options.settings, base).ssao.apply == AoApply::Lighting &&
-                               settings.ssao.apply == AoApply::Lighting;
+    const bool lightingAsked = settings.ssao.apply == AoApply::Lighting;
     if (options.bitDepth) {
         settings.output.bitDepth = *options.bitDepth;
     }
@@ -603,6 +601,8 @@ struct RunFrames {
     std::vector<std::int64_t> numbers;
     std::size_t prerolled = 0;    ///< the first `prerolled` inputs are not written
     std::uint64_t firstIndex = 0; ///< the first input's place in its sequence (Halton jitter)
+    /// Each input's own frame number, preroll included (inputFrameNumbers): what a camera track is keyed by.
+    std::map<fs::path, std::int64_t> frameNumbers;
 };
 
 RunFrames runFrames(const ImageOptions& options, const std::vector<InputFile>& written) {
@@ -614,6 +614,7 @@ RunFrames runFrames(const ImageOptions& options, const std::vector<InputFile>& w
         run.inputs.push_back(f.path);
     }
     run.numbers = outputFrameNumbers(all);
+    run.frameNumbers = inputFrameNumbers(all);
     if (const std::optional<std::int64_t> start = sequenceStart(options); start && all.front().frame) {
         run.firstIndex = std::uint64_t(*all.front().frame - *start);
     }
@@ -683,14 +684,9 @@ int runImage(const ImageOptions& options) {
     // A camera track covers every frame the run reads, preroll included, or nothing runs.
     const std::optional<CameraTrack> cameras =
         options.camera.empty() ? std::nullopt : std::optional<CameraTrack>(loadCameraTrack(options.camera));
-    std::map<fs::path, std::int64_t> frameNumbers = inputFrameNumbers(files);
-    frameNumbers.merge(inputFrameNumbers(prerollInputs(options, files, options.preroll)));
     if (cameras) {
-        for (const fs::path& input : run.inputs) {
-            const auto number = frameNumbers.find(input);
-            (void)cameras->at(number == frameNumbers.end() ? std::nullopt : std::optional(number->second),
-                              input);
-        }
+        for (const fs::path& input : run.inputs)
+            (void)cameras->at(frameNumberOf(run.frameNumbers, input), input);
     }
     const std::optional<ExposureTrack> track = exposureTrackFor(options, run);
     if (track) {
@@ -725,7 +721,7 @@ int runImage(const ImageOptions& options) {
     setExrThreads(options.decodeThreads >= 0 ? options.decodeThreads : inFlight > 1 ? allCores : 0);
     InputDecoder decoder(cameras, options.jitter == "halton" ? settings.temporal.jitterCycle : 0,
                          options.maxPixels);
-    decoder.setFrameNumbers(frameNumbers);
+    decoder.setFrameNumbers(run.frameNumbers);
     decoder.setLens(lens);
     decoder.setFirstIndex(run.firstIndex);
     decoder.setAovs(aovs);

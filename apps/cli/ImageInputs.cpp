@@ -1,6 +1,7 @@
 #include "ImageInputs.h"
 
 #include "Commands.h"
+#include "InputSequence.h"
 
 #include "core/HalfFloat.h"
 #include "core/Log.h"
@@ -264,9 +265,7 @@ std::optional<Camera> InputDecoder::trackCamera(const fs::path& path, int width,
         mPreviousTrackViewProjection.reset();
         return std::nullopt;
     }
-    const auto number = mFrameNumbers.find(path);
-    const CameraJson& json =
-        mCameras->at(number == mFrameNumbers.end() ? std::nullopt : std::optional(number->second), path);
+    const CameraJson& json = mCameras->at(frameNumberOf(mFrameNumbers, path), path);
     Camera camera = json.camera(width, height);
     if (mPreviousTrackViewProjection)
         camera.prevViewProjection = *mPreviousTrackViewProjection;
@@ -506,11 +505,8 @@ std::string channelUse(const std::string& name, const AovChannels& aovs) {
     if (!aov) {
         if (name == "RY" || name == "BY")
             return aovs.has(Aov::Color) && aovs.of(Aov::Color)[0] == "Y" ? "colour (chroma)" : "not used";
-        // The other pair of 4-channel motion.
-        const std::vector<std::string>& motion = aovs.of(Aov::Motion);
-        if (!motion.empty() && name.size() == motion[0].size() &&
-            name.compare(0, name.rfind('.') + 1, motion[0], 0, motion[0].rfind('.') + 1) == 0 &&
-            name.rfind('.') != std::string::npos)
+        const std::vector<std::string>& other = aovs.otherMotionPair;
+        if (std::find(other.begin(), other.end(), name) != other.end())
             return "not used (motion's other pair: --aov motion=:pair=" +
                    std::string(aovs.conventions.motionPair == 2 ? "1" : "2") + " reads it)";
         return "not used";
@@ -661,9 +657,7 @@ int runImageInfo(const std::vector<fs::path>& inputs, const fs::path& cameraJson
             continue;
         }
         try {
-            const auto number = numbers.find(path);
-            printInfo(path, cameras, number == numbers.end() ? std::nullopt : std::optional(number->second),
-                      aovs);
+            printInfo(path, cameras, frameNumberOf(numbers, path), aovs);
         } catch (const IoError& e) {
             throw InputError(e.what());
         }

@@ -60,6 +60,13 @@ struct InputFile {
 /// what a camera track (--camera) is keyed by.
 [[nodiscard]] std::map<std::filesystem::path, std::int64_t>
 inputFrameNumbers(const std::vector<InputFile>& inputs);
+/// `path`'s number in inputFrameNumbers' map, if it has one.
+[[nodiscard]] inline std::optional<std::int64_t>
+frameNumberOf(const std::map<std::filesystem::path, std::int64_t>& numbers,
+              const std::filesystem::path& path) {
+    const auto it = numbers.find(path);
+    return it == numbers.end() ? std::nullopt : std::optional(it->second);
+}
 
 /// The lowest frame that exists of the inputs' one frame-numbered pattern (where its sequence starts,
 /// whatever

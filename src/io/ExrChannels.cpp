@@ -36,61 +36,54 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
     return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-/// Each convention word a kind takes.
-const std::vector<std::string>& conventionWords(Aov kind) {
-    static const std::vector<std::string> none;
-    static const std::vector<std::string> depth{"planar", "radial"};
-    static const std::vector<std::string> normals{"world", "world-zup", "camera"};
-    static const std::vector<std::string> motion{"pixels",
-                                                 "ndc",
-                                                 "uv",
-                                                 "current-minus-previous",
-                                                 "previous-minus-current",
-                                                 "next-minus-current",
-                                                 "current-minus-next",
-                                                 "y-up",
-                                                 "y-down",
-                                                 "jittered",
-                                                 "unjittered",
-                                                 "pair=1",
-                                                 "pair=2"};
-    switch (kind) {
-    case Aov::Depth:
-        return depth;
-    case Aov::Normals:
-        return normals;
-    case Aov::Motion:
-        return motion;
-    default:
-        return none;
+/// A convention word: the kind it belongs to and what it sets.
+struct Convention {
+    const char* word;
+    Aov kind;
+    void (*apply)(AovConventions&);
+};
+
+const std::vector<Convention>& conventions() {
+    using C = AovConventions;
+    static const std::vector<Convention> table{
+        {"planar", Aov::Depth, [](C& v) { v.depth = C::Depth::Planar; }},
+        {"radial", Aov::Depth, [](C& v) { v.depth = C::Depth::Radial; }},
+        {"world", Aov::Normals, [](C& v) { v.normals = C::Normals::World; }},
+        {"world-zup", Aov::Normals, [](C& v) { v.normals = C::Normals::WorldZUp; }},
+        {"camera", Aov::Normals, [](C& v) { v.normals = C::Normals::Camera; }},
+        {"pixels", Aov::Motion, [](C& v) { v.motionUnits = C::MotionUnits::Pixels; }},
+        {"ndc", Aov::Motion, [](C& v) { v.motionUnits = C::MotionUnits::Ndc; }},
+        {"uv", Aov::Motion, [](C& v) { v.motionUnits = C::MotionUnits::Uv; }},
+        {"current-minus-previous", Aov::Motion,
+         [](C& v) { v.motionSense = C::MotionSense::CurrentMinusPrevious; }},
+        {"previous-minus-current", Aov::Motion,
+         [](C& v) { v.motionSense = C::MotionSense::PreviousMinusCurrent; }},
+        {"next-minus-current", Aov::Motion, [](C& v) { v.motionSense = C::MotionSense::NextMinusCurrent; }},
+        {"current-minus-next", Aov::Motion, [](C& v) { v.motionSense = C::MotionSense::CurrentMinusNext; }},
+        {"y-up", Aov::Motion, [](C& v) { v.motionYUp = true; }},
+        {"y-down", Aov::Motion, [](C& v) { v.motionYUp = false; }},
+        {"jittered", Aov::Motion, [](C& v) { v.motionJittered = true; }},
+        {"unjittered", Aov::Motion, [](C& v) { v.motionJittered = false; }},
+        {"pair=1", Aov::Motion, [](C& v) { v.motionPair = 1; }},
+        {"pair=2", Aov::Motion, [](C& v) { v.motionPair = 2; }},
+    };
+    return table;
+}
+
+/// The convention words a kind takes, in the table's order.
+std::vector<std::string> conventionWords(Aov kind) {
+    std::vector<std::string> words;
+    for (const Convention& c : conventions()) {
+        if (c.kind == kind)
+            words.emplace_back(c.word);
     }
+    return words;
 }
 
 void applyConvention(AovConventions& c, const std::string& word) {
-    using C = AovConventions;
-    static const std::vector<std::pair<std::string, void (*)(C&)>> setters{
-        {"planar", [](C& v) { v.depth = C::Depth::Planar; }},
-        {"radial", [](C& v) { v.depth = C::Depth::Radial; }},
-        {"world", [](C& v) { v.normals = C::Normals::World; }},
-        {"world-zup", [](C& v) { v.normals = C::Normals::WorldZUp; }},
-        {"camera", [](C& v) { v.normals = C::Normals::Camera; }},
-        {"pixels", [](C& v) { v.motionUnits = C::MotionUnits::Pixels; }},
-        {"ndc", [](C& v) { v.motionUnits = C::MotionUnits::Ndc; }},
-        {"uv", [](C& v) { v.motionUnits = C::MotionUnits::Uv; }},
-        {"current-minus-previous", [](C& v) { v.motionSense = C::MotionSense::CurrentMinusPrevious; }},
-        {"previous-minus-current", [](C& v) { v.motionSense = C::MotionSense::PreviousMinusCurrent; }},
-        {"next-minus-current", [](C& v) { v.motionSense = C::MotionSense::NextMinusCurrent; }},
-        {"current-minus-next", [](C& v) { v.motionSense = C::MotionSense::CurrentMinusNext; }},
-        {"y-up", [](C& v) { v.motionYUp = true; }},
-        {"y-down", [](C& v) { v.motionYUp = false; }},
-        {"jittered", [](C& v) { v.motionJittered = true; }},
-        {"unjittered", [](C& v) { v.motionJittered = false; }},
-        {"pair=1", [](C& v) { v.motionPair = 1; }},
-        {"pair=2", [](C& v) { v.motionPair = 2; }},
-    };
-    for (const auto& [name, set] : setters) {
-        if (name == word) {
-            set(c);
+    for (const Convention& convention : conventions()) {
+        if (word == convention.word) {
+            convention.apply(c);
             return;
         }
     }
@@ -361,7 +354,7 @@ AovOverride parseAovOverride(std::string_view text) {
                            " (or one prefix their components complete)");
     }
     if (colon != std::string_view::npos) {
-        const std::vector<std::string>& allowed = conventionWords(o.kind);
+        const std::vector<std::string> allowed = conventionWords(o.kind);
         for (const std::string& word : split(rest.substr(colon + 1), ',')) {
             if (!contains(allowed, word))
                 throw AovError(
@@ -451,6 +444,7 @@ AovChannels resolveAovs(const std::vector<std::string>& channels, bool blenderMu
     auto& motion = out.channels[std::size_t(Aov::Motion)];
     if (motion.size() == 4) {
         const std::size_t first = out.conventions.motionPair == 2 ? 2 : 0;
+        out.otherMotionPair = {motion[2 - first], motion[3 - first]};
         motion = {motion[first], motion[first + 1]};
     }
     if (out.channels[std::size_t(Aov::Color)].empty()) {

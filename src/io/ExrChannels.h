@@ -86,6 +86,8 @@ struct AovChannels {
     std::string layer; ///< the layer chosen ("" when the channels are unprefixed)
     std::array<std::vector<std::string>, kAovCount> channels;
     AovConventions conventions;
+    /// Of 4-channel motion, the pair not read (motion's other channels), for --info; else empty.
+    std::vector<std::string> otherMotionPair;
     /// Where each kind came from ("photopic preset", "blender preset", "--aov"), for --info.
     std::array<std::string, kAovCount> origin;
 

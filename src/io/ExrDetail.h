@@ -33,6 +33,11 @@ void readCheckedExrBytes(const std::filesystem::path& path, std::vector<unsigned
 void checkExrBytes(const std::filesystem::path& path, std::span<const unsigned char> bytes,
                    const ImageReadLimits& limits = {});
 
+/// Whether the file's version field says it has several parts (flag 0x1000).
+[[nodiscard]] inline bool isMultiPartExr(std::span<const unsigned char> bytes) {
+    return bytes.size() >= 8 && (bytes[5] & 0x10) != 0;
+}
+
 /// OpenEXR's input stream over bytes in memory; reads past the end throw like a short file does.
 class MemoryIStream : public Imf::IStream {
 public:

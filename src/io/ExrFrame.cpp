@@ -375,6 +375,41 @@ void describeHeader(const Imf::Header& header, ExrFrame& frame) {
     frame.dataOrigin = {data.min.x - display.min.x, data.min.y - display.min.y};
 }
 
+/// The mapping of a file with these channels, its first header saying whether Blender wrote it; a mapping
+/// that does not fit is an IoError naming the file.
+AovChannels resolveFrameAovs(const fs::path& path, const std::vector<std::string>& channels,
+                             const Imf::Header& header, const AovRequest& request) {
+    try {
+        return resolveAovs(channels, findAttribute(header, "BlenderMultiChannel") != nullptr, request);
+    } catch (const AovError& e) {
+        throw IoError(path, e.what());
+    }
+}
+
+/// Each 3D layer of `frame`, the kind of channels that fill it and whether it is read.
+std::array<std::tuple<Aov, std::vector<float>*, bool>, 4> layerTargets(ExrFrame& frame,
+                                                                       ExrFrameReader::Layers wanted) {
+    return {std::tuple{Aov::Depth, &frame.depth, wanted.depth},
+            std::tuple{Aov::Normals, &frame.normals, wanted.normals},
+            std::tuple{Aov::Motion, &frame.motion, wanted.motion},
+            std::tuple{Aov::ObjectId, &frame.objectId, wanted.objectId}};
+}
+
+/// The 3D layers emptied (a layer this file lacks is empty, whatever an earlier frame read into the same
+/// storage), their capacity kept.
+void clearLayers(ExrFrame& frame) {
+    for (const auto& [aov, values, read] : layerTargets(frame, {}))
+        values->clear();
+}
+
+/// The conventions the reader applies once the pixels are read: motion into pixels, current minus previous,
+/// y down; Z-up normals turned Y up.
+void applyReaderConventions(ExrFrame& frame) {
+    canonicalMotion(frame.motion, frame.aovs.conventions, frame.displaySize);
+    if (frame.aovs.conventions.normals == AovConventions::Normals::WorldZUp)
+        yUpNormals(frame.normals);
+}
+
 /// A channel of a multi-part file: the part that holds it and its name there.
 struct PartChannel {
     int part = 0;
@@ -402,12 +437,7 @@ void readMultipartFrame(const fs::path& path, std::span<const unsigned char> byt
                 frame.channels.push_back(full);
         }
     }
-    try {
-        frame.aovs = resolveAovs(frame.channels,
-                                 findAttribute(file.header(0), "BlenderMultiChannel") != nullptr, request);
-    } catch (const AovError& e) {
-        throw IoError(path, e.what());
-    }
+    frame.aovs = resolveFrameAovs(path, frame.channels, file.header(0), request);
     const AovChannels& aovs = frame.aovs;
     const std::vector<std::string>& colorNames = aovs.of(Aov::Color);
     const int colorPart = where.at(colorNames.front()).part;
@@ -446,10 +476,7 @@ void readMultipartFrame(const fs::path& path, std::span<const unsigned char> byt
         for (std::size_t i = 0; i < pixels; ++i)
             frame.color.rgba[i * 4 + 3] = 1.0f;
     }
-    for (const auto& [aov, values, read] : {std::tuple{Aov::Depth, &frame.depth, wanted.depth},
-                                            std::tuple{Aov::Normals, &frame.normals, wanted.normals},
-                                            std::tuple{Aov::Motion, &frame.motion, wanted.motion},
-                                            std::tuple{Aov::ObjectId, &frame.objectId, wanted.objectId}}) {
+    for (const auto& [aov, values, read] : layerTargets(frame, wanted)) {
         const std::vector<std::string>& names = aovs.of(aov);
         if (names.empty() || !read)
             continue;
@@ -473,9 +500,7 @@ void readMultipartFrame(const fs::path& path, std::span<const unsigned char> byt
     detail::convertExrToRec709(path, header, frame.color);
     emptyKeepingStorage(frame.colorHalves);
     frame.halfColor = false;
-    canonicalMotion(frame.motion, aovs.conventions, frame.displaySize);
-    if (aovs.conventions.normals == AovConventions::Normals::WorldZUp)
-        yUpNormals(frame.normals);
+    applyReaderConventions(frame);
 }
 
 /// The frame in `bytes`, already checked by detail::checkExrBytes, into `frame`'s storage.
@@ -484,14 +509,10 @@ void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes
                       ExrFrameReader::Layers wanted, const AovRequest& request) {
     try {
         detail::MemoryIStream stream(path, bytes);
-        const bool multiPart = bytes.size() >= 8 && (bytes[5] & 0x10) != 0; // version flag 0x1000
-        if (multiPart) {
+        if (detail::isMultiPartExr(bytes)) {
             Imf::MultiPartInputFile parts(stream);
             if (parts.parts() > 1) {
-                frame.depth.clear();
-                frame.normals.clear();
-                frame.motion.clear();
-                frame.objectId.clear();
+                clearLayers(frame);
                 readMultipartFrame(path, bytes, parts, frame, wanted, request);
                 return;
             }
@@ -507,12 +528,7 @@ void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes
             frame.channels.emplace_back(it.name());
         describeHeader(header, frame);
 
-        try {
-            frame.aovs =
-                resolveAovs(frame.channels, findAttribute(header, "BlenderMultiChannel") != nullptr, request);
-        } catch (const AovError& e) {
-            throw IoError(path, e.what());
-        }
+        frame.aovs = resolveFrameAovs(path, frame.channels, header, request);
         const AovChannels& aovs = frame.aovs;
         const detail::ExrColorChannels colorNames = detail::ExrColorChannels::of(aovs.of(Aov::Color));
         frame.camera = readCameraAttributes(path, header);
@@ -523,19 +539,11 @@ void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes
         }
         // Other primaries are converted to Rec.709 in float: the values are halves no longer.
         frame.halfColor = frame.halfColor && !detail::exrToRec709(header);
-        // A layer this file lacks is empty, whatever an earlier frame read into the same storage.
-        frame.depth.clear();
-        frame.normals.clear();
-        frame.motion.clear();
-        frame.objectId.clear();
+        clearLayers(frame);
 
         const auto layers = [&](Imf::FrameBuffer& frameBuffer, const Imath::Box2i& dataWindow, int width,
                                 int height) {
-            for (const auto& [aov, values, read] :
-                 {std::tuple{Aov::Depth, &frame.depth, wanted.depth},
-                  std::tuple{Aov::Normals, &frame.normals, wanted.normals},
-                  std::tuple{Aov::Motion, &frame.motion, wanted.motion},
-                  std::tuple{Aov::ObjectId, &frame.objectId, wanted.objectId}}) {
+            for (const auto& [aov, values, read] : layerTargets(frame, wanted)) {
                 if (aovs.has(aov) && read)
                     addLayerSlices(frameBuffer, aovs.of(aov), *values, dataWindow, width, height);
             }
@@ -549,9 +557,7 @@ void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes
             emptyKeepingStorage(frame.colorHalves);
             detail::readExrColor(path, bytes, file, frame.color, layers, limits, colorNames);
         }
-        canonicalMotion(frame.motion, aovs.conventions, frame.displaySize);
-        if (aovs.conventions.normals == AovConventions::Normals::WorldZUp)
-            yUpNormals(frame.normals);
+        applyReaderConventions(frame);
     } catch (const IoError&) {
         throw;
     } catch (const std::exception& e) {
@@ -563,10 +569,7 @@ void readCheckedFrame(const fs::path& path, std::span<const unsigned char> bytes
 void clearFrame(ExrFrame& frame) {
     emptyKeepingStorage(frame.color);
     emptyKeepingStorage(frame.colorHalves);
-    frame.depth.clear();
-    frame.normals.clear();
-    frame.motion.clear();
-    frame.objectId.clear();
+    clearLayers(frame);
     frame.camera = {};
     frame.aovs = {};
     frame.channels.clear();

@@ -299,7 +299,7 @@ bool exrChannelListFits(std::span<const unsigned char> value) {
 /// number of bytes than the declared size (a fixed-size value, a channel list), after which OpenEXR would
 /// go on reading the next attribute from the wrong place, where a size it then trusted was never checked.
 void checkExrAttributeSizes(const fs::path& path, std::span<const unsigned char> bytes) {
-    const bool multiPart = bytes.size() >= 8 && (bytes[5] & 0x10) != 0; // version flag 0x1000
+    const bool multiPart = detail::isMultiPartExr(bytes);
     // Deep data (any number of samples a pixel, version flag 0x800 or a part of type deepscanline or
     // deeptile) has no flat colour to read; refused here, before OpenEXR's deep reader sees the file.
     const auto refuseDeep = [&](const std::string& what) {
