@@ -44,14 +44,21 @@ float number(const fs::path& path, const json& object, const std::string& key, f
     return it->get<float>();
 }
 
-glm::vec3 vector3(const fs::path& path, const json& object, const std::string& key, glm::vec3 fallback) {
+/// An array of N numbers; `prefix` ("" or "frames.N.") names the key in errors.
+template <int N>
+glm::vec<N, float> vectorOf(const fs::path& path, const json& object, const std::string& key,
+                            glm::vec<N, float> fallback, const std::string& prefix = "") {
     const auto it = object.find(key);
     if (it == object.end())
         return fallback;
-    if (!it->is_array() || it->size() != 3 || !std::all_of(it->begin(), it->end(), finiteFloat))
-        badKey(path, key,
-               "expected an array of 3 finite numbers of single precision (magnitude up to 3.4e38)");
-    return {(*it)[0].get<float>(), (*it)[1].get<float>(), (*it)[2].get<float>()};
+    if (!it->is_array() || it->size() != std::size_t(N) || !std::all_of(it->begin(), it->end(), finiteFloat))
+        badKey(path, prefix + key,
+               "expected an array of " + std::to_string(N) +
+                   " finite numbers of single precision (magnitude up to 3.4e38)");
+    glm::vec<N, float> v;
+    for (int i = 0; i < N; ++i)
+        v[i] = (*it)[std::size_t(i)].get<float>();
+    return v;
 }
 
 /// The shortest and the longest direction vector (target - position, up) normalised in single precision
@@ -143,11 +150,11 @@ Camera CameraJson::camera(int width, int height) const {
             side = h;
             pixels = *focalLengthMm / sensor.heightMm * h;
         }
-        c.projection = perspectiveProjection(2.0f * std::atan(0.5f * h / pixels), w / h, nearPlane, farPlane);
+        c.verticalFov = 2.0f * std::atan(0.5f * h / pixels);
+        c.projection = perspectiveProjection(c.verticalFov, w / h, nearPlane, farPlane);
         // x_ndc = P00 x / -z - P20: the window moved right by shift.x * side pixels moves the image left.
         c.projection[2][0] = 2.0f * shift.x * side / w;
         c.projection[2][1] = 2.0f * shift.y * side / h;
-        c.verticalFov = 2.0f * std::atan(0.5f * h / pixels);
         c.lens.focalLengthMm = *focalLengthMm;
         c.lens.sensorHeightMm = *focalLengthMm * h / pixels; // the sensor's extent over the frame's height
     } else {
@@ -160,14 +167,6 @@ Camera CameraJson::camera(int width, int height) const {
 }
 
 namespace {
-
-glm::vec2 vector2(const fs::path& path, const json& object, const std::string& key,
-                  const std::string& prefix) {
-    const json& v = object.at(key);
-    if (!v.is_array() || v.size() != 2 || !std::all_of(v.begin(), v.end(), finiteFloat))
-        badKey(path, prefix + key, "expected an array of 2 finite numbers");
-    return {v[0].get<float>(), v[1].get<float>()};
-}
 
 /// cameraToWorld: 4 rows of 4 finite numbers, a rotation (orthonormal within 1e-3) and a translation, last
 /// row (0, 0, 0, 1).
@@ -245,9 +244,9 @@ CameraJson parseCameraObject(const fs::path& path, const json& root, const std::
             if (!root.contains(key))
                 badKey(path, prefix + key, "required (or cameraToWorld)");
         }
-        c.position = vector3(path, root, "position", c.position);
-        c.target = vector3(path, root, "target", c.target);
-        c.up = vector3(path, root, "up", c.up);
+        c.position = vectorOf<3>(path, root, "position", c.position, prefix);
+        c.target = vectorOf<3>(path, root, "target", c.target, prefix);
+        c.up = vectorOf<3>(path, root, "up", c.up, prefix);
     }
     if (root.contains("focalLengthMm")) {
         if (root.contains("verticalFovDeg"))
@@ -258,7 +257,7 @@ CameraJson parseCameraObject(const fs::path& path, const json& root, const std::
         if (const auto sensor = root.find("sensor"); sensor != root.end())
             c.sensor = sensorJson(path, *sensor, prefix);
         if (root.contains("shift")) {
-            c.shift = vector2(path, root, "shift", prefix);
+            c.shift = vectorOf<2>(path, root, "shift", c.shift, prefix);
             if (std::abs(c.shift.x) > 10.0f || std::abs(c.shift.y) > 10.0f)
                 badKey(path, prefix + "shift", "must be within [-10, 10] (fractions of the fitted side)");
         }
@@ -292,7 +291,7 @@ CameraJson parseCameraObject(const fs::path& path, const json& root, const std::
             badKey(path, prefix + "up", "must not be parallel to target - position");
     }
     if (root.contains("sunDirection")) {
-        const glm::vec3 sun = vector3(path, root, "sunDirection", glm::vec3(0.0f));
+        const glm::vec3 sun = vectorOf<3>(path, root, "sunDirection", glm::vec3(0.0f), prefix);
         const float length = glm::length(sun);
         if (!(length >= kMinDirection && length <= kMaxDirection))
             badKey(path, prefix + "sunDirection", "must have a length in [1e-6, 1e18]");

@@ -170,6 +170,9 @@ TEST(CameraTrack, ErrorsNameTheFrameAndTheKey) {
     EXPECT_NE(
         trackError(R"({"frames": {"7": {)" + ok + R"(, "fov": 3}}})").find("camera key \"frames.7.fov\""),
         std::string::npos);
+    EXPECT_NE(trackError(R"({"frames": {"2": {"position": [0, 0], "target": [0, 0, 0]}}})")
+                  .find("camera key \"frames.2.position\": expected an array of 3"),
+              std::string::npos);
     EXPECT_NE(trackError(R"({"frames": {"x": {)" + ok + "}}}").find("camera key \"frames.x\""),
               std::string::npos);
     EXPECT_NE(trackError(R"({"frames": {}})").find("camera key \"frames\""), std::string::npos);
