@@ -194,28 +194,38 @@ TEST(ExrChannels, BadOverridesNameWhatIsWrong) {
     EXPECT_NE(partial.find("has N.X, N.Y but not N.Z"), std::string::npos) << partial;
 }
 
+using ChannelValues = std::vector<std::pair<std::string, float>>;
+
+/// FLOAT slices of `w` x `h` pixels, each channel's every pixel its value, over `planes` (filled here).
+Imf::FrameBuffer constantSlices(const ChannelValues& channels, int w, int h,
+                                std::vector<std::vector<float>>& planes) {
+    planes.clear();
+    for (const auto& [name, value] : channels)
+        planes.emplace_back(std::size_t(w) * std::size_t(h), value);
+    Imf::FrameBuffer frameBuffer;
+    for (std::size_t c = 0; c < channels.size(); ++c)
+        frameBuffer.insert(channels[c].first,
+                           Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(planes[c].data()), sizeof(float),
+                                      sizeof(float) * std::size_t(w)));
+    return frameBuffer;
+}
+
 /// A Blender-style multilayer file: one part, <layer>.<pass>.<channel> names, the BlenderMultiChannel
 /// attribute; every pixel the same values.
 void writeBlenderStyle(const fs::path& path, int width, int height) {
     Imf::Header header(width, height);
     header.insert("BlenderMultiChannel", Imf::StringAttribute("Blender V2.55.1 and newer"));
-    const std::vector<std::pair<std::string, float>> values{
+    const ChannelValues values{
         {"ViewLayer.Combined.R", 0.25f}, {"ViewLayer.Combined.G", 0.5f}, {"ViewLayer.Combined.B", 0.75f},
         {"ViewLayer.Combined.A", 1.0f},  {"ViewLayer.Depth.Z", 7.5f},    {"ViewLayer.Normal.X", 0.0f},
         {"ViewLayer.Normal.Y", 0.0f},    {"ViewLayer.Normal.Z", 1.0f},   {"ViewLayer.Vector.X", 3.0f},
         {"ViewLayer.Vector.Y", -2.0f},   {"ViewLayer.Vector.Z", -9.0f},  {"ViewLayer.Vector.W", 9.0f},
         {"ViewLayer.IndexOB.X", 4.0f}};
-    std::vector<std::vector<float>> planes;
-    Imf::FrameBuffer frameBuffer;
-    for (const auto& [name, value] : values) {
+    for (const auto& [name, value] : values)
         header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-        planes.emplace_back(std::size_t(width) * std::size_t(height), value);
-    }
-    for (std::size_t i = 0; i < values.size(); ++i)
-        frameBuffer.insert(values[i].first, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(planes[i].data()),
-                                                       sizeof(float), sizeof(float) * std::size_t(width)));
+    std::vector<std::vector<float>> planes;
     Imf::OutputFile file(path.c_str(), header);
-    file.setFrameBuffer(frameBuffer);
+    file.setFrameBuffer(constantSlices(values, width, height, planes));
     file.writePixels(height);
 }
 
@@ -249,7 +259,7 @@ TEST(ExrChannels, TheReaderAppliesTheBlenderConventions) {
 void writeMultipart(const fs::path& path, int width, int height, bool mismatchedWindow = false) {
     struct Part {
         const char* name;
-        std::vector<std::pair<const char*, float>> channels;
+        ChannelValues channels;
     };
     const std::vector<Part> parts{{"rgba", {{"R", 0.5f}, {"G", 0.25f}, {"B", 0.125f}, {"A", 1.0f}}},
                                   {"depth", {{"Z", 3.0f}}},
@@ -272,15 +282,8 @@ void writeMultipart(const fs::path& path, int width, int height, bool mismatched
         const int w = window.max.x - window.min.x + 1;
         const int h = window.max.y - window.min.y + 1;
         std::vector<std::vector<float>> planes;
-        Imf::FrameBuffer frameBuffer;
-        for (const auto& [name, value] : parts[k].channels)
-            planes.emplace_back(std::size_t(w) * std::size_t(h), value);
-        for (std::size_t c = 0; c < planes.size(); ++c)
-            frameBuffer.insert(parts[k].channels[c].first,
-                               Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(planes[c].data()),
-                                          sizeof(float), sizeof(float) * std::size_t(w)));
         Imf::OutputPart part(file, int(k));
-        part.setFrameBuffer(frameBuffer);
+        part.setFrameBuffer(constantSlices(parts[k].channels, w, h, planes));
         part.writePixels(h);
     }
 }
