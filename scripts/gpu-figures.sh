@@ -11,15 +11,12 @@
 #   bench-1920x1080-gl-debug.txt  a KHR_debug context: the driver's messages are in the log
 #   ae-histogram-1920x1080.*      queued, histogram metering with auto exposure
 #   aa-MODE-1920x1080.*           queued, each anti-aliasing method's passes (fxaa, smaa, taa, taa+smaa)
-#   prefilter-KERNEL-SIZE-rN.*    queued, the bloom prefilter kernels against each other (taps in 2x2 and 4x4
-#                                 blocks, shared-memory tiles of texels, taps shared in a group, filtered
-#                                 or from texels), ROUNDS interleaved rounds
 #   cli.txt                       `photopic image` over a 1080p EXR sequence (AE + bloom + ACES): wall time and,
 #                                 from -v, the median milliseconds a frame spends in each stage
 # Usage: scripts/gpu-figures.sh OUT PHOTOPIC...   PHOTOPIC is the command that runs photopic (a path, or a
 # wrapper and its arguments). Environment: GL_TESTS (the command that runs photopic_gl_tests; unset: skipped),
-# FRAMES (timed bench frames, 200), SIZES ("1920x1080 3840x2160"), ROUNDS (2), SEQ_FRAMES (48), SEQ_SIZE
-# (1920x1080), NATURAL (data/GoldenGate.exr: run from the repository's root). On a software renderer, FRAMES=3 SIZES=320x180 ROUNDS=1 SEQ_FRAMES=4 SEQ_SIZE=320x180 checks
+# FRAMES (timed bench frames, 200), SIZES ("1920x1080 3840x2160"), SEQ_FRAMES (48), SEQ_SIZE
+# (1920x1080), NATURAL (data/GoldenGate.exr: run from the repository's root). On a software renderer, FRAMES=3 SIZES=320x180 SEQ_FRAMES=4 SEQ_SIZE=320x180 checks
 # that the script runs; its figures mean nothing there.
 set -uo pipefail
 if [ $# -lt 2 ]; then
@@ -31,7 +28,6 @@ shift
 photopic=("$@")
 frames=${FRAMES:-200}
 read -r -a sizes <<< "${SIZES:-1920x1080 3840x2160}"
-rounds=${ROUNDS:-2}
 seq_frames=${SEQ_FRAMES:-48}
 seq_size=${SEQ_SIZE:-1920x1080}
 natural=${NATURAL:-data/GoldenGate.exr}
@@ -79,22 +75,6 @@ bench ae-histogram-1920x1080 --size 1920x1080 --queue-ahead --set autoExposure.e
 for mode in fxaa smaa taa taa+smaa; do
     bench "aa-${mode/+/-}-1920x1080" --size 1920x1080 --queue-ahead --set aa.mode="$mode"
 done
-for round in $(seq "$rounds"); do
-    for size in "${sizes[@]}"; do
-        for kernel in taps2 taps4 tiles shared shared-texels; do
-            case $kernel in
-            taps2) env=(PHOTOPIC_BLOOM_PREFILTER=taps PHOTOPIC_BLOOM_BLOCK_SIDE=2) ;;
-            taps4) env=(PHOTOPIC_BLOOM_PREFILTER=taps PHOTOPIC_BLOOM_BLOCK_SIDE=4) ;;
-            tiles) env=(PHOTOPIC_BLOOM_PREFILTER=tiles PHOTOPIC_BLOOM_BLOCK_SIDE=2) ;;
-            shared) env=(PHOTOPIC_BLOOM_PREFILTER=shared PHOTOPIC_BLOOM_BLOCK_SIDE=2) ;;
-            shared-texels) env=(PHOTOPIC_BLOOM_PREFILTER=shared-texels PHOTOPIC_BLOOM_BLOCK_SIDE=2) ;;
-            esac
-            step "prefilter-$kernel-$size-r$round" env "${env[@]}" "${photopic[@]}" bench --size "$size" \
-                --frames "$frames" --warmup 20 --queue-ahead --json "$out/prefilter-$kernel-$size-r$round.json"
-        done
-    done
-done
-
 echo "== cli"
 seq_dir=$(mktemp -d)
 trap 'rm -rf "$seq_dir"' EXIT

@@ -785,10 +785,9 @@ int runBench(const BenchOptions& options) {
                 image.height, imageFormatName(input.format()).c_str(), inputName.c_str(),
                 mirrored ? ", mirrored to this size" : "", options.frames, options.warmup,
                 info.renderer.c_str());
-    std::printf("colour path: %s (%s), quality %s, bloom levels %d (prefilter %s, blocks of %d)\n",
-                t.path == ColorPath::Hdr ? "HDR" : "LDR", t.pathReason.c_str(),
-                std::string(qualityNames()[std::size_t(t.quality)]).c_str(), t.bloomLevels,
-                t.bloomPrefilterKernel.c_str(), t.bloomBlockSide);
+    std::printf("colour path: %s (%s), quality %s, bloom levels %d\n", t.path == ColorPath::Hdr ? "HDR" : "LDR",
+                t.pathReason.c_str(), std::string(qualityNames()[std::size_t(t.quality)]).c_str(),
+                t.bloomLevels);
     if (options.sync) {
         std::printf("--sync: glFinish() around every pass; 'wall ms' holds the pass's own work and nothing "
                     "else\n");
@@ -852,7 +851,7 @@ int runBench(const BenchOptions& options) {
             {"colourPath", t.path == ColorPath::Hdr ? "hdr" : "ldr"},
             {"colourPathReason", t.pathReason},
             {"quality", std::string(qualityNames()[std::size_t(t.quality)])},
-            {"bloomKernels", {{"prefilter", t.bloomPrefilterKernel}, {"blockSide", t.bloomBlockSide}}},
+            {"bloomLevels", t.bloomLevels},
             {"passes", passesJson},
             {"totalMedianGpuMs", totalMs},
             {"frameMedianGpuMs", wholeFrameMs},

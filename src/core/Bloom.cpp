@@ -26,12 +26,46 @@ int bloomMipCount(glm::ivec2 size, int firstDivisor, int wanted) noexcept {
     int levels = 0;
     while (levels < std::max(1, wanted)) {
         const glm::ivec2 s = bloomMipSize(size, firstDivisor, levels);
-        if (std::min(s.x, s.y) < 2 && levels > 0) {
+        if (std::min(s.x, s.y) < 4 && levels > 0) {
             break;
         }
         ++levels;
     }
     return levels;
+}
+
+int bloomLevelScale(int firstDivisor, int level) noexcept {
+    return firstDivisor << level;
+}
+
+glm::ivec2 bloomLevelFrame(glm::ivec2 size, int firstDivisor, int level) noexcept {
+    const int scale = bloomLevelScale(firstDivisor, level);
+    return {std::max(1, (size.x + scale - 1) / scale), std::max(1, (size.y + scale - 1) / scale)};
+}
+
+std::array<float, kBloomBlurReach + 1> bloomBlurWeights() noexcept {
+    std::array<float, kBloomBlurReach + 1> w{};
+    double sum = 0.0;
+    for (int i = 0; i <= kBloomBlurReach; ++i) {
+        const double g = std::exp(-double(i * i) / (2.0 * kBloomBlurSigma * kBloomBlurSigma));
+        w[std::size_t(i)] = float(g);
+        sum += (i == 0 ? 1.0 : 2.0) * g;
+    }
+    for (float& v : w) {
+        v = float(double(v) / sum);
+    }
+    return w;
+}
+
+std::span<const float> bloomPrefilterWeights(int firstDivisor) noexcept {
+    static constexpr std::array<float, 4> kHalf{1.0f / 8, 3.0f / 8, 3.0f / 8, 1.0f / 8};
+    static constexpr std::array<float, 10> kQuarter{1.0f / 64,  3.0f / 64,  6.0f / 64, 10.0f / 64,
+                                                    12.0f / 64, 12.0f / 64, 10.0f / 64, 6.0f / 64,
+                                                    3.0f / 64,  1.0f / 64};
+    if (firstDivisor == 4) {
+        return kQuarter;
+    }
+    return kHalf;
 }
 
 float bloomLevelWeight(float radius, int level, int levels) noexcept {

@@ -196,6 +196,15 @@ Sampler Sampler::linear(std::string_view debugName) {
     return clamped(GL_LINEAR, debugName);
 }
 
+Sampler Sampler::linearTransparentBorder(std::string_view debugName) {
+    Sampler s = clamped(GL_LINEAR, debugName);
+    constexpr GLfloat kTransparent[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    glSamplerParameterfv(s.id(), GL_TEXTURE_BORDER_COLOR, kTransparent);
+    return s;
+}
+
 Sampler Sampler::depthCompare(std::string_view debugName) {
     Sampler s = clamped(GL_LINEAR, debugName);
     glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);

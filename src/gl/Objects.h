@@ -235,6 +235,9 @@ public:
     /// LINEAR filtering with depth comparison (LEQUAL), clamped: a depth texture read through a
     /// sampler2DShadow as the share of a 2x2 footprint whose depth is at or beyond the reference.
     static Sampler depthCompare(std::string_view debugName);
+    /// LINEAR filtering (level 0 only) with a transparent black border: reads past the texture's edge are
+    /// (0, 0, 0, 0), for filters that treat what lies outside an image as nothing.
+    static Sampler linearTransparentBorder(std::string_view debugName);
     [[nodiscard]] GLuint id() const { return mObject.id(); }
 
 private:

@@ -511,8 +511,6 @@ PipelineStatus Pipeline::status() const {
         t.pathReason = mCaps.path == ColorPath::Ldr ? mCaps.pathReason : "quality=legacy runs the LDR path";
     }
     t.bloomLevels = mPostSequencer.ran(mOrder->bloom) ? mOrder->bloom.levels() : 0;
-    t.bloomBlockSide = mOrder->bloom.blockSide();
-    t.bloomPrefilterKernel = bloomPrefilterKernelName(mOrder->bloom.prefilterKernel());
     t.passes = mTimers.latest();
     for (const Sequencer* s : {&mLightingSequencer, &mPostSequencer}) {
         for (std::string& name : s->ranPasses()) {

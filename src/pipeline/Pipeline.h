@@ -42,9 +42,6 @@ struct PipelineStatus {
     std::string pathReason;          ///< why
     Quality quality = Quality::High;
     int bloomLevels = 0; ///< levels the last frame's bloom chain ran (0: no bloom)
-    // The bloom chain's kernels (BloomPass): the renderer's defaults unless the environment overrides them.
-    int bloomBlockSide = 0;                    ///< target texels per side of a downsample block (1, 2 or 4)
-    std::string bloomPrefilterKernel = "taps"; ///< bloomPrefilterKernelName of the prefilter's kernel
     std::vector<PassTiming> passes;            ///< the most recent frame with GPU timings available
     std::vector<std::string> ran;              ///< the passes the last frame ran, in order (both stages)
     std::vector<SkippedPass> skipped;          ///< passes the last frame needed but could not run, and why

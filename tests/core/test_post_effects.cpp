@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <numeric>
+#include <vector>
 
 namespace photopic {
 namespace {
@@ -57,8 +59,52 @@ TEST(Bloom, MipChainShape) {
     EXPECT_EQ(bloomMipSize({1920, 1080}, 2, 0), glm::ivec2(960, 540));
     EXPECT_EQ(bloomMipSize({1920, 1080}, 4, 1), glm::ivec2(240, 135));
     EXPECT_EQ(bloomMipCount({1920, 1080}, 2, 6), 6);
-    EXPECT_EQ(bloomMipCount({16, 16}, 2, 6), 3); // 8, 4, 2: a 1-texel level is not kept
+    EXPECT_EQ(bloomMipCount({16, 16}, 2, 6), 2); // 8, 4: a 2-texel level is not kept
     EXPECT_EQ(bloomMipCount({2, 2}, 2, 6), 1);   // tiny images still get one level
+}
+
+TEST(Bloom, LevelsCoverTheFrameWithWholeTexels) {
+    EXPECT_EQ(bloomLevelScale(2, 0), 2);
+    EXPECT_EQ(bloomLevelScale(4, 3), 32);
+    EXPECT_EQ(bloomLevelFrame({1920, 1080}, 2, 0), glm::ivec2(960, 540));
+    EXPECT_EQ(bloomLevelFrame({1920, 1080}, 2, 3), glm::ivec2(120, 68)); // 67.5: the last row partly out
+    EXPECT_EQ(bloomLevelFrame({61, 37}, 4, 0), glm::ivec2(16, 10));
+    EXPECT_EQ(bloomLevelFrame({3, 3}, 4, 4), glm::ivec2(1, 1));
+}
+
+// The blur's weights are the 17-texel Gaussian of sigma 2, renormalised.
+TEST(Bloom, BlurWeightsAreTheTruncatedGaussian) {
+    const auto w = bloomBlurWeights();
+    double sum = w[0];
+    for (int k = 1; k <= kBloomBlurReach; ++k)
+        sum += 2.0 * w[std::size_t(k)];
+    EXPECT_NEAR(sum, 1.0, 1e-6);
+    for (int k = 1; k <= kBloomBlurReach; ++k) {
+        EXPECT_NEAR(w[std::size_t(k)] / w[0], std::exp(-double(k * k) / (2.0 * kBloomBlurSigma * kBloomBlurSigma)),
+                    1e-6)
+            << k;
+    }
+}
+
+// The prefilter's weights are binomial: they sum to 1, are symmetric, and the quarter-size one is the
+// half-size one at twice the spacing convolved with it.
+TEST(Bloom, PrefilterWeightsAreBinomial) {
+    for (const int divisor : {2, 4}) {
+        const auto w = bloomPrefilterWeights(divisor);
+        EXPECT_EQ(w.size(), divisor == 2 ? 4u : 10u);
+        EXPECT_NEAR(std::accumulate(w.begin(), w.end(), 0.0), 1.0, 1e-7);
+        for (std::size_t i = 0; i < w.size(); ++i)
+            EXPECT_FLOAT_EQ(w[i], w[w.size() - 1 - i]);
+    }
+    const auto half = bloomPrefilterWeights(2);
+    const auto quarter = bloomPrefilterWeights(4);
+    for (std::size_t k = 0; k < quarter.size(); ++k) {
+        double want = 0.0;
+        for (std::size_t i = 0; i < half.size(); ++i) // [1 3 3 1] at spacing 2 ...
+            for (std::size_t j = 0; j < half.size(); ++j) // ... convolved with [1 3 3 1]
+                want += 2 * i + j == k ? double(half[i]) * double(half[j]) : 0.0;
+        EXPECT_NEAR(quarter[k], want, 1e-7) << k;
+    }
 }
 
 TEST(ColorGrading, NeutralWhiteBalanceIsIdentity) {

@@ -38,9 +38,8 @@ check "unmetered frame moves no metering bytes" python3 -c "import json,sys; d=j
 m=[p for p in d['passes'] if p['name']=='metering']; sys.exit(0 if m and m[0]['bytesMoved']==0 else 1)"
 check "bench reports the CPU's submission time" contains "ms to submit a frame"
 check "JSON has the CPU's submission time" grep -q '"cpuSubmitMedianMs"' "$S/default.json"
-check "bench names the bloom kernels" contains "(prefilter taps, blocks of"
-check "JSON names the bloom kernels" python3 -c "import json,sys; k=json.load(open('$S/default.json'))['bloomKernels']; \
-sys.exit(0 if k['prefilter'] == 'taps' and k['blockSide'] in (2, 4) else 1)"
+check "bench names the bloom levels" contains "bloom levels 4"
+check "JSON names the bloom levels" python3 -c "import json,sys; sys.exit(0 if json.load(open('$S/default.json'))['bloomLevels'] == 4 else 1)"
 check "the input's format is named" python3 -c "import json,sys; d=json.load(open('$S/default.json')); \
 sys.exit(0 if d['inputFormat'] == 'rgba32f' and d['copyReference']['format'] == 'rgba32f' else 1)"
 # A half-float input: the copy reference takes its format, and the prefilter's bytes count half-float reads.
@@ -69,14 +68,6 @@ sys.exit(0 if json.load(open('$S/default.json'))['input'] == 'synthetic' else 1)
 expect 2 "a bad size with an image is bad input" -- "$PHOTOPIC" bench --input "$DATA/GoldenGate.exr" --size 2x2
 check "the size is named" contains "size '2x2'"
 expect 2 "an input format the bench does not make is refused" -- "$PHOTOPIC" bench --size 64x64 --input-format rgb9e5
-expect 0 "bench with the tiled prefilter" -- env PHOTOPIC_BLOOM_PREFILTER=tiles PHOTOPIC_BLOOM_BLOCK_SIDE=2 \
-    "$PHOTOPIC" bench --size 64x64 --frames 2 --warmup 1 --json "$S/tiles.json"
-check "the override is reported and named in the table" contains "(prefilter tiles, blocks of 2)"
-check "the override is named in the JSON" grep -q '"prefilter": "tiles"' "$S/tiles.json"
-expect 0 "bench with the prefilter's taps shared in a group" -- env PHOTOPIC_BLOOM_PREFILTER=shared \
-    "$PHOTOPIC" bench --size 64x64 --frames 2 --warmup 1 --json "$S/shared.json"
-check "the shared taps are named in the table" contains "(prefilter shared, blocks of"
-check "the shared taps are named in the JSON" grep -q '"prefilter": "shared"' "$S/shared.json"
 # --queue-ahead: untimed busy work before each timed frame and reference (the frames, both copies, the
 # reduction, the whole frame); the report says on how many the GPU was still on it when the frame had been
 # submitted (none on llvmpipe, which runs a dispatch when it is issued).

@@ -85,8 +85,11 @@ inline Figures measure(const ImageF& with, const ImageF& without, const Source& 
     };
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
-            const int bin = int(radiusOf(x, y) / kBin);
-            if (bin < kBins) {
+            // Only the glow outside the source: inside it an energy-conserving glow is the source's loss,
+            // negative, and would bend the profile of the first annulus.
+            const float r = radiusOf(x, y);
+            const int bin = int(r / kBin);
+            if (bin < kBins && r >= s.radius + 1.0f - kBin) {
                 ringSum[std::size_t(bin)] += glow(x, y);
                 ++ringCount[std::size_t(bin)];
             }
@@ -101,10 +104,11 @@ inline Figures measure(const ImageF& with, const ImageF& without, const Source& 
             --lo;
         while (hi < kBins - 1 && ringCount[std::size_t(hi)] == 0)
             ++hi;
-        const double a =
-            ringCount[std::size_t(lo)] ? ringSum[std::size_t(lo)] / ringCount[std::size_t(lo)] : 0.0;
-        const double b =
-            ringCount[std::size_t(hi)] ? ringSum[std::size_t(hi)] / ringCount[std::size_t(hi)] : a;
+        const auto mean = [&](int bin) { return ringSum[std::size_t(bin)] / ringCount[std::size_t(bin)]; };
+        if (ringCount[std::size_t(lo)] == 0)
+            lo = hi; // nothing inside: the first ring outwards
+        const double a = ringCount[std::size_t(lo)] ? mean(lo) : 0.0;
+        const double b = ringCount[std::size_t(hi)] ? mean(hi) : a;
         const float w = hi == lo ? 0.0f : std::clamp((t - float(lo)) / float(hi - lo), 0.0f, 1.0f);
         return a + (b - a) * double(w);
     };

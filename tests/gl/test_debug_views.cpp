@@ -89,13 +89,24 @@ TEST_F(GlTest, BloomViewWithoutBloomIsBlack) {
 }
 
 TEST_F(GlTest, BloomViewCoversTheWholeFrame) {
-    // The bloom of a uniform image is uniform: the view brings the smaller bloom image up to every pixel (it
-    // once read the frame's pixel coordinates in the half-size image, black past its edge on llvmpipe).
-    const Image8 out = render(DebugView::Bloom, ImageF(64, 36, 2.0f));
-    const std::uint8_t centre = out.at(32, 18)[1];
+    // The view brings the smaller bloom image up to every pixel (it once read the frame's pixel coordinates
+    // in the half-size image, black past its edge on llvmpipe). The bloom of a uniform image is the light
+    // arriving from the frame: uniform in the middle, less towards the edges and the same at every corner.
+    const Image8 out = render(DebugView::Bloom, ImageF(96, 64, 2.0f), [] {
+        Settings s;
+        s.bloom.mipCount = 1; // a glow a few pixels wide: the middle is far from every edge
+        return s;
+    }());
+    const std::uint8_t centre = out.at(48, 32)[1];
     EXPECT_GT(centre, 0);
-    for (const auto& [x, y] : {std::pair{0, 0}, {63, 0}, {0, 35}, {63, 35}, {48, 27}, {16, 9}}) {
+    for (const auto& [x, y] : {std::pair{40, 28}, {56, 36}, {30, 20}}) {
         EXPECT_NEAR(out.at(x, y)[1], centre, 1) << x << "," << y;
+    }
+    const std::uint8_t corner = out.at(0, 0)[1];
+    EXPECT_GT(corner, 0);
+    EXPECT_LT(corner, centre);
+    for (const auto& [x, y] : {std::pair{95, 0}, {0, 63}, {95, 63}}) {
+        EXPECT_NEAR(out.at(x, y)[1], corner, 1) << x << "," << y;
     }
 }
 

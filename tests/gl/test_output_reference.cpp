@@ -1,16 +1,13 @@
-// The default chain's display image against a reference the chain rendered before its passes were rewritten
-// for speed (tests/data/reference/). Where a rewrite computes the same filter another way (the bloom
-// upsample's four bilinear taps for the tent's nine, the downsample's 2x2 blocks of target texels sharing
-// their taps) only rounding may differ: every sample within 1/255. The dither is off: its noise is not the
-// chain's arithmetic and changed on purpose (one pcg3d hash per pixel instead of twelve; the dither test in
-// test_pipeline.cpp bounds it). The references are those of the chain before that change with the dither off,
-// which matched the first references, dithered alike, within 1/255.
-// Two changes are deliberate, and the tests bound them apart:
-// - a frame without 3D passes skips the sanitize pass and its readers take the host's colour as it is, so a
-//   32-bit colour is no longer rounded to half first (the references were rendered from a half-float copy);
-// - the bloom prefilter sanitises each of its 4x4-texel boxes, so a NaN or infinite texel now removes its box
-//   from the bloom, where it removed itself alone: the output near such a texel may move by a few steps.
-// PHOTOPIC_WRITE_REFERENCE=1 writes the references instead (run it on the code whose output they hold).
+// The default chain's display image against references it rendered (tests/data/reference/), so that a
+// rewrite for speed that computes the same filters another way changes only rounding: every sample within
+// 1/255. The dither is off: its noise is not the chain's arithmetic (the dither test in test_pipeline.cpp
+// bounds it). The references were last written when the bloom chain became a pyramid of Gaussians (round
+// glows, a guard band at the borders, the threshold taken texel by texel), a change of the picture on
+// purpose. One difference is deliberate and bounded apart: a frame without 3D passes skips the sanitize pass
+// and its readers take the host's colour as it is, so a 32-bit colour is not rounded to half first (the
+// references are rendered from a half-float copy).
+// PHOTOPIC_WRITE_REFERENCE=1 writes the references instead (run it on the code whose output they hold, with
+// --gtest_filter naming the half-float tests: the 32-bit test compares with the same file).
 
 #include "GlTest.h"
 
@@ -72,7 +69,7 @@ std::filesystem::path referencePath(const std::string& name) {
 /// The scene's NaN and +Inf texels (image pixels).
 constexpr int kBadPixels[2][2] = {{5, 80}, {150, 85}};
 
-/// Within the bloom prefilter's box of a non-finite texel: 3 px either way at full resolution.
+/// Next to a non-finite texel: 3 px either way at full resolution.
 bool nearBadPixel(int x, int y) {
     return std::ranges::any_of(
         kBadPixels, [&](const int* b) { return std::abs(x - b[0]) <= 3 && std::abs(y - b[1]) <= 3; });

@@ -1,9 +1,13 @@
 #pragma once
-// HDR bloom on exposed colour (after metering, so the frame's exposure is known; docs/architecture.md):
-// prefilter + 13-tap downsample chain, tent upsample chain. The result is the bloom image at the size of
-// level 0 (half or a quarter of the scene); the tone-map pass composites it (energy-conserving mix or
-// threshold add).
+// HDR bloom on exposed colour (after metering, so the frame's exposure is known): a pyramid of levels, each
+// the one above (or the frame) downsampled by a binomial filter and blurred by a Gaussian of two of its own
+// texels, summed from the widest up (docs/architecture.md, "Bloom"). The result covers the frame at the
+// size of level 0 (half or a quarter of it); alpha holds the share of each texel's glow that came from
+// inside the frame. The tone-map pass composites it (energy-conserving mix or threshold add).
+// Tests: tests/gl/test_bloom.cpp (each step against its CPU twin, energy, threshold),
+// tests/gl/test_bloom_roundness.cpp (the glow of a point in every mode and preset).
 
+#include "core/Bloom.h"
 #include "core/settings/BloomSettings.h"
 #include "gl/ShaderLibrary.h"
 #include "passes/FramePass.h"
@@ -15,45 +19,25 @@
 
 namespace photopic {
 
-/// std140 mirror of bloom_downsample.comp.glsl's parameter block (the prefilter and the plain downsample
-/// share it; only the prefilter reads threshold and knee). Rewritten before each level's dispatch.
-struct BloomDownsampleParameters {
-    float targetTexel[2] = {0.0f, 0.0f}; ///< 1 / target size
-    float sourceStep[2] = {0.0f,
-                           0.0f}; ///< one source texel in UV (two when level 0 is a quarter of the scene)
-    std::int32_t threshold = 0;   ///< 1: threshold mode
-    std::int32_t padding[3] = {};
-    glm::vec4 knee{0.0f}; ///< T, T - knee, 2 knee, 1 / (4 knee)
+/// std140 mirror of bloom_step.h.glsl's parameter block, which every step of the chain reads; one block a
+/// step, rewritten only when its contents change.
+struct BloomStepParameters {
+    float sourceTexel[2] = {0.0f, 0.0f};   ///< 1 / the extent of the texture read
+    float sourceScale[2] = {0.0f, 0.0f};   ///< source coordinate of target texel t: t * scale + origin
+    float sourceOrigin[2] = {0.0f, 0.0f};  ///< (texel-centre coordinates)
+    float coarseTexel[2] = {0.0f, 0.0f};   ///< upsample: 1 / the coarser result's extent
+    float coarseOrigin[2] = {0.0f, 0.0f};  ///< upsample: coarse coordinate of level texel q: q / 2 + origin
+    std::int32_t frameSize[2] = {0, 0};    ///< prefilter: the frame's size
+    std::int32_t threshold = 0;            ///< prefilter: 1 in threshold mode
+    float radius = 0.0f;                   ///< upsample: share handed to the wider levels
+    std::int32_t targetOffset[2] = {0, 0}; ///< upsample: level texel of target texel t, minus t
+    glm::vec4 knee{0.0f};                  ///< prefilter: T, T - knee, 2 knee, 1 / (4 knee)
+    glm::vec4 weights[3] = {};             ///< blur and upsample: the Gaussian's weights 0 .. 8 texels out
 };
-static_assert(sizeof(BloomDownsampleParameters) == 48);
-static_assert(offsetof(BloomDownsampleParameters, sourceStep) == 8 &&
-              offsetof(BloomDownsampleParameters, threshold) == 16 &&
-              offsetof(BloomDownsampleParameters, knee) == 32);
-
-/// std140 mirror of bloom_upsample.comp.glsl's parameter block, rewritten before each level's dispatch.
-struct BloomUpsampleParameters {
-    float targetTexel[2] = {0.0f, 0.0f}; ///< 1 / size of level i
-    float coarseTexel[2] = {0.0f, 0.0f}; ///< 1 / size of level i + 1
-    float radius = 0.0f;
-    float padding[3] = {};
-};
-static_assert(sizeof(BloomUpsampleParameters) == 32);
-static_assert(offsetof(BloomUpsampleParameters, coarseTexel) == 8 &&
-              offsetof(BloomUpsampleParameters, radius) == 16);
-
-/// How the prefilter (level 0, from the scene) reads the scene where level 0 is exactly half of it in tap
-/// steps; elsewhere it takes filtered taps one target texel at a time.
-enum class BloomPrefilterKernel {
-    Taps,       ///< filtered taps in blocks of blockSide() x blockSide() target texels
-    Tiles,      ///< 16x16 targets a group from unfiltered scene texels in shared memory (divisor 2 only)
-    SharedTaps, ///< 16x16 targets a group from filtered taps fetched once into shared memory
-    /// SharedTaps with each tap the mean of its 2x2 texels from unfiltered fetches (to measure the
-    /// filtering of wide texels apart from their reading)
-    SharedTexels,
-};
-/// "taps", "tiles", "shared" or "shared-texels": the PHOTOPIC_BLOOM_PREFILTER value and the bench's name of
-/// `kernel`.
-[[nodiscard]] const char* bloomPrefilterKernelName(BloomPrefilterKernel kernel);
+static_assert(sizeof(BloomStepParameters) == 128 && kBloomBlurReach + 1 <= 12);
+static_assert(offsetof(BloomStepParameters, frameSize) == 40 && offsetof(BloomStepParameters, threshold) == 48 &&
+              offsetof(BloomStepParameters, targetOffset) == 56 && offsetof(BloomStepParameters, knee) == 64 &&
+              offsetof(BloomStepParameters, weights) == 80);
 
 class BloomPass final : public FramePass {
 public:
@@ -65,26 +49,9 @@ public:
         int mipCount = 6;     ///< levels wanted (fewer when the image is small)
         GpuTimers* timers = nullptr;
     };
-    /// The kernels are the renderer's defaults (setBlockSide, setPrefilterKernel) unless the environment says
-    /// otherwise, for measuring them against each other on one device: PHOTOPIC_BLOOM_BLOCK_SIDE=1|2|4,
-    /// PHOTOPIC_BLOOM_PREFILTER=taps|tiles|shared|shared-texels (an override in force is reported once; a bad
-    /// value is reported and ignored).
     BloomPass();
-    /// Target texels per side of an invocation's block where a level is exactly half its source: 4 (16 texels
-    /// from 61 shared taps) on a software renderer, 2 (4 texels from 25) on a GPU, where holding 61 taps at
-    /// once would cost occupancy. With 4, upsampled levels exactly twice the coarser one are computed in 4x4
-    /// blocks too (36 fetched texels, constant tent weights); with 2 by filtered taps. 1: one target texel
-    /// per invocation everywhere (13 taps each), as levels that are not exactly half are. Tests run all
-    /// three.
-    void setBlockSide(int side);
-    [[nodiscard]] int blockSide() const { return mBlockSide; }
-    /// The prefilter's kernel (BloomPrefilterKernel): Taps by default. Tests run them all.
-    void setPrefilterKernel(BloomPrefilterKernel kernel);
-    [[nodiscard]] BloomPrefilterKernel prefilterKernel() const { return mPrefilterKernel; }
-    /// The invocation shape the programs were built with (pixelGroup() when the pass was made).
-    [[nodiscard]] PixelGroup group() const { return mGroup; }
     [[nodiscard]] std::string_view name() const override { return "bloom"; }
-    /// The prefilter sanitises each of its five boxes (bloom_downsample.comp.glsl).
+    /// The prefilter sanitises the mean of each footprint (bloom_downsample.comp.glsl).
     [[nodiscard]] bool sanitizesSceneReads() const override { return true; }
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
     /// The HDR path's chain (the LDR path's glow is part of the tone-map pass).
@@ -93,39 +60,43 @@ public:
     }
     void resize(Extent extent) override;
     void execute(FrameContext& ctx, FrameResources& resources) override;
+    /// Runs the chain; the result covers the frame at level 0's size (bloomLevelFrame), alpha its coverage.
     const Texture& execute(const Inputs& in);
     /// Levels of the chain the last execute ran.
     [[nodiscard]] int levels() const { return mLevels; }
-    /// Downsampled level `level` (0: the prefilter's output) of the last execute, before the upsamples.
+    /// Level `level` (0: the prefilter's output) of the last execute, downsampled, with its guard band.
     [[nodiscard]] const Texture& downsampled(int level) const { return mDown.at(std::size_t(level)); }
-    /// Upsampled level `level` of the last execute (levels() - 1 of them; 0 is the result).
+    /// Level `level` of the last execute blurred along rows, with its guard band.
+    [[nodiscard]] const Texture& blurredRows(int level) const { return mRows.at(std::size_t(level)); }
+    /// The result of level `level` of the last execute (levels() of them; 0 is the chain's result, without
+    /// a guard band; the others have one).
     [[nodiscard]] const Texture& upsampled(int level) const { return mUp.at(std::size_t(level)); }
+    /// The parameters the last execute gave step `step` of level `level`, as the CPU twins of the tests
+    /// read them.
+    enum class Step { Down, Rows, Up };
+    [[nodiscard]] const BloomStepParameters& parameters(Step step, int level) const;
 
 private:
     void ensureChain(int firstDivisor, int levels);
-    void applyEnvironmentOverrides();
+    void downsample(const Inputs& in, int level);
+    void blurRows(const Inputs& in, int level);
+    void upsample(const Inputs& in, int level);
+    /// Binds `program`, the parameters `block` (updated to `p`), the source on unit 0 and the target image.
+    void bindStep(const Program& program, std::vector<ParameterBlock<BloomStepParameters>>& blocks,
+                  std::vector<BloomStepParameters>& written, int level, const BloomStepParameters& p,
+                  const Texture& source, const Texture& target);
 
     PixelGroup mGroup; ///< the invocation shape of every program here (gl/ShaderLibrary.h pixelGroup)
-    /// Level 0 (exposure, Karis average, threshold) and the later levels; `Blocks`: blocks of mBlockSide x
-    /// mBlockSide target texels per invocation sharing their taps, for a target exactly half its source.
-    Program mPrefilter, mPrefilterBlocks;
-    BloomPrefilterKernel mPrefilterKernel = BloomPrefilterKernel::Taps;
-    Program mPrefilterTiled; ///< the program of a kernel other than Taps while it is the kernel
-    Program mDownsample, mDownsampleBlocks;
-    int mBlockSide = 2;
-    Program mUpsample;
-    /// 4x4 blocks of a level exactly twice the coarser one (with block side 4 only; else not made).
-    Program mUpsampleBlocks;
-    /// The prefilter's: the scene may be the host's own texture, with its own filtering.
-    Sampler mSceneSampler;
-    /// One block a level (a block is written only when its contents change: gl/Objects.h), so a chain whose
-    /// size and settings hold still updates no buffer in a frame.
-    std::vector<ParameterBlock<BloomDownsampleParameters>> mDownParameters;
-    std::vector<ParameterBlock<BloomUpsampleParameters>> mUpParameters;
+    Program mPrefilter, mPrefilterQuarter, mDownsample, mBlurRows, mUpsample, mUpsampleCoarse;
+    /// Every read of the chain: past a texture's edge lies transparent black (the frame's outside, and the
+    /// levels' bands beyond what they hold).
+    Sampler mSampler;
+    std::vector<ParameterBlock<BloomStepParameters>> mDownBlocks, mRowBlocks, mUpBlocks;
+    std::vector<BloomStepParameters> mDownWritten, mRowWritten, mUpWritten;
     Extent mExtent;
     int mDivisor = 0;
     int mLevels = 0;
-    std::vector<Texture> mDown, mUp;
+    std::vector<Texture> mDown, mRows, mUp;
 };
 
 } // namespace photopic

@@ -20,6 +20,16 @@ std::uint32_t pcgHash(std::uint32_t v) {
     const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
     return (word >> 22u) ^ word;
 }
+
+/// Frame pixels per texel of a bloom image: the least power of two whose texels cover the frame (a chain's
+/// level 0 holds ceil(frame / divisor) texels).
+int bloomPixels(Extent frame, Extent bloom) {
+    int scale = 1;
+    while (scale < 64 && (scale * bloom.width < frame.width || scale * bloom.height < frame.height)) {
+        scale *= 2;
+    }
+    return scale;
+}
 } // namespace
 
 TonemapPass::TonemapPass(const Capabilities& caps)
@@ -110,6 +120,7 @@ void TonemapPass::dispatch(const Program& program, const Inputs& in, const Textu
     if (in.bloom) {
         parameters.bloomAdditive = in.bloomSettings->mode == BloomMode::Threshold ? 1 : 0;
         parameters.bloomIntensity = in.bloomSettings->intensity;
+        parameters.bloomPixels = float(bloomPixels(extent, in.bloom->extent()));
         glBindTextureUnit(1, in.bloom->id());
     }
     if (in.glow) {

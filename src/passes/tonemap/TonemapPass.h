@@ -17,9 +17,10 @@ struct TonemapParameters {
     std::int32_t agxLook = 0;
     std::int32_t dither = 0;
     std::uint32_t frame = 0;
-    std::int32_t bloomAdditive = 0; ///< 0: mix(scene, bloom, intensity); 1: scene + intensity * bloom
+    std::int32_t bloomAdditive = 0; ///< 0: energy-conserving mix (by the bloom's alpha); 1: additive
     float bloomIntensity = 0.0f;
-    float padding0[2] = {};
+    float bloomPixels = 1.0f; ///< frame pixels per bloom texel
+    float padding0 = 0.0f;
     float whiteBalance[3][4] = {}; ///< mat3: three columns, each padded to a vec4
     float contrast = 1.0f;
     float saturation = 1.0f;

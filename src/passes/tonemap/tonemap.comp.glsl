@@ -37,8 +37,9 @@ layout(std140, binding = BINDING_PARAMETERS) uniform TonemapParameters {
     int uAgxLook;
     int uDither;
     uint uFrame;
-    int uBloomAdditive; // 0: mix(scene, bloom, intensity); 1: scene + intensity * bloom
+    int uBloomAdditive; // 0: energy-conserving mix (by the bloom's coverage); 1: scene + intensity * bloom
     float uBloomIntensity;
+    float uBloomPixels; // frame pixels per bloom texel
     mat3 uWhiteBalance; // core/ColorGrading.cpp whiteBalanceMatrix
     float uContrast;
     float uSaturation;
@@ -54,11 +55,11 @@ layout(std140, binding = BINDING_PARAMETERS) uniform TonemapParameters {
 const float kMiddleGrey = 0.18; // core/ColorGrading.h kGradingMiddleGrey
 
 #ifdef BLOOM
-// The bloom image is half or a quarter of the frame and already blurred by the chain's tent upsamples: one
-// bilinear tap brings it up. A 3x3 tent here (9 taps per full-resolution pixel) cost 86 of the pass's 135 ms
-// on llvmpipe at 1920x1080 and only widened a glow that is smooth at this scale anyway.
-vec3 bloomAt(vec2 uv) {
-    return textureLod(uBloom, uv, 0.0).rgb;
+// The bloom image is half or a quarter of the frame and already blurred by the chain's Gaussians: one
+// bilinear tap brings it up (a wider filter here would cost a tap per frame pixel and only widen a glow that
+// is smooth at this scale anyway). Its texels cover uBloomPixels frame pixels each from the frame's corner.
+vec4 bloomAt(vec2 fragCoord) {
+    return textureLod(uBloom, fragCoord / (uBloomPixels * vec2(textureSize(uBloom, 0))), 0.0);
 }
 #endif
 
@@ -100,12 +101,16 @@ vec3 grade(vec3 c) {
 
 // One pixel: the scene's colour at `source` (the pixel itself, or the edge pixel for a block's pixels past the
 // edge), exposed, with `bloom` composited, graded, tone mapped and stored at `p`.
-void shade(ivec2 p, ivec2 source, vec3 bloom) {
+void shade(ivec2 p, ivec2 source, vec4 bloom) {
     vec2 fragCoord = vec2(p) + 0.5;
     // Sanitised here as well: on the LDR path this is where the pipeline first reads the host's colour.
     vec3 c = sanitize(texelFetch(uScene, source, 0).rgb) * gExposure.exposure;
 #ifdef BLOOM
-    c = uBloomAdditive != 0 ? c + uBloomIntensity * bloom : mix(c, bloom, uBloomIntensity);
+    // Energy-conserving: each pixel gives up `intensity` of the share of its glow that stays in the frame
+    // (alpha) and receives `intensity` of the glow arriving from the frame, so a uniform image, borders
+    // included, is left as it is and light is only moved.
+    c = uBloomAdditive != 0 ? c + uBloomIntensity * bloom.rgb
+                            : c * (1.0 - uBloomIntensity * bloom.a) + uBloomIntensity * bloom.rgb;
 #endif
 #ifdef GLOW
     c += uGlowIntensity * glowAt(fragCoord);
@@ -138,17 +143,17 @@ void main() {
     ivec2 size = imageSize(uOutput);
     ivec2 bloomSize = textureSize(uBloom, 0);
     ivec2 first = block * 2 - 1;
-    vec3 b[16]; // b[4 * row + column]: the bloom texels the block reads
+    vec4 b[16]; // b[4 * row + column]: the bloom texels the block reads
     for (int row = 0; row < 4; ++row) {
         for (int column = 0; column < 4; ++column) {
             ivec2 t = clamp(first + ivec2(column, row), ivec2(0), bloomSize - 1); // clamp to edge
-            b[4 * row + column] = texelFetch(uBloom, t, 0).rgb;
+            b[4 * row + column] = texelFetch(uBloom, t, 0);
         }
     }
     for (int l = 0; l < 4; ++l) {
         for (int k = 0; k < 4; ++k) {
             int i = 4 * kLow[l] + kLow[k];
-            vec3 bloom = mix(mix(b[i], b[i + 1], kFraction[k]), mix(b[i + 4], b[i + 5], kFraction[k]),
+            vec4 bloom = mix(mix(b[i], b[i + 1], kFraction[k]), mix(b[i + 4], b[i + 5], kFraction[k]),
                              kFraction[l]);
             ivec2 p = block * 4 + ivec2(k, l);
             shade(p, min(p, size - 1), bloom);
@@ -159,9 +164,9 @@ void main() {
 void main() {
     ivec2 p = clampedInvocationPixel(imageSize(uOutput));
 #ifdef BLOOM
-    vec3 bloom = bloomAt((vec2(p) + 0.5) / vec2(textureSize(uScene, 0)));
+    vec4 bloom = bloomAt(vec2(p) + 0.5);
 #else
-    vec3 bloom = vec3(0.0);
+    vec4 bloom = vec4(0.0);
 #endif
     shade(p, p, bloom);
 }
