@@ -57,9 +57,9 @@ std::string joined(const Names& names) {
 /// --preset's help: the presets and what each is for, then where a command's own default comes from.
 std::string presetHelp(std::string_view commandDefault) {
     return "look: " + joined(presetNames()) +
-           " (stills: photographs, a tight bloom of what is far past white only; realtime: games and the "
-           "built-in scenes, a soft glow over the whole image; neutral: no bloom, display effects or "
-           "grading, for measuring). Default: " +
+           " (stills: photographs, AgX and a tight bloom of what is far past white only; realtime: games and "
+           "the built-in scenes, ACES (fitted) and a soft glow over the whole image; neutral: no bloom, "
+           "display effects or grading, for measuring). Default: " +
            std::string(commandDefault);
 }
 

@@ -12,6 +12,10 @@ std::span<const std::string_view> presetNames() {
 Settings Settings::stills() {
     Settings s;
     s.bloom = BloomSettings::stills();
+    // AgX (base): of the curves that roll off to white it keeps the most stops between code 10 and 250, crushes
+    // and clips the least and turns hues the least on the measured images and colours (docs/looks.md).
+    s.tonemapping.mode = ToneMapper::Agx;
+    s.tonemapping.agxLook = AgxLook::Base;
     return s;
 }
 
@@ -44,6 +48,8 @@ std::optional<Settings> Settings::preset(std::string_view name) {
 }
 
 void Settings::applyLook(const Settings& look) {
+    tonemapping.mode = look.tonemapping.mode;
+    tonemapping.agxLook = look.tonemapping.agxLook;
     bloom = look.bloom;
     lensFlare = look.lensFlare;
     vignette = look.vignette;

@@ -58,12 +58,14 @@ struct Settings {
     OutlineSettings outline;
     VolumetricLightSettings volumetricLight;
 
-    /// Named looks (`--preset NAME`, a settings file's "preset"). A look is bloom, lens flare, vignette,
-    /// grain, dazzle and colour grading; the rest (exposure, metering, anti-aliasing, the 3D effects) belongs
-    /// to the host or the scene, and applyLook() leaves it as it was.
-    /// stills: photographs (`photopic image`'s default): a tight bloom of what is far past white only.
+    /// Named looks (`--preset NAME`, a settings file's "preset"). A look is the tone curve (tonemapping.mode
+    /// and agxLook), bloom, lens flare, vignette, grain, dazzle and colour grading; the rest (exposure,
+    /// metering, anti-aliasing, the 3D effects) belongs to the host or the scene, and applyLook() leaves it as
+    /// it was.
+    /// stills: photographs (`photopic image`'s default): AgX, a tight bloom of what is far past white only.
     [[nodiscard]] static Settings stills();
-    /// realtime: the defaults, the look of games and the built-in scenes: a soft glow over the whole image.
+    /// realtime: the defaults, the look of games and the built-in scenes: ACES (fitted), a soft glow over the
+    /// whole image.
     [[nodiscard]] static Settings realtime();
     /// neutral: no bloom, no display effects, no grading: exposure and the tone curve alone, for measuring.
     [[nodiscard]] static Settings neutral();

@@ -21,13 +21,25 @@ TEST(Presets, EveryNameGivesValidSettings) {
     EXPECT_FALSE(Settings::preset("").has_value());
 }
 
-TEST(Presets, RealtimeIsTheDefaultsAndStillsOnlyChangesBloom) {
+TEST(Presets, RealtimeIsTheDefaultsAndStillsOnlyChangesBloomAndTheCurve) {
     EXPECT_EQ(settingsToJson(Settings::realtime()), settingsToJson(Settings{}));
     Settings stills = Settings::stills();
     EXPECT_EQ(stills.bloom.mode, BloomMode::Threshold);
     EXPECT_GT(stills.bloom.threshold, 1.0f); // only what lies well past display white blooms
+    EXPECT_EQ(stills.tonemapping.mode, ToneMapper::Agx);
+    EXPECT_EQ(stills.tonemapping.agxLook, AgxLook::Base);
     stills.bloom = BloomSettings{};
+    stills.tonemapping.mode = Settings{}.tonemapping.mode;
+    stills.tonemapping.agxLook = Settings{}.tonemapping.agxLook;
     EXPECT_EQ(settingsToJson(stills), settingsToJson(Settings{}));
+}
+
+TEST(Presets, TheToneCurveIsPartOfALook) {
+    Settings s = Settings::stills();
+    s.tonemapping.exposure = 1.5f;
+    s.applyLook(Settings::realtime());
+    EXPECT_EQ(s.tonemapping.mode, Settings{}.tonemapping.mode);
+    EXPECT_EQ(s.tonemapping.exposure, 1.5f); // exposure is not
 }
 
 TEST(Presets, NeutralTurnsEveryLookEffectOff) {

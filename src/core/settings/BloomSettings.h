@@ -34,17 +34,17 @@ struct BloomSettings {
     /// scenes are tuned for.
     [[nodiscard]] static BloomSettings realtime() { return {}; }
 
-    /// A gentle look for still photographs: only what lies three stops past display white (8) blooms, into a
-    /// tight halo (two levels below half size, each handing on half). Energy-conserving bloom mixes a little
-    /// of the whole frame's blur into every pixel, so the sun in data/blender_sunrise.exr lifts 13% of the
-    /// frame by more than 2 code values; with these settings 0.1% (tests/e2e/veil.sh), while the pixels
-    /// beside the sun still brighten.
+    /// A gentle look for still photographs: only what lies three stops past display white (8) blooms, a
+    /// quarter of it, into a tight halo (two levels below half size, each handing on half). Energy-conserving
+    /// bloom mixes a little of the whole frame's blur into every pixel, so the sun in
+    /// data/blender_sunrise.exr lifts 38% of the frame by more than 2 code values; with these settings 0.4%
+    /// (tests/e2e/veil.sh), while the pixels beside the sun still brighten.
     [[nodiscard]] static BloomSettings stills() {
         BloomSettings s;
         s.mode = BloomMode::Threshold;
         s.threshold = 8.0f;
         s.knee = 0.5f;
-        s.intensity = 0.8f;
+        s.intensity = 0.25f;
         s.radius = 0.5f;
         s.mipCount = 2;
         return s;
