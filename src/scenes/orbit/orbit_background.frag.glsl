@@ -4,6 +4,8 @@
 #include "orbit_pbr.h.glsl"
 #include "orbit_frame.h.glsl"
 #include "orbit_space.h.glsl"
+#include "scenes/pixel_angle.h.glsl"
+#include "scenes/sun_disc.h.glsl"
 
 layout(location = 0) in vec2 vUv;
 
@@ -35,9 +37,8 @@ void main() {
         return;
     }
     vec3 colour = orbitStars(d) + orbitNebula(d);
-    if (dot(d, uSunDirection.xyz) >= uSunDirection.w) {
-        colour += uSunIlluminance.rgb * uSunIlluminance.w;
-    }
+    colour += uSunIlluminance.rgb * uSunIlluminance.w *
+              sunDiscCoverage(d, uSunDirection.xyz, uSunDirection.w, pixelAngleOf(d));
     colour += orbitLimbGlow(uEarth, o, d, vec3(0.35, 0.55, 1.0));
     colour += orbitLimbGlow(uMars, o, d, vec3(0.8, 0.55, 0.40)) * 0.5;
     gl_FragDepth = 1.0;

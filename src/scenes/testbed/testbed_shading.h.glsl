@@ -19,6 +19,8 @@ struct TestbedPrimitive {
     vec4 surface;  // x: roughness
 };
 
+#include "scenes/sun_disc.h.glsl"
+
 layout(std430, binding = 0) readonly buffer TestbedPrimitives {
     TestbedPrimitive uPrimitives[];
 };
@@ -197,12 +199,13 @@ vec3 testbedShade(TestbedPrimitive p, vec3 objectPoint, vec3 objectNormal, vec3 
            p.emissive.rgb;
 }
 
-vec3 testbedSky(vec3 d) {
+// The sky along d, seen through a pixel `pixelAngle` radians across: the sun's disc by the share of the pixel
+// it covers (scenes/sun_disc.h.glsl). The ray tracer's skyRadiance is the same sky at a point; averaged over
+// its samples in a pixel it is this.
+vec3 testbedSky(vec3 d, float pixelAngle) {
     vec3 l = d.y >= 0.0 ? mix(uSkyHorizon.rgb, uSkyZenith.rgb, sqrt(d.y)) : uGroundRadiance.rgb;
-    if (dot(d, uSunDirection.xyz) >= uSunDirection.w) {
-        l += uSunIlluminance.rgb * uSunIlluminance.w;
-    }
-    return l;
+    return l + uSunIlluminance.rgb * uSunIlluminance.w *
+                   sunDiscCoverage(d, uSunDirection.xyz, uSunDirection.w, pixelAngle);
 }
 
 // UV displacement current minus previous of homogeneous points (w = 0: a direction, the sky).

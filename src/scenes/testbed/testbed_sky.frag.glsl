@@ -1,5 +1,6 @@
 // The background: sky gradient and sun disc; no normal; the motion of directions (points at infinity).
 #include "testbed_shading.h.glsl"
+#include "scenes/pixel_angle.h.glsl"
 
 layout(location = 0) in vec2 vUv;
 
@@ -12,7 +13,7 @@ layout(location = 4) out vec4 oMaterial; // none: the sky
 void main() {
     vec3 origin, direction;
     testbedCameraRay(gl_FragCoord.xy, origin, direction);
-    oColor = vec4(testbedSky(direction), 1.0);
+    oColor = vec4(testbedSky(direction, pixelAngleOf(direction)), 1.0);
     oNormal = vec4(0.0);
     oMotion = testbedMotion(vec4(direction, 0.0), vec4(direction, 0.0));
     oObjectId = 0u;
