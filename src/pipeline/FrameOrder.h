@@ -11,6 +11,7 @@
 #include "passes/dof/DofPass.h"
 #include "passes/exposure/ExposurePass.h"
 #include "passes/fxaa/FxaaPass.h"
+#include "passes/glare/GlarePass.h"
 #include "passes/gtao/GtaoPass.h"
 #include "passes/inputs/InputPasses.h"
 #include "passes/lensflare/LensFlarePass.h"
@@ -30,6 +31,28 @@
 #include <vector>
 
 namespace photopic {
+
+/// The bloom mip chain as the frame order runs it: the chain's own pass, stepping aside in glare mode, where
+/// the glare pass (passes/glare/) writes the same resource instead. Everything else is the chain's.
+class BloomChainStage final : public FramePass {
+public:
+    explicit BloomChainStage(BloomPass& chain)
+        : mChain(chain) {}
+    [[nodiscard]] std::string_view name() const override { return mChain.name(); }
+    [[nodiscard]] std::span<const ResourceUse> uses() const override { return mChain.uses(); }
+    [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
+        return ctx.settings.bloom.mode != BloomMode::Glare && mChain.enabled(ctx);
+    }
+    [[nodiscard]] bool sanitizesSceneReads() const override { return mChain.sanitizesSceneReads(); }
+    void configure(const Settings& settings) override { mChain.configure(settings); }
+    void resize(Extent extent) override { mChain.resize(extent); }
+    void invalidateHistory() override { mChain.invalidateHistory(); }
+    void execute(FrameContext& ctx, FrameResources& resources) override { mChain.execute(ctx, resources); }
+    [[nodiscard]] BloomPass& chain() const { return mChain; }
+
+private:
+    BloomPass& mChain;
+};
 
 class FrameOrder {
 public:
@@ -59,6 +82,8 @@ public:
     ExposurePass exposure;
     SubjectContextsPass subjectContexts;
     BloomPass bloom;
+    BloomChainStage bloomChain{bloom}; ///< what the frame order runs of `bloom`
+    GlarePass glare;
     DebugViewPass debugView;
     TonemapPass tonemap;
     FxaaPass fxaa;

@@ -510,7 +510,7 @@ PipelineStatus Pipeline::status() const {
         t.path = ColorPath::Ldr;
         t.pathReason = mCaps.path == ColorPath::Ldr ? mCaps.pathReason : "quality=legacy runs the LDR path";
     }
-    t.bloomLevels = mPostSequencer.ran(mOrder->bloom) ? mOrder->bloom.levels() : 0;
+    t.bloomLevels = mPostSequencer.ran(mOrder->bloomChain) ? mOrder->bloom.levels() : 0;
     t.bloomBlockSide = mOrder->bloom.blockSide();
     t.bloomPrefilterKernel = bloomPrefilterKernelName(mOrder->bloom.prefilterKernel());
     t.passes = mTimers.latest();

@@ -74,7 +74,8 @@ struct Figures {
 /// (the mean over every direction of the pixels in a 0.25-pixel ring, interpolated), so that a perfectly
 /// round glow gives 1 in every sector whatever pixel centres a sector holds; sectors reaching past the
 /// image's edge are left out (there the profile comes from the rings' other pixels).
-inline Figures measure(const ImageF& with, const ImageF& without, const Source& s) {
+/// `from`: the first annulus's inner radius when positive (else the source's edge + 1).
+inline Figures measure(const ImageF& with, const ImageF& without, const Source& s, float from = -1.0f) {
     constexpr float kBin = 0.25f;
     constexpr int kBins = 200; // 50 pixels
     std::vector<double> ringSum(kBins, 0.0);
@@ -111,7 +112,7 @@ inline Figures measure(const ImageF& with, const ImageF& without, const Source& 
     Figures f;
     double first = 0.0;
     double previous = 0.0;
-    for (float r0 = s.radius + 1.0f; r0 < 40.0f; r0 += 2.0f) {
+    for (float r0 = from > 0.0f ? from : s.radius + 1.0f; r0 < 40.0f; r0 += 2.0f) {
         double ratio[8] = {};
         double sums = 0.0;
         int counts[8] = {};

@@ -17,7 +17,9 @@ struct TonemapParameters {
     std::int32_t agxLook = 0;
     std::int32_t dither = 0;
     std::uint32_t frame = 0;
-    std::int32_t bloomAdditive = 0; ///< 0: mix(scene, bloom, intensity); 1: scene + intensity * bloom
+    /// 0: mix(scene, bloom, intensity); 1: scene + intensity * bloom; 2: glare, mix(scene, bloom, intensity *
+    /// the bloom image's alpha) (passes/glare/GlarePass.h)
+    std::int32_t bloomAdditive = 0;
     float bloomIntensity = 0.0f;
     float padding0[2] = {};
     float whiteBalance[3][4] = {}; ///< mat3: three columns, each padded to a vec4

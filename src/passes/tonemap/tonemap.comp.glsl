@@ -37,7 +37,7 @@ layout(std140, binding = BINDING_PARAMETERS) uniform TonemapParameters {
     int uAgxLook;
     int uDither;
     uint uFrame;
-    int uBloomAdditive; // 0: mix(scene, bloom, intensity); 1: scene + intensity * bloom
+    int uBloomAdditive; // 0: mix(scene, bloom, intensity); 1: scene + intensity * bloom; 2: glare (below)
     float uBloomIntensity;
     mat3 uWhiteBalance; // core/ColorGrading.cpp whiteBalanceMatrix
     float uContrast;
@@ -105,7 +105,14 @@ void shade(ivec2 p, ivec2 source, vec3 bloom) {
     // Sanitised here as well: on the LDR path this is where the pipeline first reads the host's colour.
     vec3 c = sanitize(texelFetch(uScene, source, 0).rgb) * gExposure.exposure;
 #ifdef BLOOM
-    c = uBloomAdditive != 0 ? c + uBloomIntensity * bloom : mix(c, bloom, uBloomIntensity);
+    if (uBloomAdditive == 2) {
+        // Glare (passes/glare/): the bloom image is the halo's convolution and its alpha the halo's share s
+        // of the kernel, the same in every texel; the kernel's centre is the pixel itself, so the glare is
+        // mix(c, halo, s) and the composite mix(c, glare, intensity).
+        c = mix(c, bloom, uBloomIntensity * texelFetch(uBloom, ivec2(0), 0).a);
+    } else {
+        c = uBloomAdditive != 0 ? c + uBloomIntensity * bloom : mix(c, bloom, uBloomIntensity);
+    }
 #endif
 #ifdef GLOW
     c += uGlowIntensity * glowAt(fragCoord);
