@@ -23,7 +23,7 @@ namespace photopic {
 
 struct GlareKernelParameters {
     GlareKernel kernel = GlareKernel::Eye;
-    float radiusDeg = 8.0f;        ///< extent: the PSF is 0 past it
+    float radiusDeg = 6.0f;        ///< extent: the PSF is 0 past it
     float degreesPerPixel = 0.05f; ///< pixel pitch of the image the kernel convolves
     int blades = 6;                ///< camera: aperture blades
     float bladeRotationDeg = 0.0f; ///< camera: the first spike's angle from +x

@@ -302,6 +302,21 @@ TEST_F(GlTest, GlareKernelSpectrumIsCached) {
     EXPECT_EQ(pass.kernelBuilds(), 3) << "a new field of view is a new pitch";
 }
 
+// A frame wider than the longest FFT line (4096) has its halo convolved at half its size, and says so.
+TEST_F(GlTest, GlareOfAFrameTooWideForTheFftRunsAtHalfSize) {
+    const ImageF image = randomHdr(4200, 8, 5);
+    const Buffer state = exposureState(1.0f);
+    const Texture input = makeTexture(image, "glare wide input");
+    GlarePass pass;
+    pass.resize({image.width, image.height});
+    const BloomSettings b = glareSettings(GlareKernel::Eye, 6.0f);
+    const Texture& glare =
+        pass.execute({.scene = &input, .exposureState = &state, .settings = &b, .verticalFovDeg = 20.0f});
+    EXPECT_EQ(glare.extent(), (Extent{2100, 4}));
+    EXPECT_EQ(pass.paddedSize().width, 4096);
+    EXPECT_NEAR(pass.kernelParameters().degreesPerPixel, 5.0f, 1e-6f);
+}
+
 // (e) On the LDR path an enabled glare cannot run: it says so (once), and the LDR glow stands in.
 TEST_F(GlTest, GlareOnTheLdrPathWarns) {
     std::vector<std::string> warnings;

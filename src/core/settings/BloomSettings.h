@@ -43,7 +43,7 @@ struct BloomSettings {
     float radius = 0.85f;
     int mipCount = 0;
     GlareKernel glareKernel = GlareKernel::Eye;
-    float glareRadiusDeg = 8.0f;
+    float glareRadiusDeg = 6.0f;
     float fieldOfViewDeg = 60.0f;
     int glareBlades = 6;
     float glareBladeRotationDeg = 0.0f;

@@ -24,6 +24,7 @@ constexpr GLuint kUnitKernelSpectrum = 1; ///< the kernel's spectrum (the invers
 constexpr GLuint kImageSpectrum = 0;      ///< the spectrum, read in place
 constexpr GLuint kImageTarget = 1;        ///< what a pass writes
 constexpr int kMaxThreads = 256;          ///< invocations of a line's workgroup
+constexpr int kMaxDivisor = 4;            ///< the coarsest halo, for frames past the longest FFT line
 
 ShaderDefines fftDefines(int size, ShaderDefines extra) {
     const int threads = std::min(size / 2, kMaxThreads);
@@ -213,21 +214,31 @@ void GlarePass::convolve(int divisor, GpuTimers* timers) {
 
 const Texture& GlarePass::execute(const Inputs& in) {
     const BloomSettings& b = *in.settings;
-    // A glare pixel per divisor x divisor scene pixels; larger divisors where a side would not leave room
-    // for any kernel in the longest FFT line.
+    // The first divisor from the pass's own whose image and kernel fit the longest FFT line; past 4, the
+    // kernel is clipped instead.
     int divisor = mDivisor;
-    while ((mExtent.width + divisor - 1) / divisor > kMaxFftSize / 2 ||
-           (mExtent.height + divisor - 1) / divisor > kMaxFftSize / 2)
-        ++divisor;
-    const Extent glare{(mExtent.width + divisor - 1) / divisor, (mExtent.height + divisor - 1) / divisor};
-    const GlareKernelParameters p{.kernel = b.glareKernel,
-                                  .radiusDeg = b.glareRadiusDeg,
-                                  .degreesPerPixel =
-                                      in.verticalFovDeg * float(divisor) / float(mExtent.height),
-                                  .blades = b.glareBlades,
-                                  .bladeRotationDeg = b.glareBladeRotationDeg};
-    const int wanted = glareKernelRadius(p);
-    const int radius = std::min(wanted, kMaxFftSize - std::max(glare.width, glare.height));
+    Extent glare;
+    GlareKernelParameters p;
+    int wanted = 0;
+    for (;; ++divisor) {
+        glare = {(mExtent.width + divisor - 1) / divisor, (mExtent.height + divisor - 1) / divisor};
+        p = {.kernel = b.glareKernel,
+             .radiusDeg = b.glareRadiusDeg,
+             .degreesPerPixel = in.verticalFovDeg * float(divisor) / float(mExtent.height),
+             .blades = b.glareBlades,
+             .bladeRotationDeg = b.glareBladeRotationDeg};
+        wanted = glareKernelRadius(p);
+        if (std::max(glare.width, glare.height) + wanted <= kMaxFftSize || divisor == kMaxDivisor)
+            break;
+    }
+    if (divisor != mDivisor) {
+        warnOnce(
+            "glare-divisor-size",
+            fmt::format("glare: a {}x{} frame with a {}-degree kernel does not fit {}-texel FFT lines at "
+                        "1/{} of its size; the halo is convolved at 1/{}",
+                        mExtent.width, mExtent.height, b.glareRadiusDeg, kMaxFftSize, mDivisor, divisor));
+    }
+    const int radius = std::max(1, std::min(wanted, kMaxFftSize - std::max(glare.width, glare.height)));
     if (radius < wanted) {
         warnOnce(
             "glare-kernel-clipped",
@@ -239,7 +250,6 @@ const Texture& GlarePass::execute(const Inputs& in) {
     ensureTargets(glare, padded);
     DebugGroup group("glare");
     ensureKernel(p, radius);
-    const Programs& programs = this->programs(padded.width, padded.height);
     bindExposureStateForReading(*in.exposureState);
     glBindTextureUnit(kUnitSource, in.scene->id());
     convolve(divisor, in.timers);
