@@ -302,6 +302,25 @@ TEST_F(GlTest, GlareKernelSpectrumIsCached) {
     EXPECT_EQ(pass.kernelBuilds(), 3) << "a new field of view is a new pitch";
 }
 
+// The host's camera gives the field of view (a kernel's angle in pixels); bloom.fieldOfViewDeg only stands in
+// without one.
+TEST_F(GlTest, GlareTakesTheCamerasFieldOfView) {
+    const ImageF image = glow::pointLight({.x = 80.5f, .y = 80.5f, .radius = 1.5f, .value = 500.0f});
+    const Texture input = makeTexture(image, "glare camera input");
+    Camera camera;
+    camera.verticalFov = 20.0f * 3.14159265f / 180.0f;
+    camera.projection = perspectiveProjection(camera.verticalFov, 1.0f, camera.nearPlane, camera.farPlane);
+    Pipeline withCamera({.settings = glareFrame(60.0f, 6.0f)});
+    withCamera.execute({.color = &input, .camera = &camera}, {});
+    const ImageF a = readTextureF(withCamera.sceneReferred());
+    Pipeline without({.settings = glareFrame(20.0f, 6.0f)});
+    const ImageF b = sceneOf(without, image);
+    Pipeline wide({.settings = glareFrame(60.0f, 6.0f)});
+    const ImageF c = sceneOf(wide, image);
+    EXPECT_NEAR(a.at(100, 80)[1], b.at(100, 80)[1], 1e-3f * b.at(100, 80)[1]) << "the camera's 20 degrees";
+    EXPECT_GT(std::abs(c.at(100, 80)[1] - b.at(100, 80)[1]), 0.2f * b.at(100, 80)[1]) << "60 degrees differ";
+}
+
 // A frame wider than the longest FFT line (4096) has its halo convolved at half its size, and says so.
 TEST_F(GlTest, GlareOfAFrameTooWideForTheFftRunsAtHalfSize) {
     const ImageF image = randomHdr(4200, 8, 5);

@@ -86,8 +86,8 @@ bool GlarePass::enabled(const FrameContext& ctx) const {
     return ctx.hdr && ctx.tier.bloom && b.enabled && b.mode == BloomMode::Glare;
 }
 
-float GlarePass::verticalFovDeg(const FrameContext& ctx) {
-    if (ctx.inputs.camera != nullptr)
+float GlarePass::verticalFovDeg(const FrameContext& ctx, const FrameResources& resources) {
+    if (resources.has(Resource::Camera) && ctx.inputs.camera != nullptr)
         return ctx.inputs.camera->verticalFov * 180.0f / 3.14159265f;
     return ctx.settings.bloom.fieldOfViewDeg;
 }
@@ -100,7 +100,7 @@ void GlarePass::execute(FrameContext& ctx, FrameResources& resources) {
     resources.bind(Resource::Bloom, execute({.scene = resources.texture(Resource::SceneColor),
                                              .exposureState = resources.buffer(Resource::ExposureState),
                                              .settings = &ctx.settings.bloom,
-                                             .verticalFovDeg = verticalFovDeg(ctx),
+                                             .verticalFovDeg = verticalFovDeg(ctx, resources),
                                              .timers = ctx.timers}));
 }
 

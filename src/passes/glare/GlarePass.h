@@ -77,8 +77,9 @@ public:
     /// the composite; the core stays full resolution either way).
     void setDivisor(int divisor);
     [[nodiscard]] int divisor() const { return mDivisor; }
-    /// The frame's vertical field of view: the camera's when the host gives one, else bloom.fieldOfViewDeg.
-    [[nodiscard]] static float verticalFovDeg(const FrameContext& ctx);
+    /// The frame's vertical field of view: the camera's when the host gives a valid one, else
+    /// bloom.fieldOfViewDeg.
+    [[nodiscard]] static float verticalFovDeg(const FrameContext& ctx, const FrameResources& resources);
 
     // The last execute's figures (tests, telemetry).
     [[nodiscard]] Extent paddedSize() const { return mPadded; }
