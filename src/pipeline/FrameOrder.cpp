@@ -41,7 +41,8 @@ FrameOrder::FrameOrder(const Capabilities& caps, bool keepTelemetryHistory)
         &exposure,        // histogram, metering -> exposure (adaptation; telemetry readback)
         &subjectContexts, // exposure -> (subject contexts for the host)
         &dof,             // sceneColor, linearDepth, camera -> sceneColor, dofCoc (depth of field)
-        &bloom,           // sceneColor, exposure -> bloom
+        &bloom,           // sceneColor, exposure -> bloom (the mip chain; not in glare mode)
+        &glare,           // sceneColor, exposure, camera? -> bloom (bloom.mode glare: FFT convolution)
         &debugView,       // scene values or 3D inputs -> debugColor (replaces the image, no tone mapping)
         // Display domain.
         &tonemap,          // sceneColor, exposure, bloom? -> displayColor (composite, grade, curve, sRGB)

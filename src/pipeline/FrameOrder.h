@@ -11,6 +11,7 @@
 #include "passes/dof/DofPass.h"
 #include "passes/exposure/ExposurePass.h"
 #include "passes/fxaa/FxaaPass.h"
+#include "passes/glare/GlarePass.h"
 #include "passes/gtao/GtaoPass.h"
 #include "passes/inputs/InputPasses.h"
 #include "passes/lensflare/LensFlarePass.h"
@@ -59,6 +60,7 @@ public:
     ExposurePass exposure;
     SubjectContextsPass subjectContexts;
     BloomPass bloom;
+    GlarePass glare;
     DebugViewPass debugView;
     TonemapPass tonemap;
     FxaaPass fxaa;

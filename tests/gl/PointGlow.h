@@ -74,7 +74,8 @@ struct Figures {
 /// (the mean over every direction of the pixels in a 0.25-pixel ring, interpolated), so that a perfectly
 /// round glow gives 1 in every sector whatever pixel centres a sector holds; sectors reaching past the
 /// image's edge are left out (there the profile comes from the rings' other pixels).
-inline Figures measure(const ImageF& with, const ImageF& without, const Source& s) {
+/// `from`: the first annulus's inner radius when positive (else the source's edge + 1).
+inline Figures measure(const ImageF& with, const ImageF& without, const Source& s, float from = -1.0f) {
     constexpr float kBin = 0.25f;
     constexpr int kBins = 200; // 50 pixels
     std::vector<double> ringSum(kBins, 0.0);
@@ -96,7 +97,7 @@ inline Figures measure(const ImageF& with, const ImageF& without, const Source& 
         }
     }
     const auto profile = [&](float r) {
-        // Linear between the centres of the rings that hold pixels on either side.
+        // Between the centres of the rings that hold pixels on either side.
         const float t = r / kBin - 0.5f;
         int lo = std::clamp(int(std::floor(t)), 0, kBins - 1);
         int hi = std::clamp(lo + 1, 0, kBins - 1);
@@ -110,12 +111,16 @@ inline Figures measure(const ImageF& with, const ImageF& without, const Source& 
         const double a = ringCount[std::size_t(lo)] ? mean(lo) : 0.0;
         const double b = ringCount[std::size_t(hi)] ? mean(hi) : a;
         const float w = hi == lo ? 0.0f : std::clamp((t - float(lo)) / float(hi - lo), 0.0f, 1.0f);
+        // Geometric between rings of the same sign: a glow falling as a power of the distance or
+        // exponentially is exact so, where a straight line between sparse rings near a light is not.
+        if (a > 0.0 && b > 0.0)
+            return a * std::pow(b / a, double(w));
         return a + (b - a) * double(w);
     };
     Figures f;
     double first = 0.0;
     double previous = 0.0;
-    for (float r0 = s.radius + 1.0f; r0 < 40.0f; r0 += 2.0f) {
+    for (float r0 = from > 0.0f ? from : s.radius + 1.0f; r0 < 40.0f; r0 += 2.0f) {
         double ratio[8] = {};
         double sums = 0.0;
         int counts[8] = {};

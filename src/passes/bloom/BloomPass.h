@@ -54,9 +54,10 @@ public:
     /// The prefilter sanitises the mean of each footprint (bloom_downsample.comp.glsl).
     [[nodiscard]] bool sanitizesSceneReads() const override { return true; }
     [[nodiscard]] std::span<const ResourceUse> uses() const override;
-    /// The HDR path's chain (the LDR path's glow is part of the tone-map pass).
+    /// The HDR path's chain (the LDR path's glow is part of the tone-map pass); in glare mode the glare pass
+    /// (passes/glare/) writes the bloom instead.
     [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
-        return ctx.hdr && ctx.tier.bloom && ctx.settings.bloom.enabled;
+        return ctx.hdr && ctx.tier.bloom && ctx.settings.bloom.enabled && ctx.settings.bloom.mode != BloomMode::Glare;
     }
     void resize(Extent extent) override;
     void execute(FrameContext& ctx, FrameResources& resources) override;

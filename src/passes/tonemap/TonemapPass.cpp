@@ -1,6 +1,7 @@
 #include "passes/tonemap/TonemapPass.h"
 
 #include "core/ColorGrading.h"
+#include "core/Log.h"
 #include "gl/Capabilities.h"
 #include "passes/Bindings.h"
 #include "passes/DisplayProgram.h"
@@ -118,6 +119,8 @@ void TonemapPass::dispatch(const Program& program, const Inputs& in, const Textu
     parameters.ditherSeeds[0] = pcgHash(parameters.frame * 2u);
     parameters.ditherSeeds[1] = pcgHash(parameters.frame * 2u + 1u);
     if (in.bloom) {
+        // Glare mixes as energy-conserving bloom does: its image is the halo's share of the glare, alpha
+        // that share (passes/glare/GlarePass.h).
         parameters.bloomAdditive = in.bloomSettings->mode == BloomMode::Threshold ? 1 : 0;
         parameters.bloomIntensity = in.bloomSettings->intensity;
         parameters.bloomPixels = float(bloomPixels(extent, in.bloom->extent()));
@@ -161,6 +164,16 @@ void TonemapPass::dispatch(const Program& program, const Inputs& in, const Textu
 }
 
 void TonemapPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const BloomSettings& bloom = ctx.settings.bloom;
+    if (bloom.enabled && bloom.mode == BloomMode::Glare && (!ctx.hdr || !ctx.tier.bloom)) {
+        // The glare's FFT runs on the HDR path's scene only; the LDR path's cheap glow stands in, if any.
+        warnOnce("bloom-glare-unavailable",
+                 fmt::format("bloom.mode = glare needs the HDR path and a quality tier with bloom ({}); {}",
+                             ctx.hdr ? "this tier has no bloom" : "this frame runs the LDR path",
+                             !ctx.hdr && legacyGlow(ctx.tier, ctx.settings)
+                                 ? "the LDR path's single cheap glow stands in"
+                                 : "no glare is drawn"));
+    }
     const Inputs in{.scene = resources.texture(Resource::SceneColor),
                     .exposureState = resources.buffer(Resource::ExposureState),
                     .tonemapping = &ctx.settings.tonemapping,
