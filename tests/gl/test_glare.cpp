@@ -191,8 +191,9 @@ TEST_F(GlTest, GlareOfAPointFollowsTheAnalyticProfile) {
 // monotonically, for points off the pixel grid, small and large, dim and bright, on black and on grey, and
 // near a border. The eye's halo falls as 1/r^3 near a light: there a sub-pixel light's few pixels meet the
 // kernel sampled at pixel centres, and the annulus 1-3 pixels past the disc's edge is 6.7% out of round at
-// worst, so annuli are held to 3% from 2.7 pixels past the disc's edge (from 3.4 for the small disc, 5.2 for
-// the large) and the closer annulus to 8%.
+// worst, where the measure itself reads a continuous, exactly round 1/(r + 0.3)^3 glow of the same discs up to
+// 4.2% (a CPU model of the measure): annuli are held to 3% from 2.7 pixels past the disc's edge (from 3.4 for
+// the small disc, 5.2 for the large) and the closer annulus to 8%.
 TEST_F(GlTest, GlareOfAPointIsRound) {
     std::vector<glow::Source> sources;
     for (const float radius : {0.7f, 2.5f})
