@@ -142,6 +142,9 @@ int runOrbitDemo(const OrbitDemoOptions& options) {
         outputs, files, double(options.fps) / double(std::max(1, options.frameEvery)), options.video);
     outputs.commit();
     const auto end = std::chrono::steady_clock::now();
+    if (!statusLines()) {
+        return kOk; // -q: errors only
+    }
     printSummary(options, run, video);
     std::printf("  time: %.1f s rendering, %.1f s in all\n",
                 std::chrono::duration<double>(rendered - begin).count(),

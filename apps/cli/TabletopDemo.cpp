@@ -176,7 +176,9 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     }
     outputs.commit();
     const auto end = std::chrono::steady_clock::now();
-
+    if (!statusLines()) {
+        return kOk; // -q: errors only
+    }
     std::printf("tabletop walk: %d frames at %dx%d, %.3g fps, subject metering on the GPU -> %s\n", frames,
                 options.width, options.height, double(options.fps), options.output.string().c_str());
     std::printf("  files: %d frame PNGs, telemetry.csv, exposure_plot.png, contact_sheet.png, %s\n",

@@ -15,6 +15,8 @@ check "contact sheet written" test -s "$S/demo/contact_sheet.png"
 check "summary: stepping out" contains "step outside"
 check "summary: stepping in" contains "step inside"
 check "video skipped on request" contains "skipped"
+expect 0 "demo -q prints nothing" -- "$PHOTOPIC" demo -o "$S/quiet" --size 32x18 --fps 5 --seconds 2 --no-video -q
+check "nothing printed under -q" test -z "$OUTPUT"
 expect 2 "bad demo size" -- "$PHOTOPIC" demo -o "$S/bad" --size 12by7
 check "size named" contains "12by7"
 
