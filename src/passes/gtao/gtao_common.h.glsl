@@ -19,15 +19,16 @@ layout(std140, binding = BINDING_PARAMETERS) uniform GtaoParameters {
 };
 
 // View-space point on the ray through a full-resolution window position (pixels, GL origin) at linear view
-// depth z. The ray is the line through two unprojected points, so orthographic projections work as well.
+// depth z (view z = -z), solved from the projection's rows in closed form: clip w = P[2][3] vz + P[3][3] and
+// ndc.x = (P[0][0] vx + P[2][0] vz + P[3][0]) / w (y alike), for the perspective and orthographic projections
+// the frame takes (off-centre included; no shear between x and y). A few multiply-adds where unprojecting two
+// points took two matrix products and two divisions, at every sample.
 vec3 viewPositionAt(vec2 window, float z) {
     vec2 ndc = window / uFullSize * 2.0 - 1.0;
-    vec4 a = uInvProjection * vec4(ndc, -1.0, 1.0);
-    vec4 b = uInvProjection * vec4(ndc, 0.0, 1.0);
-    a.xyz /= a.w;
-    b.xyz /= b.w;
-    float t = (-z - a.z) / (b.z - a.z);
-    return mix(a.xyz, b.xyz, t);
+    float w = uProjection[3][3] - uProjection[2][3] * z;
+    vec2 xy = (ndc * w + vec2(uProjection[2][0], uProjection[2][1]) * z - vec2(uProjection[3][0], uProjection[3][1])) /
+              vec2(uProjection[0][0], uProjection[1][1]);
+    return vec3(xy, -z);
 }
 
 // The full-resolution pixel an AO texel is computed at. At half resolution the pixel within the 2 x 2 block
