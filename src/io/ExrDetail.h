@@ -1,7 +1,8 @@
 #pragma once
-// Internal to the io library: the pieces of ImageIO.cpp that ExrFrame.cpp and DisplayImageIO.cpp share (the
-// checked reading of an OpenEXR file from memory, colour reading with extra layers in the same pass, the
-// check of an image about to be written, and the atomic writer). Not part of the public API.
+// Internal to the io library: the pieces of ExrImage.cpp and AtomicFile.cpp that ExrFrame.cpp and
+// DisplayImageIO.cpp share (the checked reading of an OpenEXR file from memory, colour reading with extra
+// layers in the same pass, the check of an image about to be written, and the atomic writer). Not part of the
+// public API.
 
 #include "core/Image.h"
 #include "io/ImageIO.h"
