@@ -65,4 +65,41 @@ void TelemetryCsv::commit(std::uint64_t frames, std::uint64_t dropped) {
     mFile.commit();
 }
 
+std::string exposureTelemetryHeader() {
+    return "measured_luma,target_log2,applied_log2,exposure,manual_ev,metered_luma,min_luma,max_luma,"
+           "histogram_count,histogram_low_log2,histogram_high_log2,histogram_average_log2";
+}
+
+std::string exposureTelemetryRow(const ExposureTelemetry& t) {
+    return fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g}",
+                       t.frameLuminance, t.targetLog2, t.appliedLog2, t.exposure, t.manualEV,
+                       t.meteredLuminance, t.minLuminance, t.maxLuminance, t.histogramCount,
+                       t.histogramLowLog2, t.histogramHighLog2, t.histogramAverageLog2);
+}
+
+std::string telemetryCsvRow(const ExposureTelemetry& t, float dt, std::size_t sceneColumns,
+                            const std::vector<double>& sceneValues) {
+    std::string row = fmt::format("{},{:.6f}", t.frame, double(t.frame) * double(dt));
+    for (std::size_t c = 0; c < sceneColumns; ++c) {
+        row += fmt::format(",{:.9g}", c < sceneValues.size() ? sceneValues[c] : 0.0);
+    }
+    return row + "," + exposureTelemetryRow(t) + "\n";
+}
+
+std::string telemetryCsv(const std::vector<ExposureTelemetry>& rows, float dt,
+                         const std::vector<std::string>& sceneColumns,
+                         const std::vector<std::vector<double>>& sceneValues) {
+    std::string csv = "frame,time_s";
+    for (const auto& c : sceneColumns) {
+        csv += "," + c;
+    }
+    csv += "," + exposureTelemetryHeader() + "\n";
+    static const std::vector<double> kNone;
+    for (const ExposureTelemetry& t : rows) {
+        csv += telemetryCsvRow(t, dt, sceneColumns.size(),
+                               t.frame < sceneValues.size() ? sceneValues[t.frame] : kNone);
+    }
+    return csv;
+}
+
 } // namespace photopic::cli
