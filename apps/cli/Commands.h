@@ -164,9 +164,8 @@ HeadlessContextCreateInfo commandContext();
 /// --gl-debug, before a command runs.
 void setGlDebug(bool on);
 
-/// Frames in flight when `--frames-in-flight` is not given: 3 with up to 4 cores (the 2-core figure: flat at
-/// about 230 MB for a 1080p sequence), else half the cores, at most 8. On a 16-core machine a 1080p sequence
-/// went from 154 to 47 ms per frame with 8 (PNG encodes side by side), at 281 MB; 16 gained 2 ms for 419 MB.
+/// Frames in flight when `--frames-in-flight` is not given: 3 with up to 4 cores, else half the cores, at most
+/// 8: PNG encodes side by side pay until then, and more frames cost memory for little (docs/bench/LOG.md).
 int defaultFramesInFlight();
 
 } // namespace photopic::cli

@@ -12,9 +12,8 @@
 // samples rounded to nearest, floats as they are), with no GL pixel transfer for the driver to run in step
 // with rendering (NVIDIA's driver reports a read into a pack buffer as "synchronized with 3D rendering", a
 // performance warning). On a
-// software renderer, GL's pixel pack into the buffer: its copy is a memcpy there (0.8 ms for a 1080p RGBA8
-// frame on llvmpipe, start and finish together, where the shader took 18 ms), and the rows are flipped as
-// they are copied out.
+// software renderer, GL's pixel pack into the buffer: its copy is a memcpy there (a small part of what the
+// shader took: docs/bench/LOG.md), and the rows are flipped as they are copied out.
 //
 // Each slot's buffer grows to the largest read it has held and is kept after that, so a sequence allocates
 // nothing once its first frames are read.

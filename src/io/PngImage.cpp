@@ -162,8 +162,8 @@ std::size_t finishChunk(unsigned char* at, const char (&type)[5], std::size_t le
 
 /// Encodes as a PNG (RGB when opaque, else RGBA; 8 bits; no interlace; an sRGB chunk, perceptual intent;
 /// filter type None on every row) into `out`; returns the size. The stream is one zlib stream from libdeflate
-/// at level 1: a 1080p frame deflates in about 40 ms against 110 ms for zlib at level 3 (libpng's fast
-/// setting), and comes out ~5% larger; sequences of hundreds of frames are what it is for.
+/// at level 1: several times faster than zlib at libpng's fast setting for a stream ~5% larger
+/// (docs/bench/LOG.md); sequences of hundreds of frames are what it is for.
 std::size_t encodePng(const fs::path& path, const Image8& image, Bytes& rows, PngWriter::EncodeBuffer& out,
                       libdeflate_compressor* deflater) {
     bool opaque = true;

@@ -4,11 +4,9 @@
 // from left to right exactly as that shader's row sums do, and writes the row's pair; metering_reduce
 // adds a block's 16 rows top to bottom, as that shader's block total does, before the blocks. On a CPU
 // rasteriser (llvmpipe) a barrier suspends and resumes every SIMD batch of the group, and the 16x16
-// shader's three of them cost most of a 1080p frame's metering (265 ms of 465 ms for the whole chain,
-// measured on 2 cores); this shader has none. The weighting is the compile-time WEIGHTS (-1: no weighted
+// shader's three of them cost most of a frame's metering there (docs/bench/LOG.md); this shader has none. The weighting is the compile-time WEIGHTS (-1: no weighted
 // mean; else kMeterAverage, kMeterCenter or kMeterMask), not uWeights: llvmpipe computes every weight a
-// uniform branch could pick, the mask's texel fetch and the centre's exp included (10.5 -> 6.5 ms for the
-// pass at 1920x1080 in average mode). Formulas: core/Metering.h.
+// uniform branch could pick, the mask's texel fetch and the centre's exp included. Formulas: core/Metering.h.
 #include "passes/common/sanitize.h.glsl"
 #include "passes/metering/metering.h.glsl"
 #include "passes/metering/metering_buffers.h.glsl"

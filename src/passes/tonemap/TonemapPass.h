@@ -90,8 +90,7 @@ private:
     /// One program per (curve, bloom, grading, scene output, display depth): the curve and the switches are
     /// #defines, not
     /// uniforms. Mesa llvmpipe executes every case of a switch on a uniform under a SIMD mask, so a runtime
-    /// curve switch cost all eleven curves per pixel (1920x1080, --sync wall time: 280 ms against 49 ms for
-    /// a fixed curve); on a GPU the branch is uniform but registers are allocated for the costliest case.
+    /// curve switch costs all eleven curves per pixel; on a GPU the branch is uniform but registers are allocated for the costliest case.
     const Program& variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene, bool display16,
                            bool blocks = false);
 
