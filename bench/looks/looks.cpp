@@ -74,79 +74,62 @@ std::string format(const char* pattern, double a, double b) {
     return text;
 }
 
+/// The table's first two lines: "| curve |" and a column a name, then the separator.
+void printTableHead(const std::vector<std::string>& columns) {
+    std::printf("| curve |");
+    for (const std::string& c : columns) {
+        std::printf(" %s |", c.c_str());
+    }
+    std::printf("\n|---|");
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+        std::printf("---|");
+    }
+    std::printf("\n");
+}
+
+/// A table of a row a curve and a column a colour, each cell `cell` of the colour's hue sweep.
+template <class Cell>
+void printColourTable(const std::vector<Variant>& variants, const std::vector<TestColour>& colours, Cell cell) {
+    std::vector<std::string> names;
+    for (const TestColour& c : colours) {
+        names.push_back(c.name);
+    }
+    printTableHead(names);
+    for (const Variant& v : variants) {
+        std::printf("| %s |", v.label.c_str());
+        for (const TestColour& c : colours) {
+            std::printf(" %s |", cell(measureHueShift(v, c.linear)).c_str());
+        }
+        std::printf("\n");
+    }
+    std::printf("\n");
+}
+
 void printHueTable(const char* title, const std::vector<Variant>& variants,
                    const std::vector<TestColour>& colours) {
     std::printf(
         "### %s: worst Oklab hue shift, degrees (at EV), -2 to +6 EV, until chroma < 10%% of peak\n\n",
         title);
-    std::printf("| curve |");
-    for (const TestColour& c : colours) {
-        std::printf(" %s |", c.name.c_str());
-    }
-    std::printf("\n|---|");
-    for (std::size_t i = 0; i < colours.size(); ++i) {
-        std::printf("---|");
-    }
-    std::printf("\n");
-    for (const Variant& v : variants) {
-        std::printf("| %s |", v.label.c_str());
-        for (const TestColour& c : colours) {
-            const HueShift s = measureHueShift(v, c.linear);
-            std::printf(" %s |", format("%+.0f (%+.1f)", double(s.worstDeg), double(s.worstAtEv)).c_str());
-        }
-        std::printf("\n");
-    }
-    std::printf("\n");
+    printColourTable(variants, colours, [](const HueShift& s) {
+        return format("%+.0f (%+.1f)", double(s.worstDeg), double(s.worstAtEv));
+    });
 }
 
 void printChromaTable(const std::vector<Variant>& variants) {
-    const std::vector<TestColour> colours = testColours();
     std::printf("### Oklab saturation (C/L) at 0 EV, %% of the input's (100: as saturated as the colour "
                 "shown as it is)\n\n");
-    std::printf("| curve |");
-    for (const TestColour& c : colours) {
-        std::printf(" %s |", c.name.c_str());
-    }
-    std::printf("\n|---|");
-    for (std::size_t i = 0; i < colours.size(); ++i) {
-        std::printf("---|");
-    }
-    std::printf("\n");
-    for (const Variant& v : variants) {
-        std::printf("| %s |", v.label.c_str());
-        for (const TestColour& c : colours) {
-            std::printf(" %.0f |", 100.0 * double(measureHueShift(v, c.linear).saturationKeptAtMid));
-        }
-        std::printf("\n");
-    }
-    std::printf("\n");
+    printColourTable(variants, testColours(), [](const HueShift& s) {
+        return format("%.0f", 100.0 * double(s.saturationKeptAtMid), 0.0);
+    });
 }
 
 void printMidTable(const std::vector<Variant>& variants) {
-    const std::vector<TestColour> colours = testColours();
     std::printf(
         "### Hue shift at 0 EV (luminance 0.18), degrees; first EV under 10%% chroma in brackets\n\n");
-    std::printf("| curve |");
-    for (const TestColour& c : colours) {
-        std::printf(" %s |", c.name.c_str());
-    }
-    std::printf("\n|---|");
-    for (std::size_t i = 0; i < colours.size(); ++i) {
-        std::printf("---|");
-    }
-    std::printf("\n");
-    for (const Variant& v : variants) {
-        std::printf("| %s |", v.label.c_str());
-        for (const TestColour& c : colours) {
-            const HueShift s = measureHueShift(v, c.linear);
-            const bool white = s.whiteAtEv <= kRampLastEv;
-            std::printf(" %s |",
-                        white ? format("%+.0f [%+.1f]", double(s.atMidDeg), double(s.whiteAtEv)).c_str()
-                              : format("%+.0f [-]", double(s.atMidDeg), 0.0).c_str());
-        }
-        std::printf("\n");
-    }
-    std::printf("\n");
+    printColourTable(variants, testColours(), [](const HueShift& s) {
+        return s.whiteAtEv <= kRampLastEv ? format("%+.0f [%+.1f]", double(s.atMidDeg), double(s.whiteAtEv))
+                                          : format("%+.0f [-]", double(s.atMidDeg), 0.0);
+    });
 }
 
 constexpr float kNeverEv = 16.0f;
@@ -248,15 +231,11 @@ ImageFigures measureImage(const Options& options, const CliRun& run, const TestI
 void printClipTable(const char* title, const std::vector<Variant>& variants,
                     const std::vector<TestImage>& images, const std::vector<std::vector<ClipShare>>& shares) {
     std::printf("### %s: %% of pixels crushed (every channel < 10) / clipped (any channel > 250)\n\n", title);
-    std::printf("| curve |");
+    std::vector<std::string> names;
     for (const TestImage& image : images) {
-        std::printf(" %s |", image.label.c_str());
+        names.push_back(image.label);
     }
-    std::printf("\n|---|");
-    for (std::size_t i = 0; i < images.size(); ++i) {
-        std::printf("---|");
-    }
-    std::printf("\n");
+    printTableHead(names);
     for (std::size_t v = 0; v < variants.size(); ++v) {
         std::printf("| %s |", variants[v].label.c_str());
         for (std::size_t i = 0; i < images.size(); ++i) {
