@@ -2,16 +2,44 @@
 // The glow of a point of light: a supersampled disc on a background, and how far its glow (an image with
 // an effect minus the same without) is from radially symmetric (the means of 8 sectors of each annulus, each
 // pixel divided by the glow's radial profile at its own distance, against their mean) and whether it falls
-// off monotonically from the core. Shared by the bloom and glare tests.
+// off monotonically from the core; and the frame helpers the bloom and glare tests share.
 
 #include "GlTest.h"
 
 #include "gl/TextureIo.h"
+#include "passes/Bindings.h"
 #include "pipeline/Pipeline.h"
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 #include <vector>
+
+namespace photopic::test {
+
+/// An exposure state of `exposure` in a buffer, as the bloom, glare and tone-map passes read it.
+inline Buffer exposureState(float exposure, std::string_view name = "test exposure state") {
+    GpuExposureState state;
+    state.exposure = exposure;
+    return Buffer({.size = sizeof(state), .data = &state, .debugName = name});
+}
+
+/// The scene-referred image `pipeline` makes of `image`.
+inline ImageF sceneOf(Pipeline& pipeline, const ImageF& image) {
+    const Texture input = makeTexture(image, "test input");
+    pipeline.execute({.color = &input}, {});
+    return readTextureF(pipeline.sceneReferred());
+}
+
+/// The sum of the red, green and blue values of every pixel.
+inline double sumRgb(const ImageF& image) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < image.pixelCount(); ++i)
+        sum += double(image.rgba[i * 4]) + image.rgba[i * 4 + 1] + image.rgba[i * 4 + 2];
+    return sum;
+}
+
+} // namespace photopic::test
 
 namespace photopic::test::glow {
 
@@ -48,9 +76,7 @@ inline ImageF pointLight(const Source& s) {
 
 inline ImageF sceneReferred(const Settings& settings, const ImageF& image) {
     Pipeline pipeline({.settings = settings});
-    const Texture input = makeTexture(image, "roundness input");
-    pipeline.execute({.color = &input}, {});
-    return readTextureF(pipeline.sceneReferred());
+    return sceneOf(pipeline, image);
 }
 
 /// Fixed exposure, linear curve, no dither or AA: the scene-referred image is the scene and its bloom.

@@ -2,6 +2,7 @@
 // threshold, and grading reaching the EXR output.
 
 #include "GlTest.h"
+#include "PointGlow.h"
 
 #include "core/Bloom.h"
 #include "core/Color.h"
@@ -50,20 +51,6 @@ Settings bloomOnly() {
     return s;
 }
 
-ImageF sceneOf(Pipeline& pipeline, const ImageF& image) {
-    const Texture input = makeTexture(image, "bloom test input");
-    pipeline.execute({.color = &input}, {});
-    return readTextureF(pipeline.sceneReferred());
-}
-
-double sumRgb(const ImageF& image) {
-    double sum = 0;
-    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-        sum += double(image.rgba[i]) + image.rgba[i + 1] + image.rgba[i + 2];
-    }
-    return sum;
-}
-
 float bilinear(const ImageF& image, float x, float y, int ch) {
     // (x, y) in pixel units with centres at +0.5; texels past the edge repeat the edge (GL_CLAMP_TO_EDGE).
     const float fx = x - 0.5f, fy = y - 0.5f;
@@ -74,13 +61,6 @@ float bilinear(const ImageF& image, float x, float y, int ch) {
     };
     return (at(x0, y0) * (1 - tx) + at(x0 + 1, y0) * tx) * (1 - ty) +
            (at(x0, y0 + 1) * (1 - tx) + at(x0 + 1, y0 + 1) * tx) * ty;
-}
-
-/// An exposure state of `exposure` in a buffer, as the bloom and tone-map passes read it.
-Buffer exposureState(float exposure, std::string_view name) {
-    GpuExposureState state;
-    state.exposure = exposure;
-    return Buffer({.size = sizeof(state), .data = &state, .debugName = name});
 }
 
 constexpr float kExposure = 1.5f; ///< the exposure the bloom tests run at

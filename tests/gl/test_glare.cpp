@@ -24,12 +24,6 @@ namespace photopic::test {
 
 namespace {
 
-Buffer exposureState(float exposure) {
-    GpuExposureState state;
-    state.exposure = exposure;
-    return Buffer({.size = sizeof(state), .data = &state, .debugName = "glare test exposure"});
-}
-
 /// HDR noise: mostly 0..2 with a few hot pixels up to 500.
 ImageF randomHdr(int width, int height, unsigned seed) {
     std::mt19937 rng(seed);
@@ -86,13 +80,6 @@ ImageF cpuConvolve(const ImageF& image, const GlareKernelImage& k, Extent size) 
     return out;
 }
 
-double sumRgb(const ImageF& image) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < image.pixelCount(); ++i)
-        sum += double(image.rgba[i * 4]) + image.rgba[i * 4 + 1] + image.rgba[i * 4 + 2];
-    return sum;
-}
-
 BloomSettings glareSettings(GlareKernel kernel, float radiusDeg) {
     BloomSettings b;
     b.mode = BloomMode::Glare;
@@ -109,12 +96,6 @@ Settings glareFrame(float fovDeg, float radiusDeg, GlareKernel kernel = GlareKer
     s.bloom = glareSettings(kernel, radiusDeg);
     s.bloom.fieldOfViewDeg = fovDeg;
     return s;
-}
-
-ImageF sceneOf(Pipeline& pipeline, const ImageF& image) {
-    const Texture input = makeTexture(image, "glare test input");
-    pipeline.execute({.color = &input}, {});
-    return readTextureF(pipeline.sceneReferred());
 }
 
 } // namespace
