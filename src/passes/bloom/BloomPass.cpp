@@ -40,6 +40,13 @@ void setBlurWeights(BloomStepParameters& p) {
 /// Texels a blur invocation computes along its axis (bloom_step.h.glsl kRun).
 constexpr int kBlurRun = 4;
 
+/// The blurs' #defines: the run an invocation computes and the Gaussian's reach (bloom_step.h.glsl).
+ShaderDefines blurDefines(ShaderDefines defines) {
+    defines.emplace_back("BLUR_RUN", std::to_string(kBlurRun));
+    defines.emplace_back("BLUR_REACH", std::to_string(kBloomBlurReach));
+    return defines;
+}
+
 void setSourceTexel(BloomStepParameters& p, Extent source) {
     p.sourceTexel[0] = 1.0f / float(source.width);
     p.sourceTexel[1] = 1.0f / float(source.height);
@@ -52,9 +59,9 @@ BloomPass::BloomPass()
     , mPrefilter(makeStep(kDown, {{"PREFILTER", "1"}}, mGroup))
     , mPrefilterQuarter(makeStep(kDown, {{"PREFILTER", "1"}, {"QUARTER", "1"}}, mGroup))
     , mDownsample(makeStep(kDown, {}, mGroup))
-    , mBlurRows(makeStep(kRows, {}, mGroup))
-    , mUpsample(makeStep(kUp, {}, mGroup))
-    , mUpsampleCoarse(makeStep(kUp, {{"COARSE", "1"}}, mGroup))
+    , mBlurRows(makeStep(kRows, blurDefines({}), mGroup))
+    , mUpsample(makeStep(kUp, blurDefines({}), mGroup))
+    , mUpsampleCoarse(makeStep(kUp, blurDefines({{"COARSE", "1"}}), mGroup))
     , mSampler(Sampler::linearTransparentBorder("bloom sampler")) {}
 
 std::span<const ResourceUse> BloomPass::uses() const {
@@ -85,11 +92,6 @@ void BloomPass::resize(Extent extent) {
     mUp.clear();
 }
 
-const BloomStepParameters& BloomPass::parameters(Step step, int level) const {
-    const auto& written = step == Step::Down ? mDownWritten : step == Step::Rows ? mRowWritten : mUpWritten;
-    return written.at(std::size_t(level));
-}
-
 void BloomPass::ensureChain(int firstDivisor, int levels) {
     if (levels == mLevels && firstDivisor == mDivisor && !mDown.empty()) {
         return;
@@ -115,17 +117,12 @@ void BloomPass::ensureChain(int firstDivisor, int levels) {
         mRowBlocks.emplace_back(fmt::format("bloom rows {} parameters", i));
         mUpBlocks.emplace_back(fmt::format("bloom up {} parameters", i));
     }
-    mDownWritten.assign(std::size_t(levels), {});
-    mRowWritten.assign(std::size_t(levels), {});
-    mUpWritten.assign(std::size_t(levels), {});
 }
 
-void BloomPass::bindStep(const Program& program, std::vector<ParameterBlock<BloomStepParameters>>& blocks,
-                         std::vector<BloomStepParameters>& written, int level, const BloomStepParameters& p,
-                         const Texture& source, const Texture& target) {
-    blocks[std::size_t(level)].update(p);
-    blocks[std::size_t(level)].bind(kBindingParameters);
-    written[std::size_t(level)] = p;
+void BloomPass::bindStep(const Program& program, ParameterBlock<BloomStepParameters>& block,
+                         const BloomStepParameters& p, const Texture& source, const Texture& target) {
+    block.update(p);
+    block.bind(kBindingParameters);
     program.use();
     glBindTextureUnit(kUnitSource, source.id());
     glBindSampler(kUnitSource, mSampler.id());
@@ -153,7 +150,7 @@ void BloomPass::downsample(const Inputs& in, int level) {
         p.knee = bloomKneeConstants(in.settings->threshold, in.settings->knee);
     }
     const Program& program = level > 0 ? mDownsample : in.firstDivisor == 4 ? mPrefilterQuarter : mPrefilter;
-    bindStep(program, mDownBlocks, mDownWritten, level, p, source, target);
+    bindStep(program, mDownBlocks[std::size_t(level)], p, source, target);
     const Extent e = target.extent();
     // The prefilter computes 2x2 blocks of targets an invocation.
     dispatchPixels(level == 0 ? Extent{(e.width + 1) / 2, (e.height + 1) / 2} : e, mGroup);
@@ -167,7 +164,7 @@ void BloomPass::blurRows(const Inputs& in, int level) {
     BloomStepParameters p;
     setSourceTexel(p, source.extent());
     setBlurWeights(p);
-    bindStep(mBlurRows, mRowBlocks, mRowWritten, level, p, source, target);
+    bindStep(mBlurRows, mRowBlocks[std::size_t(level)], p, source, target);
     dispatchPixels({(target.extent().width + kBlurRun - 1) / kBlurRun, target.extent().height}, mGroup);
     computeReadBarrier(); // the upsample reads it
 }
@@ -193,7 +190,7 @@ void BloomPass::upsample(const Inputs& in, int level) {
         p.coarseOrigin[0] = p.coarseOrigin[1] = 0.5f * float(kBloomMargin) - 0.25f;
         p.radius = in.settings->radius;
     }
-    bindStep(coarse ? mUpsampleCoarse : mUpsample, mUpBlocks, mUpWritten, level, p, source, target);
+    bindStep(coarse ? mUpsampleCoarse : mUpsample, mUpBlocks[std::size_t(level)], p, source, target);
     if (coarse) {
         glBindTextureUnit(kUnitCoarse, mUp[std::size_t(level + 1)].id());
         glBindSampler(kUnitCoarse, mSampler.id());

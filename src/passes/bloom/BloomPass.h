@@ -72,20 +72,15 @@ public:
     /// The result of level `level` of the last execute (levels() of them; 0 is the chain's result, without
     /// a guard band; the others have one).
     [[nodiscard]] const Texture& upsampled(int level) const { return mUp.at(std::size_t(level)); }
-    /// The parameters the last execute gave step `step` of level `level`, as the CPU twins of the tests
-    /// read them.
-    enum class Step { Down, Rows, Up };
-    [[nodiscard]] const BloomStepParameters& parameters(Step step, int level) const;
 
 private:
     void ensureChain(int firstDivisor, int levels);
     void downsample(const Inputs& in, int level);
     void blurRows(const Inputs& in, int level);
     void upsample(const Inputs& in, int level);
-    /// Binds `program`, the parameters `block` (updated to `p`), the source on unit 0 and the target image.
-    void bindStep(const Program& program, std::vector<ParameterBlock<BloomStepParameters>>& blocks,
-                  std::vector<BloomStepParameters>& written, int level, const BloomStepParameters& p,
-                  const Texture& source, const Texture& target);
+    /// Binds `program`, `block` (updated to `p`), the source on its unit and the target image.
+    void bindStep(const Program& program, ParameterBlock<BloomStepParameters>& block,
+                  const BloomStepParameters& p, const Texture& source, const Texture& target);
 
     PixelGroup mGroup; ///< the invocation shape of every program here (gl/ShaderLibrary.h pixelGroup)
     Program mPrefilter, mPrefilterQuarter, mDownsample, mBlurRows, mUpsample, mUpsampleCoarse;
@@ -93,7 +88,6 @@ private:
     /// levels' bands beyond what they hold).
     Sampler mSampler;
     std::vector<ParameterBlock<BloomStepParameters>> mDownBlocks, mRowBlocks, mUpBlocks;
-    std::vector<BloomStepParameters> mDownWritten, mRowWritten, mUpWritten;
     Extent mExtent;
     int mDivisor = 0;
     int mLevels = 0;

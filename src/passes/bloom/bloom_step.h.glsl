@@ -18,35 +18,27 @@ layout(std140, binding = BINDING_PARAMETERS) uniform BloomStepParameters {
     vec4 uWeights[3];    // blur and upsample: the Gaussian's weights 0 .. 8 texels out (core/Bloom.h)
 };
 
-const int kBlurReach = 8; // core/Bloom.h kBloomBlurReach
-// Each invocation of the blurs computes a run of kRun texels along the blurred axis: they share the
-// kRun + 2 kBlurReach fetches under them (texture reads are what a software renderer pays for).
-const int kRun = 4;
-
-// The Gaussian's weight k texels out (either side).
-float blurWeight(int k) {
-    int a = abs(k);
-    return uWeights[a / 4][a % 4];
-}
+#ifdef BLUR_RUN
+// The blur's reach in texels (core/Bloom.h kBloomBlurReach) and the texels an invocation of the blurs computes
+// along the blurred axis, both from the host: the run's texels share the kRun + 2 kBlurReach fetches under them
+// (texture reads are what a software renderer pays for).
+const int kBlurReach = BLUR_REACH;
+const int kRun = BLUR_RUN;
+#endif
 
 // A bilinear read of `source` at texel-centre coordinate `c`; the sampler's border is transparent black.
 vec4 readAt(sampler2D source, vec2 c) {
     return textureLod(source, (c + 0.5) * uSourceTexel, 0.0);
 }
 
-// Texel `t` of `source`, transparent black past its edge (as the sampler's border).
-vec4 fetchOrZero(sampler2D source, ivec2 t) {
-    return any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, textureSize(source, 0))) ? vec4(0.0)
-                                                                                          : texelFetch(source, t, 0);
-}
-
+#ifdef BLUR_RUN
 // The Gaussian along `axis` of the kRun texels from `first` on, from the kRun + 2 kBlurReach texels under
 // them, each fetched once; the weights are symmetric, so each pair of texels d either side is one product.
 void blurRun(sampler2D source, ivec2 first, ivec2 axis, out vec4 sums[kRun]) {
     ivec2 size = textureSize(source, 0);
     float w[kBlurReach + 1];
     for (int d = 0; d <= kBlurReach; ++d) {
-        w[d] = blurWeight(d);
+        w[d] = uWeights[d / 4][d % 4];
     }
     vec4 t[kRun + 2 * kBlurReach];
     for (int k = 0; k < kRun + 2 * kBlurReach; ++k) {
@@ -62,3 +54,4 @@ void blurRun(sampler2D source, ivec2 first, ivec2 axis, out vec4 sums[kRun]) {
         sums[r] = sum;
     }
 }
+#endif
