@@ -64,11 +64,11 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
     const glm::ivec2 tier = slicesAndSteps(s.quality);
     const double rawTexels = double(rawExtent.width) * rawExtent.height;
     const double fullTexels = double(e.width) * e.height;
-    // Horizon search: depth per step (2 sides) plus the centre's depth and normal; denoise: 25 depths,
-    // normals and raw values per pixel (mostly cache hits).
-    const double bytes =
-        rawTexels * (4.0 * 2.0 * tier.x * tier.y + 4.0 + 8.0 + 2.0) + fullTexels * (4 + 8 + 4 + 2);
-    ScopedGpuTimer timer(ctx.timers, "gtao", bytes);
+    // Horizon search: depth per step (2 sides) plus the centre's depth and normal; denoise: 9 (25 at half
+    // resolution) depths, normals and raw values per pixel, mostly cache hits. Two timers: the search and
+    // the denoiser cost differently with the preset and the resolution.
+    const double searchBytes = rawTexels * (4.0 * 2.0 * tier.x * tier.y + 4.0 + 8.0 + 2.0);
+    const double denoiseBytes = fullTexels * (4 + 8 + 4 + 2);
     mParameters.update({.invProjection = glm::inverse(camera.projection),
                         .projection = camera.projection,
                         .fullSize = glm::vec2(float(e.width), float(e.height)),
@@ -83,11 +83,14 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
     glBindTextureUnit(0, resources.texture(Resource::LinearDepth)->id());
     glBindTextureUnit(1, resources.texture(Resource::Normals)->id());
 
-    mMain.use();
-    glBindImageTexture(0, raw.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-    dispatchPixels(rawExtent);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-
+    {
+        ScopedGpuTimer timer(ctx.timers, "gtao", searchBytes);
+        mMain.use();
+        glBindImageTexture(0, raw.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
+        dispatchPixels(rawExtent);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    }
+    ScopedGpuTimer timer(ctx.timers, "gtao denoise", denoiseBytes);
     mDenoise.use();
     glBindTextureUnit(2, raw.id());
     glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);

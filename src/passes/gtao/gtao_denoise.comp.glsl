@@ -1,7 +1,7 @@
-// GTAO's spatial denoiser: a 5 x 5 (AO texels) Gaussian, weighted by how far each neighbour's surface lies
-// from the centre's tangent plane, how far it lies from the centre point and how its normal turns away, so
-// occlusion does not bleed across depth discontinuities (no halos) and the half-resolution result is
-// upsampled along surfaces. Sky pixels are 1.
+// GTAO's spatial denoiser: a Gaussian over 3 x 3 AO texels (5 x 5 at half resolution), weighted by how far
+// each neighbour's surface lies from the centre's tangent plane, how far it lies from the centre point and
+// how its normal turns away, so occlusion does not bleed across depth discontinuities (no halos) and the
+// half-resolution result is upsampled along surfaces. Sky pixels are 1.
 #include "passes/gtao/gtao_common.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -40,8 +40,12 @@ void main() {
     float tolerance = 0.02 * z;
     float sum = 0.0;
     float weights = 0.0;
-    for (int dy = -2; dy <= 2; ++dy) {
-        for (int dx = -2; dx <= 2; ++dx) {
+    // 3 x 3 texels at full resolution, 5 x 5 at half (where the upsampling needs texels 2 out). At full
+    // resolution the ring 2 pixels out (weight under a third of the centre's) took 16 of the 25 taps and
+    // bought no accuracy against either ray-traced truth, only a little steadiness under motion.
+    int reach = uScale == 1 ? 1 : 2;
+    for (int dy = -reach; dy <= reach; ++dy) {
+        for (int dx = -reach; dx <= reach; ++dx) {
             ivec2 q = centre + ivec2(dx, dy);
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, rawSize))) {
                 continue;
@@ -65,6 +69,7 @@ void main() {
             weights += w;
         }
     }
-    float visibility = weights > 1e-6 ? sum / weights : texelFetch(uRaw, clamp(centre, ivec2(0), rawSize - 1), 0).r;
+    float visibility =
+        weights > 1e-6 ? sum / weights : texelFetch(uRaw, clamp(centre, ivec2(0), rawSize - 1), 0).r;
     imageStore(uVisibility, p, vec4(clamp(visibility, 0.0, 1.0)));
 }

@@ -150,6 +150,8 @@ void main() {
             vec2 sideDir = side == 0 ? omega : -omega;
             float best = side == 0 ? lowCos0 : lowCos1;
             vec3 sideVec = side == 0 ? orthoDirection : -orthoDirection;
+            float planeBest = -1.0;
+            vec3 planePoint = vec3(0.0);
             for (int s = 0; s < uSteps; ++s) {
                 // Quadratic spacing: denser near the centre, where occluders subtend the largest angles.
                 float jitter = fract(stepNoise + 0.618034 * float(slice) + 0.5 * float(side));
@@ -177,9 +179,13 @@ void main() {
                 }
                 vec3 point;
                 float c = planeHorizon(hit, sampleNormal, origin, axis, sideVec, viewVec, point);
-                if (c > best && depthAgrees(point)) {
-                    best = c;
+                if (c > planeBest) {
+                    planeBest = c;
+                    planePoint = point;
                 }
+            }
+            if (planeBest > best && depthAgrees(planePoint)) {
+                best = planeBest;
             }
             if (side == 0) {
                 horizonCos0 = best;
