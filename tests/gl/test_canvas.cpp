@@ -294,3 +294,71 @@ TEST_F(GlTest, CanvasLoadsColorAndMaterialFiles) {
 }
 
 } // namespace photopic::test
+
+namespace photopic::test {
+
+// The trial alone: the paths in turn until each has its times, then the lower median for good; times that
+// arrive late or for a path already timed do not reopen it, and restart() times both again.
+TEST(CanvasPathTrial, AlternatesThenKeepsTheLowerMedian) {
+    CanvasPathTrial trial;
+    EXPECT_EQ(trial.take(), CanvasShading::Tiled);
+    EXPECT_EQ(trial.take(), CanvasShading::Fullscreen);
+    for (double ms : {5.0, 9.0, 6.0}) {
+        trial.record(CanvasShading::Tiled, ms);
+    }
+    EXPECT_FALSE(trial.chosen());
+    EXPECT_EQ(trial.take(), CanvasShading::Fullscreen) << "the path still short of times runs";
+    EXPECT_EQ(trial.take(), CanvasShading::Fullscreen);
+    for (double ms : {4.0, 30.0, 5.5}) {
+        trial.record(CanvasShading::Fullscreen, ms);
+    }
+    ASSERT_TRUE(trial.chosen());
+    EXPECT_EQ(*trial.chosen(), CanvasShading::Fullscreen); // median 5.5 against 6
+    EXPECT_EQ(trial.medians()[0], 6.0);
+    EXPECT_EQ(trial.medians()[1], 5.5);
+    trial.record(CanvasShading::Tiled, 0.1);
+    EXPECT_EQ(trial.take(), CanvasShading::Fullscreen);
+    trial.restart();
+    EXPECT_FALSE(trial.chosen());
+    for (int i = 0; i < CanvasPathTrial::kSamples; ++i) {
+        trial.record(CanvasShading::Tiled, 1.0);
+        trial.record(CanvasShading::Fullscreen, 2.0);
+    }
+    EXPECT_EQ(trial.chosen(), CanvasShading::Tiled);
+}
+
+// `auto` on this device: the same HDR bits as the full-screen reference on every frame, the trial decided
+// within 16 frames, and telemetry that does not depend on which path it kept (the tiles with material).
+TEST_F(GlTest, CanvasAutoShadingChoosesAPathAndChangesNoPixel) {
+    const Extent size{160, 96};
+    auto automatic = canvasScene(size, {"occupancy=0.3", "tileSize=16", "shading=auto"});
+    auto full = canvasScene(size, {"occupancy=0.3", "tileSize=16", "shading=fullscreen"});
+    const auto columns = automatic->telemetryColumns();
+    const std::size_t shaded =
+        std::size_t(std::find(columns.begin(), columns.end(), "tiles_shaded") - columns.begin());
+    Pipeline pipeline({.settings = automatic->defaultSettings()});
+    for (std::uint64_t f = 0; f < 16; ++f) {
+        const Rendered a = renderFrame(*automatic, pipeline, f, 1.0f / 30.0f);
+        const Rendered b = renderFrame(*full, pipeline, f, 1.0f / 30.0f);
+        float maxHdr = 0;
+        for (std::size_t i = 0; i < a.hdr.rgba.size(); ++i) {
+            maxHdr = std::max(maxHdr, std::abs(a.hdr.rgba[i] - b.hdr.rgba[i]));
+        }
+        ASSERT_EQ(maxHdr, 0.0f) << "frame " << f;
+        ASSERT_EQ(a.telemetry[shaded], 18.0) << "frame " << f;
+    }
+    const CanvasImages images =
+        makeProceduralCanvas({.width = 160, .height = 96, .tileSize = 16, .occupancy = 0.3});
+    CanvasRenderer renderer;
+    renderer.setCanvas(images, 16);
+    const CanvasLighting lighting{.light = canvasLightDirection(0.1, 0.2)};
+    for (int f = 0; f < 16 && !renderer.autoChoice(); ++f) {
+        (void)readTextureF(renderer.execute(lighting, CanvasShading::Auto)); // the read waits for the frame
+    }
+    ASSERT_TRUE(renderer.autoChoice()) << "the trial ends once each path has its times";
+    EXPECT_NE(*renderer.autoChoice(), CanvasShading::Auto);
+    renderer.setCanvas(images, 16);
+    EXPECT_FALSE(renderer.autoChoice()) << "a new canvas is timed again";
+}
+
+} // namespace photopic::test

@@ -1,5 +1,6 @@
 #include "scenes/canvas/CanvasRenderer.h"
 
+#include "core/Log.h"
 #include "gl/ShaderLibrary.h"
 
 #include <fmt/format.h>
@@ -16,7 +17,7 @@ namespace {
 constexpr unsigned kTileListBinding = 0; ///< SSBO binding of the TileLists block
 constexpr int kGroupSize = 16;           ///< local_size_x/y of both canvas compute shaders
 
-constexpr std::array<std::string_view, 2> kShadingNames{"tiled", "fullscreen"};
+constexpr std::array<std::string_view, 3> kShadingNames{"tiled", "fullscreen", "auto"};
 
 ShaderDefines defines(bool tiled, bool specular) {
     return {{"TILE_LIST_BINDING", std::to_string(kTileListBinding)},
@@ -58,6 +59,10 @@ void CanvasRenderer::setCanvas(const CanvasImages& images, int tileSize) {
                         grid.tilesX, grid.tilesY, tileSize));
     }
     mGrid = grid;
+    mTrial.restart();
+    for (TrialFrame& f : mTrialFrames) {
+        f.pending = false;
+    }
     DebugGroup group("canvas upload + tile lists");
     if (!mColor.valid() || mColor.extent() != Extent{w, h}) {
         mColor = Texture({.extent = {w, h}, .format = GL_RGBA16F, .debugName = "canvas colour"});
@@ -124,6 +129,58 @@ void CanvasRenderer::setLightingUniforms(const Program& p, const CanvasLighting&
 
 const Texture& CanvasRenderer::execute(const CanvasLighting& lighting, CanvasShading shading,
                                        GpuTimers* timers) {
+    if (shading != CanvasShading::Auto) {
+        return shade(lighting, shading, timers);
+    }
+    collectTrialTimes();
+    if (const std::optional<CanvasShading> chosen = mTrial.chosen()) {
+        return shade(lighting, *chosen, timers);
+    }
+    return shadeTimed(lighting, timers);
+}
+
+const Texture& CanvasRenderer::shadeTimed(const CanvasLighting& lighting, GpuTimers* timers) {
+    const CanvasShading path = mTrial.take();
+    auto frame = std::find_if(mTrialFrames.begin(), mTrialFrames.end(),
+                              [](const TrialFrame& f) { return !f.pending; });
+    if (frame == mTrialFrames.end()) {
+        return shade(lighting, path, timers); // every query still in flight: this frame goes untimed
+    }
+    glQueryCounter(frame->start.id(), GL_TIMESTAMP);
+    const Texture& out = shade(lighting, path, timers);
+    glQueryCounter(frame->end.id(), GL_TIMESTAMP);
+    frame->path = path;
+    frame->pending = true;
+    return out;
+}
+
+void CanvasRenderer::collectTrialTimes() {
+    for (TrialFrame& f : mTrialFrames) {
+        GLint ready = 0;
+        if (f.pending) {
+            glGetQueryObjectiv(f.end.id(), GL_QUERY_RESULT_AVAILABLE, &ready);
+        }
+        if (ready == 0) {
+            continue;
+        }
+        GLuint64 start = 0, end = 0;
+        glGetQueryObjectui64v(f.start.id(), GL_QUERY_RESULT, &start);
+        glGetQueryObjectui64v(f.end.id(), GL_QUERY_RESULT, &end);
+        f.pending = false;
+        mTrial.record(f.path, double(end - start) * 1e-6);
+        if (const std::optional<CanvasShading> chosen = mTrial.chosen()) {
+            const std::array<double, 2> ms = mTrial.medians();
+            logInfo(
+                "canvas shading auto: {} ({:.3f} ms a frame against {:.3f} ms {}, median of {} frames each)",
+                kShadingNames[std::size_t(*chosen)], ms[*chosen == CanvasShading::Tiled ? 0 : 1],
+                ms[*chosen == CanvasShading::Tiled ? 1 : 0],
+                *chosen == CanvasShading::Tiled ? "full screen" : "tiled", CanvasPathTrial::kSamples);
+        }
+    }
+}
+
+const Texture& CanvasRenderer::shade(const CanvasLighting& lighting, CanvasShading shading,
+                                     GpuTimers* timers) {
     const Extent e = mOutput.extent();
     const double bytes = double(e.width) * double(e.height) * (8.0 + 4.0 + 8.0); // colour + material + output
     ScopedGpuTimer timer(

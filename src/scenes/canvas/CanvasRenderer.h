@@ -8,8 +8,10 @@
 #include "gl/ReadbackRing.h"
 #include "scenes/canvas/CanvasImages.h"
 #include "scenes/canvas/CanvasMaterial.h"
+#include "scenes/canvas/CanvasPathTrial.h"
 
 #include <array>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -18,8 +20,9 @@ namespace photopic {
 enum class CanvasShading {
     Tiled, ///< specular + sparkle only on tiles with material (indirect dispatch), diffuse-only elsewhere
     Fullscreen, ///< one dispatch, full shading on every pixel (the reference the tiled path must match)
+    Auto,       ///< whichever of the two the first frames measure faster here (CanvasPathTrial.h)
 };
-std::span<const std::string_view> canvasShadingNames(); ///< "tiled", "fullscreen"
+std::span<const std::string_view> canvasShadingNames(); ///< "tiled", "fullscreen", "auto"
 
 /// std430 mirror of the TileLists block in canvas_tiles.comp.glsl / canvas_shade.comp.glsl (followed by
 /// 2 x tiles uints: occupied list, then empty list).
@@ -42,21 +45,38 @@ public:
     /// in [16, 1024]; throws std::invalid_argument otherwise or when the grid has more than 65535 tiles.
     void setCanvas(const CanvasImages& images, int tileSize);
 
-    /// Shades one frame. `timers` (optional) brackets the shading as one pass.
+    /// Shades one frame. `timers` (optional) brackets the shading as one pass. `Auto` times the first frames
+    /// of each canvas on both paths (timestamp queries read back when ready, never waited for) and then runs
+    /// the faster; every path writes the same bits.
     const Texture& execute(const CanvasLighting& lighting, CanvasShading shading,
                            GpuTimers* timers = nullptr);
+    /// The path `Auto` runs from now on; nullopt while it is still timing them.
+    [[nodiscard]] std::optional<CanvasShading> autoChoice() const { return mTrial.chosen(); }
 
     [[nodiscard]] const Texture& output() const { return mOutput; }
     [[nodiscard]] const TileGrid& grid() const { return mGrid; }
     /// Tiles with material, as the GPU's tile pass counted them.
     [[nodiscard]] int occupiedTiles() const { return mOccupiedTiles; }
-    /// Tiles that get the specular/sparkle shading under `shading`.
+    /// Tiles that get the specular/sparkle shading under `shading`; under `Auto` the tiles with material
+    /// (whichever path runs, they are the ones whose pixels take that shading), so telemetry does not
+    /// depend on the timing.
     [[nodiscard]] int tilesShaded(CanvasShading shading) const {
-        return shading == CanvasShading::Tiled ? mOccupiedTiles : mGrid.count();
+        return shading == CanvasShading::Fullscreen ? mGrid.count() : mOccupiedTiles;
     }
 
 private:
+    /// A frame of `Auto` during the trial: its path and the timestamps around its dispatches.
+    struct TrialFrame {
+        CanvasShading path = CanvasShading::Tiled;
+        Query start{GL_TIMESTAMP};
+        Query end{GL_TIMESTAMP};
+        bool pending = false;
+    };
+
     void setLightingUniforms(const Program& program, const CanvasLighting& lighting) const;
+    const Texture& shade(const CanvasLighting& lighting, CanvasShading path, GpuTimers* timers);
+    const Texture& shadeTimed(const CanvasLighting& lighting, GpuTimers* timers);
+    void collectTrialTimes();
 
     Program mTilesProgram;
     Program mFullscreenProgram;
@@ -69,6 +89,8 @@ private:
     ReadbackRing mTileCountReadback; ///< the header with the occupied count, read once per canvas
     TileGrid mGrid;
     int mOccupiedTiles = 0;
+    CanvasPathTrial mTrial;
+    std::array<TrialFrame, 4> mTrialFrames;
 };
 
 } // namespace photopic

@@ -14,7 +14,7 @@ struct CanvasSceneSettings {
     std::string color;
     std::string material;
     std::string motion;
-    CanvasShading shading = CanvasShading::Tiled;
+    CanvasShading shading = CanvasShading::Auto;
     int tileSize = 256;
     float occupancy = 0.5f;
     int seed = 3;
@@ -33,7 +33,10 @@ struct CanvasSceneSettings {
                 "path (empty: a procedural painting): the painting's colour (EXR, HDR, PNG)");
         v.field("material", material, "path (empty: procedural): material PNG (RGBA)");
         v.field("motion", motion, "path (empty: a scripted tilt): CSV \"time_s,pitch,roll,yaw\" in radians");
-        v.field("shading", shading, canvasShadingNames(), "tiled or fullscreen shading");
+        v.field("shading", shading, canvasShadingNames(),
+                "tiled: specular and sparkle only on tiles with material; fullscreen: one dispatch over "
+                "every pixel; auto: whichever the first frames measure faster on this device (the same "
+                "image either way)");
         v.field("tileSize", tileSize, Range{16, 1024}, "px, a multiple of 16: the shading tiles' size");
         v.require(tileSize % 16 == 0, "tileSize", "must be a multiple of 16 (the shading workgroup's side)");
         v.field("occupancy", occupancy, Range{0, 1},
