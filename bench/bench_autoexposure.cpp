@@ -36,6 +36,17 @@ ImageF knownImage() {
     return image;
 }
 
+/// The GPU time of every pass of the frames the timers hold (blocks: benchmark only).
+double drainedMs(GpuTimers& timers) {
+    double ms = 0.0;
+    for (const auto& passes : timers.drain()) {
+        for (const auto& p : passes) {
+            ms += p.gpuMs;
+        }
+    }
+    return ms;
+}
+
 void autoExposure(benchmark::State& state, MeteringMode mode) {
     const Texture input = makeTexture(knownImage(), "bench input");
     AutoExposureSettings settings;
@@ -77,12 +88,7 @@ void autoExposure(benchmark::State& state, MeteringMode mode) {
         timers.beginFrame();
         frame(&timers);
         timers.endFrame();
-        double ms = 0.0;
-        for (const auto& passes : timers.drain()) { // blocks: benchmark only
-            for (const auto& p : passes) {
-                ms += p.gpuMs;
-            }
-        }
+        const double ms = drainedMs(timers);
         totalMs += ms;
         state.SetIterationTime(ms * 1e-3);
     }

@@ -34,3 +34,21 @@ function(photopic_warnings target)
     target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion
         -Wnon-virtual-dtor -Wold-style-cast -Woverloaded-virtual)
 endfunction()
+
+# photopic_embedded_shaders(OUT cpp KIND library|extra DIRS dir...)
+# Generates `cpp` embedding every *.glsl below src/<dir> (cmake/EmbedShaders.cmake). KIND library: the table
+# that gl/ShaderLibrary.h's embeddedShaders() serves; KIND extra: shaders that a target adds to it as it starts.
+function(photopic_embedded_shaders)
+    cmake_parse_arguments(PE "" "OUT;KIND" "DIRS" ${ARGN})
+    set(shaders)
+    foreach(dir ${PE_DIRS})
+        file(GLOB_RECURSE found CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${dir}/*.glsl)
+        list(APPEND shaders ${found})
+    endforeach()
+    string(REPLACE ";" "," dirs "${PE_DIRS}")
+    add_custom_command(OUTPUT ${PE_OUT}
+        COMMAND ${CMAKE_COMMAND} -DSRC_ROOT=${PROJECT_SOURCE_DIR}/src -DDIRS=${dirs} -DKIND=${PE_KIND}
+                -DOUT=${PE_OUT} -P ${PROJECT_SOURCE_DIR}/cmake/EmbedShaders.cmake
+        DEPENDS ${shaders} ${PROJECT_SOURCE_DIR}/cmake/EmbedShaders.cmake
+        COMMENT "Embedding GLSL shaders of ${PE_DIRS}")
+endfunction()

@@ -100,65 +100,91 @@ ContextInfo currentContextInfo() {
             glString(GL_SHADING_LANGUAGE_VERSION), ""};
 }
 
+namespace {
+
+/// The contexts made on the EGL devices, and why each device was passed over.
+struct DeviceSearch {
+    HeadlessContext::Egl hardware; ///< the first device with a hardware renderer, current; else none
+    std::string hardwarePlatform;
+    HeadlessContext::Egl software; ///< else the first device with a software renderer; else none
+    std::string softwarePlatform;
+    std::vector<std::string> tried; ///< "EGL device i: why not"
+};
+
+/// Makes a context on each EGL device in turn, until one has a hardware renderer; of those with a software
+/// renderer the first is kept, the others destroyed.
+DeviceSearch searchDevices(bool debug) {
+    DeviceSearch search;
+    EGLint count = 0;
+    eglQueryDevicesEXT(0, nullptr, &count);
+    std::vector<EGLDeviceEXT> devices(std::size_t(std::max(count, 0)));
+    if (count <= 0 || !eglQueryDevicesEXT(count, devices.data(), &count)) {
+        return search;
+    }
+    for (EGLint i = 0; i < count; ++i) {
+        HeadlessContext::Egl candidate;
+        std::string why;
+        EGLDisplay display =
+            eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[std::size_t(i)], nullptr);
+        if (!createOn(display, debug, candidate, why)) {
+            search.tried.push_back(fmt::format("EGL device {}: {}", i, why));
+            continue;
+        }
+        if (!isSoftware(glString(GL_RENDERER))) {
+            search.hardware = candidate;
+            search.hardwarePlatform = fmt::format("EGL device {} (hardware)", i);
+            break;
+        }
+        search.tried.push_back(fmt::format("EGL device {}: software renderer {}", i, glString(GL_RENDERER)));
+        if (search.software.display == EGL_NO_DISPLAY) {
+            search.software = candidate;
+            search.softwarePlatform = fmt::format("EGL device {} (software)", i);
+        } else {
+            destroy(candidate);
+        }
+    }
+    return search;
+}
+
+/// A context on Mesa's surfaceless platform into `egl`; else a GlError listing every way tried.
+void createSurfaceless(bool debug, HeadlessContext::Egl& egl, std::vector<std::string>& tried) {
+    std::string why;
+    EGLDisplay display = EGL_NO_DISPLAY;
+    if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless")) {
+        display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    }
+    if (!createOn(display, debug, egl, why)) {
+        tried.push_back("Mesa surfaceless: " +
+                        (display == EGL_NO_DISPLAY ? std::string("not available") : why));
+        std::string all;
+        for (const auto& t : tried) {
+            all += "\n  " + t;
+        }
+        throw GlError("cannot create a headless OpenGL 4.5 core context; tried:" + all);
+    }
+}
+
+} // namespace
+
 HeadlessContext::HeadlessContext(const HeadlessContextCreateInfo& info)
     : mEgl(std::make_unique<Egl>()) {
-    std::vector<std::string> tried;
-    Egl softwareDevice;
-    std::string softwarePlatform;
-
+    DeviceSearch search;
     const bool hasDeviceEnumeration = epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_device_enumeration") ||
                                       epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_device_base");
     if (info.preferHardware && hasDeviceEnumeration) {
-        EGLint count = 0;
-        eglQueryDevicesEXT(0, nullptr, &count);
-        std::vector<EGLDeviceEXT> devices(std::size_t(std::max(count, 0)));
-        if (count > 0 && eglQueryDevicesEXT(count, devices.data(), &count)) {
-            for (EGLint i = 0; i < count; ++i) {
-                Egl candidate;
-                std::string why;
-                EGLDisplay display =
-                    eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[std::size_t(i)], nullptr);
-                if (!createOn(display, info.debug, candidate, why)) {
-                    tried.push_back(fmt::format("EGL device {}: {}", i, why));
-                    continue;
-                }
-                if (!isSoftware(glString(GL_RENDERER))) {
-                    *mEgl = candidate;
-                    mInfo = currentContextInfo();
-                    mInfo.platform = fmt::format("EGL device {} (hardware)", i);
-                    break;
-                }
-                tried.push_back(fmt::format("EGL device {}: software renderer {}", i, glString(GL_RENDERER)));
-                if (softwareDevice.display == EGL_NO_DISPLAY) {
-                    softwareDevice = candidate;
-                    softwarePlatform = fmt::format("EGL device {} (software)", i);
-                } else {
-                    destroy(candidate);
-                }
-            }
-        }
+        search = searchDevices(info.debug);
     }
-    if (mEgl->display == EGL_NO_DISPLAY && softwareDevice.display != EGL_NO_DISPLAY) {
-        *mEgl = softwareDevice;
+    if (search.hardware.display != EGL_NO_DISPLAY) {
+        *mEgl = search.hardware;
+        mInfo = currentContextInfo();
+        mInfo.platform = search.hardwarePlatform;
+    } else if (search.software.display != EGL_NO_DISPLAY) {
+        *mEgl = search.software;
         eglMakeCurrent(mEgl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, mEgl->context);
         mInfo = currentContextInfo();
-        mInfo.platform = softwarePlatform;
-    }
-    if (mEgl->display == EGL_NO_DISPLAY) {
-        std::string why;
-        EGLDisplay display = EGL_NO_DISPLAY;
-        if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless")) {
-            display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-        }
-        if (!createOn(display, info.debug, *mEgl, why)) {
-            tried.push_back("Mesa surfaceless: " +
-                            (display == EGL_NO_DISPLAY ? std::string("not available") : why));
-            std::string all;
-            for (const auto& t : tried) {
-                all += "\n  " + t;
-            }
-            throw GlError("cannot create a headless OpenGL 4.5 core context; tried:" + all);
-        }
+        mInfo.platform = search.softwarePlatform;
+    } else {
+        createSurfaceless(info.debug, *mEgl, search.tried);
         mInfo = currentContextInfo();
         mInfo.platform = "Mesa surfaceless";
     }

@@ -66,6 +66,50 @@ void restoreIndexed(GLenum target, int index, GLint name, GLint64 start, GLint64
     }
 }
 
+/// Image unit `unit`'s binding, into the scope's record of it.
+template <class ImageUnit>
+void readImageUnit(ImageUnit& image, int unit) {
+    image.name = integerAt(GL_IMAGE_BINDING_NAME, unit);
+    image.level = integerAt(GL_IMAGE_BINDING_LEVEL, unit);
+    image.layered = integerAt(GL_IMAGE_BINDING_LAYERED, unit);
+    image.layer = integerAt(GL_IMAGE_BINDING_LAYER, unit);
+    image.access = integerAt(GL_IMAGE_BINDING_ACCESS, unit);
+    image.format = integerAt(GL_IMAGE_BINDING_FORMAT, unit);
+}
+
+/// An indexed buffer binding (buffer, start, size) of `unit`.
+template <class IndexedBuffer>
+IndexedBuffer readIndexed(GLenum binding, GLenum start, GLenum size, int unit) {
+    return {integerAt(binding, unit), integer64At(start, unit), integer64At(size, unit)};
+}
+
+/// Each of kCapabilities switched off, whether it was on kept in `enabled`.
+void disableCapabilities(std::array<GLboolean, kCapabilities.size()>& enabled) {
+    for (std::size_t i = 0; i < kCapabilities.size(); ++i) {
+        enabled[i] = glIsEnabled(kCapabilities[i]);
+        if (enabled[i]) {
+            glDisable(kCapabilities[i]);
+        }
+    }
+}
+
+/// The defaults the passes rely on; `samplers` the host's sampler objects by unit, unbound.
+template <std::size_t Units>
+void setPassDefaults(const std::array<GLint, Units>& samplers) {
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glBindProgramPipeline(0);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    for (std::size_t unit = 0; unit < Units; ++unit) {
+        if (samplers[unit] != 0) {
+            glBindSampler(GLuint(unit), 0);
+        }
+    }
+}
+
 } // namespace
 
 GlStateScope::GlStateScope() {
@@ -85,23 +129,16 @@ GlStateScope::GlStateScope() {
         mTextures[unit] = integer(GL_TEXTURE_BINDING_2D);
         mSamplers[unit] = integer(GL_SAMPLER_BINDING);
         if (unit < mImageUnits) {
-            ImageUnit& image = mImages[unit];
-            image.name = integerAt(GL_IMAGE_BINDING_NAME, unit);
-            image.level = integerAt(GL_IMAGE_BINDING_LEVEL, unit);
-            image.layered = integerAt(GL_IMAGE_BINDING_LAYERED, unit);
-            image.layer = integerAt(GL_IMAGE_BINDING_LAYER, unit);
-            image.access = integerAt(GL_IMAGE_BINDING_ACCESS, unit);
-            image.format = integerAt(GL_IMAGE_BINDING_FORMAT, unit);
+            readImageUnit(mImages[unit], unit);
         }
         if (unit < mUniformBufferUnits) {
-            mUniformBuffers[unit] = {integerAt(GL_UNIFORM_BUFFER_BINDING, unit),
-                                     integer64At(GL_UNIFORM_BUFFER_START, unit),
-                                     integer64At(GL_UNIFORM_BUFFER_SIZE, unit)};
+            mUniformBuffers[unit] = readIndexed<IndexedBuffer>(
+                GL_UNIFORM_BUFFER_BINDING, GL_UNIFORM_BUFFER_START, GL_UNIFORM_BUFFER_SIZE, unit);
         }
         if (unit < mStorageBufferUnits) {
-            mStorageBuffers[unit] = {integerAt(GL_SHADER_STORAGE_BUFFER_BINDING, unit),
-                                     integer64At(GL_SHADER_STORAGE_BUFFER_START, unit),
-                                     integer64At(GL_SHADER_STORAGE_BUFFER_SIZE, unit)};
+            mStorageBuffers[unit] =
+                readIndexed<IndexedBuffer>(GL_SHADER_STORAGE_BUFFER_BINDING, GL_SHADER_STORAGE_BUFFER_START,
+                                           GL_SHADER_STORAGE_BUFFER_SIZE, unit);
         }
     }
     glActiveTexture(GL_TEXTURE0);
@@ -124,26 +161,8 @@ GlStateScope::GlStateScope() {
     glGetBooleanv(GL_DEPTH_WRITEMASK, &mDepthMask);
     glGetIntegerv(GL_POLYGON_MODE, mPolygonMode.data());
     glGetFloatv(GL_COLOR_CLEAR_VALUE, mClearColor.data());
-    for (std::size_t i = 0; i < kCapabilities.size(); ++i) {
-        mCapabilities[i] = glIsEnabled(kCapabilities[i]);
-        if (mCapabilities[i]) {
-            glDisable(kCapabilities[i]);
-        }
-    }
-
-    // The defaults the passes rely on.
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    glBindProgramPipeline(0);
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    for (int unit = 0; unit < kUnits; ++unit) {
-        if (mSamplers[unit] != 0) {
-            glBindSampler(GLuint(unit), 0);
-        }
-    }
+    disableCapabilities(mCapabilities);
+    setPassDefaults(mSamplers);
 }
 
 GlStateScope::~GlStateScope() {

@@ -1,8 +1,8 @@
 #pragma once
-// Internal to the io library: the pieces of ExrImage.cpp and AtomicFile.cpp that ExrFrame.cpp and
-// DisplayImageIO.cpp share (the checked reading of an OpenEXR file from memory, colour reading with extra
-// layers in the same pass, the check of an image about to be written, and the atomic writer). Not part of the
-// public API.
+// Internal to the io library: the pieces of ExrImage.cpp and AtomicFile.cpp that ExrFrame.cpp,
+// ExrFrameWrite.cpp and DisplayImageIO.cpp share (the checked reading of an OpenEXR file from memory, colour
+// reading with extra layers in the same pass, the check of an image about to be written, and the atomic
+// writer). Not part of the public API.
 
 #include "core/Image.h"
 #include "io/ImageIO.h"
@@ -110,7 +110,7 @@ void convertExrToRec709(const std::filesystem::path& path, const Imf::Header& he
 /// Throws IoError naming `path` unless every chunk Imf::InputFile would read from part `part` (every
 /// scanline chunk, or every tile of the full-resolution level) has a readable leader within the file and
 /// holds all the bytes its lines need: stored chunks their full size, RLE chunks a run sequence of that
-/// length, ZIP/ZIPS chunks a stream inflating to exactly that length (ExrZip.cpp). OpenEXR 3.1's reader
+/// length, ZIP/ZIPS chunks a stream inflating to exactly that length (ExrChunks.cpp). OpenEXR 3.1's reader
 /// fills the rest of a short chunk's lines from its buffers' earlier contents, so a corrupt file would give
 /// pixels of whatever the process held there before. PIZ, PXR24, B44 and DWA decoders check their output's
 /// size themselves. Deep parts are left to Imf::InputFile, which refuses them.

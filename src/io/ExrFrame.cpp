@@ -10,23 +10,18 @@
 #include <ImfInputPart.h>
 #include <ImfMatrixAttribute.h>
 #include <ImfMultiPartInputFile.h>
-#include <ImfOutputFile.h>
-#include <ImfStdIO.h>
 #include <ImfVecAttribute.h>
 
-#include <glm/gtc/matrix_inverse.hpp>
-
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <tuple>
-#include <type_traits>
 
+// Reading a frame: colour, the 3D layers and the camera attributes (ExrFrameWrite.cpp writes one,
+// ExrFrameCamera.cpp turns its camera attributes into a Camera and back).
 namespace photopic {
 
 namespace fs = std::filesystem;
@@ -172,187 +167,6 @@ ExrCameraAttributes readCameraAttributes(const fs::path& path, const Imf::Header
     return a;
 }
 
-void writeCameraAttributes(Imf::Header& header, const ExrCameraAttributes& a) {
-    const auto matrix = [&](const char* name, const std::optional<glm::mat4>& m) {
-        if (!m)
-            return;
-        Imath::M44f imath;
-        for (int i = 0; i < 4; ++i)
-            for (int j = 0; j < 4; ++j)
-                imath[i][j] = (*m)[i][j];
-        header.insert(name, Imf::M44fAttribute(imath));
-    };
-    const auto scalar = [&](const char* name, const std::optional<float>& v) {
-        if (v)
-            header.insert(name, Imf::FloatAttribute(*v));
-    };
-    const auto vec2 = [&](const char* name, const std::optional<glm::vec2>& v) {
-        if (v)
-            header.insert(name, Imf::V2fAttribute(Imath::V2f(v->x, v->y)));
-    };
-    matrix("worldToCamera", a.worldToCamera);
-    matrix("worldToNDC", a.worldToNDC);
-    scalar("focus", a.focus);
-    scalar("aperture", a.aperture);
-    scalar("expTime", a.expTime);
-    scalar("isoSpeed", a.isoSpeed);
-    scalar("pinholeFocalLength", a.pinholeFocalLength);
-    vec2("sensorOverallDimensions", a.sensorOverallDimensions);
-    scalar("shutterAngle", a.shutterAngle);
-    vec2("jitter", a.jitter);
-    scalar("nearClipPlane", a.nearClip);
-    scalar("farClipPlane", a.farClip);
-    if (a.sunDirection)
-        header.insert("sunDirection",
-                      Imf::V3fAttribute(Imath::V3f(a.sunDirection->x, a.sunDirection->y, a.sunDirection->z)));
-}
-
-// ---------------------------------------------------------------------------------------------------------------
-// Camera conventions
-
-/// OpenEXR's left-handed camera space (+z forward) <-> GL's right-handed view space (-z forward).
-const glm::mat4 kFlipZ =
-    glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, -1, 0), glm::vec4(0, 0, 0, 1));
-constexpr float kFallbackNear = 0.1f;
-
-glm::vec4 row(const glm::mat4& m, int r) {
-    return {m[0][r], m[1][r], m[2][r], m[3][r]};
-}
-void setRow(glm::mat4& m, int r, const glm::vec4& v) {
-    for (int c = 0; c < 4; ++c)
-        m[c][r] = v[c];
-}
-
-struct GlCamera {
-    glm::mat4 view{1.0f};
-    glm::mat4 projection{1.0f};
-    float nearPlane = kFallbackNear;
-    float farPlane = std::numeric_limits<float>::infinity();
-    float verticalFov = 1.0f;
-};
-
-/// near/far from the clip attributes, else from K's z row read as RenderMan's NDC depth z_ndc = a + b / z
-/// (z = camera depth = K's w after normalisation): n = -b / a, f = b / (1 - a), a = 1 for an infinite far.
-void nearFar(const ExrCameraAttributes& a, const glm::vec4& zRow, GlCamera& camera) {
-    if (a.nearClip && a.farClip) {
-        camera.nearPlane = *a.nearClip;
-        camera.farPlane = *a.farClip;
-        return;
-    }
-    const float scale = std::max(std::abs(zRow.z), std::abs(zRow.w));
-    const bool depthOnly =
-        scale > 0.0f && std::abs(zRow.x) <= 1e-6f * scale && std::abs(zRow.y) <= 1e-6f * scale;
-    if (depthOnly) {
-        // In GL view space the camera depth is -z, so the row is (0, 0, -a, b).
-        const double aa = -double(zRow.z);
-        const double bb = double(zRow.w);
-        const double n = aa != 0.0 ? -bb / aa : 0.0;
-        const double f =
-            std::abs(1.0 - aa) < 1e-6 ? std::numeric_limits<double>::infinity() : bb / (1.0 - aa);
-        if (std::isfinite(n) && n > 0.0 && f > n) {
-            camera.nearPlane = float(n);
-            camera.farPlane = float(f);
-        }
-    }
-    if (a.nearClip)
-        camera.nearPlane = *a.nearClip;
-    if (a.farClip)
-        camera.farPlane = *a.farClip;
-}
-
-GlCamera glCamera(const ExrCameraAttributes& a) {
-    const glm::mat4& worldToCamera = *a.worldToCamera;
-    const glm::mat4& worldToNdc = *a.worldToNDC;
-    if (!allFinite(worldToCamera))
-        throw std::invalid_argument("worldToCamera has a non-finite entry");
-    if (!allFinite(worldToNdc))
-        throw std::invalid_argument("worldToNDC has a non-finite entry");
-    const float det = glm::determinant(worldToCamera);
-    if (!std::isfinite(det) || std::abs(det) < 1e-12f)
-        throw std::invalid_argument("worldToCamera is not invertible");
-
-    GlCamera camera;
-    camera.view = kFlipZ * worldToCamera;
-    // GL view space -> OpenEXR NDC (homogeneous).
-    glm::mat4 k = worldToNdc * glm::inverse(worldToCamera) * kFlipZ;
-    const glm::vec4 w = row(k, 3);
-    const float wScale = std::max({std::abs(w.x), std::abs(w.y), std::abs(w.z), std::abs(w.w)});
-    if (!(w.z < 0.0f) || std::abs(w.x) > 1e-5f * wScale || std::abs(w.y) > 1e-5f * wScale ||
-        std::abs(w.w) > 1e-5f * wScale)
-        throw std::invalid_argument(
-            "worldToNDC is not a perspective projection of worldToCamera's camera space (its w must be "
-            "proportional to camera depth)");
-    k *= -1.0f / w.z; // w = -z_view, as GL's perspective projections have it
-    nearFar(a, row(k, 2), camera);
-
-    const float n = camera.nearPlane;
-    const float f = camera.farPlane;
-    if (!(std::isfinite(n) && n > 0.0f) || std::isnan(f) || !(f > n))
-        throw std::invalid_argument(
-            "near/far clip planes must satisfy 0 < near < far (nearClipPlane, farClipPlane)");
-    glm::mat4 p(0.0f);
-    setRow(p, 0, 2.0f * row(k, 0) - row(k, 3));
-    setRow(p, 1, row(k, 3) - 2.0f * row(k, 1));
-    setRow(p, 2,
-           std::isinf(f) ? glm::vec4(0, 0, -1, -2.0f * n)
-                         : glm::vec4(0, 0, -(f + n) / (f - n), -2.0f * f * n / (f - n)));
-    setRow(p, 3, glm::vec4(0, 0, -1, 0));
-    camera.projection = p;
-    if (!(p[1][1] > 0.0f) || !(p[0][0] > 0.0f))
-        throw std::invalid_argument("worldToNDC flips the image or is degenerate (x must map right, y down)");
-    camera.verticalFov = 2.0f * std::atan(1.0f / p[1][1]);
-    return camera;
-}
-
-void requireRange(const char* name, float value, float lo, float hi) {
-    if (!(value >= lo && value <= hi))
-        throw std::invalid_argument("attribute " + std::string(name) + " = " + std::to_string(value) +
-                                    " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-}
-
-Lens lensFromExr(const ExrCameraAttributes& a, float verticalFov) {
-    Lens lens;
-    const float tanHalf = std::tan(0.5f * verticalFov);
-    const std::optional<float> sensorHeight =
-        a.sensorOverallDimensions ? std::optional<float>(a.sensorOverallDimensions->y) : std::nullopt;
-    if (a.pinholeFocalLength)
-        requireRange("pinholeFocalLength", *a.pinholeFocalLength, 1e-3f, 10000.0f);
-    if (sensorHeight)
-        requireRange("sensorOverallDimensions.y", *sensorHeight, 1e-3f, 1000.0f);
-    if (a.pinholeFocalLength && sensorHeight) {
-        lens.focalLengthMm = *a.pinholeFocalLength;
-        lens.sensorHeightMm = *sensorHeight;
-    } else if (a.pinholeFocalLength) {
-        lens.focalLengthMm = *a.pinholeFocalLength;
-        lens.sensorHeightMm = 2.0f * lens.focalLengthMm * tanHalf;
-    } else {
-        lens.sensorHeightMm = sensorHeight.value_or(lens.sensorHeightMm);
-        lens.focalLengthMm = lens.sensorHeightMm / (2.0f * tanHalf);
-    }
-    if (a.aperture) {
-        requireRange("aperture", *a.aperture, 0.5f, 256.0f);
-        lens.fNumber = *a.aperture;
-    }
-    if (a.focus) {
-        if (!(std::isfinite(*a.focus) && *a.focus > 0.0f))
-            throw std::invalid_argument("attribute focus must be finite and > 0");
-        lens.focusDistance = *a.focus;
-    }
-    if (a.shutterAngle) {
-        requireRange("shutterAngle", *a.shutterAngle, 0.0f, 360.0f);
-        lens.shutterAngleDeg = *a.shutterAngle;
-    }
-    if (a.expTime) {
-        requireRange("expTime", *a.expTime, 0.0f, 60.0f);
-        lens.exposureTimeS = *a.expTime;
-    }
-    if (a.isoSpeed) {
-        requireRange("isoSpeed", *a.isoSpeed, 1.0f, 1e6f);
-        lens.iso = *a.isoSpeed;
-    }
-    return lens;
-}
-
 // ---------------------------------------------------------------------------------------------------------------
 // Reading
 
@@ -416,12 +230,9 @@ struct PartChannel {
     std::string name;
 };
 
-/// The frame in a multi-part file's parts, already checked by detail::checkExrBytes, into `frame`: every
-/// channel the mapping names read from its part (each such part's data window the colour's), colour as
-/// floats.
-void readMultipartFrame(const fs::path& path, std::span<const unsigned char> bytes,
-                        Imf::MultiPartInputFile& file, ExrFrame& frame, ExrFrameReader::Layers wanted,
-                        const AovRequest& request) {
+/// Every channel of a multi-part file by its full name (a later part's channel prefixed with its part's name
+/// unless it has a layer already), the first one of a name kept; `frame`'s channel and part names listed.
+std::map<std::string, PartChannel> partChannels(Imf::MultiPartInputFile& file, ExrFrame& frame) {
     std::map<std::string, PartChannel> where;
     frame.channels.clear();
     frame.parts.clear();
@@ -437,31 +248,64 @@ void readMultipartFrame(const fs::path& path, std::span<const unsigned char> byt
                 frame.channels.push_back(full);
         }
     }
-    frame.aovs = resolveFrameAovs(path, frame.channels, file.header(0), request);
-    const AovChannels& aovs = frame.aovs;
-    const std::vector<std::string>& colorNames = aovs.of(Aov::Color);
-    const int colorPart = where.at(colorNames.front()).part;
-    const Imf::Header& header = file.header(colorPart);
-    describeHeader(header, frame);
-    const Imath::Box2i data = header.dataWindow();
-    frame.camera = readCameraAttributes(path, header);
-    const int width = data.max.x - data.min.x + 1;
-    const int height = data.max.y - data.min.y + 1;
-    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    return where;
+}
 
-    // The slices, by part: colour (four floats a pixel, absent components their fill) and each layer.
-    std::map<int, Imf::FrameBuffer> buffers;
-    const auto insert = [&](const std::string& full, float* base, std::size_t stride, double fill) {
-        const PartChannel& c = where.at(full);
-        const Imf::Header& h = file.header(c.part);
-        if (h.dataWindow() != data)
-            throw IoError(path, "channel " + full + " is in part " + frame.parts[std::size_t(c.part)] +
-                                    ", whose data window differs from the colour's part " +
-                                    frame.parts[std::size_t(colorPart)] + ": the parts read must share one");
-        buffers[c.part].insert(c.name,
-                               Imf::Slice::Make(Imf::FLOAT, base, data, stride * sizeof(float),
-                                                stride * sizeof(float) * std::size_t(width), 1, 1, fill));
-    };
+/// The float slices of a multi-part read, by part, each into the colour part's data window.
+class PartSlices {
+public:
+    PartSlices(const fs::path& path, Imf::MultiPartInputFile& file, const ExrFrame& frame,
+               const std::map<std::string, PartChannel>& where, int colorPart)
+        : mPath(path)
+        , mFile(file)
+        , mFrame(frame)
+        , mWhere(where)
+        , mColorPart(colorPart)
+        , mData(file.header(colorPart).dataWindow()) {}
+
+    /// Channel `full` into every `stride`-th float from `base`, `fill` where its part lacks it.
+    void add(const std::string& full, float* base, std::size_t stride, double fill) {
+        const PartChannel& c = mWhere.at(full);
+        const Imf::Header& h = mFile.header(c.part);
+        if (h.dataWindow() != mData)
+            throw IoError(mPath, "channel " + full + " is in part " + mFrame.parts[std::size_t(c.part)] +
+                                     ", whose data window differs from the colour's part " +
+                                     mFrame.parts[std::size_t(mColorPart)] +
+                                     ": the parts read must share one");
+        const std::size_t width = std::size_t(mData.max.x - mData.min.x + 1);
+        mBuffers[c.part].insert(c.name, Imf::Slice::Make(Imf::FLOAT, base, mData, stride * sizeof(float),
+                                                         stride * sizeof(float) * width, 1, 1, fill));
+    }
+
+    /// Reads every part that has a slice, each checked first.
+    void read(std::span<const unsigned char> bytes) {
+        for (auto& [part, buffer] : mBuffers) {
+            detail::checkExrChunks(mPath, bytes, part);
+            Imf::InputPart input(mFile, part);
+            if (!input.isComplete())
+                throw IoError(mPath, "OpenEXR part " + mFrame.parts[std::size_t(part)] +
+                                         " is truncated or incomplete (pixel blocks are missing)");
+            input.setFrameBuffer(buffer);
+            input.readPixels(mData.min.y, mData.max.y);
+        }
+    }
+
+private:
+    const fs::path& mPath;
+    Imf::MultiPartInputFile& mFile;
+    const ExrFrame& mFrame;
+    const std::map<std::string, PartChannel>& mWhere;
+    int mColorPart;
+    Imath::Box2i mData;
+    std::map<int, Imf::FrameBuffer> mBuffers;
+};
+
+/// The colour's slices (four floats a pixel, absent components their fill: alpha 1 when there is none), into
+/// `frame.color` sized `width` x `height`; true for luminance (Y, optionally with A), whose Y goes to red.
+bool addColorSlices(const fs::path& path, PartSlices& slices, const std::map<std::string, PartChannel>& where,
+                    ExrFrame& frame, int width, int height) {
+    const std::vector<std::string>& colorNames = frame.aovs.of(Aov::Color);
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
     frame.color.width = width;
     frame.color.height = height;
     frame.color.rgba.assign(pixels * 4, 0.0f);
@@ -470,29 +314,43 @@ void readMultipartFrame(const fs::path& path, std::span<const unsigned char> byt
         throw IoError(path, "luminance/chroma colour (Y, RY, BY) is read from single-part files only");
     for (std::size_t c = 0; c < colorNames.size(); ++c) {
         const std::size_t component = luminance ? (c == 0 ? 0 : 3) : c;
-        insert(colorNames[c], frame.color.rgba.data() + component, 4, component == 3 ? 1.0 : 0.0);
+        slices.add(colorNames[c], frame.color.rgba.data() + component, 4, component == 3 ? 1.0 : 0.0);
     }
     if (colorNames.size() == 1 || colorNames.size() == 3) {
         for (std::size_t i = 0; i < pixels; ++i)
             frame.color.rgba[i * 4 + 3] = 1.0f;
     }
+    return luminance;
+}
+
+/// The frame in a multi-part file's parts, already checked by detail::checkExrBytes, into `frame`: every
+/// channel the mapping names read from its part (each such part's data window the colour's), colour as
+/// floats.
+void readMultipartFrame(const fs::path& path, std::span<const unsigned char> bytes,
+                        Imf::MultiPartInputFile& file, ExrFrame& frame, ExrFrameReader::Layers wanted,
+                        const AovRequest& request) {
+    const std::map<std::string, PartChannel> where = partChannels(file, frame);
+    frame.aovs = resolveFrameAovs(path, frame.channels, file.header(0), request);
+    const int colorPart = where.at(frame.aovs.of(Aov::Color).front()).part;
+    const Imf::Header& header = file.header(colorPart);
+    describeHeader(header, frame);
+    const Imath::Box2i data = header.dataWindow();
+    frame.camera = readCameraAttributes(path, header);
+    const int width = data.max.x - data.min.x + 1;
+    const int height = data.max.y - data.min.y + 1;
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+
+    PartSlices slices(path, file, frame, where, colorPart);
+    const bool luminance = addColorSlices(path, slices, where, frame, width, height);
     for (const auto& [aov, values, read] : layerTargets(frame, wanted)) {
-        const std::vector<std::string>& names = aovs.of(aov);
+        const std::vector<std::string>& names = frame.aovs.of(aov);
         if (names.empty() || !read)
             continue;
         values->assign(pixels * names.size(), 0.0f);
         for (std::size_t c = 0; c < names.size(); ++c)
-            insert(names[c], values->data() + c, names.size(), 0.0);
+            slices.add(names[c], values->data() + c, names.size(), 0.0);
     }
-    for (auto& [part, buffer] : buffers) {
-        detail::checkExrChunks(path, bytes, part);
-        Imf::InputPart input(file, part);
-        if (!input.isComplete())
-            throw IoError(path, "OpenEXR part " + frame.parts[std::size_t(part)] +
-                                    " is truncated or incomplete (pixel blocks are missing)");
-        input.setFrameBuffer(buffer);
-        input.readPixels(data.min.y, data.max.y);
-    }
+    slices.read(bytes);
     if (luminance) {
         for (std::size_t i = 0; i < pixels; ++i)
             frame.color.rgba[i * 4 + 1] = frame.color.rgba[i * 4 + 2] = frame.color.rgba[i * 4];
@@ -617,170 +475,6 @@ void ExrFrameReader::decode(std::span<const unsigned char> bytes, const fs::path
         clearFrame(frame);
         throw;
     }
-}
-
-std::string encodeExrFrame(const ExrFrame& frame, const fs::path& path) {
-    const ImageF& color = frame.color;
-    const ImageH& halves = frame.colorHalves;
-    const bool fromHalves = color.empty() && !halves.empty();
-    const int width = fromHalves ? halves.width : color.width;
-    const int height = fromHalves ? halves.height : color.height;
-    if (fromHalves ? halves.rgba.size() != halves.pixelCount() * 4
-                   : color.empty() || color.rgba.size() != color.pixelCount() * 4)
-        throw IoError(path, "cannot write a frame without a colour image of width*height RGBA values");
-    const std::size_t pixels = std::size_t(width) * std::size_t(height);
-    const auto requireSize = [&](const std::vector<float>& layer, std::size_t components, const char* name) {
-        if (!layer.empty() && layer.size() != pixels * components)
-            throw IoError(path, std::string(name) + " holds " + std::to_string(layer.size()) +
-                                    " values, expected " + std::to_string(pixels * components));
-    };
-    requireSize(frame.depth, 1, "depth");
-    requireSize(frame.normals, 3, "normals");
-    requireSize(frame.motion, 2, "motion");
-
-    // The writer takes each channel in its file type: half channels are converted here. Colour clamps
-    // finite values to the largest half, as writeExr does; colour held as halves is written as it is.
-    static constexpr float kHalfMax = 65504.0f;
-    std::vector<half> rgba(pixels * 4);
-    if (fromHalves) {
-        std::transform(halves.rgba.begin(), halves.rgba.end(), rgba.begin(), [](std::uint16_t bits) {
-            half h;
-            h.setBits(bits);
-            return h;
-        });
-    } else {
-        std::transform(color.rgba.begin(), color.rgba.end(), rgba.begin(), [](float v) {
-            return half(std::isfinite(v) ? std::clamp(v, -kHalfMax, kHalfMax) : v);
-        });
-    }
-    const std::vector<half> normals(frame.normals.begin(), frame.normals.end());
-
-    std::string bytes;
-    try {
-        Imf::Header header(width, height);
-        header.compression() = Imf::ZIP_COMPRESSION;
-        writeCameraAttributes(header, frame.camera);
-        Imf::FrameBuffer frameBuffer;
-        // The writer only reads the slices; OpenEXR's Slice takes a non-const pointer.
-        const auto add = [&](const std::string& name, const auto* base, std::size_t count) {
-            using Sample = std::remove_cvref_t<decltype(*base)>;
-            const Imf::PixelType type = std::is_same_v<Sample, half> ? Imf::HALF : Imf::FLOAT;
-            header.channels().insert(name, Imf::Channel(type));
-            const std::size_t xStride = count * sizeof(Sample);
-            frameBuffer.insert(name, Imf::Slice(type, reinterpret_cast<char*>(const_cast<Sample*>(base)),
-                                                xStride, xStride * std::size_t(width)));
-        };
-        const std::array<const char*, 4> rgbaNames{"R", "G", "B", "A"};
-        for (std::size_t c = 0; c < 4; ++c)
-            add(rgbaNames[c], rgba.data() + c, 4);
-        if (!frame.depth.empty())
-            add("Z", frame.depth.data(), 1);
-        const std::array<const char*, 3> xyz{"X", "Y", "Z"};
-        for (std::size_t c = 0; c < 3 && !normals.empty(); ++c)
-            add(std::string("N.") + xyz[c], normals.data() + c, 3);
-        for (std::size_t c = 0; c < 2 && !frame.motion.empty(); ++c)
-            add(std::string("motion.") + xyz[c], frame.motion.data() + c, 2);
-
-        Imf::StdOSStream stream;
-        {
-            // The offset table is written when the file object goes: close it before taking the bytes.
-            Imf::OutputFile file(stream, header);
-            file.setFrameBuffer(frameBuffer);
-            file.writePixels(height);
-        }
-        bytes = stream.str();
-    } catch (const std::exception& e) {
-        throw IoError(path, std::string("cannot encode OpenEXR: ") + e.what());
-    }
-    return bytes;
-}
-
-void writeExrFrame(const fs::path& path, const ExrFrame& frame) {
-    const std::string bytes = encodeExrFrame(frame, path);
-    detail::writeAtomically(path,
-                            std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
-}
-
-std::optional<Camera> cameraFromExr(const ExrCameraAttributes& attributes, int width, int height,
-                                    const ExrCameraAttributes* previous) {
-    if (width <= 0 || height <= 0)
-        throw std::invalid_argument("cameraFromExr: the frame has no pixels");
-    if (!attributes.worldToCamera || !attributes.worldToNDC)
-        return std::nullopt;
-    const GlCamera current = glCamera(attributes);
-    Camera camera;
-    camera.view = current.view;
-    camera.projection = current.projection;
-    camera.nearPlane = current.nearPlane;
-    camera.farPlane = current.farPlane;
-    camera.verticalFov = current.verticalFov;
-    camera.lens = lensFromExr(attributes, current.verticalFov);
-    camera.prevViewProjection = camera.viewProjection();
-    if (previous != nullptr && previous->worldToCamera && previous->worldToNDC) {
-        const GlCamera last = glCamera(*previous);
-        camera.prevViewProjection = last.projection * last.view;
-    }
-    if (const char* reason = invalidCameraReason(camera))
-        throw std::invalid_argument(reason);
-    return camera;
-}
-
-std::optional<Camera> frameCamera(const ExrFrame& frame, const ExrCameraAttributes* previous) {
-    std::optional<Camera> camera =
-        cameraFromExr(frame.camera, frame.displaySize.x, frame.displaySize.y, previous);
-    const glm::ivec2 dataSize(frame.width(), frame.height());
-    if (!camera || (frame.dataOrigin == glm::ivec2(0) && frame.displaySize == dataSize))
-        return camera;
-    const glm::mat4 crop = dataWindowCrop(frame.displaySize, frame.dataOrigin, dataSize);
-    camera->projection = crop * camera->projection;
-    camera->prevViewProjection = crop * camera->prevViewProjection;
-    if (const char* reason = invalidCameraReason(*camera))
-        throw std::invalid_argument(std::string("cropped to the data window: ") + reason);
-    return camera;
-}
-
-ExrCameraAttributes exrFromCamera(const Camera& camera, int width, int height) {
-    ExrCameraAttributes a;
-    a.worldToCamera = kFlipZ * camera.view;
-    const glm::mat4 clip = camera.projection * camera.view;
-    const float n = camera.nearPlane;
-    const float f = camera.farPlane;
-    // RenderMan's NDC depth z_ndc = a + b / z for camera depth z = clip w: 0 at near, 1 at far.
-    const float depthA = std::isinf(f) ? 1.0f : f / (f - n);
-    const float depthB = std::isinf(f) ? -n : -n * f / (f - n);
-    glm::mat4 ndc(0.0f);
-    setRow(ndc, 0, 0.5f * (row(clip, 0) + row(clip, 3)));
-    setRow(ndc, 1, 0.5f * (row(clip, 3) - row(clip, 1)));
-    setRow(ndc, 2, depthA * row(clip, 3) + depthB * glm::vec4(0, 0, 0, 1));
-    setRow(ndc, 3, row(clip, 3));
-    a.worldToNDC = ndc;
-    a.nearClip = n;
-    a.farClip = f;
-    const Lens& lens = camera.lens;
-    a.focus = lens.focusDistance;
-    a.aperture = lens.fNumber;
-    if (lens.exposureTimeS > 0.0f)
-        a.expTime = lens.exposureTimeS;
-    a.isoSpeed = lens.iso;
-    a.pinholeFocalLength = lens.focalLengthMm;
-    a.sensorOverallDimensions =
-        glm::vec2(lens.sensorHeightMm * float(width) / float(std::max(height, 1)), lens.sensorHeightMm);
-    a.shutterAngle = lens.shutterAngleDeg;
-    return a;
-}
-
-glm::mat4 dataWindowCrop(glm::ivec2 displaySize, glm::ivec2 dataOrigin, glm::ivec2 dataSize) {
-    // Display-window pixels x right and y up: the data window spans [ox, ox + w] x [H - oy - h, H - oy].
-    const glm::vec2 display(displaySize);
-    const glm::vec2 size(dataSize);
-    const glm::vec2 lower(float(dataOrigin.x), display.y - float(dataOrigin.y) - size.y);
-    glm::mat4 crop(1.0f);
-    crop[0][0] = display.x / size.x;
-    crop[1][1] = display.y / size.y;
-    // ndc' = ndc * D / d + (D - 2 lower) / d - 1, times clip w.
-    crop[3][0] = (display.x - 2.0f * lower.x) / size.x - 1.0f;
-    crop[3][1] = (display.y - 2.0f * lower.y) / size.y - 1.0f;
-    return crop;
 }
 
 } // namespace photopic

@@ -136,6 +136,69 @@ bool exrChannelListFits(std::span<const unsigned char> value) {
     return false;
 }
 
+/// Deep data (any number of samples a pixel, version flag 0x800 or a part of type deepscanline or deeptile)
+/// has no flat colour to read; refused before OpenEXR's deep reader sees the file.
+[[noreturn]] void refuseDeep(const fs::path& path, const std::string& what) {
+    throw IoError(path,
+                  "OpenEXR deep data is not read (" + what +
+                      "): flatten it first, e.g. with your renderer's or compositor's deep-to-image step");
+}
+
+/// The header attributes read in turn from byte 8: name, type, 32-bit size, value.
+class AttributeWalk {
+public:
+    AttributeWalk(const fs::path& path, std::span<const unsigned char> bytes)
+        : mPath(path)
+        , mBytes(bytes) {}
+
+    /// The null-terminated string at the read position, which moves past it.
+    std::string cString() {
+        const auto end =
+            std::find(mBytes.begin() + std::ptrdiff_t(std::min(mPos, mBytes.size())), mBytes.end(), 0);
+        if (end == mBytes.end())
+            throw IoError(mPath, "OpenEXR header is truncated");
+        const std::string text(mBytes.begin() + std::ptrdiff_t(mPos), end);
+        mPos = std::size_t(end - mBytes.begin()) + 1;
+        return text;
+    }
+
+    /// The value of attribute `name` of `type` after its size field, checked against the bytes left and
+    /// against its type; the read position moves past it.
+    void skipValue(const std::string& name, const std::string& type) {
+        if (mBytes.size() - mPos < 4)
+            throw IoError(mPath, "OpenEXR header is truncated");
+        const std::uint32_t size = std::uint32_t(mBytes[mPos]) | std::uint32_t(mBytes[mPos + 1]) << 8 |
+                                   std::uint32_t(mBytes[mPos + 2]) << 16 |
+                                   std::uint32_t(mBytes[mPos + 3]) << 24;
+        mPos += 4;
+        if (size > mBytes.size() - mPos)
+            throw IoError(mPath, "OpenEXR header is corrupt: attribute \"" + name + "\" (" + type +
+                                     ") declares " + std::to_string(size) + " bytes, the file has " +
+                                     std::to_string(mBytes.size() - mPos) + " left");
+        const std::optional<std::size_t> fixed = exrFixedValueSize(type);
+        if (fixed && size != *fixed)
+            throw IoError(mPath, "OpenEXR header is corrupt: attribute \"" + name + "\" (" + type +
+                                     ") declares " + std::to_string(size) + " bytes, a " + type + " has " +
+                                     std::to_string(*fixed));
+        if (name == "type" && type == "string") {
+            const std::string partType(mBytes.begin() + std::ptrdiff_t(mPos),
+                                       mBytes.begin() + std::ptrdiff_t(mPos + size));
+            if (partType.starts_with("deep"))
+                refuseDeep(mPath, "a part of type " + partType.substr(0, 16));
+        }
+        if (type == "chlist" && !exrChannelListFits(mBytes.subspan(mPos, size)))
+            throw IoError(mPath, "OpenEXR header is corrupt: channel list \"" + name +
+                                     "\" does not end where its declared " + std::to_string(size) +
+                                     " bytes do");
+        mPos += size;
+    }
+
+private:
+    const fs::path& mPath;
+    std::span<const unsigned char> mBytes;
+    std::size_t mPos = 8;
+};
+
 /// Walks the header attributes (name, type, 32-bit size, value) without OpenEXR and refuses a size beyond the
 /// file's end: OpenEXR allocates a value's declared size (up to 2 GiB for an unknown type) before it reads
 /// it. Refused too: an attribute named twice in one header, and a known type whose reader takes another
@@ -143,28 +206,12 @@ bool exrChannelListFits(std::span<const unsigned char> value) {
 /// go on reading the next attribute from the wrong place, where a size it then trusted was never checked.
 void checkExrAttributeSizes(const fs::path& path, std::span<const unsigned char> bytes) {
     const bool multiPart = detail::isMultiPartExr(bytes);
-    // Deep data (any number of samples a pixel, version flag 0x800 or a part of type deepscanline or
-    // deeptile) has no flat colour to read; refused here, before OpenEXR's deep reader sees the file.
-    const auto refuseDeep = [&](const std::string& what) {
-        throw IoError(
-            path, "OpenEXR deep data is not read (" + what +
-                      "): flatten it first, e.g. with your renderer's or compositor's deep-to-image step");
-    };
     if (bytes.size() >= 8 && (bytes[5] & 0x08) != 0)
-        refuseDeep("the file's version field says it holds deep data");
-    std::size_t pos = 8;
-    const auto cString = [&]() {
-        const auto end =
-            std::find(bytes.begin() + std::ptrdiff_t(std::min(pos, bytes.size())), bytes.end(), 0);
-        if (end == bytes.end())
-            throw IoError(path, "OpenEXR header is truncated");
-        const std::string text(bytes.begin() + std::ptrdiff_t(pos), end);
-        pos = std::size_t(end - bytes.begin()) + 1;
-        return text;
-    };
+        refuseDeep(path, "the file's version field says it holds deep data");
+    AttributeWalk walk(path, bytes);
     std::set<std::string> names; // of this header's attributes so far
     for (bool firstInHeader = true;;) {
-        const std::string name = cString();
+        const std::string name = walk.cString();
         if (name.empty()) {
             // The end of a header; in a multi-part file an empty header ends the list.
             if (!multiPart || firstInHeader)
@@ -178,32 +225,8 @@ void checkExrAttributeSizes(const fs::path& path, std::span<const unsigned char>
         // would read the pixels with different channels.
         if (!names.insert(name).second)
             throw IoError(path, "OpenEXR header is corrupt: attribute \"" + name + "\" appears twice");
-        const std::string type = cString();
-        if (bytes.size() - pos < 4)
-            throw IoError(path, "OpenEXR header is truncated");
-        const std::uint32_t size = std::uint32_t(bytes[pos]) | std::uint32_t(bytes[pos + 1]) << 8 |
-                                   std::uint32_t(bytes[pos + 2]) << 16 | std::uint32_t(bytes[pos + 3]) << 24;
-        pos += 4;
-        if (size > bytes.size() - pos)
-            throw IoError(path, "OpenEXR header is corrupt: attribute \"" + name + "\" (" + type +
-                                    ") declares " + std::to_string(size) + " bytes, the file has " +
-                                    std::to_string(bytes.size() - pos) + " left");
-        const std::optional<std::size_t> fixed = exrFixedValueSize(type);
-        if (fixed && size != *fixed)
-            throw IoError(path, "OpenEXR header is corrupt: attribute \"" + name + "\" (" + type +
-                                    ") declares " + std::to_string(size) + " bytes, a " + type + " has " +
-                                    std::to_string(*fixed));
-        if (name == "type" && type == "string") {
-            const std::string partType(bytes.begin() + std::ptrdiff_t(pos),
-                                       bytes.begin() + std::ptrdiff_t(pos + size));
-            if (partType.starts_with("deep"))
-                refuseDeep("a part of type " + partType.substr(0, 16));
-        }
-        if (type == "chlist" && !exrChannelListFits(bytes.subspan(pos, size)))
-            throw IoError(path, "OpenEXR header is corrupt: channel list \"" + name +
-                                    "\" does not end where its declared " + std::to_string(size) +
-                                    " bytes do");
-        pos += size;
+        const std::string type = walk.cString();
+        walk.skipValue(name, type);
     }
 }
 
@@ -296,7 +319,8 @@ std::string encodeExr(const fs::path& path, const ImageF& image) {
 
 } // namespace
 
-ImageF detail::readExr(const fs::path& path, std::span<const unsigned char> bytes, const ImageReadLimits& limits) {
+ImageF detail::readExr(const fs::path& path, std::span<const unsigned char> bytes,
+                       const ImageReadLimits& limits) {
     try {
         checkExrHeader(path, bytes, limits);
         detail::MemoryIStream stream(path, bytes);
@@ -497,7 +521,8 @@ void detail::readExrColorHalves(const fs::path& path, std::span<const unsigned c
 void writeExr(const fs::path& path, const ImageF& image) {
     detail::requirePixels(path, image);
     const std::string bytes = encodeExr(path, image);
-    detail::writeAtomically(path, std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
+    detail::writeAtomically(path,
+                            std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
 }
 
 } // namespace photopic

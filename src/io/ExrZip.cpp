@@ -1,11 +1,11 @@
-// OpenEXR's core library over a file in memory: the check that every chunk holds the bytes its lines need
-// (checkExrChunks), and scanline ZIP / ZIPS pixel data decoded through it (chunk table, chunk reads and their
-// checks) with the inflate step done by libdeflate instead of zlib, on OpenEXR's global thread pool. The
-// unpacking into the frame buffer is done here too: OpenEXR 3.1's own routine for four half channels into
-// interleaved floats at descending addresses (A, B, G, R into RGBA) writes them in file order, R's value
-// where A belongs (ExrZipTest.RgbaMatchesOpenExrBitForBit fails with it). Half channels may also go to half
-// slices, as stored (a colour kept in half the memory). zlib's inflate was the largest
-// single cost of reading a ZIP-compressed sequence; libdeflate inflates the same stream several times faster.
+// OpenEXR's core library over a file in memory (ExrMemory.h): scanline ZIP / ZIPS pixel data decoded through
+// it (chunk table, chunk reads and their checks; ExrChunks.cpp checks every chunk's size first) with the
+// inflate step done by libdeflate instead of zlib, on OpenEXR's global thread pool. The unpacking into the
+// frame buffer is done here too: OpenEXR 3.1's own routine for four half channels into interleaved floats at
+// descending addresses (A, B, G, R into RGBA) writes them in file order, R's value where A belongs
+// (ExrZipTest.RgbaMatchesOpenExrBitForBit fails with it). Half channels may also go to half slices, as stored
+// (a colour kept in half the memory). zlib's inflate was the largest single cost of reading a ZIP-compressed
+// sequence; libdeflate inflates the same stream several times faster.
 //
 // The ZIP codec (OpenEXR file layout, "ZIP compression"): a chunk's bytes are deflated in a zlib stream after
 // two reversible steps, which are undone here after inflating: the bytes were split into the even-indexed
@@ -14,6 +14,7 @@
 #include "io/ExrDetail.h"
 
 #include "core/HalfFloat.h"
+#include "io/ExrMemory.h"
 
 #include <IlmThreadPool.h>
 #include <ImfChannelList.h>
@@ -34,7 +35,6 @@
 #include <new>
 #include <optional>
 #include <span>
-#include <string>
 #include <vector>
 
 namespace photopic::detail {
@@ -254,6 +254,74 @@ void interleaveFourHalves(const std::uint8_t* const runs[4], const int lane[4], 
     }
 }
 
+/// Whether every channel of the chunk is one this unpacker takes (2- or 4-byte values, all the chunk's lines
+/// and width, a half destination only for half values) and the lines hold exactly the unpacked bytes.
+exr_result_t checkChunkLayout(const exr_decode_pipeline_t& decode) {
+    const int lines = decode.chunk.height;
+    std::uint64_t lineBytes = 0;
+    for (int c = 0; c < decode.channel_count; ++c) {
+        const exr_coding_channel_info_t& channel = decode.channels[c];
+        if (channel.height != lines || channel.width != decode.chunk.width ||
+            (channel.bytes_per_element != 2 && channel.bytes_per_element != 4) ||
+            (channel.decode_to_ptr != nullptr && channel.user_bytes_per_element == 2 &&
+             channel.bytes_per_element != 2))
+            return EXR_ERR_INVALID_ARGUMENT;
+        lineBytes += std::uint64_t(channel.width) * std::uint64_t(channel.bytes_per_element);
+    }
+    if (decode.unpacked_buffer == nullptr || decode.decoding_user_data == nullptr || lines < 0 ||
+        lineBytes * std::uint64_t(lines) != decode.chunk.unpacked_size)
+        return EXR_ERR_CORRUPT_CHUNK;
+    return EXR_ERR_SUCCESS;
+}
+
+/// Line y of four channels that make up RGBA pixels, from `source`; returns the end of the line's runs.
+const std::uint8_t* unpackFourLine(const exr_decode_pipeline_t& decode, const FourLanes& four,
+                                   ZipState& state, const std::uint8_t* source, int y, std::size_t width) {
+    std::uint8_t* out = four.base + std::ptrdiff_t(y) * decode.channels[0].user_line_stride;
+    if (four.halves) {
+        const std::uint8_t* runs[4];
+        for (int c = 0; c < 4; ++c) {
+            runs[c] = source;
+            source += width * std::size_t(decode.channels[c].bytes_per_element);
+        }
+        interleaveFourHalves(runs, four.lane, out, width);
+        return source;
+    }
+    const float* runs[4];
+    for (int c = 0; c < 4; ++c) {
+        const exr_coding_channel_info_t& channel = decode.channels[c];
+        runs[c] = lineFloats(channel, source, state.floats.data() + std::size_t(c) * width);
+        source += width * std::size_t(channel.bytes_per_element);
+    }
+    interleaveFour(runs, four.lane, out, width);
+    return source;
+}
+
+/// Line y of one channel's run into its destination, if it has one: halves as they are, else as floats.
+void unpackRun(const exr_coding_channel_info_t& channel, ZipState& state, const std::uint8_t* source, int y,
+               std::size_t width) {
+    if (channel.decode_to_ptr == nullptr)
+        return;
+    std::uint8_t* out = channel.decode_to_ptr + std::ptrdiff_t(y) * channel.user_line_stride;
+    const std::ptrdiff_t step = channel.user_pixel_stride;
+    if (channel.user_bytes_per_element == 2) {
+        if (step == 2) {
+            std::memcpy(out, source, width * 2);
+        } else {
+            for (std::size_t x = 0; x < width; ++x)
+                std::memcpy(out + std::ptrdiff_t(x) * step, source + 2 * x, 2);
+        }
+        return;
+    }
+    const float* values = lineFloats(channel, source, state.floats.data());
+    if (step == sizeof(float)) {
+        std::memcpy(out, values, width * sizeof(float));
+    } else {
+        for (std::size_t x = 0; x < width; ++x)
+            std::memcpy(out + std::ptrdiff_t(x) * step, values + x, sizeof(float));
+    }
+}
+
 /// The pipeline's unpack step: each line of the chunk holds every channel's run of values in the part's
 /// channel order (no subsampling here), little-endian; a channel with a float destination is converted to
 /// float exactly as Imf::InputFile converts it (halfToFloat gives Imath's values to the bit), a half channel
@@ -262,73 +330,25 @@ void interleaveFourHalves(const std::uint8_t* const runs[4], const int lane[4], 
 /// or 8-byte steps.
 exr_result_t unpackChannels(exr_decode_pipeline_t* decode) {
     static_assert(std::endian::native == std::endian::little, "EXR values are little-endian");
+    if (const exr_result_t layout = checkChunkLayout(*decode); layout != EXR_ERR_SUCCESS)
+        return layout;
     const auto* source = static_cast<const std::uint8_t*>(decode->unpacked_buffer);
-    auto* state = static_cast<ZipState*>(decode->decoding_user_data);
-    const int lines = decode->chunk.height;
-    std::uint64_t lineBytes = 0;
-    for (int c = 0; c < decode->channel_count; ++c) {
-        const exr_coding_channel_info_t& channel = decode->channels[c];
-        if (channel.height != lines || channel.width != decode->chunk.width ||
-            (channel.bytes_per_element != 2 && channel.bytes_per_element != 4) ||
-            (channel.decode_to_ptr != nullptr && channel.user_bytes_per_element == 2 &&
-             channel.bytes_per_element != 2))
-            return EXR_ERR_INVALID_ARGUMENT;
-        lineBytes += std::uint64_t(channel.width) * std::uint64_t(channel.bytes_per_element);
-    }
-    if (source == nullptr || state == nullptr || lines < 0 ||
-        lineBytes * std::uint64_t(lines) != decode->chunk.unpacked_size)
-        return EXR_ERR_CORRUPT_CHUNK;
+    auto& state = *static_cast<ZipState*>(decode->decoding_user_data);
     const std::size_t width = std::size_t(std::max(decode->chunk.width, 0));
     try {
-        state->floats.resize(width * 4);
+        state.floats.resize(width * 4);
     } catch (const std::bad_alloc&) {
         return EXR_ERR_OUT_OF_MEMORY;
     }
     const FourLanes four = fourLanes(*decode);
-    for (int y = 0; y < lines; ++y) {
-        if (four.base != nullptr && four.halves) {
-            const std::uint8_t* runs[4];
-            for (int c = 0; c < 4; ++c) {
-                runs[c] = source;
-                source += width * std::size_t(decode->channels[c].bytes_per_element);
-            }
-            interleaveFourHalves(runs, four.lane,
-                                 four.base + std::ptrdiff_t(y) * decode->channels[0].user_line_stride, width);
-            continue;
-        }
+    for (int y = 0; y < decode->chunk.height; ++y) {
         if (four.base != nullptr) {
-            const float* runs[4];
-            for (int c = 0; c < 4; ++c) {
-                const exr_coding_channel_info_t& channel = decode->channels[c];
-                runs[c] = lineFloats(channel, source, state->floats.data() + std::size_t(c) * width);
-                source += width * std::size_t(channel.bytes_per_element);
-            }
-            interleaveFour(runs, four.lane,
-                           four.base + std::ptrdiff_t(y) * decode->channels[0].user_line_stride, width);
+            source = unpackFourLine(*decode, four, state, source, y, width);
             continue;
         }
         for (int c = 0; c < decode->channel_count; ++c) {
             const exr_coding_channel_info_t& channel = decode->channels[c];
-            if (channel.decode_to_ptr != nullptr && channel.user_bytes_per_element == 2) {
-                std::uint8_t* out = channel.decode_to_ptr + std::ptrdiff_t(y) * channel.user_line_stride;
-                const std::ptrdiff_t step = channel.user_pixel_stride;
-                if (step == 2) {
-                    std::memcpy(out, source, width * 2);
-                } else {
-                    for (std::size_t x = 0; x < width; ++x)
-                        std::memcpy(out + std::ptrdiff_t(x) * step, source + 2 * x, 2);
-                }
-            } else if (channel.decode_to_ptr != nullptr) {
-                const float* values = lineFloats(channel, source, state->floats.data());
-                std::uint8_t* out = channel.decode_to_ptr + std::ptrdiff_t(y) * channel.user_line_stride;
-                const std::ptrdiff_t step = channel.user_pixel_stride;
-                if (step == sizeof(float)) {
-                    std::memcpy(out, values, width * sizeof(float));
-                } else {
-                    for (std::size_t x = 0; x < width; ++x)
-                        std::memcpy(out + std::ptrdiff_t(x) * step, values + x, sizeof(float));
-                }
-            }
+            unpackRun(channel, state, source, y, width);
             source += width * std::size_t(channel.bytes_per_element);
         }
     }
@@ -338,60 +358,7 @@ exr_result_t unpackChannels(exr_decode_pipeline_t* decode) {
     return EXR_ERR_SUCCESS;
 }
 
-// ---------------------------------------------------------------------------------------- the file in memory
-
-/// An OpenEXR file in memory, as the core library's read callbacks see it, and the library's last error
-/// message about it (kept by keepMessage; `quiet` keeps none).
-struct MemorySource {
-    std::span<const unsigned char> bytes;
-    std::string error;
-};
-
-int64_t readMemory(exr_const_context_t, void* user, void* buffer, uint64_t size, uint64_t offset,
-                   exr_stream_error_func_ptr_t) {
-    const std::span<const unsigned char> bytes = static_cast<const MemorySource*>(user)->bytes;
-    if (offset >= bytes.size())
-        return 0;
-    const std::uint64_t n = std::min<std::uint64_t>(size, bytes.size() - offset);
-    std::memcpy(buffer, bytes.data() + offset, n);
-    return int64_t(n);
-}
-
-int64_t memorySize(exr_const_context_t, void* user) {
-    return int64_t(static_cast<const MemorySource*>(user)->bytes.size());
-}
-
-/// Any failure here falls back to Imf::InputFile, which reports it in its own words: nothing to print.
-void quiet(exr_const_context_t, exr_result_t, const char*) {}
-
-/// Collects the core library's last error message (its error handler's user data).
-void keepMessage(exr_const_context_t context, exr_result_t, const char* message) {
-    void* user = nullptr;
-    if (exr_get_user_data(context, &user) == EXR_ERR_SUCCESS && user != nullptr && message != nullptr)
-        static_cast<MemorySource*>(user)->error = message;
-}
-
-struct Context {
-    exr_context_t handle = nullptr;
-    Context() = default;
-    Context(const Context&) = delete;
-    Context& operator=(const Context&) = delete;
-    ~Context() {
-        if (handle != nullptr)
-            exr_finish(&handle);
-    }
-};
-
-/// Opens `source` for reading with the core library, its errors going to `onError`; false when the header
-/// cannot be read.
-bool startMemoryRead(Context& context, MemorySource& source, exr_error_handler_cb_t onError) {
-    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
-    init.user_data = &source;
-    init.read_fn = &readMemory;
-    init.size_fn = &memorySize;
-    init.error_handler_fn = onError;
-    return exr_start_read(&context.handle, "memory", &init) == EXR_ERR_SUCCESS;
-}
+// ---------------------------------------------------------------------------------------- the frame buffer
 
 /// The address of pixel (x, y), in data-window coordinates, of an Imf slice: Imf's base addresses it at
 /// base + x * xStride + y * yStride (the base itself may lie outside the buffer).
@@ -490,131 +457,8 @@ private:
     int mChunks;
 };
 
-// ------------------------------------------------------------------------------------- the chunks' sizes
-
-/// The bytes a run-length coded chunk decodes to (OpenEXR's RLE: a signed count byte; -n: n bytes follow as
-/// they are; n >= 0: the next byte n + 1 times), or nullopt when a run is cut off by the chunk's end.
-std::optional<std::uint64_t> rleDecodedSize(std::span<const unsigned char> packed) {
-    std::uint64_t size = 0;
-    std::size_t pos = 0;
-    while (pos < packed.size()) {
-        const int count = static_cast<signed char>(packed[pos++]);
-        const std::size_t consumed = count < 0 ? std::size_t(-count) : 1;
-        if (consumed > packed.size() - pos)
-            return std::nullopt;
-        pos += consumed;
-        size += count < 0 ? std::uint64_t(-count) : std::uint64_t(count) + 1;
-    }
-    return size;
-}
-
-/// What is wrong with a chunk that OpenEXR's reader would fill its lines from only in part, or "".
-std::string chunkProblem(exr_compression_t compression, const exr_chunk_info_t& chunk,
-                         std::span<const unsigned char> file, libdeflate_decompressor* inflater,
-                         std::vector<std::uint8_t>& scratch) {
-    const std::uint64_t packed = chunk.packed_size;
-    const std::uint64_t unpacked = chunk.unpacked_size;
-    if (chunk.data_offset > file.size() || packed > file.size() - chunk.data_offset)
-        return "runs past the end of the file";
-    if (packed >= unpacked)
-        return ""; // stored as it is, all of it there
-    const std::span<const unsigned char> data = file.subspan(chunk.data_offset, packed);
-    const auto shortBy = [&](const std::string& what) {
-        return what + " " + std::to_string(unpacked) + " bytes its lines need";
-    };
-    switch (compression) {
-    case EXR_COMPRESSION_NONE:
-        return shortBy("holds " + std::to_string(packed) + " of the");
-    case EXR_COMPRESSION_RLE: {
-        const std::optional<std::uint64_t> size = rleDecodedSize(data);
-        if (size != unpacked)
-            return shortBy(size ? "decodes to " + std::to_string(*size) + " of the"
-                                : "cuts off a run of the");
-        return "";
-    }
-    case EXR_COMPRESSION_ZIPS:
-    case EXR_COMPRESSION_ZIP:
-        scratch.resize(unpacked);
-        if (inflater == nullptr ||
-            libdeflate_zlib_decompress(inflater, data.data(), data.size(), scratch.data(), unpacked,
-                                       nullptr) != LIBDEFLATE_SUCCESS)
-            return shortBy("does not inflate to the");
-        return "";
-    default:
-        return ""; // the other codecs check their own output's size as they decode
-    }
-}
-
-} // namespace
-
-void checkExrChunks(const std::filesystem::path& path, std::span<const unsigned char> bytes, int part) {
-    MemorySource source{bytes, {}};
-    Context context;
-    const auto corrupt = [&](const std::string& where) {
-        throw IoError(path, "OpenEXR pixel data is corrupt: " + where +
-                                (source.error.empty() ? std::string() : ": " + source.error));
-    };
-    if (!startMemoryRead(context, source, &keepMessage))
-        corrupt("the chunk table cannot be read");
-    exr_storage_t storage{};
-    exr_compression_t compression{};
-    exr_attr_box2i_t window{};
-    if (exr_get_storage(context.handle, part, &storage) != EXR_ERR_SUCCESS ||
-        exr_get_compression(context.handle, part, &compression) != EXR_ERR_SUCCESS ||
-        exr_get_data_window(context.handle, part, &window) != EXR_ERR_SUCCESS)
-        corrupt(part == 0 ? std::string("the first part's layout cannot be read")
-                          : "the layout of part " + std::to_string(part) + " cannot be read");
-    if (storage != EXR_STORAGE_SCANLINE && storage != EXR_STORAGE_TILED)
-        return; // deep data: Imf::InputFile refuses it itself
-
-    std::unique_ptr<libdeflate_decompressor, void (*)(libdeflate_decompressor*)> inflater(
-        libdeflate_alloc_decompressor(), &libdeflate_free_decompressor);
-    std::vector<std::uint8_t> scratch;
-    const auto check = [&](exr_result_t read, const exr_chunk_info_t& chunk, const std::string& where) {
-        if (read != EXR_ERR_SUCCESS)
-            corrupt(where);
-        const std::string problem = chunkProblem(compression, chunk, bytes, inflater.get(), scratch);
-        if (!problem.empty()) {
-            source.error.clear();
-            corrupt(where + " " + problem);
-        }
-    };
-    if (storage == EXR_STORAGE_SCANLINE) {
-        int32_t linesPerChunk = 0;
-        if (exr_get_scanlines_per_chunk(context.handle, part, &linesPerChunk) != EXR_ERR_SUCCESS ||
-            linesPerChunk < 1)
-            corrupt("the lines per chunk cannot be read");
-        for (std::int64_t y = window.min.y; y <= window.max.y; y += linesPerChunk) {
-            exr_chunk_info_t chunk{};
-            check(exr_read_scanline_chunk_info(context.handle, part, int(y), &chunk), chunk,
-                  "the chunk of line " + std::to_string(y));
-        }
-        return;
-    }
-    // Tiled: the full-resolution level, the one Imf::InputFile reads.
-    int32_t tileWidth = 0;
-    int32_t tileHeight = 0;
-    int32_t levelWidth = 0;
-    int32_t levelHeight = 0;
-    if (exr_get_tile_sizes(context.handle, part, 0, 0, &tileWidth, &tileHeight) != EXR_ERR_SUCCESS ||
-        exr_get_level_sizes(context.handle, part, 0, 0, &levelWidth, &levelHeight) != EXR_ERR_SUCCESS ||
-        tileWidth < 1 || tileHeight < 1 || levelWidth < 1 || levelHeight < 1)
-        corrupt("the tile layout cannot be read");
-    const int tilesX = int((std::int64_t(levelWidth) + tileWidth - 1) / tileWidth);
-    const int tilesY = int((std::int64_t(levelHeight) + tileHeight - 1) / tileHeight);
-    for (int ty = 0; ty < tilesY; ++ty) {
-        for (int tx = 0; tx < tilesX; ++tx) {
-            exr_chunk_info_t chunk{};
-            check(exr_read_tile_chunk_info(context.handle, part, tx, ty, 0, 0, &chunk), chunk,
-                  "tile (" + std::to_string(tx) + ", " + std::to_string(ty) + ")");
-        }
-    }
-}
-
-bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& header,
-                      const Imf::FrameBuffer& frameBuffer) {
-    if (header.compression() != Imf::ZIP_COMPRESSION && header.compression() != Imf::ZIPS_COMPRESSION)
-        return false;
+/// Whether every slice is one the decoder fills: float or half, unsampled, strides positive and within int.
+bool slicesFit(const Imf::FrameBuffer& frameBuffer) {
     for (auto it = frameBuffer.begin(); it != frameBuffer.end(); ++it) {
         const Imf::Slice& s = it.slice();
         if ((s.type != Imf::FLOAT && s.type != Imf::HALF) || s.xSampling != 1 || s.ySampling != 1 ||
@@ -622,44 +466,50 @@ bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& h
             s.xStride > std::numeric_limits<int>::max() || s.yStride > std::numeric_limits<int>::max())
             return false;
     }
+    return true;
+}
 
-    MemorySource file{bytes, {}};
-    Context context;
-    if (!startMemoryRead(context, file, &quiet))
-        return false;
-    int parts = 0;
-    exr_storage_t storage{};
-    exr_compression_t compression{};
+/// The single part's layout, as the core library reads it.
+struct PartLayout {
     exr_attr_box2i_t window{};
     int32_t scanlinesPerChunk = 0;
     int32_t chunks = 0;
     const exr_attr_chlist_t* channels = nullptr;
-    if (exr_get_count(context.handle, &parts) != EXR_ERR_SUCCESS || parts != 1 ||
-        exr_get_storage(context.handle, 0, &storage) != EXR_ERR_SUCCESS || storage != EXR_STORAGE_SCANLINE ||
-        exr_get_compression(context.handle, 0, &compression) != EXR_ERR_SUCCESS ||
+};
+
+/// The layout of a single-part ZIP or ZIPS scanline file whose data window is the header's and whose chunk
+/// count matches it; else nullopt.
+std::optional<PartLayout> zipPartLayout(exr_const_context_t context, const Imf::Header& header) {
+    int parts = 0;
+    exr_storage_t storage{};
+    exr_compression_t compression{};
+    PartLayout part;
+    if (exr_get_count(context, &parts) != EXR_ERR_SUCCESS || parts != 1 ||
+        exr_get_storage(context, 0, &storage) != EXR_ERR_SUCCESS || storage != EXR_STORAGE_SCANLINE ||
+        exr_get_compression(context, 0, &compression) != EXR_ERR_SUCCESS ||
         (compression != EXR_COMPRESSION_ZIP && compression != EXR_COMPRESSION_ZIPS) ||
-        exr_get_data_window(context.handle, 0, &window) != EXR_ERR_SUCCESS ||
-        exr_get_scanlines_per_chunk(context.handle, 0, &scanlinesPerChunk) != EXR_ERR_SUCCESS ||
-        scanlinesPerChunk < 1 || exr_get_chunk_count(context.handle, 0, &chunks) != EXR_ERR_SUCCESS ||
-        chunks < 1 || exr_get_channels(context.handle, 0, &channels) != EXR_ERR_SUCCESS ||
-        channels == nullptr)
-        return false;
+        exr_get_data_window(context, 0, &part.window) != EXR_ERR_SUCCESS ||
+        exr_get_scanlines_per_chunk(context, 0, &part.scanlinesPerChunk) != EXR_ERR_SUCCESS ||
+        part.scanlinesPerChunk < 1 || exr_get_chunk_count(context, 0, &part.chunks) != EXR_ERR_SUCCESS ||
+        part.chunks < 1 || exr_get_channels(context, 0, &part.channels) != EXR_ERR_SUCCESS ||
+        part.channels == nullptr)
+        return std::nullopt;
+    const exr_attr_box2i_t& window = part.window;
     const Imath::Box2i dataWindow = header.dataWindow();
     if (window.min.x != dataWindow.min.x || window.min.y != dataWindow.min.y ||
         window.max.x != dataWindow.max.x || window.max.y != dataWindow.max.y)
-        return false;
+        return std::nullopt;
     const std::int64_t height = std::int64_t(window.max.y) - window.min.y + 1;
-    if (std::int64_t(chunks) != (height + scanlinesPerChunk - 1) / scanlinesPerChunk)
-        return false;
+    if (std::int64_t(part.chunks) != (height + part.scanlinesPerChunk - 1) / part.scanlinesPerChunk)
+        return std::nullopt;
+    return part;
+}
 
-    Job job;
-    job.context = context.handle;
-    job.minY = window.min.y;
-    job.maxY = window.max.y;
-    job.width = window.max.x - window.min.x + 1;
-    job.scanlinesPerChunk = scanlinesPerChunk;
-    for (int c = 0; c < channels->num_channels; ++c) {
-        const exr_attr_chlist_entry_t& entry = channels->entries[c];
+/// The job's target for each of the part's channels, in its order; false when a channel cannot go into its
+/// slice here.
+bool addTargets(Job& job, const PartLayout& part, const Imf::FrameBuffer& frameBuffer) {
+    for (int c = 0; c < part.channels->num_channels; ++c) {
+        const exr_attr_chlist_entry_t& entry = part.channels->entries[c];
         const Imf::Slice* slice = frameBuffer.findSlice(entry.name.str);
         Target target;
         if (slice != nullptr) {
@@ -668,15 +518,19 @@ bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& h
                 entry.x_sampling != 1 || entry.y_sampling != 1 ||
                 (slice->type == Imf::HALF && entry.pixel_type != EXR_PIXEL_HALF))
                 return false;
-            target.origin = slicePixel(*slice, window.min.x, window.min.y);
+            target.origin = slicePixel(*slice, part.window.min.x, part.window.min.y);
             target.pixelStride = int(slice->xStride);
             target.lineStride = int(slice->yStride);
             target.half = slice->type == Imf::HALF;
         }
         job.targets.push_back(target);
     }
+    return true;
+}
 
-    // Slices the file has no channel for take their fill value, as Imf::InputFile gives them.
+/// Slices the file has no channel for take their fill value, as Imf::InputFile gives them.
+void fillMissingSlices(const Imf::Header& header, const Imf::FrameBuffer& frameBuffer,
+                       const exr_attr_box2i_t& window, int width) {
     for (auto it = frameBuffer.begin(); it != frameBuffer.end(); ++it) {
         if (header.channels().findChannel(it.name()) != nullptr)
             continue;
@@ -687,19 +541,49 @@ bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& h
         const std::size_t size = s.type == Imf::HALF ? sizeof(halfFill) : sizeof(fill);
         for (std::int64_t y = window.min.y; y <= window.max.y; ++y) {
             std::uint8_t* row = slicePixel(s, window.min.x, y);
-            for (int x = 0; x < job.width; ++x)
+            for (int x = 0; x < width; ++x)
                 std::memcpy(row + std::ptrdiff_t(x) * s.xStride, value, size);
         }
     }
+}
 
+/// Decodes the job's chunks on OpenEXR's global thread pool; false when one failed.
+bool runChunkTasks(Job& job, int chunks) {
     const int threads = std::max(1, IlmThread::ThreadPool::globalThreadPool().numThreads());
-    const int tasks = std::min(threads, int(chunks));
+    const int tasks = std::min(threads, chunks);
     {
         IlmThread::TaskGroup group; // waits for its tasks when it goes out of scope
         for (int t = 0; t < tasks; ++t)
             IlmThread::ThreadPool::addGlobalTask(new ChunkTask(&group, job, t, tasks, chunks));
     }
     return !job.failed.load();
+}
+
+} // namespace
+
+bool readZipScanlines(std::span<const unsigned char> bytes, const Imf::Header& header,
+                      const Imf::FrameBuffer& frameBuffer) {
+    if (header.compression() != Imf::ZIP_COMPRESSION && header.compression() != Imf::ZIPS_COMPRESSION)
+        return false;
+    if (!slicesFit(frameBuffer))
+        return false;
+    MemorySource file{bytes, {}};
+    ExrReadContext context;
+    if (!startMemoryRead(context, file, &quiet))
+        return false;
+    const std::optional<PartLayout> part = zipPartLayout(context.handle, header);
+    if (!part)
+        return false;
+    Job job;
+    job.context = context.handle;
+    job.minY = part->window.min.y;
+    job.maxY = part->window.max.y;
+    job.width = part->window.max.x - part->window.min.x + 1;
+    job.scanlinesPerChunk = part->scanlinesPerChunk;
+    if (!addTargets(job, *part, frameBuffer))
+        return false;
+    fillMissingSlices(header, frameBuffer, part->window, job.width);
+    return runChunkTasks(job, part->chunks);
 }
 
 } // namespace photopic::detail

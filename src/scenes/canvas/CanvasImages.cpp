@@ -95,101 +95,112 @@ std::uint8_t encodeShininess(float n) {
     return std::uint8_t(std::clamp(std::lround(std::log2(n) / kMaxShininessLog2 * 255.0f), 1L, 255L));
 }
 
-} // namespace
+/// What the strokes leave besides colour, a value a pixel (row-major): the surface normal and the paint.
+struct PaintedSurface {
+    int width = 0;
+    std::vector<glm::vec3> normal;
+    std::vector<Paint> paint;
 
-CanvasImages makeProceduralCanvas(const ProceduralCanvasInfo& info) {
-    const int w = info.width, h = info.height;
-    const float H = float(h), aspect = float(w) / H;
-    CanvasImages out{ImageF(w, h), Image8(w, h)};
-    std::vector<glm::vec3> normal(std::size_t(w) * std::size_t(h), glm::vec3(0, 0, 1));
-    std::vector<Paint> paint(std::size_t(w) * std::size_t(h), Paint::Matte);
-    std::vector<float> facetTag(std::size_t(w) * std::size_t(h), 0.0f);
+    PaintedSurface(int w, int h)
+        : width(w)
+        , normal(std::size_t(w) * std::size_t(h), glm::vec3(0, 0, 1))
+        , paint(std::size_t(w) * std::size_t(h), Paint::Matte) {}
 
-    // Ground: a warm underpainting and the canvas weave (a faint bump at ~1/180 of the height per thread).
+    [[nodiscard]] std::size_t index(int x, int y) const {
+        return std::size_t(y) * std::size_t(width) + std::size_t(x);
+    }
+};
+
+/// Ground: a warm underpainting and the canvas weave (a faint bump at ~1/180 of the height per thread).
+void paintGround(ImageF& color, PaintedSurface& surface) {
+    const int w = color.width, h = color.height;
+    const float H = float(h);
     const float weave = 2.0f * std::numbers::pi_v<float> * 120.0f;
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             const float u = (float(x) + 0.5f) / H, v = (float(y) + 0.5f) / H;
             const glm::vec3 ground =
                 glm::mix(fromSrgb(0.62f, 0.58f, 0.50f), fromSrgb(0.45f, 0.36f, 0.26f), v);
-            float* c = out.color.at(x, y);
+            float* c = color.at(x, y);
             c[0] = ground.r;
             c[1] = ground.g;
             c[2] = ground.b;
             c[3] = 1.0f;
-            normal[std::size_t(y) * std::size_t(w) + std::size_t(x)] =
+            surface.normal[surface.index(x, y)] =
                 glm::normalize(glm::vec3(0.04f * std::sin(u * weave), 0.04f * std::sin(v * weave), 1.0f));
         }
     }
+}
 
-    // Strokes, painted in order over their bounding boxes (so the cost is their area, not strokes x pixels).
-    const int strokes = int(900.0f * aspect);
-    for (int i = 0; i < strokes; ++i) {
-        const Stroke s = makeStroke(info.seed, std::uint32_t(i), aspect);
-        const glm::vec2 along(std::cos(s.angle), std::sin(s.angle)), across(-along.y, along.x);
-        const float reach = s.halfLength + s.halfWidth;
-        const int x0 = std::max(0, int((s.centre.x - reach) * H)),
-                  x1 = std::min(w - 1, int((s.centre.x + reach) * H));
-        const int y0 = std::max(0, int((s.centre.y - reach) * H)),
-                  y1 = std::min(h - 1, int((s.centre.y + reach) * H));
-        const float bristleWidth = std::max(s.halfWidth / 5.0f, 1.2f / H);
-        for (int y = y0; y <= y1; ++y) {
-            for (int x = x0; x <= x1; ++x) {
-                const glm::vec2 d = glm::vec2((float(x) + 0.5f) / H, (float(y) + 0.5f) / H) - s.centre;
-                const float sAlong = glm::dot(d, along) / s.halfLength, tAcross = glm::dot(d, across);
-                if (std::abs(sAlong) >= 1.0f) {
-                    continue;
-                }
-                // Round-ended taper; the brush runs dry towards its end (positive sAlong) bristle by bristle.
-                const float halfWidth = s.halfWidth * std::sqrt(1.0f - sAlong * sAlong);
-                const float edge = (halfWidth - std::abs(tAcross)) * H; // px inside the stroke's edge
-                if (edge <= 0.0f) {
-                    continue;
-                }
-                const int bristle = int(std::floor(tAcross / bristleWidth));
-                const float dry = random01(info.seed, std::uint32_t(i), std::uint32_t(bristle + 1000));
-                if (sAlong > 0.4f && dry < (sAlong - 0.4f) * 1.4f) {
-                    continue;
-                }
-                const float alpha = std::min(edge, 1.0f);
-                const float streak =
-                    0.85f + 0.3f * random01(info.seed, std::uint32_t(i), std::uint32_t(bristle + 5000));
-                const std::size_t k = std::size_t(y) * std::size_t(w) + std::size_t(x);
-                float* c = out.color.at(x, y);
-                for (int ch = 0; ch < 3; ++ch) {
-                    c[ch] = c[ch] + (std::min(s.color[ch] * streak, 0.8f) - c[ch]) * alpha;
-                }
-                // Impasto: grooves between bristles and a ridge at the stroke's edges tilt the normal across
-                // it.
-                const float phase = tAcross / bristleWidth * 2.0f * std::numbers::pi_v<float>;
-                const float tilt = 0.25f * std::sin(phase) +
-                                   0.35f * std::clamp(tAcross / std::max(halfWidth, 1e-6f), -1.0f, 1.0f) *
-                                       (std::abs(tAcross) > 0.7f * halfWidth ? 1.0f : 0.0f);
-                // Image space is y down; the canvas frame (the normals') is y up.
-                const glm::vec3 n = glm::normalize(glm::vec3(across.x * tilt, -across.y * tilt, 1.0f));
-                normal[k] = glm::normalize(glm::mix(normal[k], n, alpha));
-                if (alpha > 0.5f) {
-                    paint[k] = s.paint;
-                }
+/// Stroke `i` (`s`) over its bounding box, so the cost is its area, not strokes x pixels.
+void paintStroke(const Stroke& s, std::uint32_t seed, std::uint32_t i, ImageF& color,
+                 PaintedSurface& surface) {
+    const int w = color.width, h = color.height;
+    const float H = float(h);
+    const glm::vec2 along(std::cos(s.angle), std::sin(s.angle)), across(-along.y, along.x);
+    const float reach = s.halfLength + s.halfWidth;
+    const int x0 = std::max(0, int((s.centre.x - reach) * H)),
+              x1 = std::min(w - 1, int((s.centre.x + reach) * H));
+    const int y0 = std::max(0, int((s.centre.y - reach) * H)),
+              y1 = std::min(h - 1, int((s.centre.y + reach) * H));
+    const float bristleWidth = std::max(s.halfWidth / 5.0f, 1.2f / H);
+    for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+            const glm::vec2 d = glm::vec2((float(x) + 0.5f) / H, (float(y) + 0.5f) / H) - s.centre;
+            const float sAlong = glm::dot(d, along) / s.halfLength, tAcross = glm::dot(d, across);
+            if (std::abs(sAlong) >= 1.0f) {
+                continue;
+            }
+            // Round-ended taper; the brush runs dry towards its end (positive sAlong) bristle by bristle.
+            const float halfWidth = s.halfWidth * std::sqrt(1.0f - sAlong * sAlong);
+            const float edge = (halfWidth - std::abs(tAcross)) * H; // px inside the stroke's edge
+            if (edge <= 0.0f) {
+                continue;
+            }
+            const int bristle = int(std::floor(tAcross / bristleWidth));
+            const float dry = random01(seed, i, std::uint32_t(bristle + 1000));
+            if (sAlong > 0.4f && dry < (sAlong - 0.4f) * 1.4f) {
+                continue;
+            }
+            const float alpha = std::min(edge, 1.0f);
+            const float streak = 0.85f + 0.3f * random01(seed, i, std::uint32_t(bristle + 5000));
+            const std::size_t k = surface.index(x, y);
+            float* c = color.at(x, y);
+            for (int ch = 0; ch < 3; ++ch) {
+                c[ch] = c[ch] + (std::min(s.color[ch] * streak, 0.8f) - c[ch]) * alpha;
+            }
+            // Impasto: grooves between bristles and a ridge at the stroke's edges tilt the normal across it.
+            const float phase = tAcross / bristleWidth * 2.0f * std::numbers::pi_v<float>;
+            const float tilt = 0.25f * std::sin(phase) +
+                               0.35f * std::clamp(tAcross / std::max(halfWidth, 1e-6f), -1.0f, 1.0f) *
+                                   (std::abs(tAcross) > 0.7f * halfWidth ? 1.0f : 0.0f);
+            // Image space is y down; the canvas frame (the normals') is y up.
+            const glm::vec3 n = glm::normalize(glm::vec3(across.x * tilt, -across.y * tilt, 1.0f));
+            surface.normal[k] = glm::normalize(glm::mix(surface.normal[k], n, alpha));
+            if (alpha > 0.5f) {
+                surface.paint[k] = s.paint;
             }
         }
     }
+}
 
-    // Material: normals everywhere; varnish and glitter only on the chosen tiles, so the others have no
-    // material.
+/// Material: normals everywhere; varnish and glitter only on the chosen tiles, so the others have no
+/// material.
+void writeMaterial(const ProceduralCanvasInfo& info, const PaintedSurface& surface, Image8& material) {
+    const int w = info.width, h = info.height;
     const TileGrid grid = makeTileGrid(w, h, info.tileSize);
     const std::vector<std::uint8_t> chosen = chooseTiles(grid, info.occupancy, info.seed);
-    const int facet = std::max(2, int(std::lround(H / 216.0f))); // glitter flake size, px
+    const int facet = std::max(2, int(std::lround(float(h) / 216.0f))); // glitter flake size, px
     const std::uint8_t varnish = encodeShininess(40.0f), gloss = encodeShininess(160.0f);
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
-            const std::size_t k = std::size_t(y) * std::size_t(w) + std::size_t(x);
-            std::uint8_t* m = out.material.at(x, y);
-            glm::vec3 n = normal[k];
+            const std::size_t k = surface.index(x, y);
+            std::uint8_t* m = material.at(x, y);
+            glm::vec3 n = surface.normal[k];
             m[2] = 0;
             m[3] = 0;
             if (chosen[std::size_t(grid.tileOfImagePixel(x, y, h))]) {
-                if (paint[k] == Paint::Glitter) {
+                if (surface.paint[k] == Paint::Glitter) {
                     // One flat flake per facet cell, tilted up to ~17 degrees: each catches the lamp at its
                     // own tilt, which is what makes glitter twinkle as the device moves.
                     const std::uint32_t cx = std::uint32_t(x / facet), cy = std::uint32_t(y / facet);
@@ -198,12 +209,29 @@ CanvasImages makeProceduralCanvas(const ProceduralCanvasInfo& info) {
                     n = {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
                     m[3] = 255;
                 } else {
-                    m[2] = paint[k] == Paint::Gloss ? gloss : varnish;
+                    m[2] = surface.paint[k] == Paint::Gloss ? gloss : varnish;
                 }
             }
             encodeMaterialNormal(n, m[0], m[1]);
         }
     }
+}
+
+} // namespace
+
+CanvasImages makeProceduralCanvas(const ProceduralCanvasInfo& info) {
+    const int w = info.width, h = info.height;
+    const float aspect = float(w) / float(h);
+    CanvasImages out{ImageF(w, h), Image8(w, h)};
+    PaintedSurface surface(w, h);
+    paintGround(out.color, surface);
+    // Strokes, painted in order.
+    const int strokes = int(900.0f * aspect);
+    for (int i = 0; i < strokes; ++i) {
+        paintStroke(makeStroke(info.seed, std::uint32_t(i), aspect), info.seed, std::uint32_t(i), out.color,
+                    surface);
+    }
+    writeMaterial(info, surface, out.material);
     return out;
 }
 

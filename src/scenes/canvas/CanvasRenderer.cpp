@@ -42,7 +42,11 @@ CanvasRenderer::CanvasRenderer()
     , mTiledDiffuseProgram(makeComputeProgram("scenes/canvas/canvas_shade.comp.glsl", defines(true, false)))
     , mTileCountReadback(sizeof(GpuTileListsHeader), 1, "canvas tile count") {}
 
-void CanvasRenderer::setCanvas(const CanvasImages& images, int tileSize) {
+namespace {
+
+/// The tile grid of `images`, checked: colour and material of one non-empty size, tiles a multiple of the
+/// group size in [16, 1024], no more tiles than an indirect dispatch can list.
+TileGrid checkedTileGrid(const CanvasImages& images, int tileSize) {
     if (tileSize < kGroupSize || tileSize > 1024 || tileSize % kGroupSize != 0) {
         throw std::invalid_argument(
             fmt::format("canvas tile size {} is not a multiple of 16 in [16, 1024]", tileSize));
@@ -58,6 +62,27 @@ void CanvasRenderer::setCanvas(const CanvasImages& images, int tileSize) {
                         "list; use a larger tile size",
                         grid.tilesX, grid.tilesY, tileSize));
     }
+    return grid;
+}
+
+/// Rows flipped on upload: image row y (top-down) is texel row h-1-y (GL's bottom-left origin).
+void uploadFlipped(const Texture& texture, const Image8& image) {
+    const int w = image.width, h = image.height;
+    std::vector<std::uint8_t> flipped(image.rgba.size());
+    const std::size_t row = std::size_t(w) * 4;
+    for (int y = 0; y < h; ++y) {
+        std::copy_n(image.rgba.data() + std::size_t(h - 1 - y) * row, row,
+                    flipped.data() + std::size_t(y) * row);
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage2D(texture.id(), 0, 0, 0, w, h, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, flipped.data());
+}
+
+} // namespace
+
+void CanvasRenderer::setCanvas(const CanvasImages& images, int tileSize) {
+    const TileGrid grid = checkedTileGrid(images, tileSize);
+    const int w = images.color.width, h = images.color.height;
     mGrid = grid;
     mTrial.restart();
     for (TrialFrame& f : mTrialFrames) {
@@ -74,15 +99,7 @@ void CanvasRenderer::setCanvas(const CanvasImages& images, int tileSize) {
         mOutput = Texture({.extent = {w, h}, .format = GL_RGBA16F, .debugName = "canvas HDR"});
     }
     mColor.uploadRgba32f(images.color.rgba.data());
-    // Rows flipped on upload: image row y (top-down) is texel row h-1-y (GL's bottom-left origin).
-    std::vector<std::uint8_t> flipped(images.material.rgba.size());
-    const std::size_t row = std::size_t(w) * 4;
-    for (int y = 0; y < h; ++y) {
-        std::copy_n(images.material.rgba.data() + std::size_t(h - 1 - y) * row, row,
-                    flipped.data() + std::size_t(y) * row);
-    }
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage2D(mMaterial.id(), 0, 0, 0, w, h, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, flipped.data());
+    uploadFlipped(mMaterial, images.material);
 
     const auto groupsPerSide = std::uint32_t(tileSize / kGroupSize);
     const GpuTileListsHeader header{.occupiedArgs = {groupsPerSide, groupsPerSide, 0},

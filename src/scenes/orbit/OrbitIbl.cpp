@@ -79,6 +79,101 @@ ShaderDefines iblShaderDefines(ShaderDefines extra) {
     return extra;
 }
 
+namespace {
+
+/// The environment as a mip-mapped texture, wrapping around in longitude, for the cube projection.
+Texture equirectSource(const ImageF& env) {
+    const int equirectLevels = int(std::floor(std::log2(double(std::max(env.width, env.height))))) + 1;
+    Texture source({.extent = {env.width, env.height},
+                    .format = GL_RGBA32F,
+                    .levels = equirectLevels,
+                    .minFilter = GL_LINEAR_MIPMAP_LINEAR,
+                    .magFilter = GL_LINEAR,
+                    .wrap = GL_CLAMP_TO_EDGE,
+                    .debugName = "ibl equirect"});
+    glTextureParameteri(source.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    source.uploadRgba32f(env.rgba.data());
+    glGenerateTextureMipmap(source.id());
+    return source;
+}
+
+/// Equirect -> level 0 of `cube` (`face` texels a side), then its mip chain for filtered importance sampling.
+void projectToCube(const Texture& source, int sourceWidth, GLuint cube, int face) {
+    const Program program = makeComputeProgram("scenes/orbit/orbit_ibl_cube.comp.glsl", iblShaderDefines());
+    program.use();
+    // 2 x 2 samples per cube texel at the face centre's spacing ((pi / 2) / face / 2 radians) against the
+    // equirect's 2 pi / width: the level where the two match.
+    const float lod = std::max(0.0f, std::log2(float(sourceWidth) / (8.0f * float(face))));
+    setUniform(program, "uFaceSize", face);
+    setUniform(program, "uLod", lod);
+    glBindTextureUnit(0, source.id());
+    glBindImageTexture(0, cube, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    dispatchFaces(face);
+    imageWriteBarrier();
+    glGenerateTextureMipmap(cube);
+}
+
+/// Levels 1 and up of `specular`: the environment cube (`envLevels` levels) prefiltered for a roughness
+/// rising to 1 at the last level.
+void prefilterSpecular(GLuint environment, int envLevels, GLuint specular, const IblOptions& options) {
+    const int face = options.faceSize;
+    const Program prefilter =
+        makeComputeProgram("scenes/orbit/orbit_ibl_prefilter.comp.glsl", iblShaderDefines());
+    prefilter.use();
+    glBindTextureUnit(0, environment);
+    setUniform(prefilter, "uSampleCount", options.prefilterSamples);
+    setUniform(prefilter, "uSourceTexelSolidAngle", cubemapTexelSolidAngle(face));
+    setUniform(prefilter, "uLodBias", options.lodBias);
+    setUniform(prefilter, "uSourceMaxLod", float(envLevels - 1));
+    for (int level = 1; level < options.specularLevels; ++level) {
+        const int size = std::max(1, face >> level);
+        setUniform(prefilter, "uFaceSize", size);
+        setUniform(prefilter, "uRoughness", float(level) / float(options.specularLevels - 1));
+        glBindImageTexture(0, specular, level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        dispatchFaces(size);
+    }
+    imageWriteBarrier();
+}
+
+/// The split-sum table with the diffuse Fresnel weight, (A, B, W) into `cpuLut` and (A, B, W, 0) returned
+/// for the upload; row y = 0 (the smoothest) is the texture's bottom.
+std::vector<float> splitSumTable(const IblOptions& options, std::vector<glm::vec3>& cpuLut) {
+    const SplitSumLut table = splitSumLut(options.lutSize, options.lutSamples);
+    std::vector<float> weights(std::size_t(options.lutSize));
+    for (int x = 0; x < options.lutSize; ++x) {
+        weights[std::size_t(x)] =
+            diffuseSchlickWeight((float(x) + 0.5f) / float(options.lutSize), options.lutSamples);
+    }
+    cpuLut.resize(std::size_t(options.lutSize) * std::size_t(options.lutSize));
+    std::vector<float> rgba(cpuLut.size() * 4);
+    for (int y = 0; y < options.lutSize; ++y) {
+        for (int x = 0; x < options.lutSize; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(options.lutSize) + std::size_t(x);
+            const glm::vec2 ab = table.at(x, y);
+            cpuLut[i] = glm::vec3(ab, weights[std::size_t(x)]);
+            rgba[i * 4 + 0] = ab.x;
+            rgba[i * 4 + 1] = ab.y;
+            rgba[i * 4 + 2] = weights[std::size_t(x)];
+            rgba[i * 4 + 3] = 0.0f;
+        }
+    }
+    return rgba;
+}
+
+Texture uploadSplitSumTable(int size, const std::vector<float>& rgba) {
+    Texture lut({.extent = {size, size},
+                 .format = GL_RGBA16F,
+                 .levels = 1,
+                 .minFilter = GL_LINEAR,
+                 .magFilter = GL_LINEAR,
+                 .wrap = GL_CLAMP_TO_EDGE,
+                 .debugName = "ibl split-sum table"});
+    glTextureSubImage2D(lut.id(), 0, 0, 0, size, size, GL_RGBA, GL_FLOAT, rgba.data());
+    return lut;
+}
+
+} // namespace
+
 Ibl::Ibl(const ImageF& equirect, const IblOptions& options)
     : mOptions(options) {
     if (equirect.empty()) {
@@ -100,91 +195,21 @@ Ibl::Ibl(const ImageF& equirect, const IblOptions& options)
     }
     mParameters.specularMaxLevel = float(options.specularLevels - 1);
 
-    // Equirect -> cube, then its mip chain for filtered importance sampling.
-    const int equirectLevels = int(std::floor(std::log2(double(std::max(env.width, env.height))))) + 1;
-    Texture source({.extent = {env.width, env.height},
-                    .format = GL_RGBA32F,
-                    .levels = equirectLevels,
-                    .minFilter = GL_LINEAR_MIPMAP_LINEAR,
-                    .magFilter = GL_LINEAR,
-                    .wrap = GL_CLAMP_TO_EDGE,
-                    .debugName = "ibl equirect"});
-    glTextureParameteri(source.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-    source.uploadRgba32f(env.rgba.data());
-    glGenerateTextureMipmap(source.id());
-
+    const Texture source = equirectSource(env);
     const int face = options.faceSize;
     const int envLevels = int(std::log2(double(face))) + 1;
     mEnvironment = makeCube(face, envLevels, "ibl environment cube");
     mSpecular = makeCube(face, options.specularLevels, "ibl specular cube");
-    {
-        const Program cube = makeComputeProgram("scenes/orbit/orbit_ibl_cube.comp.glsl", iblShaderDefines());
-        cube.use();
-        // 2 x 2 samples per cube texel at the face centre's spacing ((pi / 2) / face / 2 radians) against the
-        // equirect's 2 pi / width: the level where the two match.
-        const float lod = std::max(0.0f, std::log2(float(env.width) / (8.0f * float(face))));
-        setUniform(cube, "uFaceSize", face);
-        setUniform(cube, "uLod", lod);
-        glBindTextureUnit(0, source.id());
-        glBindImageTexture(0, mEnvironment.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        dispatchFaces(face);
-        imageWriteBarrier();
-        glGenerateTextureMipmap(mEnvironment.id());
-    }
+    projectToCube(source, env.width, mEnvironment.id(), face);
     // Level 0 of the specular cube is the mirror: the environment itself.
     glCopyImageSubData(mEnvironment.id(), GL_TEXTURE_CUBE_MAP, 0, 0, 0, 0, mSpecular.id(),
                        GL_TEXTURE_CUBE_MAP, 0, 0, 0, 0, face, face, 6);
-    {
-        const Program prefilter =
-            makeComputeProgram("scenes/orbit/orbit_ibl_prefilter.comp.glsl", iblShaderDefines());
-        prefilter.use();
-        glBindTextureUnit(0, mEnvironment.id());
-        setUniform(prefilter, "uSampleCount", options.prefilterSamples);
-        setUniform(prefilter, "uSourceTexelSolidAngle", cubemapTexelSolidAngle(face));
-        setUniform(prefilter, "uLodBias", options.lodBias);
-        setUniform(prefilter, "uSourceMaxLod", float(envLevels - 1));
-        for (int level = 1; level < options.specularLevels; ++level) {
-            const int size = std::max(1, face >> level);
-            setUniform(prefilter, "uFaceSize", size);
-            setUniform(prefilter, "uRoughness", float(level) / float(options.specularLevels - 1));
-            glBindImageTexture(0, mSpecular.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-            dispatchFaces(size);
-        }
-        imageWriteBarrier();
-    }
+    prefilterSpecular(mEnvironment.id(), envLevels, mSpecular.id(), options);
     glUseProgram(0);
     glBindTextureUnit(0, 0);
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
 
-    // The split-sum table with the diffuse Fresnel weight; row y = 0 (the smoothest) is the texture's bottom.
-    const SplitSumLut table = splitSumLut(options.lutSize, options.lutSamples);
-    std::vector<float> weights(std::size_t(options.lutSize));
-    for (int x = 0; x < options.lutSize; ++x) {
-        weights[std::size_t(x)] =
-            diffuseSchlickWeight((float(x) + 0.5f) / float(options.lutSize), options.lutSamples);
-    }
-    mCpuLut.resize(std::size_t(options.lutSize) * std::size_t(options.lutSize));
-    std::vector<float> rgba(mCpuLut.size() * 4);
-    for (int y = 0; y < options.lutSize; ++y) {
-        for (int x = 0; x < options.lutSize; ++x) {
-            const std::size_t i = std::size_t(y) * std::size_t(options.lutSize) + std::size_t(x);
-            const glm::vec2 ab = table.at(x, y);
-            mCpuLut[i] = glm::vec3(ab, weights[std::size_t(x)]);
-            rgba[i * 4 + 0] = ab.x;
-            rgba[i * 4 + 1] = ab.y;
-            rgba[i * 4 + 2] = weights[std::size_t(x)];
-            rgba[i * 4 + 3] = 0.0f;
-        }
-    }
-    mLut = Texture({.extent = {options.lutSize, options.lutSize},
-                    .format = GL_RGBA16F,
-                    .levels = 1,
-                    .minFilter = GL_LINEAR,
-                    .magFilter = GL_LINEAR,
-                    .wrap = GL_CLAMP_TO_EDGE,
-                    .debugName = "ibl split-sum table"});
-    glTextureSubImage2D(mLut.id(), 0, 0, 0, options.lutSize, options.lutSize, GL_RGBA, GL_FLOAT, rgba.data());
-
+    mLut = uploadSplitSumTable(options.lutSize, splitSumTable(options, mCpuLut));
     mBlock = ParameterBlock<GpuIblParameters>("ibl parameters", mParameters);
     glFinish();
     mBuildMilliseconds =

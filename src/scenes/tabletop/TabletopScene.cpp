@@ -195,14 +195,13 @@ float TabletopScene::torchFlicker(int index, double seconds, float amplitude) {
     return float(1.0 + double(amplitude) * n);
 }
 
-FrameInputs TabletopScene::render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) {
-    // Time is frameIndex * dt, never a clock: frame N is identical on every run.
-    const double t = double(time.frameIndex) * double(time.dt);
-    const Extent e = mColor.extent();
-    const glm::vec2 player = playerWorldAt(t, mSettings.loopSeconds);
+namespace {
 
-    // The camera follows the player, clamped to the map.
-    const glm::vec2 viewSize(mSettings.viewHeight * float(e.width) / float(e.height), mSettings.viewHeight);
+constexpr std::uint32_t kPlayerId = TabletopScene::kPlayerId;
+constexpr SceneRect kMapRect = TabletopScene::kMapRect;
+
+/// The view's centre: on the player, clamped to the map.
+glm::vec2 viewCentre(glm::vec2 player, glm::vec2 viewSize) {
     glm::vec2 centre = player;
     centre.x =
         std::clamp(centre.x, kMapRect.x + 0.5f * viewSize.x,
@@ -210,12 +209,21 @@ FrameInputs TabletopScene::render(const FrameTime& time, Pipeline& pipeline, std
     centre.y = std::clamp(
         centre.y, kMapRect.y + 0.5f * viewSize.y,
         std::max(kMapRect.y + 0.5f * viewSize.y, kMapRect.y + kMapRect.height - 0.5f * viewSize.y));
-    const glm::vec2 viewMin = centre - 0.5f * viewSize;
+    return centre;
+}
 
-    // Subjects: every token; the player is controlled and the user's character (the selection rule picks the
-    // controlled one first).
-    mSubjects.clear();
-    std::vector<float> tokens, tokenColors;
+/// The shader's tokens (x, y, radius, player?) and colours, four floats each.
+struct TokenArrays {
+    std::vector<float> tokens;
+    std::vector<float> colors;
+};
+
+/// Subjects: every token; the player is controlled and the user's character (the selection rule picks the
+/// controlled one first).
+TokenArrays placeTokens(glm::vec2 player, glm::vec2 viewMin, glm::vec2 viewSize,
+                        std::vector<Subject>& subjects) {
+    subjects.clear();
+    TokenArrays out;
     for (const Token& token : kTokens) {
         const glm::vec2 pos = token.id == kPlayerId ? player : token.pos;
         Subject s;
@@ -224,11 +232,16 @@ FrameInputs TabletopScene::render(const FrameTime& time, Pipeline& pipeline, std
         s.screenUv = (pos - viewMin) / viewSize; // image UV, v down (world y runs down too)
         s.controlled = token.id == kPlayerId;
         s.ownCharacter = token.id == kPlayerId;
-        mSubjects.push_back(s);
-        tokens.insert(tokens.end(), {pos.x, pos.y, kTokenRadius, token.id == kPlayerId ? 1.0f : 0.0f});
-        tokenColors.insert(tokenColors.end(), {token.albedo.r, token.albedo.g, token.albedo.b, 1.0f});
+        subjects.push_back(s);
+        out.tokens.insert(out.tokens.end(),
+                          {pos.x, pos.y, kTokenRadius, token.id == kPlayerId ? 1.0f : 0.0f});
+        out.colors.insert(out.colors.end(), {token.albedo.r, token.albedo.g, token.albedo.b, 1.0f});
     }
+    return out;
+}
 
+/// The walls and the torches at time `t`, as the shader's uniforms.
+void setLightUniforms(const Program& program, const TabletopSceneSettings& settings, double t) {
     std::vector<float> walls;
     for (const Rect& r : kWalls) {
         walls.insert(walls.end(), {r.x0, r.y0, r.x1, r.y1});
@@ -238,13 +251,33 @@ FrameInputs TabletopScene::render(const FrameTime& time, Pipeline& pipeline, std
     const glm::vec3 warm = glm::vec3(1.0f, 0.56f, 0.22f) / (0.2126f + 0.7152f * 0.56f + 0.0722f * 0.22f);
     for (std::size_t i = 0; i < kTorches.size(); ++i) {
         const Torch& torch = kTorches[i];
-        const float k = mSettings.torchIntensity * torchFlicker(int(i), t, mSettings.flicker);
+        const float k = settings.torchIntensity * TabletopScene::torchFlicker(int(i), t, settings.flicker);
         lightPos.insert(lightPos.end(), {torch.pos.x, torch.pos.y, kTorchCore, kTorchRange});
         lightColor.insert(lightColor.end(), {warm.r * k, warm.g * k, warm.b * k, kFlameLuminance * k});
         // A torch lights its room and the inner half of the walls around it.
         lightRoom.insert(lightRoom.end(), {torch.room.x0 - 12.0f, torch.room.y0 - 12.0f,
                                            torch.room.x1 + 12.0f, torch.room.y1 + 12.0f});
     }
+    setUniform(program, "uWallCount", int(kWalls.size()));
+    setArray4(program, "uWalls", walls);
+    setUniform(program, "uLightCount", int(kTorches.size()));
+    setArray4(program, "uLightPos", lightPos);
+    setArray4(program, "uLightColor", lightColor);
+    setArray4(program, "uLightRoom", lightRoom);
+}
+
+} // namespace
+
+FrameInputs TabletopScene::render(const FrameTime& time, Pipeline& pipeline, std::vector<double>& telemetry) {
+    // Time is frameIndex * dt, never a clock: frame N is identical on every run.
+    const double t = double(time.frameIndex) * double(time.dt);
+    const Extent e = mColor.extent();
+    const glm::vec2 player = playerWorldAt(t, mSettings.loopSeconds);
+    // The camera follows the player.
+    const glm::vec2 viewSize(mSettings.viewHeight * float(e.width) / float(e.height), mSettings.viewHeight);
+    const glm::vec2 centre = viewCentre(player, viewSize);
+    const glm::vec2 viewMin = centre - 0.5f * viewSize;
+    const TokenArrays tokens = placeTokens(player, viewMin, viewSize, mSubjects);
     const float sunScale = 1.0f - (1.0f - kNightSunFraction) * mSettings.darkness;
     const glm::vec3 sun = mSettings.sunIlluminance * sunScale * glm::vec3(1.0f, 0.97f, 0.9f);
 
@@ -254,15 +287,10 @@ FrameInputs TabletopScene::render(const FrameTime& time, Pipeline& pipeline, std
     setUniform(mProgram, "uSceneRect", kMapRect.x, kMapRect.y, kMapRect.width, kMapRect.height);
     setUniform(mProgram, "uSun", sun.r, sun.g, sun.b);
     setUniform(mProgram, "uAmbient", 0.004f, 0.0035f, 0.003f);
-    setUniform(mProgram, "uWallCount", int(kWalls.size()));
-    setArray4(mProgram, "uWalls", walls);
-    setUniform(mProgram, "uLightCount", int(kTorches.size()));
-    setArray4(mProgram, "uLightPos", lightPos);
-    setArray4(mProgram, "uLightColor", lightColor);
-    setArray4(mProgram, "uLightRoom", lightRoom);
+    setLightUniforms(mProgram, mSettings, t);
     setUniform(mProgram, "uTokenCount", int(kTokens.size()));
-    setArray4(mProgram, "uTokens", tokens);
-    setArray4(mProgram, "uTokenColor", tokenColors);
+    setArray4(mProgram, "uTokens", tokens.tokens);
+    setArray4(mProgram, "uTokenColor", tokens.colors);
     mProgram.use();
     glBindTextureUnit(0, mMaskTexture.id());
     glBindImageTexture(0, mColor.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);

@@ -66,23 +66,12 @@ void TestbedRenderer::resize(Extent extent) {
     mTargets.resize(extent, "testbed");
 }
 
-void TestbedRenderer::draw(const DrawInfo& info) {
-    const std::vector<Primitive>& prims = *info.primitives;
-    if (prims.size() > std::size_t(kMaxPrimitives)) {
-        throw std::logic_error("testbed: more primitives than TestbedRenderer::kMaxPrimitives");
-    }
-    const Camera& camera = *info.camera;
-    const Extent e = mTargets.extent();
-    const Environment& env = environment();
+namespace {
 
-    GpuPrimitive gpu[kMaxPrimitives];
-    for (std::size_t i = 0; i < prims.size(); ++i) {
-        gpu[i] = toGpu(prims[i]);
-    }
-    mPrimitives.update(gpu, sizeof(GpuPrimitive) * prims.size());
-
+/// The frame's uniform block: camera, sun, sky and ground, and which of the optional inputs are bound.
+GpuFrame frameBlock(const TestbedRenderer::DrawInfo& info, Extent e, const Environment& env) {
     GpuFrame f{};
-    f.camera = sceneCameraBlock(camera, info.jitter, e);
+    f.camera = sceneCameraBlock(*info.camera, info.jitter, e);
     f.sunDirection = glm::vec4(env.sunDirection, std::cos(env.sunAngularRadius));
     f.sunIlluminance =
         glm::vec4(info.sunScale * env.sunIlluminance,
@@ -94,6 +83,25 @@ void TestbedRenderer::draw(const DrawInfo& info) {
     f.ambientGround = glm::vec4(env.ambientGround, 0.0f);
     f.flags = {info.ambientOcclusion != nullptr ? 1 : 0, info.sunVisibility != nullptr ? 1 : 0, 0, 0};
     f.ambientOcclusionPower = glm::vec4(info.ambientOcclusionPower, 0.0f, 0.0f, 0.0f);
+    return f;
+}
+
+} // namespace
+
+void TestbedRenderer::draw(const DrawInfo& info) {
+    const std::vector<Primitive>& prims = *info.primitives;
+    if (prims.size() > std::size_t(kMaxPrimitives)) {
+        throw std::logic_error("testbed: more primitives than TestbedRenderer::kMaxPrimitives");
+    }
+    const Extent e = mTargets.extent();
+
+    GpuPrimitive gpu[kMaxPrimitives];
+    for (std::size_t i = 0; i < prims.size(); ++i) {
+        gpu[i] = toGpu(prims[i]);
+    }
+    mPrimitives.update(gpu, sizeof(GpuPrimitive) * prims.size());
+
+    const GpuFrame f = frameBlock(info, e, environment());
     mFrame.update(&f, sizeof(f));
 
     DebugGroup group("testbed scene");
