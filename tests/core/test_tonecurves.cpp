@@ -223,7 +223,7 @@ TEST(ToneCurves, NeutralIsAnOffsetInsideItsLinearRange) {
 
 // --------------------------------------------------------------------------------------- ACES constants
 
-// Independent derivation, in double, of the matrices ToneCurves.cpp hard-codes (the shader has the same
+// Independent derivation, in double, of the matrices ToneCurvesAces.cpp hard-codes (the shader has the same
 // literals): the CTL's RGBtoXYZ, calculate_cat_matrix (Bradford) and calc_sat_adjust_matrix.
 struct Mat3d {
     std::array<std::array<double, 3>, 3> m{}; // m[row][column], out = M * in

@@ -1,11 +1,12 @@
-// Tone curves for the GPU: a line-by-line mirror of src/core/ToneCurves.cpp (same constants, same order of
-// operations, float). Change both together; the GL mirror test holds them within 1/255 after sRGB encoding.
+// Tone curves for the GPU: a line-by-line mirror of src/core/ToneCurves.cpp and ToneCurvesAces.cpp (same
+// constants, same order of operations, float). Change both together; the GL mirror test holds them within 1/255
+// after sRGB encoding.
 // No #version: this file is included after the pipeline's #version line. Core GLSL 4.50 only.
 //
 // Contract (as toneMap() in ToneCurves.h): input is exposed scene-linear Rec.709, clamped to [0, 65504];
 // output is LINEAR display light in [0, 1], before the sRGB OETF.
 //
-// Sources (details in ToneCurves.cpp): Reinhard et al. 2002; Hable 2010 (Uncharted 2); Lottes GDC 2016;
+// Sources (details in ToneCurves.cpp and ToneCurvesAces.cpp): Reinhard et al. 2002; Hable 2010 (Uncharted 2); Lottes GDC 2016;
 // Uchimura CEDEC 2017; Narkowicz 2016; Hill, BakingLab ACES.hlsl; ACES 1.x CTL (ampas/aces-dev: RRT.ctl,
 // ACESlib.RRT_Common.ctl, ACESlib.Tonescales.ctl, ACESlib.ODT_Common.ctl, ODT.Academy.sRGB_100nits_dim.ctl);
 // Sobotka's AgX in Wrensch's minimal form (iolite-engine.com/blog_posts/minimal_agx_implementation);
