@@ -1,8 +1,11 @@
 #pragma once
-// `photopic bench`: per-pass GPU timings of the pipeline over N frames; `--scene canvas`: the canvas scene's
-// tiled against full-screen shading.
+// What the files of `photopic bench` (BenchCommand.h) share: its options, the median and the JSON writer.
+// PipelineBench.h times the pipeline's passes, CanvasBench.cpp the canvas scene's tiled against full-screen
+// shading.
 
 #include "Commands.h"
+
+#include <nlohmann/json_fwd.hpp>
 
 #include <filesystem>
 #include <string>
@@ -27,12 +30,17 @@ struct BenchOptions {
     /// pass; for drivers whose timestamps miss deferred work, such as Mesa llvmpipe).
     bool sync = false;
     /// Untimed GPU work before each timed frame, longer than the CPU takes to submit one, so the timestamps
-    /// hold the GPU's own work and not its waits for the CPU (Bench.cpp QueueAhead).
+    /// hold the GPU's own work and not its waits for the CPU (QueueAhead.h).
     bool queueAhead = false;
     std::string scene; ///< "" (the pipeline on a synthetic or --input frame) or "canvas" (its shading paths)
 };
 
-int runBench(const BenchOptions& options);
+/// `--scene canvas`: the canvas scene's tiled shading (specular + sparkle only on tiles with material,
+/// indirect dispatch) against its full-screen shading, after checking that both give the same image.
+int runCanvasBench(const BenchOptions& options);
+
+/// The table as JSON, through the io library's atomic writer. Throws IoError naming the file.
+void writeJsonAtomically(const std::filesystem::path& path, const nlohmann::json& doc);
 
 /// The median of `values` (the mean of the middle two for an even count), 0 for none: what the bench and the
 /// image command's stage report print.

@@ -224,15 +224,8 @@ CameraJson::Sensor sensorJson(const fs::path& path, const json& value, const std
     return sensor;
 }
 
-/// One camera object; `prefix` ("" or "frames.N.") names its keys in errors.
-CameraJson parseCameraObject(const fs::path& path, const json& root, const std::string& prefix) {
-    if (!root.is_object())
-        badKey(path, prefix.empty() ? "camera" : prefix.substr(0, prefix.size() - 1), "expected an object");
-    rejectUnknownKeys(path, root,
-                      {"position", "target", "up", "cameraToWorld", "verticalFovDeg", "focalLengthMm",
-                       "sensor", "shift", "near", "far", "lens", "sunDirection"},
-                      prefix);
-    CameraJson c;
+/// The camera's placement: cameraToWorld, or position, target and up.
+void parsePlacement(const fs::path& path, const json& root, const std::string& prefix, CameraJson& c) {
     if (root.contains("cameraToWorld")) {
         for (const char* key : {"position", "target", "up"}) {
             if (root.contains(key))
@@ -248,6 +241,10 @@ CameraJson parseCameraObject(const fs::path& path, const json& root, const std::
         c.target = vectorOf<3>(path, root, "target", c.target, prefix);
         c.up = vectorOf<3>(path, root, "up", c.up, prefix);
     }
+}
+
+/// The projection: focalLengthMm with its sensor and shift, or verticalFovDeg; then near and far.
+void parseProjection(const fs::path& path, const json& root, const std::string& prefix, CameraJson& c) {
     if (root.contains("focalLengthMm")) {
         if (root.contains("verticalFovDeg"))
             badKey(path, prefix + "verticalFovDeg", "give either verticalFovDeg or focalLengthMm, not both");
@@ -279,16 +276,34 @@ CameraJson parseCameraObject(const fs::path& path, const json& root, const std::
         badKey(path, prefix + "near", "must be > 0");
     if (!(c.farPlane > c.nearPlane))
         badKey(path, prefix + "far", "must be > near (omit it or use null for an infinite far plane)");
+}
+
+/// position, target and up, when they place the camera: apart, and up not along the view.
+void checkLookAt(const fs::path& path, const std::string& prefix, const CameraJson& c) {
+    const glm::vec3 forward = c.target - c.position;
+    const float forwardLength = glm::length(forward);
+    if (!(forwardLength >= kMinDirection && forwardLength <= kMaxDirection))
+        badKey(path, prefix + "target", "must differ from position by a distance in [1e-6, 1e18]");
+    const float upLength = glm::length(c.up);
+    if (!(upLength >= kMinDirection && upLength <= kMaxDirection))
+        badKey(path, prefix + "up", "must have a length in [1e-6, 1e18]");
+    if (glm::length(glm::cross(forward / forwardLength, c.up / upLength)) < 1e-6f)
+        badKey(path, prefix + "up", "must not be parallel to target - position");
+}
+
+/// One camera object; `prefix` ("" or "frames.N.") names its keys in errors.
+CameraJson parseCameraObject(const fs::path& path, const json& root, const std::string& prefix) {
+    if (!root.is_object())
+        badKey(path, prefix.empty() ? "camera" : prefix.substr(0, prefix.size() - 1), "expected an object");
+    rejectUnknownKeys(path, root,
+                      {"position", "target", "up", "cameraToWorld", "verticalFovDeg", "focalLengthMm",
+                       "sensor", "shift", "near", "far", "lens", "sunDirection"},
+                      prefix);
+    CameraJson c;
+    parsePlacement(path, root, prefix, c);
+    parseProjection(path, root, prefix, c);
     if (!c.cameraToWorld) {
-        const glm::vec3 forward = c.target - c.position;
-        const float forwardLength = glm::length(forward);
-        if (!(forwardLength >= kMinDirection && forwardLength <= kMaxDirection))
-            badKey(path, prefix + "target", "must differ from position by a distance in [1e-6, 1e18]");
-        const float upLength = glm::length(c.up);
-        if (!(upLength >= kMinDirection && upLength <= kMaxDirection))
-            badKey(path, prefix + "up", "must have a length in [1e-6, 1e18]");
-        if (glm::length(glm::cross(forward / forwardLength, c.up / upLength)) < 1e-6f)
-            badKey(path, prefix + "up", "must not be parallel to target - position");
+        checkLookAt(path, prefix, c);
     }
     if (root.contains("sunDirection")) {
         const glm::vec3 sun = vectorOf<3>(path, root, "sunDirection", glm::vec3(0.0f), prefix);

@@ -1,6 +1,7 @@
 #pragma once
-// The photopic CLI's commands. Each returns the process exit code: 0 ok, 2 bad usage or input, 1 other
-// failure.
+// What the photopic CLI's commands share: the exit codes, the settings sources, the image and scene
+// options, the GL context they open. Each command is a class of its own (Command.h); its run() returns the
+// process exit code: 0 ok, 2 bad usage or input, 1 other failure.
 
 #include "InputError.h"
 #include "OcioDisplay.h"
@@ -128,20 +129,8 @@ std::string telemetryCsv(const std::vector<ExposureTelemetry>& rows, float dt,
 std::string telemetryCsvRow(const ExposureTelemetry& t, float dt, std::size_t sceneColumns,
                             const std::vector<double>& sceneValues);
 
-int runScene(const SceneOptions& options);
-/// The run's settings (the stills look under the preset, file and overrides) with --bit-depth over them.
-Settings imageSettings(const ImageOptions& options);
-/// The pipeline for `photopic image`, its creation errors turned into InputError where the user can fix them.
-std::unique_ptr<Pipeline> makeImagePipeline(const PipelineCreateInfo& createInfo);
-/// GL and capability report; with settings, also the quality tier and the path frames would take.
-int runInfo(bool forceLdr, const SettingsSources& settings);
-int runImage(const ImageOptions& options);
 /// The look of preset `name` (presetNames()); throws InputError listing the presets when there is none.
 Settings presetLook(const std::string& name);
-/// `photopic settings --defaults`: every field of the defaults with preset `preset`'s look (none: empty).
-int runSettingsDefaults(const std::string& preset);
-/// `photopic settings --check FILE`: with `preset`, the file over that preset's look, as --preset reads it.
-int runSettingsCheck(const std::filesystem::path& file, const std::string& preset);
 /// `demo --images`: every HDR image in `dataDir` through three tone curves, with `look`'s look.
 int runDemo(const std::filesystem::path& dataDir, const std::filesystem::path& outDir,
             std::int64_t maxPixels = kDefaultMaxPixels, const Settings& look = {});
@@ -164,8 +153,9 @@ HeadlessContextCreateInfo commandContext();
 /// --gl-debug, before a command runs.
 void setGlDebug(bool on);
 
-/// Frames in flight when `--frames-in-flight` is not given: 3 with up to 4 cores, else half the cores, at most
-/// 8: PNG encodes side by side pay until then, and more frames cost memory for little (docs/bench/LOG.md).
+/// Frames in flight when `--frames-in-flight` is not given: 3 with up to 4 cores, else half the cores, at
+/// most 8: PNG encodes side by side pay until then, and more frames cost memory for little
+/// (docs/bench/LOG.md).
 int defaultFramesInFlight();
 
 } // namespace photopic::cli

@@ -1,4 +1,7 @@
-#include "SequenceCommands.h"
+// `photopic farm` (FarmCommand.h): the job set of a sequence's meter, expose and render stages.
+#include "FarmCommand.h"
+
+#include "CommandOptions.h"
 
 #include "InputSequence.h"
 #include "Video.h"
@@ -236,6 +239,54 @@ void writeRunners(const JobSet& set) {
 }
 
 } // namespace
+
+FarmCommand::FarmCommand(CLI::App& parent)
+    : Command(parent.add_subcommand("farm",
+                                    "write a sequence's meter, expose and render stages as a Slurm job set "
+                                    "(job arrays with afterok dependencies), and submit it with --submit")) {
+    CLI::App* cmd = &app();
+    FarmOptions& o = mOptions;
+    cmd->add_option("input", o.input, "the sequence: a frame-numbered pattern (shot/f%04d.exr)")->required();
+    cmd->add_option("-o,--output", o.output, "the output pattern (out/f%04d.png)")
+        ->check(kOutputPath)
+        ->required();
+    cmd->add_option("--jobs", o.jobDir, "folder for the job scripts, settings, meter files and logs")
+        ->check(kOutputPath)
+        ->required();
+    cmd->add_option("--frames", o.frames, "frames A-B (default: every frame of the pattern)");
+    cmd->add_option("--chunk", o.chunk, "frames per meter and render job")
+        ->check(CLI::Range(1, 1000000))
+        ->capture_default_str();
+    cmd->add_option("--preroll", o.preroll,
+                    "frames each render job processes before its chunk (default " +
+                        std::to_string(kDefaultFarmPreroll) + ")")
+        ->check(CLI::Range(0, 1000));
+    cmd->add_option("--fps", o.fps, "frame rate")->check(CLI::Range(0.001f, 10000.0f))->capture_default_str();
+    cmd->add_option("--cut", o.cuts,
+                    "a camera cut: exposure snaps and the histories (TAA, SSR, motion blur) restart there, "
+                    "and no preroll reaches back past it; repeatable")
+        ->take_all()
+        ->allow_extra_args(false);
+    cmd->add_option("--photopic", o.photopic,
+                    "the photopic command the jobs run (default: this program's path, which the nodes must "
+                    "see)");
+    cmd->add_option("--sbatch-option", o.sbatchOptions,
+                    "an #SBATCH line for every job, e.g. --sbatch-option=--partition=render; repeatable")
+        ->take_all()
+        ->allow_extra_args(false);
+    cmd->add_option("--image-option", o.imageOptions,
+                    "an option for each render's photopic image, e.g. --image-option=--bit-depth "
+                    "--image-option=16; repeatable")
+        ->take_all()
+        ->allow_extra_args(false);
+    cmd->add_flag("--submit", o.submit, "submit the job set with sbatch now (else print the commands)");
+    addSettingsOptions(cmd, o.settings, "stills (as photopic image)");
+    cmd->footer(
+        "Examples:\n"
+        "  photopic farm shot/f%04d.exr -o out/f%04d.png --jobs farm/ --chunk 100 --fps 24 "
+        "--settings look.json --submit\n"
+        "  photopic farm shot/f%04d.exr -o out/f%04d.png --jobs farm/ --sbatch-option=--partition=gpu");
+}
 
 int FarmCommand::run() {
     const FarmOptions& o = mOptions;

@@ -172,7 +172,7 @@ FrameImage writeFrameImage(const fs::path& path, FrameImage image, PngWriter& pn
             writeTiff(path, image.display);
         }
         break;
-    case DisplayFileFormat::Jpeg: // runImage refuses 16 bits for a JPEG before any work
+    case DisplayFileFormat::Jpeg: // photopic image refuses 16 bits for a JPEG before any work
         writeJpeg(path, image.display, encoding.jpegQuality);
         break;
     }

@@ -1,20 +1,21 @@
-// `photopic image`: inputs (files, patterns, layers, cameras), outputs planned and checked before the first
-// frame, the settings, the pipeline and the streamed sequence (decode, GPU, encode in flight together).
-#include "Commands.h"
+// `photopic image` (ImageCommand.h): its options, then run()'s steps, from the inputs to the streamed
+// sequence (decode, GPU, encode in flight together).
+#include "ImageCommand.h"
 
-#include "Bench.h"
-#include "Interrupt.h"
-#include "Progress.h"
-
+#include "CommandOptions.h"
 #include "FrameStream.h"
 #include "ImageInputs.h"
+#include "ImageSettings.h"
 #include "InputSequence.h"
+#include "Interrupt.h"
 #include "Outputs.h"
+#include "PlannedOutputs.h"
+#include "Progress.h"
+#include "RunFrames.h"
+#include "StageClock.h"
 #include "TelemetryCsv.h"
 
 #include "common/ExposureTrack.h"
-#include "common/SequencePattern.h"
-#include "core/Environment.h"
 #include "core/Log.h"
 #include "core/settings/SettingsJson.h"
 #include "gl/Context.h"
@@ -26,290 +27,20 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <bitset>
-#include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <thread>
-#include <tuple>
 
 namespace photopic::cli {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string lowerExtension(const fs::path& p) {
-    std::string ext = p.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
-
-} // namespace
-
-// A JPEG holds 8 bits per channel: a 16-bit display image bound for one is refused rather than narrowed
-// without a word.
-void requireBitDepthFits(const std::vector<fs::path>& outputs, int bitDepth, std::string_view source) {
-    for (const fs::path& out : outputs) {
-        const std::optional<DisplayFileFormat> format = displayFileFormatFor(out);
-        if (format && !holdsBitDepth(*format, bitDepth)) {
-            throw InputError(fmt::format("output {}: {} holds 8 bits per channel only, but {} is {}: write "
-                                         ".png or .tif for 16 bits, or use 8",
-                                         out.string(), displayFileFormatName(*format), source, bitDepth));
-        }
-    }
-}
-
-ImageF readInput(const fs::path& path, std::int64_t maxPixels) {
-    try {
-        return readImage(path, {.maxPixels = maxPixels});
-    } catch (const IoError& e) {
-        throw InputError(e.what());
-    }
-}
-
-void requireTextureFits(const fs::path& path, int width, int height) {
-    GLint limit = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &limit);
-    if (width > limit || height > limit) {
-        throw InputError(fmt::format("\"{}\": image is {}x{}, larger than this GPU's largest texture ({}x{}, "
-                                     "GL_MAX_TEXTURE_SIZE); scale it down first",
-                                     path.string(), width, height, limit, limit));
-    }
-}
-
-namespace {
-
-/// The same file, whether or not it exists yet (links and relative paths resolved).
-bool sameFile(const fs::path& a, const fs::path& b) {
-    std::error_code ec;
-    if (fs::equivalent(a, b, ec)) {
-        return true;
-    }
-    const fs::path ca = fs::weakly_canonical(a, ec);
-    return !ec && ca == fs::weakly_canonical(b, ec) && !ec;
-}
-
-/// Refuses outputs that would destroy an input or each other: an output that is one of the inputs, and two
-/// inputs whose results would land on the same file.
-void requireDistinctOutputs(const std::vector<fs::path>& inputs, const std::vector<fs::path>& outputs) {
-    for (std::size_t i = 0; i < outputs.size(); ++i) {
-        for (const fs::path& in : inputs) {
-            if (sameFile(outputs[i], in)) {
-                throw InputError(fmt::format("output {} is also an input; it would be overwritten: choose "
-                                             "another output",
-                                             outputs[i].string()));
-            }
-        }
-        for (std::size_t j = 0; j < i; ++j) {
-            if (sameFile(outputs[i], outputs[j])) {
-                throw InputError(fmt::format("inputs {} and {} would both be written to {}: give them "
-                                             "different names or process them separately",
-                                             inputs[j].string(), inputs[i].string(), outputs[i].string()));
-            }
-        }
-    }
-}
-
-/// `-o -`, a device or a pipe: one image, as PNG (or EXR into a pipe named .exr), written as it is encoded.
-fs::path streamOutput(const ImageOptions& options, std::size_t inputCount) {
-    const fs::path& out = options.output;
-    if (inputCount > 1) {
-        throw InputError(
-            fmt::format("output {} is a stream (standard output, a device or a pipe) and holds one "
-                        "image, not {}: name a folder (-o out/) or a pattern (-o out/f%04d.png)",
-                        out.string(), inputCount));
-    }
-    if (options.format != "png" && lowerExtension(out) != "." + options.format) {
-        throw InputError(fmt::format("output {}: a stream carries the display image as PNG; --format {} "
-                                     "needs a file or folder",
-                                     out.string(), options.format));
-    }
-    return out;
-}
-
-void requireExtension(const fs::path& out) {
-    const std::string ext = lowerExtension(out);
-    if (!displayFileFormatFor(out) && ext != ".exr") {
-        throw InputError(
-            fmt::format("output {}: unsupported extension '{}' (use .png, .tif, .tiff, .jpg or .jpeg for the "
-                        "display image, or .exr for the scene-referred image)",
-                        out.string(), ext));
-    }
-}
-
-/// The frame-number pattern of an output's file name (out/f%04d.png), if it holds one. A name with a '%' that
-/// is no frame number ("50%.png") is an ordinary name, as it was before patterns.
-std::optional<FramePattern> outputPattern(const fs::path& out) {
-    try {
-        return parseFramePattern(out.filename().string());
-    } catch (const std::invalid_argument&) {
-        return std::nullopt;
-    }
-}
-
-/// `-n`: every output must be new.
-void requireNew(const std::vector<fs::path>& paths) {
-    for (const fs::path& path : paths) {
-        std::error_code ec;
-        if (fs::exists(fs::symlink_status(path, ec))) {
-            throw InputError(fmt::format("output {} exists already (-n: never overwrite); remove it, choose "
-                                         "another output, or leave out -n",
-                                         path.string()));
-        }
-    }
-}
-
-/// Where runImage writes each input's result, every path checked before any work. The rules of -o: "-", a
-/// device or a pipe is a stream; a name with a frame number (out/f%04d.png) is a pattern; an extension
-/// means a file; a trailing '/', an existing folder, no extension or several inputs mean a folder. Several
-/// inputs and the name of an image file (out.png, not an existing folder) are refused.
-std::vector<fs::path> plannedOutputs(const ImageOptions& options, const std::vector<InputFile>& files,
-                                     RunOutputs& outputs) {
-    const fs::path& out = options.output;
-    if (isStreamOutput(out)) {
-        return {streamOutput(options, files.size())};
-    }
-    std::vector<fs::path> inputs;
-    for (const InputFile& f : files) {
-        inputs.push_back(f.path);
-    }
-    std::vector<fs::path> paths;
-    fs::path folder; // made before the outputs are checked; empty: none
-    if (const std::optional<FramePattern> pattern = outputPattern(out)) {
-        requireExtension(out);
-        for (const std::int64_t n : outputFrameNumbers(files)) {
-            paths.push_back(out.parent_path() / pattern->name(n));
-        }
-        folder = out.parent_path();
-    } else if (inputs.size() > 1 && !fs::is_directory(out) &&
-               (displayFileFormatFor(out) || lowerExtension(out) == ".exr")) {
-        // A name like out.png is one image; a folder of that name, made silently, is not what it asked for.
-        throw InputError(fmt::format("output {} names one image file, and there are {} inputs: name a folder "
-                                     "(-o out/) or a pattern (-o out/f%04d.png)",
-                                     out.string(), inputs.size()));
-    } else if (inputs.size() > 1 || fs::is_directory(out) || lowerExtension(out).empty()) {
-        for (const fs::path& in : inputs) {
-            paths.push_back(out / (in.stem().string() + "." + options.format));
-        }
-        folder = out;
-    } else {
-        requireExtension(out);
-        paths.push_back(out);
-    }
-    requireDistinctOutputs(inputs, paths);
-    if (options.noOverwrite) {
-        requireNew(paths);
-    }
-    if (!folder.empty()) {
-        outputs.makeFolder(folder);
-    }
-    for (const fs::path& path : paths) {
-        RunOutputs::requireFile(path);
-    }
-    return paths;
-}
-
-} // namespace
-
-std::unique_ptr<Pipeline> makeImagePipeline(const PipelineCreateInfo& createInfo) {
-    try {
-        return std::make_unique<Pipeline>(createInfo);
-    } catch (const IoError& e) { // the metering mask named in the settings
-        throw InputError(fmt::format("autoExposure.mask.path: {}", e.what()));
-    }
-}
-
-Settings imageSettings(const ImageOptions& options) {
-    // Photographs get the stills look unless --preset or the settings file names another. An image has no
-    // lighting stage to hand ambient occlusion to, so it multiplies the scene colour unless the settings
-    // say otherwise: no look sets ssao.apply (Settings::applyLook), so lighting over this base is the user's.
-    Settings base = Settings::stills();
-    base.ssao.apply = AoApply::Multiply;
-    Settings settings = resolveSettings(options.settings, base);
-    const bool lightingAsked = settings.ssao.apply == AoApply::Lighting;
-    if (options.bitDepth) {
-        settings.output.bitDepth = *options.bitDepth;
-    }
-    // Said in the CLI's words; the keys are the pipeline's own, so its host-API wording stays unsaid.
-    if (settings.ssao.enabled && lightingAsked) {
-        warnOnce("ssao.no-lighting",
-                 "ssao.apply=lighting: an image has no lighting stage to hand ambient occlusion to, so none "
-                 "is applied; ssao.apply=multiply (photopic image's default) multiplies the colour by it");
-    }
-    if (settings.contactShadows.enabled) {
-        warnOnce("contactShadows.no-lighting",
-                 "contactShadows.enabled: contact shadows darken a renderer's sun term as it lights the "
-                 "scene, and an image's sun is already in its colour, so photopic image cannot apply them");
-    }
-    return settings;
-}
-
-namespace {
-
-/// The setting that turns on the effect a data view shows, for the error of a view that could not be made.
-const char* debugViewSwitch(DebugView view) {
-    switch (view) {
-    case DebugView::Ao:
-        return "ssao.enabled=true";
-    case DebugView::Coc:
-        return "dof.enabled=true";
-    case DebugView::Ssr:
-        return "ssr.enabled=true";
-    case DebugView::VelocityTiles:
-        return "motionBlur.enabled=true";
-    case DebugView::VolumetricLight:
-        return "volumetricLight.enabled=true";
-    case DebugView::TaaHistoryWeight:
-    case DebugView::Disocclusion:
-        return "aa.mode=taa";
-    case DebugView::ContactShadows:
-    case DebugView::ContactShadowSteps:
-        return "a host's lighting stage (photopic scene; an image has none)";
-    default:
-        return nullptr;
-    }
-}
-
-/// A debug view the frame cannot make is an error naming what it lacks, not the plain image the pipeline
-/// would show instead.
-void requireDebugViewMade(const Pipeline& pipeline, const Settings& settings, const fs::path& input) {
-    if (settings.debug.view == DebugView::None)
-        return;
-    for (const SkippedPass& skipped : pipeline.status().skipped) {
-        if (skipped.pass != "debug view")
-            continue;
-        std::string missing;
-        for (const std::string& name : skipped.missing)
-            missing += (missing.empty() ? "" : ", ") + name;
-        const char* effect = debugViewSwitch(settings.debug.view);
-        throw InputError(fmt::format(
-            "--debug {}: {} gives the view no {}{}", debugViewNames()[std::size_t(settings.debug.view)],
-            input.string(), missing, effect ? fmt::format(" (it shows what {} makes)", effect) : ""));
-    }
-}
-
-/// The OpenColorIO display/view transform when --ocio-* asks for it, its config and names checked before
-/// any output exists. It makes display images, so every output must be one (PNG, TIFF, JPEG).
-std::optional<OcioDisplay> ocioDisplayFor(const ImageOptions& options) {
-    if (!options.ocio.requested()) {
-        return std::nullopt;
-    }
-    if (lowerExtension(options.output) == ".exr" || options.format == "exr") {
-        throw InputError(
-            fmt::format("output {}: --ocio-display/--ocio-view make the display image (PNG, TIFF, JPEG); "
-                        "an EXR output holds the scene-referred image, which they do not change",
-                        options.output.string()));
-    }
-    OcioDisplay ocio(options.ocio);
-    logInfo("display image: {}", ocio.description());
-    return ocio;
-}
 
 /// Starts reading back what `out` takes from the frame just processed (gl/TextureReadback.h): the
 /// scene-referred colour for an EXR output or an OCIO display, else the display image at `bitDepth`.
@@ -379,344 +110,427 @@ std::FILE* consoleFor(const ImageOptions& options) {
     return imageToStdout || telemetryToStdout ? stderr : stdout;
 }
 
-/// `-n`: the telemetry CSV and the --write-aux files must be new too.
-void requireNewSideOutputs(const ImageOptions& options, const std::vector<fs::path>& inputs) {
-    std::vector<fs::path> paths;
-    if (!options.telemetry.empty()) {
-        paths.push_back(options.telemetry);
-    }
-    for (const fs::path& in : inputs) {
-        if (!options.writeAux.empty()) {
-            paths.push_back(options.writeAux / (in.stem().string() + ".aux.exr"));
-        }
-    }
-    requireNew(paths);
-}
-
-/// The anti-aliasing an image run cannot do, turned off with one warning that says why and what runs
-/// instead (SMAA under taa+smaa, else FXAA when its switch is on, else nothing): TAA gathers each pixel over
-/// earlier frames, and a single image has none; SSAA renders each frame several times, which only the
-/// renderer that made the image could.
-void dropUnavailableAa(Settings& settings, std::size_t inputCount) {
-    const AntiAliasing asked = settings.antiAliasing();
-    std::string why;
-    if (asked == AntiAliasing::Ssaa) {
-        why = "SSAA renders each frame several times, which only the renderer that made an image can do, so "
-              "it is off for images";
-    } else if (settings.temporalAntiAliasing() && inputCount == 1) {
-        why = "a single image has no earlier frames for TAA to gather, so TAA is off for it";
-    } else {
-        return;
-    }
-    settings.aa.mode = asked == AntiAliasing::TaaSmaa ? AntiAliasing::Smaa : AntiAliasing::None;
-    settings.taa.enabled = false;
-    const AntiAliasing now = settings.antiAliasing();
-    logWarning("aa.mode {}: {}; {}", antiAliasingNames()[std::size_t(asked)], why,
-               now == AntiAliasing::None
-                   ? std::string("no anti-aliasing runs (aa.mode smaa or fxaa anti-alias images)")
-                   : fmt::format("{} runs", antiAliasingNames()[std::size_t(now)]));
-}
-
-/// Where a sequence run's main thread spends each frame, and how long each frame's decode took on the thread
-/// that decoded it, printed at the debug level (-v) once the run ends: the medians tell a user (and the
-/// CLI's throughput work) whether decode, the upload, the GPU, the read-back or the PNG encode bounds the
-/// rate.
-class StageClock {
-public:
-    enum Stage { DecodeWait, Upload, Process, ReadBack, WriteWait, Decode, kStages };
-
-    StageClock()
-        : mLast(std::chrono::steady_clock::now())
-        , mBegin(mLast) {}
-
-    /// Charges the time since the last mark to `stage`.
-    void mark(Stage stage) {
-        const auto now = std::chrono::steady_clock::now();
-        mSamples[stage].push_back(std::chrono::duration<double, std::milli>(now - mLast).count());
-        mLast = now;
-    }
-
-    /// A time measured elsewhere (`Decode`: on the thread that decoded the frame).
-    void add(Stage stage, double ms) { mSamples[stage].push_back(ms); }
-
-    /// Restarts the clock without charging anything (the set-up before the first frame).
-    void restart(const char* what) {
-        const auto now = std::chrono::steady_clock::now();
-        logDebug("image: {} {:.1f} ms", what, std::chrono::duration<double, std::milli>(now - mLast).count());
-        mLast = now;
-        mBegin = now;
-    }
-
-    void report(std::size_t frames) const {
-        static constexpr const char* kNames[kStages] = {
-            "waiting for decode", "upload", "process", "read-back", "waiting for encode", "decode"};
-        std::string line;
-        for (int s = 0; s < kStages; ++s) {
-            if (mSamples[s].empty()) {
-                continue;
-            }
-            // The decode is timed on the thread that decodes (the main thread only in a serial run).
-            line += fmt::format("{}{} {:.2f}",
-                                line.empty()  ? ""
-                                : s == Decode ? "; "
-                                              : ", ",
-                                kNames[s], median(mSamples[s]));
-        }
-        const double total =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mBegin).count();
-        logDebug("image: {} frames in {:.1f} ms ({:.2f} ms a frame, the last encodes included); medians per "
-                 "frame, ms: {} (on the decoding thread)",
-                 frames, total, frames > 0 ? total / double(frames) : 0.0, line);
-    }
-
-private:
-    std::chrono::steady_clock::time_point mLast;
-    std::chrono::steady_clock::time_point mBegin;
-    std::vector<double> mSamples[kStages];
-};
-
-/// The frames a run processes: --preroll's (processed, not written), then the ones it writes, each with its
-/// frame number, which is its time (FrameTime::frameIndex, the telemetry's frame column): a frame renders the
-/// same whichever chunk of its sequence it is run in.
-struct RunFrames {
-    std::vector<fs::path> inputs;
-    std::vector<std::int64_t> numbers;
-    std::size_t prerolled = 0;    ///< the first `prerolled` inputs are not written
-    std::uint64_t firstIndex = 0; ///< the first input's place in its sequence (Halton jitter)
-    /// Each input's own frame number, preroll included (inputFrameNumbers): what a camera track is keyed by.
-    std::map<fs::path, std::int64_t> frameNumbers;
-};
-
-RunFrames runFrames(const ImageOptions& options, const std::vector<InputFile>& written) {
-    std::vector<InputFile> all = prerollInputs(options, written, options.preroll);
-    RunFrames run;
-    run.prerolled = all.size();
-    all.insert(all.end(), written.begin(), written.end());
-    for (const InputFile& f : all) {
-        run.inputs.push_back(f.path);
-    }
-    run.numbers = outputFrameNumbers(all);
-    run.frameNumbers = inputFrameNumbers(all);
-    if (const std::optional<std::int64_t> start = sequenceStart(options); start && all.front().frame) {
-        run.firstIndex = std::uint64_t(*all.front().frame - *start);
-    }
-    return run;
-}
-
-/// --exposure-track: the track, checked to hold every frame the run processes before any work.
-std::optional<ExposureTrack> exposureTrackFor(const ImageOptions& options, const RunFrames& run) {
-    if (options.exposureTrack.empty()) {
-        return std::nullopt;
-    }
-    ExposureTrack track;
-    try {
-        track = readExposureTrack(options.exposureTrack);
-    } catch (const std::invalid_argument& e) {
-        throw InputError(fmt::format("--exposure-track: {}", e.what()));
-    }
-    for (const std::int64_t n : run.numbers) {
-        if (track.find(n) == nullptr) {
-            throw InputError(fmt::format("--exposure-track {}: frame {} is not in the track (it holds frames "
-                                         "{} to {}): plan the whole sequence with photopic expose",
-                                         options.exposureTrack.string(), n, track.frames.front().frame,
-                                         track.frames.back().frame));
-        }
-    }
-    if (std::abs(track.fps - options.fps) > 1e-3f * options.fps) {
-        logWarning(
-            "--exposure-track {} was planned at {} fps and this run is at {} fps (--fps): the exposures "
-            "are the track's, but motion blur and the time column follow --fps",
-            options.exposureTrack.string(), track.fps, options.fps);
-    }
-    return track;
-}
-
-/// A preroll never reaches back past a cut of the track: the histories start again at the cut, so the frames
-/// before it would change nothing that is written.
-void trimPrerollAtCut(RunFrames& run, const ExposureTrack& track) {
-    std::size_t from = 0;
-    for (std::size_t k = 1; k <= run.prerolled && k < run.numbers.size(); ++k) {
-        if (track.find(run.numbers[k])->cut) {
-            from = k;
-        }
-    }
-    run.inputs.erase(run.inputs.begin(), run.inputs.begin() + std::ptrdiff_t(from));
-    run.numbers.erase(run.numbers.begin(), run.numbers.begin() + std::ptrdiff_t(from));
-    run.prerolled -= from;
-    run.firstIndex += from;
-}
-
 } // namespace
 
-int runImage(const ImageOptions& options) {
-    const std::vector<InputFile> files = expandInputs(options);
-    const AovRequest aovs = aovRequest(options.aovPreset, options.layer, options.aovs);
-    const LensOverride lens = options.lens.empty() ? LensOverride{} : parseLensOverride(options.lens);
-    if (options.info) {
-        std::vector<fs::path> inputs;
-        for (const InputFile& f : files) {
-            inputs.push_back(f.path);
-        }
-        return runImageInfo(inputs, options.camera, aovs, inputFrameNumbers(files));
-    }
-    if (options.output.empty()) {
-        throw InputError("image: an output is required (-o FILE, FOLDER/, PATTERN or -), or --info");
-    }
-    RunFrames run = runFrames(options, files);
-    // A camera track covers every frame the run reads, preroll included, or nothing runs.
-    const std::optional<CameraTrack> cameras =
-        options.camera.empty() ? std::nullopt : std::optional<CameraTrack>(loadCameraTrack(options.camera));
-    if (cameras) {
-        for (const fs::path& input : run.inputs)
-            (void)cameras->at(frameNumberOf(run.frameNumbers, input), input);
-    }
-    const std::optional<ExposureTrack> track = exposureTrackFor(options, run);
-    if (track) {
-        trimPrerollAtCut(run, *track);
-    }
-    const std::vector<fs::path>& inputs = run.inputs;
-    Settings settings = imageSettings(options);
-    const std::optional<OcioDisplay> ocio = ocioDisplayFor(options);
-    std::FILE* const console = consoleFor(options);
-    // Every output is checked before any work; a run that fails takes back what it wrote, the frames it
-    // had already written included.
-    RunOutputs outputs;
-    const std::vector<fs::path> outPaths = plannedOutputs(options, files, outputs);
-    requireBitDepthFits(outPaths, settings.output.bitDepth,
-                        options.bitDepth ? "--bit-depth" : "the settings' output.bitDepth");
-    const std::vector<fs::path> written(inputs.begin() + std::ptrdiff_t(run.prerolled), inputs.end());
-    if (options.noOverwrite) {
-        requireNewSideOutputs(options, written);
-    }
-    if (!options.writeAux.empty()) {
-        outputs.makeFolder(options.writeAux);
-    }
-    dropUnavailableAa(settings, inputs.size()); // warned once the outputs are known to be fine
-    const float dt = 1.0f / options.fps;
+/// What one run holds, in the order it is made (and released in reverse: the writes and the GL objects
+/// before the context, the outputs taken back last unless committed).
+struct ImageCommand::Run {
+    std::vector<InputFile> files;
+    AovRequest aovs;
+    LensOverride lens;
+    RunFrames frames;
+    std::optional<CameraTrack> cameras;
+    std::optional<ExposureTrack> track;
+    Settings settings;
+    std::optional<OcioDisplay> ocio;
+    std::FILE* console = stdout;
+    /// Every output is checked before any work; a run that fails takes back what it wrote, the frames it
+    /// had already written included.
+    std::optional<RunOutputs> outputs;
+    std::vector<fs::path> outPaths;
+    std::vector<fs::path> written; ///< the inputs whose results are written (the preroll's are not)
+    float dt = 0;
     std::optional<TelemetryCsv> telemetry;
-    if (!options.telemetry.empty()) {
-        telemetry.emplace(options.telemetry, dt, std::vector<std::string>{});
-        telemetry->skipFramesBefore(std::uint64_t(run.numbers[run.prerolled]));
-    }
-    const int inFlight = options.inFlight > 0 ? options.inFlight : defaultFramesInFlight();
-    const int allCores = int(std::max(std::thread::hardware_concurrency(), 1u));
-    setExrThreads(options.decodeThreads >= 0 ? options.decodeThreads : inFlight > 1 ? allCores : 0);
-    InputDecoder decoder(cameras, options.jitter == "halton" ? settings.temporal.jitterCycle : 0,
-                         options.maxPixels);
-    decoder.setFrameNumbers(run.frameNumbers);
-    decoder.setLens(lens);
-    decoder.setFirstIndex(run.firstIndex);
-    decoder.setAovs(aovs);
+    int inFlight = 0;
+    std::optional<InputDecoder> decoder;
     StageClock clock;
-    FrameReader reader(decoder, inputs, framesDecodedAhead(inFlight));
-    const DecodedFrame& first = reader.next(); // a bad first input fails before a GL context is made
-    clock.restart("first decode");
-
-    HeadlessContext context(commandContext());
-    requireTextureFits(inputs.front(), first.width(), first.height()); // before any GL object
-    const std::unique_ptr<Pipeline> pipeline = makeImagePipeline(
-        {.settings = settings, .forceLdr = options.forceLdr, .keepTelemetryHistory = telemetry.has_value()});
-    if (options.writeAux.empty()) { // which writes every layer
-        readOnlyLayersRead(decoder, *pipeline, first);
-    }
-    reader.decodeAhead();
-    InputTextures textures; // created for the first frame, re-uploaded for the others
-    // On the HDR path the colour input is read only by the sanitize pass's texel fetches, so a half EXR's
-    // colour can stay half on the GPU (16 MB less at 1080p, same values).
-    const bool hdrPath = pipeline->status().path == ColorPath::Hdr;
-    Progress progress("image", files.size());
-    FrameWriter writer(outputs, pendingWrites(inFlight),
-                       {.bitDepth = settings.output.bitDepth, .jpegQuality = options.jpegQuality});
-    // Each frame's output is read back one frame late: its read starts once it is processed and finishes
-    // once the next frame is uploaded, so the GPU ends the frame and copies it out while the CPU waits for
-    // the next decode and fills the upload buffer.
-    TextureReadback readback(1, "cli.output");
+    std::optional<FrameReader> reader;
+    std::optional<HeadlessContext> context;
+    std::unique_ptr<Pipeline> pipeline;
+    std::optional<InputTextures> textures; ///< created for the first frame, re-uploaded for the others
+    bool hdrPath = false;
+    std::optional<Progress> progress;
+    std::optional<FrameWriter> writer;
+    /// Each frame's output is read back one frame late: its read starts once it is processed and finishes
+    /// once the next frame is uploaded, so the GPU ends the frame and copies it out while the CPU waits for
+    /// the next decode and fills the upload buffer.
+    std::optional<TextureReadback> readback;
     struct Processed {
         std::size_t index; ///< of the outputs
         std::chrono::steady_clock::time_point start;
         Extent size;
     };
     std::optional<Processed> processed;
-    const auto writeProcessed = [&] {
-        const fs::path& out = outPaths[processed->index];
-        FrameImage image = writer.storage();
-        finishReadBack(readback, out, settings.output.bitDepth, ocio ? &*ocio : nullptr, image);
-        clock.mark(StageClock::ReadBack);
-        writer.write(out, std::move(image),
-                     writtenLine(written[processed->index], out, processed->size, processed->start, progress,
-                                 console));
-        clock.mark(StageClock::WriteWait);
-        processed.reset();
-    };
-    clock.restart("GL context and pipeline");
+};
+
+ImageCommand::ImageCommand(CLI::App& parent)
+    : Command(parent.add_subcommand("image", "process HDR images (EXR, HDR, PNG) into PNG, TIFF or JPEG "
+                                             "(display) or EXR (scene-referred, before tone mapping)")) {
+    addFileOptions();
+    addFormatOptions();
+    addRendererOptions();
+    addSequenceOptions();
+}
+
+ImageCommand::~ImageCommand() = default;
+
+/// The inputs, -o and whether it may overwrite, --frames and --start-number.
+void ImageCommand::addFileOptions() {
+    CLI::App* cmd = &app();
+    ImageOptions& o = mOptions;
+    cmd->add_option(
+           "inputs", o.inputs,
+           "input images, or frame-numbered patterns when no such file exists: f%04d.exr (zero padded, "
+           "as ffmpeg), f.####.exr (one # a digit), f@.exr (unpadded); several are frames of a sequence, "
+           "in natural order (f9 before f10)")
+        ->required();
+    cmd->add_option(
+           "-o,--output", o.output,
+           "where results go, required unless --info: an extension means a file (.png, .tif, .tiff, "
+           ".jpg, .jpeg: the display image; .exr: scene-referred); a trailing '/', an existing folder or "
+           "no extension means a folder (NAME.png, --format), and several inputs need one (or a pattern); "
+           "a frame number means a pattern (out/f%04d.png: each input's frame number, or 0, 1, ... when "
+           "the inputs carry none); '-', a device or a pipe is streamed (one input, PNG). An output that "
+           "is an input, or that two inputs would share, is refused. Existing files are replaced "
+           "(atomically) unless -n")
+        ->check(kOutputPath);
+    auto* noOverwrite = cmd->add_flag("-n,--no-overwrite", o.noOverwrite,
+                                      "never overwrite: an output that exists is refused (exit 2) "
+                                      "before any work, like ffmpeg -n");
+    cmd->add_flag_callback(
+           "-y,--overwrite", [] {}, "replace existing outputs (the default; like ffmpeg -y)")
+        ->excludes(noOverwrite);
+    auto* frames = cmd->add_option("--frames", o.frames,
+                                   "frames A-B of a pattern input, inclusive, each of which must exist "
+                                   "(1001-1100)");
+    cmd->add_option("--start-number", o.startNumber,
+                    "a pattern input's first frame (like ffmpeg -start_number); default: the lowest "
+                    "that exists. Every frame from it on that exists is taken")
+        ->check(CLI::NonNegativeNumber)
+        ->excludes(frames);
+}
+
+/// What the outputs are written as, the frame rate, the telemetry, --info.
+void ImageCommand::addFormatOptions() {
+    CLI::App* cmd = &app();
+    ImageOptions& o = mOptions;
+    cmd->add_option("--format", o.format, "file type written into an output folder")
+        ->check(CLI::IsMember(kFrameFormats))
+        ->capture_default_str();
+    addDisplayEncodingOptions(cmd, o.bitDepth, o.jpegQuality);
+    cmd->add_option("--fps", o.fps, "frame rate of a sequence")->check(CLI::Range(0.001f, 10000.0f));
+    cmd->add_flag("--force-ldr", o.forceLdr, "run the LDR (RGBA8) path");
+    cmd->add_option("--telemetry", o.telemetry,
+                    "write exposure telemetry as CSV, one row per frame (frame,time_s,measured_luma,"
+                    "target_log2,applied_log2,exposure,...)")
+        ->check(kOutputPath);
+    cmd->add_flag("--info", o.info,
+                  "list each input's channels and attributes and what each feeds (depth, normals, motion, "
+                  "camera); no rendering");
+}
+
+/// Cameras, lens, auxiliary outputs, jitter, channels, settings, OpenColorIO and --max-pixels.
+void ImageCommand::addRendererOptions() {
+    CLI::App* cmd = &app();
+    ImageOptions& o = mOptions;
+    cmd->add_option("--camera", o.camera,
+                    "camera JSON for inputs without worldToCamera/worldToNDC: one camera, or a track of one "
+                    "per frame number ({\"frames\": {\"1001\": {...}}}, as tools/blender/photopic_camera.py "
+                    "writes it); a frame the track lacks is an error (docs/camera-json.md)")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--lens", o.lens,
+                    "lens values that replace the file's or the camera's: fNumber=N,focus=D,shutter=DEG "
+                    "(any of them), e.g. --lens fNumber=2.8,focus=3.5");
+    cmd->add_option("--write-aux", o.writeAux,
+                    "write each frame's decoded depth (linear view), normals (view space) and motion (UV, "
+                    "y up) as DIR/NAME.aux.exr")
+        ->check(kOutputPath);
+    cmd->add_option("--jitter", o.jitter,
+                    "how a sequence's frames were jittered, for TAA and the motion unjitter: attribute (the "
+                    "EXR `jitter` attribute, pixels, x right, y down; none when absent) or halton "
+                    "(Photopic's Halton(2,3) from index 1, as Pipeline::beginFrame hands it out)")
+        ->check(CLI::IsMember({"attribute", "halton"}));
+    addChannelOptions(cmd, o.aovPreset, o.layer, o.aovs);
+    addSettingsOptions(cmd, o.settings, "stills");
+    addOcioOptions(cmd, o.ocio);
+    addMaxPixelsOption(cmd, o.maxPixels);
+}
+
+/// How a sequence streams (frames in flight, decode threads), --exposure-track and --preroll; the examples.
+void ImageCommand::addSequenceOptions() {
+    CLI::App* cmd = &app();
+    ImageOptions& o = mOptions;
+    cmd->add_option(
+           "--frames-in-flight", o.inFlight,
+           "frames of a sequence between decode and write at once: 1 decodes, processes and writes "
+           "each frame before the next; more decode the next frame (from 4 on, the next two) and write "
+           "earlier ones on other threads (same outputs, bounded memory); default 3 with up to 4 cores, "
+           "else half the cores, at most 8")
+        ->check(CLI::Range(1, 16));
+    cmd->add_option("--decode-threads", o.decodeThreads,
+                    "threads that decode each EXR frame's chunks (OpenEXR's thread pool): 0 decodes on the "
+                    "thread that reads the frame; default every core, or 0 with --frames-in-flight 1; the "
+                    "pixels are the same whatever the count")
+        ->check(CLI::Range(0, 256));
+    cmd->add_option(
+           "--exposure-track", o.exposureTrack,
+           "each frame's auto exposure from a plan of the whole sequence (photopic expose) instead of "
+           "this run's adaptation, so a chunk renders the single run's frames (docs/farm.md)")
+        ->check(CLI::ExistingFile);
+    cmd->add_option(
+           "--preroll", o.preroll,
+           "process the N frames before the first of --frames without writing them, so TAA, the "
+           "reflections' and volumetric light's histories, the previous camera and exposure are warm "
+           "at a chunk's first frame (never past a cut of --exposure-track)")
+        ->check(CLI::Range(0, 1000));
+    cmd->footer(
+        "Examples:\n"
+        "  photopic image in.exr -o out.png --tonemap agx --exposure -1.5\n"
+        "  photopic image in.exr -o out.png --preset realtime    the scenes' soft glow instead of stills\n"
+        "  photopic image f*.exr -o dir/ --fps 24 --telemetry t.csv --set autoExposure.enabled=true\n"
+        "  photopic image shot/f%04d.exr --frames 1001-1100 -o out/f%04d.png -n\n"
+        "  photopic image shot/f%04d.exr --frames 1101-1200 --preroll 24 --exposure-track exposure.csv -o "
+        "out/f%04d.png\n"
+        "  photopic image in.exr -o out.tif --bit-depth 16\n"
+        "  photopic image in.exr -o out.jpg --jpeg-quality 90\n"
+        "  photopic image in.exr -o - | display -\n"
+        "  photopic image in.exr -o view.png --debug histogram\n"
+        "  photopic image render/frame_%04d.exr --camera track.json --set dof.enabled=true -o out/f%04d.png\n"
+        "  photopic image in.exr -o out.png --ocio-config config.ocio --ocio-display sRGB --ocio-view "
+        "Standard");
+}
+
+int ImageCommand::run() {
+    mRun = std::make_unique<Run>();
+    try {
+        inputs();
+        if (mOptions.info) {
+            const int code = printInfo();
+            mRun.reset();
+            return code;
+        }
+        if (mOptions.output.empty()) {
+            throw InputError("image: an output is required (-o FILE, FOLDER/, PATTERN or -), or --info");
+        }
+        frames();
+        settings();
+        outputs();
+        pipeline();
+        stream();
+        finish();
+    } catch (...) {
+        mRun.reset(); // the outputs taken back before the error is reported
+        throw;
+    }
+    mRun.reset();
+    return kOk;
+}
+
+void ImageCommand::inputs() {
+    Run& r = *mRun;
+    r.files = expandInputs(mOptions);
+    r.aovs = aovRequest(mOptions.aovPreset, mOptions.layer, mOptions.aovs);
+    r.lens = mOptions.lens.empty() ? LensOverride{} : parseLensOverride(mOptions.lens);
+}
+
+int ImageCommand::printInfo() const {
+    std::vector<fs::path> inputs;
+    for (const InputFile& f : mRun->files) {
+        inputs.push_back(f.path);
+    }
+    return runImageInfo(inputs, mOptions.camera, mRun->aovs, inputFrameNumbers(mRun->files));
+}
+
+void ImageCommand::frames() {
+    Run& r = *mRun;
+    r.frames = runFrames(mOptions, r.files);
+    // A camera track covers every frame the run reads, preroll included, or nothing runs.
+    if (!mOptions.camera.empty()) {
+        r.cameras = loadCameraTrack(mOptions.camera);
+        for (const fs::path& input : r.frames.inputs)
+            (void)r.cameras->at(frameNumberOf(r.frames.frameNumbers, input), input);
+    }
+    loadExposureTrack();
+    if (r.track) {
+        trimPrerollAtCut(r.frames, *r.track);
+    }
+}
+
+void ImageCommand::loadExposureTrack() {
+    if (mOptions.exposureTrack.empty()) {
+        return;
+    }
+    ExposureTrack track;
+    try {
+        track = readExposureTrack(mOptions.exposureTrack);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(fmt::format("--exposure-track: {}", e.what()));
+    }
+    for (const std::int64_t n : mRun->frames.numbers) {
+        if (track.find(n) == nullptr) {
+            throw InputError(fmt::format("--exposure-track {}: frame {} is not in the track (it holds frames "
+                                         "{} to {}): plan the whole sequence with photopic expose",
+                                         mOptions.exposureTrack.string(), n, track.frames.front().frame,
+                                         track.frames.back().frame));
+        }
+    }
+    if (std::abs(track.fps - mOptions.fps) > 1e-3f * mOptions.fps) {
+        logWarning(
+            "--exposure-track {} was planned at {} fps and this run is at {} fps (--fps): the exposures "
+            "are the track's, but motion blur and the time column follow --fps",
+            mOptions.exposureTrack.string(), track.fps, mOptions.fps);
+    }
+    mRun->track = std::move(track);
+}
+
+void ImageCommand::settings() {
+    Run& r = *mRun;
+    r.settings = imageSettings(mOptions);
+    r.ocio = ocioDisplayFor(mOptions);
+    r.console = consoleFor(mOptions);
+}
+
+void ImageCommand::outputs() {
+    Run& r = *mRun;
+    r.outputs.emplace();
+    r.outPaths = plannedOutputs(mOptions, r.files, *r.outputs);
+    requireBitDepthFits(r.outPaths, r.settings.output.bitDepth,
+                        mOptions.bitDepth ? "--bit-depth" : "the settings' output.bitDepth");
+    const std::vector<fs::path>& inputs = r.frames.inputs;
+    r.written.assign(inputs.begin() + std::ptrdiff_t(r.frames.prerolled), inputs.end());
+    if (mOptions.noOverwrite) {
+        requireNewSideOutputs(mOptions, r.written);
+    }
+    if (!mOptions.writeAux.empty()) {
+        r.outputs->makeFolder(mOptions.writeAux);
+    }
+    dropUnavailableAa(r.settings, inputs.size()); // warned once the outputs are known to be fine
+    r.dt = 1.0f / mOptions.fps;
+    if (!mOptions.telemetry.empty()) {
+        r.telemetry.emplace(mOptions.telemetry, r.dt, std::vector<std::string>{});
+        r.telemetry->skipFramesBefore(std::uint64_t(r.frames.numbers[r.frames.prerolled]));
+    }
+}
+
+void ImageCommand::pipeline() {
+    Run& r = *mRun;
+    r.inFlight = mOptions.inFlight > 0 ? mOptions.inFlight : defaultFramesInFlight();
+    const int allCores = int(std::max(std::thread::hardware_concurrency(), 1u));
+    setExrThreads(mOptions.decodeThreads >= 0 ? mOptions.decodeThreads : r.inFlight > 1 ? allCores : 0);
+    r.decoder.emplace(r.cameras, mOptions.jitter == "halton" ? r.settings.temporal.jitterCycle : 0,
+                      mOptions.maxPixels);
+    r.decoder->setFrameNumbers(r.frames.frameNumbers);
+    r.decoder->setLens(r.lens);
+    r.decoder->setFirstIndex(r.frames.firstIndex);
+    r.decoder->setAovs(r.aovs);
+    r.clock = StageClock();
+    r.reader.emplace(*r.decoder, r.frames.inputs, framesDecodedAhead(r.inFlight));
+    const DecodedFrame& first = r.reader->next(); // a bad first input fails before a GL context is made
+    r.clock.restart("first decode");
+
+    r.context.emplace(commandContext());
+    requireTextureFits(r.frames.inputs.front(), first.width(), first.height()); // before any GL object
+    r.pipeline = makeImagePipeline({.settings = r.settings,
+                                    .forceLdr = mOptions.forceLdr,
+                                    .keepTelemetryHistory = r.telemetry.has_value()});
+    if (mOptions.writeAux.empty()) { // which writes every layer
+        readOnlyLayersRead(*r.decoder, *r.pipeline, first);
+    }
+    r.reader->decodeAhead();
+}
+
+void ImageCommand::stream() {
+    Run& r = *mRun;
+    const std::vector<fs::path>& inputs = r.frames.inputs;
+    r.textures.emplace();
+    // On the HDR path the colour input is read only by the sanitize pass's texel fetches, so a half EXR's
+    // colour can stay half on the GPU (16 MB less at 1080p, same values).
+    r.hdrPath = r.pipeline->status().path == ColorPath::Hdr;
+    r.progress.emplace("image", r.files.size());
+    r.writer.emplace(
+        *r.outputs, pendingWrites(r.inFlight),
+        DisplayEncoding{.bitDepth = r.settings.output.bitDepth, .jpegQuality = mOptions.jpegQuality});
+    r.readback.emplace(1, "cli.output");
+    r.clock.restart("GL context and pipeline");
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         throwIfInterrupted();
-        const DecodedFrame& frame = reader.next();
-        clock.mark(StageClock::DecodeWait);
-        clock.add(StageClock::Decode, reader.decodeMs());
+        const DecodedFrame& frame = r.reader->next();
+        r.clock.mark(StageClock::DecodeWait);
+        r.clock.add(StageClock::Decode, r.reader->decodeMs());
         const auto start = std::chrono::steady_clock::now();
         const int width = frame.width();
         const int height = frame.height();
         requireTextureFits(inputs[i], width, height);
-        const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(run.numbers[i])};
-        if (track) {
-            const TrackFrame& planned = *track->find(run.numbers[i]);
-            if (planned.cut && i > 0) {
-                pipeline->reset(); // a cut of the plan: the histories start again there, as exposure did
-            }
-            pipeline->setExposureOverride(planned.appliedLog2);
+        const FrameTime time{.dt = r.dt, .frameIndex = std::uint64_t(r.frames.numbers[i])};
+        beginFrame(i, frame, time);
+        const bool writes = i >= r.frames.prerolled;
+        const FrameInputs frameInputs = r.textures->upload(frame, r.hdrPath);
+        if (writes && !mOptions.writeAux.empty()) {
+            r.outputs->wrote(writeAux(mOptions.writeAux, inputs[i], frame));
         }
-        if (frame.jittered) {
-            pipeline->beginFrame(time); // the renderer jittered this frame, as a two-stage host would
-        } else if (settings.temporalAntiAliasing() &&
-                   (!frame.motion.empty() || (!frame.depth.empty() && frame.camera))) {
-            // (Without motion, or depth and a camera to derive it, the pipeline skips TAA and says so.)
-            // Said in the CLI's words; the key is the pipeline's own, so its host-API wording stays unsaid.
-            warnOnce("taa.no-jitter",
-                     fmt::format("aa.mode {}: {} carries no `jitter` attribute and --jitter halton was not "
-                                 "given: its frames are taken as not jittered, so TAA filters the sequence "
-                                 "over time and cannot anti-alias its edges",
-                                 antiAliasingNames()[std::size_t(settings.antiAliasing())],
-                                 inputs[i].string()));
-        }
-        const bool writes = i >= run.prerolled;
-        const FrameInputs frameInputs = textures.upload(frame, hdrPath);
-        if (writes && !options.writeAux.empty()) {
-            outputs.wrote(writeAux(options.writeAux, inputs[i], frame));
-        }
-        reader.release(); // uploaded: the next frame decodes into its storage while this one is processed
-        clock.mark(StageClock::Upload);
-        if (processed) {
+        r.reader->release(); // uploaded: the next frame decodes into its storage while this one is processed
+        r.clock.mark(StageClock::Upload);
+        if (r.processed) {
             writeProcessed();
         }
-        const Texture& display = pipeline->execute(frameInputs, time);
-        requireDebugViewMade(*pipeline, settings, inputs[i]);
-        if (telemetry) {
-            telemetry->take(*pipeline, i, i + 1 == inputs.size());
+        const Texture& display = r.pipeline->execute(frameInputs, time);
+        requireDebugViewMade(*r.pipeline, r.settings, inputs[i]);
+        if (r.telemetry) {
+            r.telemetry->take(*r.pipeline, i, i + 1 == inputs.size());
         }
         if (writes) {
-            const std::size_t o = i - run.prerolled;
-            startReadBack(readback, *pipeline, display, outPaths[o], settings.output.bitDepth,
-                          ocio ? &*ocio : nullptr);
-            processed = Processed{o, start, {width, height}};
+            const std::size_t o = i - r.frames.prerolled;
+            startReadBack(*r.readback, *r.pipeline, display, r.outPaths[o], r.settings.output.bitDepth,
+                          r.ocio ? &*r.ocio : nullptr);
+            r.processed = Run::Processed{o, start, {width, height}};
         }
-        clock.mark(StageClock::Process);
+        r.clock.mark(StageClock::Process);
     }
-    if (processed) {
+}
+
+void ImageCommand::beginFrame(std::size_t i, const DecodedFrame& frame, const FrameTime& time) {
+    Run& r = *mRun;
+    if (r.track) {
+        const TrackFrame& planned = *r.track->find(r.frames.numbers[i]);
+        if (planned.cut && i > 0) {
+            r.pipeline->reset(); // a cut of the plan: the histories start again there, as exposure did
+        }
+        r.pipeline->setExposureOverride(planned.appliedLog2);
+    }
+    if (frame.jittered) {
+        r.pipeline->beginFrame(time); // the renderer jittered this frame, as a two-stage host would
+    } else if (r.settings.temporalAntiAliasing() &&
+               (!frame.motion.empty() || (!frame.depth.empty() && frame.camera))) {
+        // (Without motion, or depth and a camera to derive it, the pipeline skips TAA and says so.)
+        // Said in the CLI's words; the key is the pipeline's own, so its host-API wording stays unsaid.
+        warnOnce("taa.no-jitter",
+                 fmt::format("aa.mode {}: {} carries no `jitter` attribute and --jitter halton was not "
+                             "given: its frames are taken as not jittered, so TAA filters the sequence "
+                             "over time and cannot anti-alias its edges",
+                             antiAliasingNames()[std::size_t(r.settings.antiAliasing())],
+                             r.frames.inputs[i].string()));
+    }
+}
+
+void ImageCommand::writeProcessed() {
+    Run& r = *mRun;
+    const fs::path& out = r.outPaths[r.processed->index];
+    FrameImage image = r.writer->storage();
+    finishReadBack(*r.readback, out, r.settings.output.bitDepth, r.ocio ? &*r.ocio : nullptr, image);
+    r.clock.mark(StageClock::ReadBack);
+    r.writer->write(out, std::move(image),
+                    writtenLine(r.written[r.processed->index], out, r.processed->size, r.processed->start,
+                                *r.progress, r.console));
+    r.clock.mark(StageClock::WriteWait);
+    r.processed.reset();
+}
+
+void ImageCommand::finish() {
+    Run& r = *mRun;
+    if (r.processed) {
         writeProcessed();
     }
-    writer.finish();
-    clock.report(inputs.size());
-    progress.clear();
-    if (telemetry) {
-        telemetry->commit(files.size(), pipeline->droppedTelemetry());
-        outputs.wrote(options.telemetry);
+    r.writer->finish();
+    r.clock.report(r.frames.inputs.size());
+    r.progress->clear();
+    if (r.telemetry) {
+        r.telemetry->commit(r.files.size(), r.pipeline->droppedTelemetry());
+        r.outputs->wrote(mOptions.telemetry);
         if (statusLines())
-            std::fprintf(console, "telemetry -> %s (%zu frames)\n", options.telemetry.string().c_str(),
-                         files.size());
+            std::fprintf(r.console, "telemetry -> %s (%zu frames)\n", mOptions.telemetry.string().c_str(),
+                         r.files.size());
     }
-    outputs.commit();
-    return kOk;
+    r.outputs->commit();
 }
 
 } // namespace photopic::cli

@@ -90,6 +90,20 @@ public:
 private:
     /// What readLayers() was told last, under its lock.
     [[nodiscard]] ExrFrameReader::Layers layersRead();
+    /// An HDR or PNG file (or a missing one): colour only, through readImage's errors.
+    [[nodiscard]] DecodedFrame decodeColorOnly(const std::filesystem::path& path);
+    /// The EXR file into mFrame, its unread layers' storage given back.
+    void readExr(const std::filesystem::path& path);
+    /// mFrame's camera (its attributes, else the track's) into `out`, with --lens; returns the track's sun.
+    [[nodiscard]] std::optional<glm::vec3> takeCamera(const std::filesystem::path& path, DecodedFrame& out);
+    /// mFrame's depth (planar), object ids and normals (view space) into `out`, each skipped with a warning
+    /// where it needs a camera there is none of.
+    void takeDepthAndNormals(const std::filesystem::path& path, DecodedFrame& out);
+    /// The file's jitter attribute, else the Halton jitter's sample offset; none for an unjittered frame.
+    [[nodiscard]] std::optional<glm::vec2> frameJitter() const;
+    /// The file's sunDirection attribute, checked, else the track's.
+    [[nodiscard]] std::optional<glm::vec3> sunDirection(const std::filesystem::path& path,
+                                                        std::optional<glm::vec3> trackSun) const;
 
     ExrFrameReader mReader{ExrFrameReader::Color::HalvesWhenStored};
     /// The storage decode() reads into; its layers move out to the caller (normals and motion converted
@@ -132,6 +146,11 @@ public:
     [[nodiscard]] FrameInputs upload(const DecodedFrame& frame, bool halfTexture = false);
 
 private:
+    /// The upload slot, holding `bytes` at least, mapped for this frame's texels.
+    [[nodiscard]] std::byte* beginSlot(std::size_t bytes);
+    /// A layer this frame lacks gives its texture back.
+    void releaseMissingLayers(const DecodedFrame& frame);
+
     /// One. A frame's copies from the slot are queued before its passes, and the next frame is written
     /// there only once this one's passes are submitted and the next frame decoded: the wait is for the
     /// copies alone, which are done by then (on llvmpipe a copy is done when its call returns). A second
@@ -151,6 +170,9 @@ private:
 /// --aovs, --layer and --aov as the reader takes them; throws InputError naming a bad value.
 [[nodiscard]] AovRequest aovRequest(const std::string& preset, const std::string& layer,
                                     const std::vector<std::string>& overrides);
+
+/// Whether `path` starts as an OpenEXR file does (its magic number), whatever its name.
+[[nodiscard]] bool isExr(const std::filesystem::path& path);
 
 /// `photopic image --info`: the channels and attributes of each input and what each feeds under `aovs`.
 int runImageInfo(const std::vector<std::filesystem::path>& inputs, const std::filesystem::path& cameraJson,

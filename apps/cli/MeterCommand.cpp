@@ -1,7 +1,12 @@
+// `photopic meter` (MeterCommand.h).
+#include "MeterCommand.h"
+
+#include "CommandOptions.h"
 #include "SequenceCommands.h"
 
 #include "FrameStream.h"
 #include "ImageInputs.h"
+#include "ImageSettings.h"
 #include "InputSequence.h"
 #include "Interrupt.h"
 #include "Outputs.h"
@@ -57,26 +62,57 @@ std::string meterRow(const ExposureTelemetry& t, const AutoExposureSettings& ae,
 
 } // namespace
 
+MeterCommand::MeterCommand(CLI::App& parent)
+    : Command(parent.add_subcommand("meter",
+                                    "meter each frame of a sequence for photopic expose: one CSV row "
+                                    "per frame (the reading, the histogram's bins); chunks of a "
+                                    "sequence metered apart merge into the whole sequence's metering")) {
+    CLI::App* cmd = &app();
+    ImageOptions& o = mOptions;
+    addSequenceInputs(cmd, o);
+    cmd->add_option("-o,--output", o.output, "the meter CSV")->check(kOutputPath)->required();
+    cmd->add_option("--fps", o.fps, "frame rate (exposure.mode physical: the shutter angle)")
+        ->check(CLI::Range(0.001f, 10000.0f));
+    cmd->add_option("--camera", o.camera, "camera JSON or track for EXR inputs without camera attributes")
+        ->check(CLI::ExistingFile);
+    addChannelOptions(cmd, o.aovPreset, o.layer, o.aovs);
+    cmd->add_flag("--force-ldr", o.forceLdr, "run the LDR (RGBA8) path");
+    addSettingsOptions(cmd, o.settings, "stills (as photopic image)");
+    addMaxPixelsOption(cmd, o.maxPixels);
+    cmd->footer("Examples:\n"
+                "  photopic meter shot/f%04d.exr --frames 1001-1100 --settings look.json -o meter-1001.csv\n"
+                "  photopic meter shot/f%04d.exr --set autoExposure.metering=histogram -o meter.csv");
+}
+
 int MeterCommand::run() {
     if (mOptions.output.empty()) {
         throw InputError("meter: an output is required (-o meter.csv)");
     }
     const std::vector<InputFile> files = expandInputs(mOptions);
+    const Settings settings = meteringSettings(imageSettings(mOptions));
+    const AutoExposureSettings& ae = settings.autoExposure;
+    RunOutputs outputs; // a replaced meter file comes back, and a signal unwinds, if the run fails
+    AtomicFileWriter file = openCommandOutput("meter", mOptions.output);
+    file.write(meterCsvHeader(meteringDescription(ae), ae.metering == MeteringMode::Histogram));
+    meterFrames(files, settings, file);
+    file.commit();
+    outputs.commit();
+    if (statusLines())
+        std::printf("meter -> %s (%zu frames, %s metering)\n", mOptions.output.string().c_str(), files.size(),
+                    std::string(meteringModeNames()[std::size_t(ae.metering)]).c_str());
+    return kOk;
+}
+
+void MeterCommand::meterFrames(const std::vector<InputFile>& files, const Settings& settings,
+                               AtomicFileWriter& file) const {
     std::vector<fs::path> inputs;
     for (const InputFile& f : files) {
         inputs.push_back(f.path);
     }
     const std::vector<std::int64_t> numbers = outputFrameNumbers(files);
-    const Settings settings = meteringSettings(imageSettings(mOptions));
     const AutoExposureSettings& ae = settings.autoExposure;
-    const bool histogram = ae.metering == MeteringMode::Histogram;
     const bool physical = settings.exposure.mode == ExposureMode::Physical;
     const float dt = 1.0f / mOptions.fps;
-
-    RunOutputs outputs; // a replaced meter file comes back, and a signal unwinds, if the run fails
-    AtomicFileWriter file = openCommandOutput("meter", mOptions.output);
-    file.write(meterCsvHeader(meteringDescription(ae), histogram));
-
     InputDecoder decoder(
         mOptions.camera.empty() ? std::nullopt : std::optional<CameraTrack>(loadCameraTrack(mOptions.camera)),
         0, mOptions.maxPixels);
@@ -96,15 +132,6 @@ int MeterCommand::run() {
     Progress progress("meter", inputs.size());
     std::map<std::uint64_t, float> cameraLog2; // frame -> the camera's exposure, physical mode only
     std::uint64_t rows = 0;
-    const auto writeRows = [&] {
-        std::string text;
-        for (const ExposureTelemetry& t : pipeline->drainTelemetry()) {
-            text += meterRow(t, ae, cameraLog2[t.frame]);
-            cameraLog2.erase(t.frame);
-            ++rows;
-        }
-        file.write(text);
-    };
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         throwIfInterrupted();
         const DecodedFrame& frame = reader.next();
@@ -118,7 +145,7 @@ int MeterCommand::run() {
         pipeline->reset(); // each frame metered as the first of a shot: no history reaches its reading
         (void)pipeline->execute(frameInputs, time);
         if ((i + 1) % 64 == 0 || i + 1 == inputs.size()) {
-            writeRows();
+            rows += writeRows(*pipeline, ae, cameraLog2, file);
         }
         progress.advance();
     }
@@ -127,12 +154,19 @@ int MeterCommand::run() {
         throw std::runtime_error(fmt::format("meter: {} of {} frames came back ({} dropped)", rows,
                                              inputs.size(), pipeline->droppedTelemetry()));
     }
-    file.commit();
-    outputs.commit();
-    if (statusLines())
-        std::printf("meter -> %s (%zu frames, %s metering)\n", mOptions.output.string().c_str(),
-                    inputs.size(), std::string(meteringModeNames()[std::size_t(ae.metering)]).c_str());
-    return kOk;
+}
+
+std::uint64_t MeterCommand::writeRows(Pipeline& pipeline, const AutoExposureSettings& ae,
+                                      std::map<std::uint64_t, float>& cameraLog2, AtomicFileWriter& file) {
+    std::string text;
+    std::uint64_t rows = 0;
+    for (const ExposureTelemetry& t : pipeline.drainTelemetry()) {
+        text += meterRow(t, ae, cameraLog2[t.frame]);
+        cameraLog2.erase(t.frame);
+        ++rows;
+    }
+    file.write(text);
+    return rows;
 }
 
 } // namespace photopic::cli

@@ -1,68 +1,69 @@
-// `photopic settings --defaults / --check` and the settings every command resolves: a base, a preset's look,
-// the settings file, then the command line's shorthands and --set overrides, in that order.
-#include "Commands.h"
+// `photopic settings --defaults / --check / --markdown` (SettingsCommand.h).
+#include "SettingsCommand.h"
+
+#include "CommandOptions.h"
+#include "SettingsReference.h"
 
 #include "core/settings/SettingsJson.h"
 
-#include <fmt/format.h>
-
 #include <cstdio>
-#include <optional>
-#include <utility>
 
 namespace photopic::cli {
 
-namespace fs = std::filesystem;
-
-Settings presetLook(const std::string& name) {
-    std::optional<Settings> look = Settings::preset(name);
-    if (!look) {
-        throw InputError("--preset: " + unknownPresetMessage(name));
-    }
-    return *look;
+SettingsCommand::SettingsCommand(CLI::App& parent)
+    : Command(parent.add_subcommand(
+          "settings", "print the default settings, check a settings file or print the settings reference")) {
+    CLI::App& cmd = app();
+    auto* defaultsFlag = cmd.add_flag("--defaults", mDefaults, "print the full default JSON");
+    auto* checkOption = cmd.add_option("--check", mCheckFile, "validate FILE and list every issue");
+    auto* markdownFlag =
+        cmd.add_flag("--markdown", mMarkdown,
+                     "print the reference of every setting (key, type, default, range, meaning) as Markdown: "
+                     "docs/settings.md");
+    defaultsFlag->excludes(checkOption);
+    markdownFlag->excludes(defaultsFlag, checkOption);
+    cmd.add_option("--preset", mPreset,
+                   "with --defaults: the defaults with this look (" + joined(presetNames()) +
+                       "); with --check: the file over this look, as --preset reads it");
+    cmd.require_option(1, 2);
+    cmd.footer("Examples:\n"
+               "  photopic settings --defaults > mine.json\n"
+               "  photopic settings --defaults --preset stills   what photopic image starts from\n"
+               "  photopic settings --check mine.json\n"
+               "  photopic settings --markdown > docs/settings.md");
 }
 
-Settings resolveSettings(const SettingsSources& sources, Settings base) {
-    Settings settings = std::move(base);
-    if (!sources.preset.empty()) {
-        settings.applyLook(presetLook(sources.preset));
+int SettingsCommand::run() {
+    if (mMarkdown) {
+        return printMarkdown();
     }
-    if (!sources.file.empty()) {
-        // The command line's preset wins over the file's; the file's other keys still land on top of it.
-        settings = loadSettingsFile(sources.file, std::move(settings),
-                                    sources.preset.empty() ? DocumentPreset::Apply : DocumentPreset::Ignore);
+    if (!mDefaults && mCheckFile.empty()) {
+        throw InputError("settings: --defaults, --check FILE or --markdown is required");
     }
-    // The shorthands' errors name the option the user typed, not the --set it stands for.
-    if (!sources.tonemap.empty()) {
-        applySettingsOverride(settings, "tonemapping.mode=" + sources.tonemap,
-                              "--tonemap " + sources.tonemap);
-    }
-    if (sources.exposure) {
-        applySettingsOverride(settings, fmt::format("tonemapping.exposure={}", *sources.exposure),
-                              fmt::format("--exposure {}", *sources.exposure));
-    }
-    if (!sources.debugView.empty()) {
-        applySettingsOverride(settings, "debug.view=" + sources.debugView, "--debug " + sources.debugView);
-    }
-    for (const auto& o : sources.overrides) {
-        applySettingsOverride(settings, o);
-    }
-    return settings;
+    return mDefaults ? printDefaults() : check();
 }
 
-int runSettingsDefaults(const std::string& preset) {
-    std::fputs(settingsToJson(preset.empty() ? Settings{} : presetLook(preset)).c_str(), stdout);
+int SettingsCommand::printMarkdown() const {
+    if (!mPreset.empty()) {
+        throw InputError("settings: --markdown lists every preset; --preset does not apply");
+    }
+    std::fputs(settingsReferenceMarkdown().c_str(), stdout);
     return kOk;
 }
 
-int runSettingsCheck(const fs::path& file, const std::string& preset) {
+int SettingsCommand::printDefaults() const {
+    std::fputs(settingsToJson(mPreset.empty() ? Settings{} : presetLook(mPreset)).c_str(), stdout);
+    return kOk;
+}
+
+int SettingsCommand::check() const {
     // Throws SettingsError listing every issue (an unknown "preset" among them) -> exit 2.
     SettingsSources sources;
-    sources.preset = preset;
-    sources.file = file;
+    sources.preset = mPreset;
+    sources.file = mCheckFile;
     const Settings settings = resolveSettings(sources);
     (void)settings;
-    std::printf("%s: valid\n", file.string().c_str());
+    std::printf("%s: valid\n", mCheckFile.string().c_str());
     return kOk;
 }
 

@@ -94,43 +94,43 @@ Image8 contactSheet(const fs::path& folder, const std::vector<std::size_t>& keyF
     return makeContactSheet(tiles, 3, 320);
 }
 
-} // namespace
+/// What the walk's frames leave for the plot, the contact sheet and the summary: per frame only what they
+/// need (24 bytes and a brightness); the frames themselves go to disk.
+struct WalkRecord {
+    std::vector<TelemetrySample> samples;
+    std::vector<double> brightness; ///< mean sRGB of each frame's display image
+    AutoExposureSettings autoExposure;
+    int frames = 0;
+    int every = 1;
+};
 
-int runTabletopWalk(const TabletopWalkOptions& options) {
-    const auto begin = std::chrono::steady_clock::now();
-    const std::optional<Settings> look =
-        options.preset.empty() ? std::nullopt : std::optional<Settings>(presetLook(options.preset));
-    // Every output is checked before the first frame; a run that fails takes back what it wrote.
-    RunOutputs outputs;
-    const DemoFiles files = prepareDemoFiles(outputs, options.output, options.width, options.height,
-                                             options.fps, options.seconds);
-
+/// Renders the walk through the pipeline (subject metering on the GPU), writing its frame PNGs and
+/// telemetry.csv into `outputs`.
+WalkRecord renderWalk(const TabletopWalkOptions& options, const std::optional<Settings>& look,
+                      RunOutputs& outputs, Progress& progress) {
     HeadlessContext context(commandContext());
     TabletopScene scene;
     Settings settings = scene.defaultSettings(); // subject metering, the eye-lag defaults
     if (look) {
         settings.applyLook(*look);
     }
-    const AutoExposureSettings& ae = settings.autoExposure;
+    WalkRecord record;
+    record.autoExposure = settings.autoExposure;
     Pipeline pipeline({.settings = settings, .keepTelemetryHistory = true});
     scene.resize({options.width, options.height});
 
     const float dt = 1.0f / options.fps;
-    const int frames = std::max(1, int(std::lround(options.seconds * options.fps)));
-    const int every = std::max(1, options.frameEvery);
+    const int frames = record.frames = std::max(1, int(std::lround(options.seconds * options.fps)));
+    const int every = record.every = std::max(1, options.frameEvery);
     const fs::path telemetryPath = options.output / "telemetry.csv";
     TelemetryCsv telemetry(telemetryPath, dt, scene.telemetryColumns());
-    // Per frame only what the plot and the transition analysis need (24 bytes); the frames go to disk.
-    std::vector<TelemetrySample> samples;
-    std::vector<double> brightness;
-    samples.reserve(std::size_t(frames));
-    brightness.reserve(std::size_t(frames));
+    record.samples.reserve(std::size_t(frames));
+    record.brightness.reserve(std::size_t(frames));
     // The scene's columns: subject, world_x, world_y, screen_u, screen_v, outdoors.
     const auto addSample = [&](const ExposureTelemetry& t, const std::vector<double>& values) {
-        samples.push_back({float(t.frame) * dt, t.frameLuminance, t.targetLog2, t.appliedLog2,
-                           values.size() > 5 ? float(values[5]) : 0.0f});
+        record.samples.push_back({float(t.frame) * dt, t.frameLuminance, t.targetLog2, t.appliedLog2,
+                                  values.size() > 5 ? float(values[5]) : 0.0f});
     };
-    Progress progress("demo", std::size_t(frames));
     for (int i = 0; i < frames; ++i) {
         throwIfInterrupted();
         const FrameTime time{.dt = dt, .frameIndex = std::uint64_t(i)};
@@ -143,34 +143,77 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
             outputs.wroteSequenceItem();
             logDebug("frame {} -> {}", i, demoFramePath(options.output, std::size_t(i / every)).string());
         }
-        brightness.push_back(meanDisplay(display));
+        record.brightness.push_back(meanDisplay(display));
         telemetry.sceneValues(std::uint64_t(i), std::move(values));
         telemetry.take(pipeline, std::uint64_t(i), i + 1 == frames, addSample);
         progress.advance();
     }
-    const auto rendered = std::chrono::steady_clock::now();
     telemetry.commit(std::uint64_t(frames), pipeline.droppedTelemetry());
     outputs.wrote(telemetryPath);
+    return record;
+}
 
-    const std::vector<Transition> transitions = analyzeTransitions(samples, ae);
+/// The exposure plot and the contact sheet of the transitions' key frames.
+void writeWalkImages(const TabletopWalkOptions& options, const DemoFiles& files, const WalkRecord& record,
+                     const std::vector<Transition>& transitions, RunOutputs& outputs) {
     PlotSeries outdoors{"outdoors (0..1)", {40, 160, 60, 255}, {}, {}};
-    for (const TelemetrySample& s : samples) {
+    for (const TelemetrySample& s : record.samples) {
         outdoors.y.push_back(s.outdoors);
     }
     writePng(files.plot,
-             plotExposureTelemetry(samples, std::move(outdoors), 960, 420,
+             plotExposureTelemetry(record.samples, std::move(outdoors), 960, 420,
                                    "Tabletop walk: light under the token and the eye's exposure"));
     outputs.wrote(files.plot);
-    const std::vector<std::size_t> keyFrames = keyFrameIndices(transitions, samples.size());
+    const std::vector<std::size_t> keyFrames = keyFrameIndices(transitions, record.samples.size());
     if (!keyFrames.empty()) {
-        writePng(files.sheet, contactSheet(options.output, keyFrames, every, samples));
+        writePng(files.sheet, contactSheet(options.output, keyFrames, record.every, record.samples));
         outputs.wrote(files.sheet);
     }
+}
+
+/// What was written, each transition's summary and the times.
+void printWalkSummary(const TabletopWalkOptions& options, const WalkRecord& record,
+                      const std::vector<Transition>& transitions, const std::string& video, double renderS,
+                      double totalS) {
+    std::printf("tabletop walk: %d frames at %dx%d, %.3g fps, subject metering on the GPU -> %s\n",
+                record.frames, options.width, options.height, double(options.fps),
+                options.output.string().c_str());
+    std::printf("  files: %d frame PNGs, telemetry.csv, exposure_plot.png, contact_sheet.png, %s\n",
+                (record.frames + record.every - 1) / record.every, video.c_str());
+    for (const Transition& t : transitions) {
+        std::printf("  %s\n", describeTransition(t).c_str());
+        if (t.settled) {
+            std::printf("    frame brightness (mean sRGB): %.1f at the start -> %.1f settled\n",
+                        record.brightness[t.startIndex], record.brightness[t.settledIndex]);
+        }
+    }
+    if (transitions.empty()) {
+        std::printf("  no indoor/outdoor crossing in %.3g s\n", double(options.seconds));
+    }
+    std::printf("  time: %.1f s rendering, %.1f s in all\n", renderS, totalS);
+}
+
+} // namespace
+
+int runTabletopWalk(const TabletopWalkOptions& options) {
+    const auto begin = std::chrono::steady_clock::now();
+    const std::optional<Settings> look =
+        options.preset.empty() ? std::nullopt : std::optional<Settings>(presetLook(options.preset));
+    // Every output is checked before the first frame; a run that fails takes back what it wrote.
+    RunOutputs outputs;
+    const DemoFiles files = prepareDemoFiles(outputs, options.output, options.width, options.height,
+                                             options.fps, options.seconds);
+    const int frames = std::max(1, int(std::lround(options.seconds * options.fps)));
+    Progress progress("demo", std::size_t(frames));
+    const WalkRecord record = renderWalk(options, look, outputs, progress);
+    const auto rendered = std::chrono::steady_clock::now();
+    const std::vector<Transition> transitions = analyzeTransitions(record.samples, record.autoExposure);
+    writeWalkImages(options, files, record, transitions, outputs);
     if (options.video) {
         progress.note(fmt::format("encoding {} with ffmpeg", files.video.filename().string()));
     }
     const std::string video =
-        encodeDemoVideo(outputs, files, double(options.fps) / double(every), options.video);
+        encodeDemoVideo(outputs, files, double(options.fps) / double(record.every), options.video);
     if (options.video) {
         progress.clear();
     }
@@ -179,23 +222,9 @@ int runTabletopWalk(const TabletopWalkOptions& options) {
     if (!statusLines()) {
         return kOk; // -q: errors only
     }
-    std::printf("tabletop walk: %d frames at %dx%d, %.3g fps, subject metering on the GPU -> %s\n", frames,
-                options.width, options.height, double(options.fps), options.output.string().c_str());
-    std::printf("  files: %d frame PNGs, telemetry.csv, exposure_plot.png, contact_sheet.png, %s\n",
-                (frames + every - 1) / every, video.c_str());
-    for (const Transition& t : transitions) {
-        std::printf("  %s\n", describeTransition(t).c_str());
-        if (t.settled) {
-            std::printf("    frame brightness (mean sRGB): %.1f at the start -> %.1f settled\n",
-                        brightness[t.startIndex], brightness[t.settledIndex]);
-        }
-    }
-    if (transitions.empty()) {
-        std::printf("  no indoor/outdoor crossing in %.3g s\n", double(options.seconds));
-    }
-    std::printf("  time: %.1f s rendering, %.1f s in all\n",
-                std::chrono::duration<double>(rendered - begin).count(),
-                std::chrono::duration<double>(end - begin).count());
+    printWalkSummary(options, record, transitions, video,
+                     std::chrono::duration<double>(rendered - begin).count(),
+                     std::chrono::duration<double>(end - begin).count());
     return kOk;
 }
 

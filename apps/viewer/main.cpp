@@ -13,6 +13,9 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -36,23 +39,22 @@ std::string keysHelp() {
     return out;
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app{
-        "photopic-view: image files or a built-in scene through the Photopic pipeline, every setting "
-        "tunable live"};
-    app.footer("Examples:\n"
-               "  photopic-view data/Desk.exr                  one image; drop other files on the window\n"
-               "  photopic-view shot_*.exr                     a sequence, played with adaptation\n"
-               "  photopic-view --scene testbed --set aa.mode=taa\n"
-               "  photopic-view --scene orbit --set orbit.model=data/gltf/2CylinderEngine.glb\n"
-               "\n" +
-               keysHelp());
-    app.set_version_flag("--version", std::string("photopic-view ") + PHOTOPIC_VERSION);
+/// What the command line fills: the viewer's options and the raw values turned into them after parsing.
+struct CommandLine {
     ViewerOptions options;
     std::string size = "1280x720";
     float fixedDt = 0.0f;
+    std::vector<std::string> press;
+    photopic::Verbosity verbosity;
+    CLI::Option* scene = nullptr;
+    CLI::Option* fixedDtOption = nullptr;
+    CLI::Option* save = nullptr;
+    CLI::Option* screenshot = nullptr;
+};
+
+/// The files and how their channels, cameras and lens are read.
+void addFileOptions(CLI::App& app, CommandLine& c) {
+    ViewerOptions& options = c.options;
     app.add_option(
         "files", options.files,
         "image files (EXR, HDR, PNG) to view instead of a scene, or frame-numbered patterns "
@@ -71,53 +73,57 @@ int main(int argc, char** argv) {
         ->check(CLI::ExistingFile);
     app.add_option("--lens", options.lens,
                    "fNumber=N,focus=D,shutter=DEG: replaces the cameras' lens values");
-    auto* sceneOption =
-        app.add_option("--scene", options.scene, "built-in scene: " + photopic::builtInSceneNames())
-            ->capture_default_str();
+}
+
+/// The scene, the settings, the window and the scripted run.
+void addViewOptions(CLI::App& app, CommandLine& c) {
+    ViewerOptions& options = c.options;
+    c.scene = app.add_option("--scene", options.scene, "built-in scene: " + photopic::builtInSceneNames())
+                  ->capture_default_str();
     app.add_option("--settings", options.settingsFile, "settings JSON applied over the scene's defaults")
         ->check(CLI::ExistingFile);
     app.add_option("--preset", options.preset,
                    "look: " + photopic::settings_json::joinNames(photopic::presetNames()) +
                        " (default: stills for files, the scene's own for a scene)");
     app.add_option("--set", options.overrides, "override key=value (SCENE.key=value for the scene's own)");
-    app.add_option("--size", size, "render and initial window size WIDTHxHEIGHT")->capture_default_str();
+    app.add_option("--size", c.size, "render and initial window size WIDTHxHEIGHT")->capture_default_str();
     app.add_option("--frames", options.frames, "run N frames, then exit")->check(CLI::Range(1, 1000000));
-    auto* dtOption = app.add_option("--fixed-dt", fixedDt, "seconds per frame instead of the measured delta")
-                         ->check(CLI::Range(0.0001f, 1.0f));
-    auto* saveOption =
-        app.add_option("--save", options.save, "where Save JSON writes (with --frames: also on exit)")
-            ->capture_default_str();
-    auto* shotOption =
+    c.fixedDtOption =
+        app.add_option("--fixed-dt", c.fixedDt, "seconds per frame instead of the measured delta")
+            ->check(CLI::Range(0.0001f, 1.0f));
+    c.save = app.add_option("--save", options.save, "where Save JSON writes (with --frames: also on exit)")
+                 ->capture_default_str();
+    c.screenshot =
         app.add_option("--screenshot", options.screenshot, "with --frames: the last window frame as PNG");
-    std::vector<std::string> press;
-    app.add_option("--press", press,
+    app.add_option("--press", c.press,
                    "scripted input, one event per frame from frame 1: keys (B, X, F12, ...), drag:DX:DY "
                    "(pixels), wheel:STEPS")
         ->delimiter(',');
-    photopic::Verbosity verbosity;
-    photopic::addVerbosityOptions(app, verbosity);
+}
+
+/// Parses the command line; a usage error (or --help) is the exit code to return.
+std::optional<int> parse(CLI::App& app, CommandLine& c, int argc, char** argv) {
     try {
         app.parse(argc, argv);
-        if (sceneOption->count() > 0 && !options.files.empty()) {
+        if (c.scene->count() > 0 && !c.options.files.empty()) {
             throw CLI::ValidationError("--scene", "shows a scene; image files were named too (choose one)");
         }
-        if (shotOption->count() > 0 && options.frames == 0) {
+        if (c.screenshot->count() > 0 && c.options.frames == 0) {
             throw CLI::ValidationError("--screenshot", "needs --frames N");
         }
     } catch (const CLI::ParseError& e) {
         const int code = app.exit(e);
         return code == 0 ? kOk : kBadInput;
     }
-    photopic::applyVerbosity(verbosity);
-    if (dtOption->count() > 0) {
-        options.fixedDt = fixedDt;
-    }
-    options.saveGiven = saveOption->count() > 0;
-    options.sizeGiven = app.get_option("--size")->count() > 0;
+    return std::nullopt;
+}
 
+/// The viewer run with the parsed options; its errors become exit codes and a line on stderr.
+int runViewer(CommandLine& c) {
+    ViewerOptions& options = c.options;
     try {
-        parseSize(size, options);
-        for (const std::string& item : press) {
+        parseSize(c.size, options);
+        for (const std::string& item : c.press) {
             try {
                 options.press.push_back(parseScriptedEvent(item));
             } catch (const std::invalid_argument& e) {
@@ -138,4 +144,34 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "photopic-view: %s\n", e.what());
         return kFailure;
     }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "photopic-view: image files or a built-in scene through the Photopic pipeline, every setting "
+        "tunable live"};
+    app.footer("Examples:\n"
+               "  photopic-view data/Desk.exr                  one image; drop other files on the window\n"
+               "  photopic-view shot_*.exr                     a sequence, played with adaptation\n"
+               "  photopic-view --scene testbed --set aa.mode=taa\n"
+               "  photopic-view --scene orbit --set orbit.model=data/gltf/2CylinderEngine.glb\n"
+               "\n" +
+               keysHelp());
+    app.set_version_flag("--version", std::string("photopic-view ") + PHOTOPIC_VERSION);
+    CommandLine c;
+    addFileOptions(app, c);
+    addViewOptions(app, c);
+    photopic::addVerbosityOptions(app, c.verbosity);
+    if (const std::optional<int> code = parse(app, c, argc, argv)) {
+        return *code;
+    }
+    photopic::applyVerbosity(c.verbosity);
+    if (c.fixedDtOption->count() > 0) {
+        c.options.fixedDt = c.fixedDt;
+    }
+    c.options.saveGiven = c.save->count() > 0;
+    c.options.sizeGiven = app.get_option("--size")->count() > 0;
+    return runViewer(c);
 }
