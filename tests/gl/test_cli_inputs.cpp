@@ -1,4 +1,4 @@
-// The CLI's input upload (apps/cli/ImageInputs.cpp): what reaches the GL textures, and that a sequence
+// The CLI's input upload (apps/cli/InputTextures.cpp): what reaches the GL textures, and that a sequence
 // creates its textures for the first frame only.
 
 #include "ImageInputs.h"

@@ -1,4 +1,4 @@
-// The CLI's streamed upload (apps/cli/ImageInputs.cpp through gl/UploadRing.h) against a plain upload from
+// The CLI's streamed upload (apps/cli/InputTextures.cpp through gl/UploadRing.h) against a plain upload from
 // client memory: each texture must hold the frame's floats as they are (the float textures) or rounded to
 // the nearest half, ties to even (the half textures: core/HalfFloat.h's rounding, which the upload does on
 // the CPU because drivers convert floats to halves each their own way), for a half-float colour frame (kept
