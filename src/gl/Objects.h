@@ -8,10 +8,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <initializer_list>
+#include <memory>
+#include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace photopic {
 
@@ -200,17 +204,58 @@ private:
     T mWritten{}; ///< what the buffer holds
 };
 
+/// A sampler a program declares (`layout(binding = N) uniform sampler2D uName;`), looked up by name once
+/// (when the pass is made) with Program::sampler: the GLSL is the one place its unit is named. A slot whose
+/// sampler the compiler optimised away (unit -1) binds nothing.
+struct SamplerSlot {
+    GLint unit = -1;
+    [[nodiscard]] bool active() const { return unit >= 0; }
+};
+/// An image a program declares (`layout(binding = N, rgba16f) uniform image2D uName;`), from Program::image.
+struct ImageSlot {
+    GLint unit = -1;
+    [[nodiscard]] bool active() const { return unit >= 0; }
+};
+enum class ImageAccess : GLenum { Read = GL_READ_ONLY, Write = GL_WRITE_ONLY, ReadWrite = GL_READ_WRITE };
+
+/// What a program declares, reflected after linking: its label (the shader file) and its active sampler and
+/// image uniforms (name, unit), for the slots and the binding check at each dispatch.
+struct ProgramInterface {
+    struct Uniform {
+        std::string name;
+        GLint unit = -1;
+        bool image = false;
+    };
+    std::string label;
+    std::string source; ///< the preprocessed sources: tells a name optimised away from a misspelt one
+    std::vector<Uniform> uniforms;
+    mutable std::uint64_t checked = 0; ///< the bind count at its last binding check (checkBindings)
+};
+
 class Program {
 public:
     Program() = default;
     explicit Program(GLuint id)
         : mObject(id) {}
+    Program(GLuint id, std::shared_ptr<const ProgramInterface> interface)
+        : mObject(id)
+        , mInterface(std::move(interface)) {}
     [[nodiscard]] GLuint id() const { return mObject.id(); }
     [[nodiscard]] bool valid() const { return mObject.valid(); }
     void use() const { glUseProgram(mObject.id()); }
 
+    /// The sampler `name` declares. Throws GlError naming the shader and `name` when the program declares no
+    /// such sampler; one the compiler optimised away (named in the source, not active) gives an inactive
+    /// slot.
+    [[nodiscard]] SamplerSlot sampler(std::string_view name) const;
+    /// The image `name` declares; throws like sampler().
+    [[nodiscard]] ImageSlot image(std::string_view name) const;
+    /// Its reflected samplers and images (null for a program made from a bare id).
+    [[nodiscard]] const ProgramInterface* interface() const { return mInterface.get(); }
+
 private:
     GlObject<detail::ProgramDeleter> mObject;
+    std::shared_ptr<const ProgramInterface> mInterface;
 };
 
 class VertexArray {
@@ -246,6 +291,30 @@ private:
 
     GlObject<detail::SamplerDeleter> mObject;
 };
+
+/// Binds `texture` to the unit of `slot` (nothing for an inactive slot); the dispatch check counts it bound.
+void bind(SamplerSlot slot, const Texture& texture) noexcept;
+/// `texture` with the sampler object `sampler` on its unit (its filtering overrides the texture's).
+void bind(SamplerSlot slot, const Texture& texture, const Sampler& sampler) noexcept;
+/// Leaves the unit of `slot` without a texture (what a pass that must not leave its inputs bound ends with).
+void unbind(SamplerSlot slot) noexcept;
+/// Puts `sampler` (null: none, the texture's own filtering again) on the unit of `slot`.
+void bindSampler(SamplerSlot slot, const Sampler* sampler) noexcept;
+/// Binds `level` of `texture` to the image unit of `slot` with `access`, in the texture's format (GL does not
+/// reflect an image's format qualifier: the shader's must be the texture's).
+void bind(ImageSlot slot, const Texture& texture, ImageAccess access, int level = 0) noexcept;
+
+/// The binding check at a dispatch: true when every sampler and image `program` declares was bound through a
+/// slot since the program's last check (its last dispatch): what a pass binds before its dispatches, each
+/// program of it finds bound, and a slot the pass forgot is found stale unless another pass happened to bind
+/// its unit in between. Reports each stale one to the handler (tests). A compare per declared uniform (units
+/// 0-63; from 64 on, units are not tracked).
+bool checkBindings(const Program& program);
+/// Tests: called with one line per declared sampler or image that a dispatch found unbound (naming the
+/// shader, the uniform and its unit). Empty: no handler (the check still runs, and reports nothing).
+using UnboundSlotHandler = std::function<void(const std::string& problem)>;
+/// Installs `handler`, returning the one it replaces.
+UnboundSlotHandler setUnboundSlotHandler(UnboundSlotHandler handler);
 
 class Query {
 public:

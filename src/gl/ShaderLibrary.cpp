@@ -4,6 +4,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -89,11 +92,87 @@ GLuint compileSource(GLenum stage, const std::string& source, std::string_view n
     return shader;
 }
 
-GLuint compile(GLenum stage, std::string_view name, const ShaderDefines& defines) {
-    return compileSource(stage, preprocessShader(name, defines), name);
+/// Compiles `name`; appends its preprocessed source to `sources` (what the program's reflection keeps).
+GLuint compile(GLenum stage, std::string_view name, const ShaderDefines& defines, std::string& sources) {
+    std::string source = preprocessShader(name, defines);
+    const GLuint shader = compileSource(stage, source, name);
+    sources += source;
+    return shader;
 }
 
-Program link(std::initializer_list<GLuint> shaders, std::string_view label) {
+bool isSamplerType(GLenum type) {
+    switch (type) {
+    case GL_SAMPLER_1D:
+    case GL_SAMPLER_2D:
+    case GL_SAMPLER_3D:
+    case GL_SAMPLER_CUBE:
+    case GL_SAMPLER_2D_SHADOW:
+    case GL_SAMPLER_2D_ARRAY:
+    case GL_SAMPLER_2D_ARRAY_SHADOW:
+    case GL_SAMPLER_CUBE_SHADOW:
+    case GL_SAMPLER_2D_MULTISAMPLE:
+    case GL_SAMPLER_BUFFER:
+    case GL_INT_SAMPLER_2D:
+    case GL_INT_SAMPLER_3D:
+    case GL_INT_SAMPLER_2D_ARRAY:
+    case GL_UNSIGNED_INT_SAMPLER_2D:
+    case GL_UNSIGNED_INT_SAMPLER_3D:
+    case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
+        return true;
+    default:
+        return false;
+    }
+}
+
+bool isImageType(GLenum type) {
+    switch (type) {
+    case GL_IMAGE_2D:
+    case GL_IMAGE_3D:
+    case GL_IMAGE_2D_ARRAY:
+    case GL_IMAGE_CUBE:
+    case GL_IMAGE_BUFFER:
+    case GL_INT_IMAGE_2D:
+    case GL_INT_IMAGE_3D:
+    case GL_INT_IMAGE_2D_ARRAY:
+    case GL_UNSIGNED_INT_IMAGE_2D:
+    case GL_UNSIGNED_INT_IMAGE_3D:
+    case GL_UNSIGNED_INT_IMAGE_2D_ARRAY:
+        return true;
+    default:
+        return false;
+    }
+}
+
+/// The samplers and images `program` declares, with the units their layout(binding = N) gave.
+std::shared_ptr<const ProgramInterface> reflect(GLuint program, std::string_view label, std::string source) {
+    auto interface = std::make_shared<ProgramInterface>();
+    interface->label = std::string(label);
+    interface->source = std::move(source);
+    GLint count = 0;
+    glGetProgramInterfaceiv(program, GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
+    for (GLint i = 0; i < count; ++i) {
+        const std::array<GLenum, 3> props = {GL_TYPE, GL_LOCATION, GL_ARRAY_SIZE};
+        std::array<GLint, 3> v{};
+        glGetProgramResourceiv(program, GL_UNIFORM, GLuint(i), GLsizei(props.size()), props.data(),
+                               GLsizei(v.size()), nullptr, v.data());
+        const bool image = isImageType(GLenum(v[0]));
+        if ((!image && !isSamplerType(GLenum(v[0]))) || v[1] < 0) {
+            continue;
+        }
+        std::array<char, 128> name{};
+        glGetProgramResourceName(program, GL_UNIFORM, GLuint(i), GLsizei(name.size()), nullptr, name.data());
+        std::string uniform = name.data();
+        if (const auto bracket = uniform.find('['); bracket != std::string::npos) {
+            uniform.resize(bracket); // an array: its slot is its first element's unit (passes declare none)
+        }
+        GLint unit = 0;
+        glGetUniformiv(program, v[1], &unit);
+        interface->uniforms.push_back({std::move(uniform), unit, image});
+    }
+    return interface;
+}
+
+Program link(std::initializer_list<GLuint> shaders, std::string_view label, std::string source) {
     const GLuint program = glCreateProgram();
     for (GLuint s : shaders) {
         glAttachShader(program, s);
@@ -111,7 +190,7 @@ Program link(std::initializer_list<GLuint> shaders, std::string_view label) {
         throw GlError(fmt::format("linking {} failed:\n{}", label, log));
     }
     glObjectLabel(GL_PROGRAM, program, GLsizei(label.size()), label.data());
-    return Program(program);
+    return Program(program, reflect(program, label, std::move(source)));
 }
 
 } // namespace
@@ -128,24 +207,27 @@ std::string preprocessShader(std::string_view name, const ShaderDefines& defines
 }
 
 Program makeComputeProgram(std::string_view computeName, const ShaderDefines& defines) {
-    return link({compile(GL_COMPUTE_SHADER, computeName, defines)}, computeName);
+    std::string source;
+    const GLuint shader = compile(GL_COMPUTE_SHADER, computeName, defines, source);
+    return link({shader}, computeName, std::move(source));
 }
 
 Program makeComputeProgramFromSource(const std::string& source, std::string_view name) {
-    return link({compileSource(GL_COMPUTE_SHADER, source, name)}, name);
+    return link({compileSource(GL_COMPUTE_SHADER, source, name)}, name, source);
 }
 
 Program makeGraphicsProgram(std::string_view vertexName, std::string_view fragmentName,
                             const ShaderDefines& defines) {
-    const GLuint vs = compile(GL_VERTEX_SHADER, vertexName, defines);
+    std::string sources;
+    const GLuint vs = compile(GL_VERTEX_SHADER, vertexName, defines, sources);
     GLuint fs = 0;
     try {
-        fs = compile(GL_FRAGMENT_SHADER, fragmentName, defines);
+        fs = compile(GL_FRAGMENT_SHADER, fragmentName, defines, sources);
     } catch (...) {
         glDeleteShader(vs);
         throw;
     }
-    return link({vs, fs}, fragmentName);
+    return link({vs, fs}, fragmentName, std::move(sources));
 }
 
 void setUniform(const Program& p, const char* name, float v) {
@@ -195,17 +277,65 @@ ShaderDefines withPixelGroup(ShaderDefines defines, PixelGroup group) {
 }
 
 void dispatchPixels(Extent extent, PixelGroup group) noexcept {
-    glDispatchCompute(GLuint((extent.width + group.width - 1) / group.width),
-                      GLuint((extent.height + group.height - 1) / group.height), 1);
+    const Groups groups = pixelGroups(extent, group);
+    glDispatchCompute(groups.x, groups.y, groups.z);
 }
 
 void computeReadBarrier() noexcept {
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    memoryBarrier(Barrier::ComputeRead);
 }
 
 void imageWriteBarrier() noexcept {
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                    GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
+    memoryBarrier(Barrier::ImageWrite);
+}
+
+void memoryBarrier(Barrier barrier) noexcept {
+    GLbitfield bits = 0;
+    switch (barrier) {
+    case Barrier::None:
+        return;
+    case Barrier::TextureFetch:
+        bits = GL_TEXTURE_FETCH_BARRIER_BIT;
+        break;
+    case Barrier::ImageAccess:
+        bits = GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
+        break;
+    case Barrier::TextureFetchAndCopy:
+        bits = GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT;
+        break;
+    case Barrier::ComputeRead:
+        bits = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
+        break;
+    case Barrier::ImageWrite:
+        bits = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+               GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT;
+        break;
+    case Barrier::Storage:
+        bits = GL_SHADER_STORAGE_BARRIER_BIT;
+        break;
+    case Barrier::StorageReadback:
+        bits = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
+        break;
+    case Barrier::StorageAsUniform:
+        bits = GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
+        break;
+    }
+    glMemoryBarrier(bits);
+}
+
+void dispatch(const Program& program, Groups groups, Barrier after) {
+    checkBindings(program);
+    glDispatchCompute(groups.x, groups.y, groups.z);
+    memoryBarrier(after);
+}
+
+void dispatch(const Program& program, Extent extent, Barrier after, PixelGroup group) {
+    dispatch(program, pixelGroups(extent, group), after);
+}
+
+Groups pixelGroups(Extent extent, PixelGroup group) noexcept {
+    return {GLuint((extent.width + group.width - 1) / group.width),
+            GLuint((extent.height + group.height - 1) / group.height), 1};
 }
 
 } // namespace photopic

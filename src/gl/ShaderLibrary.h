@@ -64,6 +64,37 @@ void imageWriteBarrier() noexcept;
 /// with imageWriteBarrier.
 void computeReadBarrier() noexcept;
 
+/// A memory barrier by what reads next what a dispatch wrote (the only place src/passes issues
+/// glMemoryBarrier): each names the glMemoryBarrier bits it issues.
+enum class Barrier {
+    None,                ///< nothing: the next reader is ordered some other way (or reads nothing of it)
+    TextureFetch,        ///< the next pass samples what this one stored (TEXTURE_FETCH)
+    ImageAccess,         ///< the next pass loads it as an image (SHADER_IMAGE_ACCESS)
+    TextureFetchAndCopy, ///< sampled, or copied by a texture update (TEXTURE_FETCH | TEXTURE_UPDATE)
+    ComputeRead,         ///< computeReadBarrier(): sampled or image-loaded by the next compute passes
+    ImageWrite,          ///< imageWriteBarrier(): whatever reads the image next
+    Storage,             ///< the next pass reads a storage buffer this one wrote (SHADER_STORAGE)
+    StorageReadback,     ///< ... or copies or reads it back (SHADER_STORAGE | BUFFER_UPDATE)
+    StorageAsUniform,    ///< ... also as a uniform block (SHADER_STORAGE | UNIFORM | BUFFER_UPDATE)
+};
+void memoryBarrier(Barrier barrier) noexcept;
+
+/// Work groups of a dispatch.
+struct Groups {
+    GLuint x = 1;
+    GLuint y = 1;
+    GLuint z = 1;
+};
+/// Groups of `group` covering `extent`, one invocation per element.
+[[nodiscard]] Groups pixelGroups(Extent extent, PixelGroup group = kPixelGroupSquare) noexcept;
+
+/// A pass's dispatch of `program` (current: use() it first): checks that every sampler and image it declares
+/// was bound through a slot since the program's last dispatch (checkBindings: tests report the ones that were
+/// not), dispatches `groups` and issues `after`.
+void dispatch(const Program& program, Groups groups, Barrier after);
+/// The same over the pixels of `extent`, in work groups of `group`.
+void dispatch(const Program& program, Extent extent, Barrier after, PixelGroup group = kPixelGroupSquare);
+
 /// Set uniforms by name on a program (DSA: no bind needed). Missing names are ignored (optimised away).
 void setUniform(const Program& p, const char* name, float v);
 void setUniform(const Program& p, const char* name, int v);

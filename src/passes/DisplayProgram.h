@@ -34,6 +34,10 @@ public:
     void prepare(int bitDepth);
     /// The program writing the display image at `bitDepth` (built first if need be).
     const Program& at(int bitDepth);
+    /// A sampler or image of the program by name (Program::sampler/image): one slot serves both depths, whose
+    /// builds differ only in the image format, never in a unit.
+    [[nodiscard]] SamplerSlot sampler(std::string_view name) const { return m8.sampler(name); }
+    [[nodiscard]] ImageSlot image(std::string_view name) const { return m8.image(name); }
 
 private:
     std::string mName;

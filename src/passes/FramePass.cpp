@@ -1,69 +1,47 @@
 #include "passes/FramePass.h"
 
+#include <array>
+
 namespace photopic {
 
+namespace {
+/// By Resource, in its order.
+constexpr std::array<std::string_view, kResourceCount> kResourceNames = {
+    "color",              // Color
+    "depth",              // Depth
+    "normals",            // Normals
+    "motion",             // Motion
+    "camera",             // Camera
+    "sunDirection",       // SunDirection
+    "objectId",           // ObjectId
+    "meteringMask",       // MeteringMask
+    "sceneColor",         // SceneColor
+    "linearDepth",        // LinearDepth
+    "histogram",          // Histogram
+    "metering",           // Metering
+    "exposure",           // ExposureState
+    "bloom",              // Bloom
+    "lensFlare",          // LensFlare
+    "taaDebug",           // TaaDebug
+    "ambientOcclusion",   // AmbientOcclusion
+    "contactShadows",     // ContactShadows
+    "debugColor",         // DebugColor
+    "displayColor",       // DisplayColor
+    "contactShadowSteps", // ContactShadowSteps
+    "dofCoc",             // DofCoc
+    "material",           // Material
+    "depthPyramid",       // DepthPyramid
+    "reflections",        // Reflections
+    "velocityTiles",      // VelocityTiles
+    "volumetricLight",    // VolumetricLight
+    "sunShadow",          // SunShadowMap
+};
+static_assert(!kResourceNames.back().empty(), "one name per Resource, in its order");
+} // namespace
+
 std::string_view resourceName(Resource resource) noexcept {
-    switch (resource) {
-    case Resource::Color:
-        return "color";
-    case Resource::Depth:
-        return "depth";
-    case Resource::Normals:
-        return "normals";
-    case Resource::Motion:
-        return "motion";
-    case Resource::Camera:
-        return "camera";
-    case Resource::SunDirection:
-        return "sunDirection";
-    case Resource::ObjectId:
-        return "objectId";
-    case Resource::MeteringMask:
-        return "meteringMask";
-    case Resource::SceneColor:
-        return "sceneColor";
-    case Resource::LinearDepth:
-        return "linearDepth";
-    case Resource::Histogram:
-        return "histogram";
-    case Resource::Metering:
-        return "metering";
-    case Resource::ExposureState:
-        return "exposure";
-    case Resource::Bloom:
-        return "bloom";
-    case Resource::LensFlare:
-        return "lensFlare";
-    case Resource::TaaDebug:
-        return "taaDebug";
-    case Resource::AmbientOcclusion:
-        return "ambientOcclusion";
-    case Resource::ContactShadows:
-        return "contactShadows";
-    case Resource::ContactShadowSteps:
-        return "contactShadowSteps";
-    case Resource::DofCoc:
-        return "dofCoc";
-    case Resource::Material:
-        return "material";
-    case Resource::DepthPyramid:
-        return "depthPyramid";
-    case Resource::Reflections:
-        return "reflections";
-    case Resource::VelocityTiles:
-        return "velocityTiles";
-    case Resource::VolumetricLight:
-        return "volumetricLight";
-    case Resource::SunShadowMap:
-        return "sunShadow";
-    case Resource::DebugColor:
-        return "debugColor";
-    case Resource::DisplayColor:
-        return "displayColor";
-    case Resource::Count:
-        break;
-    }
-    return "?";
+    const auto index = std::size_t(resource);
+    return index < kResourceNames.size() ? kResourceNames[index] : "?";
 }
 
 void FrameResources::clear() noexcept {

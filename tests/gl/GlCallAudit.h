@@ -11,13 +11,15 @@
 // - a shadow sampler whose unit holds no depth texture with comparison on (or a plain sampler reading a
 //   depth texture with comparison on): undefined behaviour;
 // - a draw whose program declares a uniform or storage block with no buffer bound, or one smaller than the
-//   block: undefined behaviour.
+//   block: undefined behaviour;
+// - a dispatch (through photopic::dispatch) whose program declares a sampler or image that was not bound
+//   through its slot since the last dispatch: the pass reads whatever an earlier pass left on that unit.
 //
 // It replaces libepoxy's dispatch pointers (every GL call of the process, the library's included, goes
 // through them) with hooks that check and then call the driver's functions (from eglGetProcAddress), and
 // puts them back when it goes. One at a time, on the thread that owns an EGL context.
 
-#include "gl/Gl.h"
+#include "gl/Objects.h"
 
 #include <map>
 #include <set>
@@ -70,6 +72,7 @@ private:
     std::vector<std::string> mProblems;
     std::map<std::string, std::set<std::string>> mFetchStates;
     std::set<GLuint> mDrawn;
+    UnboundSlotHandler mOuterHandler; ///< the unbound-slot handler before this audit's
 };
 
 } // namespace photopic::test

@@ -3,14 +3,18 @@
 // fails it, and a test skips -- with the reason -- only when no context could be made. On NVIDIA's driver a
 // performance warning fails the test too: it reports memory moved between the GPU and the host, shader
 // recompiles and stalls, which a frame must never cause (other drivers' warnings are logged only: Mesa's
-// software renderer reports its own fallbacks that say nothing of a GPU).
+// software renderer reports its own fallbacks that say nothing of a GPU). A dispatch that finds a sampler or
+// image its program declares not bound through the program's slot (gl/Objects.h checkBindings) fails the test
+// too, unless a GlCallAudit collects it.
 
 #include "gl/Context.h"
 #include "gl/Debug.h"
+#include "gl/Objects.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 namespace photopic::test {
 
@@ -25,9 +29,15 @@ protected:
             GTEST_SKIP() << "no OpenGL 4.5 context: " << glUnavailableReason();
         }
         resetGlDebugErrorCount();
+        mUnboundSlots.clear();
+        mOuterSlotHandler =
+            setUnboundSlotHandler([this](const std::string& problem) { mUnboundSlots.push_back(problem); });
     }
     void TearDown() override {
         if (glContext()) {
+            setUnboundSlotHandler(std::move(mOuterSlotHandler));
+            EXPECT_TRUE(mUnboundSlots.empty())
+                << "a dispatch found a declared sampler or image unbound: " << mUnboundSlots.front();
             EXPECT_EQ(glDebugErrorCount(), 0u) << "GL debug errors were raised during the test (see log)";
             EXPECT_EQ(glDebugUndefinedBehaviourCount(), 0u)
                 << "the driver reported undefined behaviour during the test (see log)";
@@ -37,6 +47,10 @@ protected:
             }
         }
     }
+
+private:
+    std::vector<std::string> mUnboundSlots;
+    UnboundSlotHandler mOuterSlotHandler;
 };
 
 } // namespace photopic::test

@@ -15,17 +15,12 @@ constexpr const char* kDown = "passes/bloom/bloom_downsample.comp.glsl";
 constexpr const char* kRows = "passes/bloom/bloom_blur.comp.glsl";
 constexpr const char* kUp = "passes/bloom/bloom_upsample.comp.glsl";
 constexpr GLenum kFormat = GL_RGBA16F;
-/// The chain's texture units and image unit: each step reads its source on one unit and, upsampling, the
-/// coarser result on the other, and writes one image (bloom_step.h.glsl's readers).
-constexpr GLuint kUnitSource = 0;
-constexpr GLuint kUnitCoarse = 1;
-constexpr GLuint kImageTarget = 0;
 
 double texelBytes(Extent e, GLenum format) {
     return double(e.width) * double(e.height) * bytesPerTexel(format);
 }
 
-Program makeStep(const char* file, ShaderDefines defines, PixelGroup group) {
+Program makeStepProgram(const char* file, ShaderDefines defines, PixelGroup group) {
     return makeComputeProgram(file, bindingDefines(withPixelGroup(std::move(defines), group)));
 }
 
@@ -56,12 +51,12 @@ void setSourceTexel(BloomStepParameters& p, Extent source) {
 
 BloomPass::BloomPass()
     : mGroup(pixelGroup())
-    , mPrefilter(makeStep(kDown, {{"PREFILTER", "1"}}, mGroup))
-    , mPrefilterQuarter(makeStep(kDown, {{"PREFILTER", "1"}, {"QUARTER", "1"}}, mGroup))
-    , mDownsample(makeStep(kDown, {}, mGroup))
-    , mBlurRows(makeStep(kRows, blurDefines({}), mGroup))
-    , mUpsample(makeStep(kUp, blurDefines({}), mGroup))
-    , mUpsampleCoarse(makeStep(kUp, blurDefines({{"COARSE", "1"}}), mGroup))
+    , mPrefilter(makeStepProgram(kDown, {{"PREFILTER", "1"}}, mGroup))
+    , mPrefilterQuarter(makeStepProgram(kDown, {{"PREFILTER", "1"}, {"QUARTER", "1"}}, mGroup))
+    , mDownsample(makeStepProgram(kDown, {}, mGroup))
+    , mBlurRows(makeStepProgram(kRows, blurDefines({}), mGroup))
+    , mUpsample(makeStepProgram(kUp, blurDefines({}), mGroup))
+    , mUpsampleCoarse(makeStepProgram(kUp, blurDefines({{"COARSE", "1"}}), mGroup))
     , mSampler(Sampler::linearTransparentBorder("bloom sampler")) {}
 
 std::span<const ResourceUse> BloomPass::uses() const {
@@ -119,14 +114,13 @@ void BloomPass::ensureChain(int firstDivisor, int levels) {
     }
 }
 
-void BloomPass::bindStep(const Program& program, ParameterBlock<BloomStepParameters>& block,
+void BloomPass::bindStep(const Step& step, ParameterBlock<BloomStepParameters>& block,
                          const BloomStepParameters& p, const Texture& source, const Texture& target) {
     block.update(p);
     block.bind(kBindingParameters);
-    program.use();
-    glBindTextureUnit(kUnitSource, source.id());
-    glBindSampler(kUnitSource, mSampler.id());
-    glBindImageTexture(kImageTarget, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
+    step.program.use();
+    bind(step.source, source, mSampler);
+    bind(step.target, target, ImageAccess::Write);
 }
 
 void BloomPass::downsample(const Inputs& in, int level) {
@@ -139,8 +133,8 @@ void BloomPass::downsample(const Inputs& in, int level) {
     // Target texel t's centre in the source's texel-centre coordinates: the frame's region of the target
     // starts kBloomMargin texels in, and the source's too (but for the frame itself).
     const float scale = level == 0 ? float(in.firstDivisor) : 2.0f;
-    const float origin = level == 0 ? 0.5f * (scale - 1.0f) - scale * float(kBloomMargin)
-                                    : 0.5f - float(kBloomMargin);
+    const float origin =
+        level == 0 ? 0.5f * (scale - 1.0f) - scale * float(kBloomMargin) : 0.5f - float(kBloomMargin);
     p.sourceScale[0] = p.sourceScale[1] = scale;
     p.sourceOrigin[0] = p.sourceOrigin[1] = origin;
     if (level == 0) {
@@ -149,24 +143,26 @@ void BloomPass::downsample(const Inputs& in, int level) {
         p.threshold = in.settings->mode == BloomMode::Threshold ? 1 : 0;
         p.knee = bloomKneeConstants(in.settings->threshold, in.settings->knee);
     }
-    const Program& program = level > 0 ? mDownsample : in.firstDivisor == 4 ? mPrefilterQuarter : mPrefilter;
-    bindStep(program, mDownBlocks[std::size_t(level)], p, source, target);
+    const Step& step = level > 0 ? mDownsample : in.firstDivisor == 4 ? mPrefilterQuarter : mPrefilter;
+    bindStep(step, mDownBlocks[std::size_t(level)], p, source, target);
     const Extent e = target.extent();
-    // The prefilter computes 2x2 blocks of targets an invocation.
-    dispatchPixels(level == 0 ? Extent{(e.width + 1) / 2, (e.height + 1) / 2} : e, mGroup);
-    computeReadBarrier(); // the row blur and the next level read it
+    // The prefilter computes 2x2 blocks of targets an invocation; the row blur and the next level read it.
+    dispatch(step.program, level == 0 ? Extent{(e.width + 1) / 2, (e.height + 1) / 2} : e,
+             Barrier::ComputeRead, mGroup);
 }
 
 void BloomPass::blurRows(const Inputs& in, int level) {
     const Texture& source = mDown[std::size_t(level)];
     const Texture& target = mRows[std::size_t(level)];
-    ScopedGpuTimer timer(in.timers, fmt::format("bloom rows {}", level), 2 * texelBytes(target.extent(), kFormat));
+    ScopedGpuTimer timer(in.timers, fmt::format("bloom rows {}", level),
+                         2 * texelBytes(target.extent(), kFormat));
     BloomStepParameters p;
     setSourceTexel(p, source.extent());
     setBlurWeights(p);
     bindStep(mBlurRows, mRowBlocks[std::size_t(level)], p, source, target);
-    dispatchPixels({(target.extent().width + kBlurRun - 1) / kBlurRun, target.extent().height}, mGroup);
-    computeReadBarrier(); // the upsample reads it
+    // The upsample reads it.
+    dispatch(mBlurRows.program, {(target.extent().width + kBlurRun - 1) / kBlurRun, target.extent().height},
+             Barrier::ComputeRead, mGroup);
 }
 
 void BloomPass::upsample(const Inputs& in, int level) {
@@ -190,16 +186,14 @@ void BloomPass::upsample(const Inputs& in, int level) {
         p.coarseOrigin[0] = p.coarseOrigin[1] = 0.5f * float(kBloomMargin) - 0.25f;
         p.radius = in.settings->radius;
     }
-    bindStep(coarse ? mUpsampleCoarse : mUpsample, mUpBlocks[std::size_t(level)], p, source, target);
+    const Step& step = coarse ? mUpsampleCoarse : mUpsample;
+    bindStep(step, mUpBlocks[std::size_t(level)], p, source, target);
     if (coarse) {
-        glBindTextureUnit(kUnitCoarse, mUp[std::size_t(level + 1)].id());
-        glBindSampler(kUnitCoarse, mSampler.id());
+        bind(mCoarse, mUp[std::size_t(level + 1)], mSampler);
     }
-    dispatchPixels({target.extent().width, (target.extent().height + kBlurRun - 1) / kBlurRun}, mGroup);
-    if (level == 0)
-        imageWriteBarrier(); // the chain's result: whatever reads it next
-    else
-        computeReadBarrier(); // the next upsample
+    // Level 0 is the chain's result, whatever reads it next; the others, the next upsample.
+    dispatch(step.program, {target.extent().width, (target.extent().height + kBlurRun - 1) / kBlurRun},
+             level == 0 ? Barrier::ImageWrite : Barrier::ComputeRead, mGroup);
 }
 
 const Texture& BloomPass::execute(const Inputs& in) {
@@ -215,8 +209,8 @@ const Texture& BloomPass::execute(const Inputs& in) {
         blurRows(in, i);
         upsample(in, i);
     }
-    glBindSampler(kUnitSource, 0);
-    glBindSampler(kUnitCoarse, 0);
+    bindSampler(mDownsample.source, nullptr);
+    bindSampler(mCoarse, nullptr);
     return mUp[0];
 }
 

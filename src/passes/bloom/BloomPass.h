@@ -35,9 +35,10 @@ struct BloomStepParameters {
     glm::vec4 weights[3] = {};             ///< blur and upsample: the Gaussian's weights 0 .. 8 texels out
 };
 static_assert(sizeof(BloomStepParameters) == 128 && kBloomBlurReach + 1 <= 12);
-static_assert(offsetof(BloomStepParameters, frameSize) == 40 && offsetof(BloomStepParameters, threshold) == 48 &&
-              offsetof(BloomStepParameters, targetOffset) == 56 && offsetof(BloomStepParameters, knee) == 64 &&
-              offsetof(BloomStepParameters, weights) == 80);
+static_assert(offsetof(BloomStepParameters, frameSize) == 40 &&
+              offsetof(BloomStepParameters, threshold) == 48 &&
+              offsetof(BloomStepParameters, targetOffset) == 56 &&
+              offsetof(BloomStepParameters, knee) == 64 && offsetof(BloomStepParameters, weights) == 80);
 
 class BloomPass final : public FramePass {
 public:
@@ -57,7 +58,8 @@ public:
     /// The HDR path's chain (the LDR path's glow is part of the tone-map pass); in glare mode the glare pass
     /// (passes/glare/) writes the bloom instead.
     [[nodiscard]] bool enabled(const FrameContext& ctx) const override {
-        return ctx.hdr && ctx.tier.bloom && ctx.settings.bloom.enabled && ctx.settings.bloom.mode != BloomMode::Glare;
+        return ctx.hdr && ctx.tier.bloom && ctx.settings.bloom.enabled &&
+               ctx.settings.bloom.mode != BloomMode::Glare;
     }
     void resize(Extent extent) override;
     void execute(FrameContext& ctx, FrameResources& resources) override;
@@ -78,12 +80,21 @@ private:
     void downsample(const Inputs& in, int level);
     void blurRows(const Inputs& in, int level);
     void upsample(const Inputs& in, int level);
-    /// Binds `program`, `block` (updated to `p`), the source on its unit and the target image.
-    void bindStep(const Program& program, ParameterBlock<BloomStepParameters>& block,
-                  const BloomStepParameters& p, const Texture& source, const Texture& target);
+    /// One program of the chain: it reads its source and writes its target (bloom_step.h.glsl's readers).
+    struct Step {
+        explicit Step(Program p)
+            : program(std::move(p)) {}
+        Program program;
+        SamplerSlot source = program.sampler("uSource");
+        ImageSlot target = program.image("uTarget");
+    };
+    /// Binds `step`'s program, `block` (updated to `p`), the source with the chain's sampler and the target.
+    void bindStep(const Step& step, ParameterBlock<BloomStepParameters>& block, const BloomStepParameters& p,
+                  const Texture& source, const Texture& target);
 
     PixelGroup mGroup; ///< the invocation shape of every program here (gl/ShaderLibrary.h pixelGroup)
-    Program mPrefilter, mPrefilterQuarter, mDownsample, mBlurRows, mUpsample, mUpsampleCoarse;
+    Step mPrefilter, mPrefilterQuarter, mDownsample, mBlurRows, mUpsample, mUpsampleCoarse;
+    SamplerSlot mCoarse = mUpsampleCoarse.program.sampler("uCoarse"); ///< the coarser level's result
     /// Every read of the chain: past a texture's edge lies transparent black (the frame's outside, and the
     /// levels' bands beyond what they hold).
     Sampler mSampler;

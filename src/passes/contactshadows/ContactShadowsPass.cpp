@@ -59,42 +59,35 @@ void ContactShadowsPass::invalidateHistory() {
     mRestarted = false;
 }
 
-void ContactShadowsPass::execute(FrameContext& ctx, FrameResources& resources) {
+ContactShadowsPass::Targets ContactShadowsPass::acquireTargets(const FrameContext& ctx,
+                                                               FrameResources& resources) {
+    const Extent e = ctx.extent;
+    const auto nearest = [&](GLenum format, std::string_view name) {
+        return &resources.pool()
+                    .acquire({.extent = e,
+                              .format = format,
+                              .minFilter = GL_NEAREST,
+                              .magFilter = GL_NEAREST,
+                              .debugName = name})
+                    .texture();
+    };
+    Targets t;
+    t.surface = nearest(GL_RGBA32F, "contact shadow surfaces");
+    t.raw = nearest(GL_R16F, "contact shadows (this frame)");
+    if (ctx.settings.debug.view == DebugView::ContactShadowSteps) {
+        t.steps = nearest(GL_R8, "contact shadow steps");
+    }
+    return t;
+}
+
+ContactShadowParameters ContactShadowsPass::parameters(const FrameContext& ctx,
+                                                       const FrameResources& resources, bool writeSteps,
+                                                       bool hasHistory) const {
     const ContactShadowSettings& s = ctx.settings.contactShadows;
     const Camera& camera = *ctx.inputs.camera;
     const Extent e = ctx.extent;
-    mHistory.ensure(e, GL_R16F, "contact shadows");
-    const Texture& surface = resources.pool()
-                                 .acquire({.extent = e,
-                                           .format = GL_RGBA32F,
-                                           .minFilter = GL_NEAREST,
-                                           .magFilter = GL_NEAREST,
-                                           .debugName = "contact shadow surfaces"})
-                                 .texture();
-    const Texture& raw = resources.pool()
-                             .acquire({.extent = e,
-                                       .format = GL_R16F,
-                                       .minFilter = GL_NEAREST,
-                                       .magFilter = GL_NEAREST,
-                                       .debugName = "contact shadows (this frame)"})
-                             .texture();
-    const bool writeSteps = ctx.settings.debug.view == DebugView::ContactShadowSteps;
-    const Texture* steps = nullptr;
-    if (writeSteps) {
-        steps = &resources.pool()
-                     .acquire({.extent = e,
-                               .format = GL_R8,
-                               .minFilter = GL_NEAREST,
-                               .magFilter = GL_NEAREST,
-                               .debugName = "contact shadow steps"})
-                     .texture();
-    }
     const Texture* normals = resources.texture(Resource::Normals);
-    const Texture* motion = resources.texture(Resource::Motion);
     const Texture* objectId = mMasked ? resources.texture(Resource::ObjectId) : nullptr;
-    const bool hasHistory = mHistory.valid() && !ctx.resetHistory;
-    mRestarted = ctx.resetHistory;
-
     ContactShadowParameters p{};
     p.projection = camera.projection;
     p.reprojection = camera.prevViewProjection * glm::inverse(camera.view);
@@ -114,53 +107,80 @@ void ContactShadowsPass::execute(FrameContext& ctx, FrameResources& resources) {
     }
     p.writeSteps = writeSteps ? 1 : 0;
     p.hasHistory = hasHistory ? 1 : 0;
-    p.hasMotion = motion ? 1 : 0;
+    p.hasMotion = resources.texture(Resource::Motion) ? 1 : 0;
     p.edgeFade = edgeFadePixels(e);
     p.historyWeight = kHistoryWeight;
+    return p;
+}
 
-    const double texels = double(e.width) * e.height;
-    mParameters.update(p);
-    mParameters.bind(kBindingParameters);
+void ContactShadowsPass::surfaces(const FrameContext& ctx, const FrameResources& resources,
+                                  const Targets& t) {
+    const Extent e = ctx.extent;
     const Texture& depth = *resources.texture(Resource::LinearDepth);
-    glBindTextureUnit(0, depth.id());
-    glBindTextureUnit(1, normals ? normals->id() : depth.id());
-    glBindTextureUnit(2, objectId ? objectId->id() : mNoObjectIds.id());
-    glBindSampler(2, objectId ? mObjectIdSampler.id() : 0);
+    const Texture* normals = resources.texture(Resource::Normals);
+    const Texture* objectId = mMasked ? resources.texture(Resource::ObjectId) : nullptr;
+    bind(mSurfaceDepth, depth);
+    bind(mSurfaceNormals, normals ? *normals : depth);
+    bind(mSurfaceObjectId, objectId ? *objectId : mNoObjectIds);
+    bindSampler(mSurfaceObjectId, objectId ? &mObjectIdSampler : nullptr);
     {
         // Depth and the host's normal (or four more depths), the mask's id, one RGBA32F texel out.
         ScopedGpuTimer timer(ctx.timers, "contact shadow surfaces",
-                             texels * (4.0 + (normals ? 8.0 : 16.0) + (objectId ? 4.0 : 0.0) + 16.0));
+                             double(e.width) * e.height *
+                                 (4.0 + (normals ? 8.0 : 16.0) + (objectId ? 4.0 : 0.0) + 16.0));
         mSurface.use();
-        glBindImageTexture(0, surface.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        dispatchPixels(e);
+        bind(mSurfaceOut, *t.surface, ImageAccess::Write);
+        dispatch(mSurface, e, Barrier::None);
     }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    glBindSampler(2, 0);
-    {
-        // The surfaces read once from memory (a short march stays in the cache), the result written (and the
-        // steps view).
-        ScopedGpuTimer timer(ctx.timers, "contact shadows", texels * (16.0 + 2.0 + (steps ? 1.0 : 0.0)));
-        mMarch.use();
-        glBindTextureUnit(3, surface.id());
-        glBindImageTexture(0, raw.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-        glBindImageTexture(1, steps ? steps->id() : mNoSteps.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
-        dispatchPixels(e);
-    }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    {
-        // This frame's values (a tile with its border in shared memory), depth, motion, the history and the
-        // output.
-        ScopedGpuTimer timer(ctx.timers, "contact shadows resolve", texels * (2.0 + 4.0 + 4.0 + 2.0 + 2.0));
-        mResolve.use();
-        glBindTextureUnit(3, raw.id());
-        glBindTextureUnit(4, mHistory.previous() ? mHistory.previous()->id() : raw.id());
-        glBindTextureUnit(5, motion ? motion->id() : depth.id());
-        glBindImageTexture(0, mHistory.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-        dispatchPixels(e);
-    }
+    memoryBarrier(Barrier::TextureFetch);
+    bindSampler(mSurfaceObjectId, nullptr);
+}
+
+void ContactShadowsPass::march(const FrameContext& ctx, const FrameResources& resources, const Targets& t) {
+    const Extent e = ctx.extent;
+    // The surfaces read once from memory (a short march stays in the cache), the result written (and the
+    // steps view).
+    ScopedGpuTimer timer(ctx.timers, "contact shadows",
+                         double(e.width) * e.height * (16.0 + 2.0 + (t.steps ? 1.0 : 0.0)));
+    mMarch.use();
+    bind(mMarchDepth, *resources.texture(Resource::LinearDepth));
+    bind(mMarchSurface, *t.surface);
+    bind(mMarchRaw, *t.raw, ImageAccess::Write);
+    bind(mMarchSteps, t.steps ? *t.steps : mNoSteps, ImageAccess::Write);
+    dispatch(mMarch, e, Barrier::None);
+}
+
+void ContactShadowsPass::resolve(const FrameContext& ctx, const FrameResources& resources, const Targets& t) {
+    const Extent e = ctx.extent;
+    const Texture& depth = *resources.texture(Resource::LinearDepth);
+    const Texture* motion = resources.texture(Resource::Motion);
+    // This frame's values (a tile with its border in shared memory), depth, motion, the history and the
+    // output.
+    ScopedGpuTimer timer(ctx.timers, "contact shadows resolve",
+                         double(e.width) * e.height * (2.0 + 4.0 + 4.0 + 2.0 + 2.0));
+    mResolve.use();
+    bind(mResolveDepth, depth);
+    bind(mResolveRaw, *t.raw);
+    bind(mResolveHistory, mHistory.previous() ? *mHistory.previous() : *t.raw);
+    bind(mResolveMotion, motion ? *motion : depth);
+    bind(mResolveOut, mHistory.current(), ImageAccess::Write);
+    dispatch(mResolve, e, Barrier::None);
+}
+
+void ContactShadowsPass::execute(FrameContext& ctx, FrameResources& resources) {
+    mHistory.ensure(ctx.extent, GL_R16F, "contact shadows");
+    const Targets t = acquireTargets(ctx, resources);
+    const bool hasHistory = mHistory.valid() && !ctx.resetHistory;
+    mRestarted = ctx.resetHistory;
+    mParameters.update(parameters(ctx, resources, t.steps != nullptr, hasHistory));
+    mParameters.bind(kBindingParameters);
+    surfaces(ctx, resources, t);
+    march(ctx, resources, t);
+    memoryBarrier(Barrier::TextureFetch);
+    resolve(ctx, resources, t);
     resources.bind(Resource::ContactShadows, mHistory.current());
-    if (steps) {
-        resources.bind(Resource::ContactShadowSteps, *steps);
+    if (t.steps) {
+        resources.bind(Resource::ContactShadowSteps, *t.steps);
     }
     mHistory.advance();
 }

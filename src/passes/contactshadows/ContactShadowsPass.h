@@ -69,9 +69,38 @@ public:
     static constexpr float kHistoryWeight = 0.9f;
 
 private:
+    /// The frame's intermediate textures.
+    struct Targets {
+        const Texture* surface = nullptr; ///< per pixel: view normal and plane constant
+        const Texture* raw = nullptr;     ///< this frame's march
+        const Texture* steps = nullptr;   ///< the steps debug view, when asked for
+    };
+    [[nodiscard]] static Targets acquireTargets(const FrameContext& ctx, FrameResources& resources);
+    /// This frame's parameter block.
+    [[nodiscard]] ContactShadowParameters parameters(const FrameContext& ctx, const FrameResources& resources,
+                                                     bool writeSteps, bool hasHistory) const;
+    /// The three steps: the surfaces from depth (and normals), the march toward the sun, the resolve with
+    /// the history.
+    void surfaces(const FrameContext& ctx, const FrameResources& resources, const Targets& t);
+    void march(const FrameContext& ctx, const FrameResources& resources, const Targets& t);
+    void resolve(const FrameContext& ctx, const FrameResources& resources, const Targets& t);
+
     Program mSurface;
     Program mMarch;
     Program mResolve;
+    SamplerSlot mSurfaceDepth = mSurface.sampler("uLinearDepth");
+    SamplerSlot mSurfaceNormals = mSurface.sampler("uNormalTexture");
+    SamplerSlot mSurfaceObjectId = mSurface.sampler("uObjectId");
+    ImageSlot mSurfaceOut = mSurface.image("uSurface");
+    SamplerSlot mMarchDepth = mMarch.sampler("uLinearDepth");
+    SamplerSlot mMarchSurface = mMarch.sampler("uSurface");
+    ImageSlot mMarchRaw = mMarch.image("uRaw");
+    ImageSlot mMarchSteps = mMarch.image("uStepsTaken");
+    SamplerSlot mResolveDepth = mResolve.sampler("uLinearDepth");
+    SamplerSlot mResolveRaw = mResolve.sampler("uRaw");
+    SamplerSlot mResolveHistory = mResolve.sampler("uHistory");
+    SamplerSlot mResolveMotion = mResolve.sampler("uMotion");
+    ImageSlot mResolveOut = mResolve.image("uOut");
     ParameterBlock<ContactShadowParameters> mParameters;
     HistoryTexture mHistory;  ///< the accumulated visibility, also the stage's output
     Texture mNoSteps;         ///< bound to the steps image unit when no debug view asks for them

@@ -117,25 +117,21 @@ void DebugViewPass::execute(FrameContext& ctx, FrameResources& resources) {
     const double bytes = (raw ? 32 : 8) + bytesPerTexel(format);
     ScopedGpuTimer timer(ctx.timers, "debug view", double(e.width) * e.height * bytes);
     mRaw = nullptr;
-    if (isInputView(mView)) {
-        bindInputView(ctx, resources, raw, bitDepth);
-    } else {
-        bindSceneView(ctx, resources, bitDepth);
-    }
-    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
     if (raw) {
         // The same values unclamped: what an EXR of the view holds (sceneReferred()).
-        PooledTexture& values = resources.pool().acquire(
-            {.extent = ctx.extent, .format = GL_RGBA32F, .debugName = "debug view (raw values)"});
-        glBindImageTexture(1, values.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        mRaw = &values.texture();
+        mRaw = &resources.pool()
+                    .acquire(
+                        {.extent = ctx.extent, .format = GL_RGBA32F, .debugName = "debug view (raw values)"})
+                    .texture();
     }
-    dispatchPixels(e);
-    imageWriteBarrier();
+    const Program& program = isInputView(mView) ? bindInputView(ctx, resources, bitDepth, out.texture(), mRaw)
+                                                : bindSceneView(ctx, resources, bitDepth, out.texture());
+    dispatch(program, e, Barrier::ImageWrite);
     resources.bind(Resource::DebugColor, out.texture());
 }
 
-void DebugViewPass::bindSceneView(const FrameContext& ctx, const FrameResources& resources, int bitDepth) {
+const Program& DebugViewPass::bindSceneView(const FrameContext& ctx, const FrameResources& resources,
+                                            int bitDepth, const Texture& out) {
     const AutoExposureSettings& ae = ctx.settings.autoExposure;
     const Texture* scene = resources.texture(Resource::SceneColor);
     const Texture* bloom = resources.texture(Resource::Bloom);
@@ -161,13 +157,15 @@ void DebugViewPass::bindSceneView(const FrameContext& ctx, const FrameResources&
     bindExposureStateForReading(*resources.buffer(Resource::ExposureState));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingHistogram,
                      resources.buffer(Resource::Histogram)->id());
-    glBindTextureUnit(0, scene->id());
-    glBindTextureUnit(1, mask ? mask->id() : scene->id());
-    glBindTextureUnit(2, bloom ? bloom->id() : scene->id());
+    bind(mScene, *scene);
+    bind(mMask, mask ? *mask : *scene);
+    bind(mBloom, bloom ? *bloom : *scene);
+    bind(mSceneOutput, out, ImageAccess::Write);
+    return p;
 }
 
-void DebugViewPass::bindInputView(const FrameContext& ctx, const FrameResources& resources, bool raw,
-                                  int bitDepth) {
+const Program& DebugViewPass::bindInputView(const FrameContext& ctx, const FrameResources& resources,
+                                            int bitDepth, const Texture& out, const Texture* raw) {
     const Resource source = mView == DebugView::Depth                ? Resource::LinearDepth
                             : mView == DebugView::Normals            ? Resource::Normals
                             : mView == DebugView::Motion             ? Resource::Motion
@@ -188,7 +186,12 @@ void DebugViewPass::bindInputView(const FrameContext& ctx, const FrameResources&
                              .maxCoc = ctx.settings.dof.maxCocRadius});
     mInputParameters.bind(kBindingParameters);
     p.use();
-    glBindTextureUnit(0, resources.texture(source)->id());
+    bind(mInput, *resources.texture(source));
+    bind(mInputOutput, out, ImageAccess::Write);
+    if (raw) {
+        bind(mRawOutput, *raw, ImageAccess::Write);
+    }
+    return p;
 }
 
 HistogramOverlayPass::HistogramOverlayPass()
@@ -231,10 +234,9 @@ void HistogramOverlayPass::execute(FrameContext& ctx, FrameResources& resources)
                         .keyValue = ae.keyValue});
     mParameters.bind(kBindingParameters);
     p.use();
-    glBindTextureUnit(0, resources.texture(Resource::DisplayColor)->id());
-    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-    dispatchPixels(e);
-    imageWriteBarrier();
+    bind(mDisplay, *resources.texture(Resource::DisplayColor));
+    bind(mOutput, out.texture(), ImageAccess::Write);
+    dispatch(p, e, Barrier::ImageWrite);
     resources.bind(Resource::DisplayColor, out.texture());
 }
 

@@ -80,14 +80,25 @@ public:
     }
 
 private:
-    /// Bind the scene views' program and inputs (the dispatch follows).
-    void bindSceneView(const FrameContext& ctx, const FrameResources& resources, int bitDepth);
-    /// Bind the input views' program (`raw`: the variant that also writes image unit 1) and inputs.
-    void bindInputView(const FrameContext& ctx, const FrameResources& resources, bool raw, int bitDepth);
+    /// Bind the scene views' program, inputs and `out`; returns the program (the dispatch follows).
+    const Program& bindSceneView(const FrameContext& ctx, const FrameResources& resources, int bitDepth,
+                                 const Texture& out);
+    /// Bind the input views' program (with `raw`, the variant that also writes the values unclamped to
+    /// `raw`), inputs and `out`; returns the program.
+    const Program& bindInputView(const FrameContext& ctx, const FrameResources& resources, int bitDepth,
+                                 const Texture& out, const Texture* raw);
 
     DisplayProgram mSceneProgram;
     DisplayProgram mInputProgram;
     DisplayProgram mInputRawProgram; ///< also writes the unclamped values (data views' EXR)
+    SamplerSlot mScene = mSceneProgram.sampler("uScene");
+    SamplerSlot mMask = mSceneProgram.sampler("uMask");
+    SamplerSlot mBloom = mSceneProgram.sampler("uBloom");
+    ImageSlot mSceneOutput = mSceneProgram.image("uOutput");
+    /// The input views' slots, from one file: the same units in both of its builds.
+    SamplerSlot mInput = mInputRawProgram.sampler("uInput");
+    ImageSlot mInputOutput = mInputRawProgram.image("uOutput");
+    ImageSlot mRawOutput = mInputRawProgram.image("uRaw");
     ParameterBlock<DebugSceneViewParameters> mSceneParameters;
     ParameterBlock<DebugInputViewParameters> mInputParameters;
     DebugView mView = DebugView::None;
@@ -108,6 +119,8 @@ public:
 
 private:
     DisplayProgram mProgram;
+    SamplerSlot mDisplay = mProgram.sampler("uDisplay");
+    ImageSlot mOutput = mProgram.image("uOutput");
     ParameterBlock<HistogramOverlayParameters> mParameters;
 };
 

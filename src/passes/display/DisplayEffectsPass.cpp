@@ -64,14 +64,14 @@ void DisplayEffectsPass::execute(FrameContext& ctx, FrameResources& resources) {
          .grainIntensity = s.grain.intensity,
          .frame = std::uint32_t(ctx.time.frameIndex)});
     mParameters.bind(kBindingParameters);
-    mProgram.at(bitDepth).use();
+    const Program& program = mProgram.at(bitDepth);
+    program.use();
     bindExposureStateForReading(*resources.buffer(Resource::ExposureState));
-    glBindTextureUnit(0, display.id());
-    glBindTextureUnit(1, flare ? flare->id() : mBlack.id());
-    glBindTextureUnit(2, glare ? glare->id() : mBlack.id());
-    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-    dispatchPixels(e);
-    imageWriteBarrier();
+    bind(mDisplay, display);
+    bind(mFlare, flare ? *flare : mBlack);
+    bind(mGlare, glare ? *glare : mBlack);
+    bind(mOutput, out.texture(), ImageAccess::Write);
+    dispatch(program, e, Barrier::ImageWrite);
     resources.bind(Resource::DisplayColor, out.texture());
 }
 

@@ -47,6 +47,10 @@ public:
 
 private:
     DisplayProgram mProgram;
+    SamplerSlot mDisplay = mProgram.sampler("uDisplay");
+    SamplerSlot mFlare = mProgram.sampler("uFlareTex");
+    SamplerSlot mGlare = mProgram.sampler("uGlareTex");
+    ImageSlot mOutput = mProgram.image("uOutput");
     ParameterBlock<DisplayEffectsParameters> mParameters;
     Texture mBlack; ///< bound where an optional input is absent, so every sampler has a complete texture
 };

@@ -50,31 +50,46 @@ std::span<const ResourceUse> DofPass::uses() const {
     return kUses;
 }
 
-void DofPass::execute(FrameContext& ctx, FrameResources& resources) {
-    const DepthOfFieldSettings& s = ctx.settings.dof;
-    const Extent e = ctx.extent;
-    const Extent half{std::max(1, (e.width + 1) / 2), std::max(1, (e.height + 1) / 2)};
-    const Extent tiles{(half.width + kTileSize - 1) / kTileSize, (half.height + kTileSize - 1) / kTileSize};
-    const CocModel model = cocModel(s, ctx.inputs.camera->lens, e.height);
-    if (s.mode == DofMode::Physical) {
-        // r(z) = scale / z + bias is monotonic in 1 / z: its largest size lies at the near plane or at
-        // infinity.
-        const float largest =
-            std::max(std::abs(model.bias), std::abs(model.scale / ctx.inputs.camera->nearPlane + model.bias));
-        if (largest < 0.1f) {
-            const Lens& lens = ctx.inputs.camera->lens;
-            warnOnce(
-                "dof-invisible",
-                fmt::format("dof.enabled: the lens (f/{:g}, {:g} mm, focus {:g}) blurs nothing visibly: its "
-                            "largest circle of confusion is {:.3f} pixels, under a tenth of a pixel at every "
-                            "depth",
-                            lens.fNumber, lens.focalLengthMm, lens.focusDistance, largest));
-        }
-    }
+DofPass::Targets DofPass::acquireTargets(Extent e, FrameResources& resources) {
+    Targets t;
+    t.full = e;
+    t.half = {std::max(1, (e.width + 1) / 2), std::max(1, (e.height + 1) / 2)};
+    t.tiles = {(t.half.width + kTileSize - 1) / kTileSize, (t.half.height + kTileSize - 1) / kTileSize};
+    TexturePool& pool = resources.pool();
+    t.coc = &pool.acquire(target(e, GL_R16F, "dof coc")).texture();
+    t.farField = &pool.acquire(target(t.half, GL_RGBA16F, "dof far field")).texture();
+    t.nearField = &pool.acquire(target(t.half, GL_RGBA16F, "dof near field")).texture();
+    t.tileMax = &pool.acquire(target(t.tiles, GL_R16F, "dof near tiles")).texture();
+    t.tileReach = &pool.acquire(target(t.tiles, GL_R16F, "dof near tiles (dilated)")).texture();
+    t.farBlur = &pool.acquire(target(t.half, GL_RGBA16F, "dof far blur")).texture();
+    t.nearBlur = &pool.acquire(target(t.half, GL_RGBA16F, "dof near blur")).texture();
+    t.out = &pool.acquire(target(e, GL_RGBA16F, "depth of field")).texture();
+    return t;
+}
 
+void DofPass::warnIfInvisible(const FrameContext& ctx, const CocModel& model) {
+    if (ctx.settings.dof.mode != DofMode::Physical) {
+        return;
+    }
+    // r(z) = scale / z + bias is monotonic in 1 / z: its largest size lies at the near plane or at infinity.
+    const float largest =
+        std::max(std::abs(model.bias), std::abs(model.scale / ctx.inputs.camera->nearPlane + model.bias));
+    if (largest < 0.1f) {
+        const Lens& lens = ctx.inputs.camera->lens;
+        warnOnce(
+            "dof-invisible",
+            fmt::format("dof.enabled: the lens (f/{:g}, {:g} mm, focus {:g}) blurs nothing visibly: its "
+                        "largest circle of confusion is {:.3f} pixels, under a tenth of a pixel at every "
+                        "depth",
+                        lens.fNumber, lens.focalLengthMm, lens.focusDistance, largest));
+    }
+}
+
+DofParameters DofPass::parameters(const FrameContext& ctx, const CocModel& model, const Targets& t) {
+    const DepthOfFieldSettings& s = ctx.settings.dof;
     DofParameters p{};
-    p.fullSize = glm::vec2(float(e.width), float(e.height));
-    p.halfSize = glm::vec2(float(half.width), float(half.height));
+    p.fullSize = glm::vec2(float(t.full.width), float(t.full.height));
+    p.halfSize = glm::vec2(float(t.half.width), float(t.half.height));
     p.cocScale = model.scale;
     p.cocBias = model.bias;
     p.focalDistance = s.focalDistance;
@@ -85,87 +100,100 @@ void DofPass::execute(FrameContext& ctx, FrameResources& resources) {
     p.kernel = s.kernel == DofKernel::Hexagon ? 1 : 0;
     p.rings = rings(s.quality);
     p.tileSize = kTileSize;
-    p.tileCount = glm::ivec2(tiles.width, tiles.height);
+    p.tileCount = glm::ivec2(t.tiles.width, t.tiles.height);
     // The near field's largest radius, in half-resolution pixels, reaches this many tiles.
     p.dilation = std::max(1, int(std::ceil(0.5f * s.maxCocRadius / float(kTileSize))));
-    mParameters.update(p);
-    mParameters.bind(kBindingParameters);
+    return p;
+}
 
-    TexturePool& pool = resources.pool();
-    const Texture& coc = pool.acquire(target(e, GL_R16F, "dof coc")).texture();
-    const Texture& farField = pool.acquire(target(half, GL_RGBA16F, "dof far field")).texture();
-    const Texture& nearField = pool.acquire(target(half, GL_RGBA16F, "dof near field")).texture();
-    const Texture& tileMax = pool.acquire(target(tiles, GL_R16F, "dof near tiles")).texture();
-    const Texture& tileReach = pool.acquire(target(tiles, GL_R16F, "dof near tiles (dilated)")).texture();
-    const Texture& farBlur = pool.acquire(target(half, GL_RGBA16F, "dof far blur")).texture();
-    const Texture& nearBlur = pool.acquire(target(half, GL_RGBA16F, "dof near blur")).texture();
-    const Texture& out = pool.acquire(target(e, GL_RGBA16F, "depth of field")).texture();
-    const Texture& color = *resources.texture(Resource::SceneColor);
-    const Texture& depth = *resources.texture(Resource::LinearDepth);
-
-    const double texels = double(e.width) * e.height;
-    const double halfTexels = double(half.width) * half.height;
+void DofPass::circlesOfConfusion(const FrameContext& ctx, const FrameResources& resources, const Targets& t) {
     {
-        ScopedGpuTimer timer(ctx.timers, "dof coc", texels * (4.0 + 2.0));
+        ScopedGpuTimer timer(ctx.timers, "dof coc", double(t.full.width) * t.full.height * (4.0 + 2.0));
         mCoc.use();
-        glBindTextureUnit(0, depth.id());
-        glBindImageTexture(0, coc.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-        dispatchPixels(e);
+        bind(mCocDepth, *resources.texture(Resource::LinearDepth));
+        bind(mCocOut, *t.coc, ImageAccess::Write);
+        dispatch(mCoc, t.full, Barrier::None);
     }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    memoryBarrier(Barrier::TextureFetch);
+}
+
+void DofPass::prepareFields(const FrameContext& ctx, const FrameResources& resources, const Targets& t) {
     {
-        ScopedGpuTimer timer(ctx.timers, "dof prepare", texels * (8.0 + 2.0) + halfTexels * 16.0);
+        ScopedGpuTimer timer(ctx.timers, "dof prepare",
+                             double(t.full.width) * t.full.height * (8.0 + 2.0) +
+                                 double(t.half.width) * t.half.height * 16.0);
         mPrepare.use();
-        glBindTextureUnit(0, color.id());
-        glBindTextureUnit(1, coc.id());
-        glBindImageTexture(0, farField.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glBindImageTexture(1, nearField.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        dispatchPixels(half);
+        bind(mPrepareColor, *resources.texture(Resource::SceneColor));
+        bind(mPrepareCoc, *t.coc);
+        bind(mPrepareFar, *t.farField, ImageAccess::Write);
+        bind(mPrepareNear, *t.nearField, ImageAccess::Write);
+        dispatch(mPrepare, t.half, Barrier::None);
     }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    memoryBarrier(Barrier::TextureFetch);
+}
+
+void DofPass::nearTiles(const FrameContext& ctx, const Targets& t) {
     {
-        ScopedGpuTimer timer(ctx.timers, "dof tiles", halfTexels * 8.0);
+        ScopedGpuTimer timer(ctx.timers, "dof tiles", double(t.half.width) * t.half.height * 8.0);
         mTiles.use();
-        glBindTextureUnit(0, nearField.id());
-        glBindImageTexture(0, tileMax.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-        dispatchPixels(tiles);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        bind(mTilesSource, *t.nearField);
+        bind(mTilesOut, *t.tileMax, ImageAccess::Write);
+        dispatch(mTiles, t.tiles, Barrier::TextureFetch);
         mDilate.use();
-        glBindTextureUnit(0, tileMax.id());
-        glBindImageTexture(0, tileReach.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-        dispatchPixels(tiles);
+        bind(mDilateSource, *t.tileMax);
+        bind(mDilateOut, *t.tileReach, ImageAccess::Write);
+        dispatch(mDilate, t.tiles, Barrier::None);
     }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    memoryBarrier(Barrier::TextureFetch);
+}
+
+void DofPass::gather(const FrameContext& ctx, const Targets& t) {
+    const double halfTexels = double(t.half.width) * t.half.height;
     {
         // The half-resolution field read once from memory (the disc's taps hit the cache), the blur written.
         ScopedGpuTimer timer(ctx.timers, "dof far", halfTexels * (8.0 + 8.0));
         mFar.use();
-        glBindTextureUnit(0, farField.id());
-        glBindTextureUnit(1, tileReach.id());
-        glBindImageTexture(0, farBlur.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        dispatchPixels(half);
+        bind(mFarField, *t.farField);
+        bind(mFarTiles, *t.tileReach);
+        bind(mFarOut, *t.farBlur, ImageAccess::Write);
+        dispatch(mFar, t.half, Barrier::None);
     }
     {
         ScopedGpuTimer timer(ctx.timers, "dof near", halfTexels * (8.0 + 8.0));
         mNear.use();
-        glBindTextureUnit(0, nearField.id());
-        glBindTextureUnit(1, tileReach.id());
-        glBindImageTexture(0, nearBlur.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        dispatchPixels(half);
+        bind(mNearField, *t.nearField);
+        bind(mNearTiles, *t.tileReach);
+        bind(mNearOut, *t.nearBlur, ImageAccess::Write);
+        dispatch(mNear, t.half, Barrier::None);
     }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    {
-        ScopedGpuTimer timer(ctx.timers, "dof composite", texels * (8.0 + 2.0 + 8.0 + 8.0));
-        mComposite.use();
-        glBindTextureUnit(0, color.id());
-        glBindTextureUnit(1, coc.id());
-        glBindTextureUnit(2, farBlur.id());
-        glBindTextureUnit(3, nearBlur.id());
-        glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        dispatchPixels(e);
-    }
-    resources.bind(Resource::SceneColor, out);
-    resources.bind(Resource::DofCoc, coc);
+    memoryBarrier(Barrier::TextureFetch);
+}
+
+void DofPass::composite(const FrameContext& ctx, const FrameResources& resources, const Targets& t) {
+    ScopedGpuTimer timer(ctx.timers, "dof composite",
+                         double(t.full.width) * t.full.height * (8.0 + 2.0 + 8.0 + 8.0));
+    mComposite.use();
+    bind(mCompositeColor, *resources.texture(Resource::SceneColor));
+    bind(mCompositeCoc, *t.coc);
+    bind(mCompositeFar, *t.farBlur);
+    bind(mCompositeNear, *t.nearBlur);
+    bind(mCompositeOut, *t.out, ImageAccess::Write);
+    dispatch(mComposite, t.full, Barrier::None);
+}
+
+void DofPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const CocModel model = cocModel(ctx.settings.dof, ctx.inputs.camera->lens, ctx.extent.height);
+    warnIfInvisible(ctx, model);
+    const Targets t = acquireTargets(ctx.extent, resources);
+    mParameters.update(parameters(ctx, model, t));
+    mParameters.bind(kBindingParameters);
+    circlesOfConfusion(ctx, resources, t);
+    prepareFields(ctx, resources, t);
+    nearTiles(ctx, t);
+    gather(ctx, t);
+    composite(ctx, resources, t);
+    resources.bind(Resource::SceneColor, *t.out);
+    resources.bind(Resource::DofCoc, *t.coc);
 }
 
 } // namespace photopic

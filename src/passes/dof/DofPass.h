@@ -15,6 +15,8 @@
 
 namespace photopic {
 
+struct CocModel; // core/DepthOfField.h
+
 /// std140 mirror of dof_common.h.glsl's parameter block.
 struct DofParameters {
     glm::vec2 fullSize{1.0f};
@@ -54,6 +56,31 @@ public:
     static constexpr int kTileSize = 8;
 
 private:
+    /// The frame's sizes, intermediate textures and output.
+    struct Targets {
+        Extent full, half, tiles;
+        const Texture* coc = nullptr;       ///< signed, full-resolution pixels
+        const Texture* farField = nullptr;  ///< half resolution
+        const Texture* nearField = nullptr; ///< half resolution
+        const Texture* tileMax = nullptr;   ///< the near field's largest CoC per tile
+        const Texture* tileReach = nullptr; ///< ... dilated to the tiles it reaches
+        const Texture* farBlur = nullptr;
+        const Texture* nearBlur = nullptr;
+        const Texture* out = nullptr;
+    };
+    [[nodiscard]] static Targets acquireTargets(Extent e, FrameResources& resources);
+    /// Warns once when a physical lens blurs nothing visibly.
+    static void warnIfInvisible(const FrameContext& ctx, const CocModel& model);
+    [[nodiscard]] static DofParameters parameters(const FrameContext& ctx, const CocModel& model,
+                                                  const Targets& t);
+    /// The steps: circles of confusion, the half-resolution fields, the near field's tiles, the two
+    /// gathers, the composite.
+    void circlesOfConfusion(const FrameContext& ctx, const FrameResources& resources, const Targets& t);
+    void prepareFields(const FrameContext& ctx, const FrameResources& resources, const Targets& t);
+    void nearTiles(const FrameContext& ctx, const Targets& t);
+    void gather(const FrameContext& ctx, const Targets& t);
+    void composite(const FrameContext& ctx, const FrameResources& resources, const Targets& t);
+
     Program mCoc;
     Program mPrepare;
     Program mTiles;
@@ -61,6 +88,27 @@ private:
     Program mFar;
     Program mNear;
     Program mComposite;
+    SamplerSlot mCocDepth = mCoc.sampler("uLinearDepth");
+    ImageSlot mCocOut = mCoc.image("uCoc");
+    SamplerSlot mPrepareColor = mPrepare.sampler("uColor");
+    SamplerSlot mPrepareCoc = mPrepare.sampler("uCoc");
+    ImageSlot mPrepareFar = mPrepare.image("uFar");
+    ImageSlot mPrepareNear = mPrepare.image("uNear");
+    SamplerSlot mTilesSource = mTiles.sampler("uSource");
+    ImageSlot mTilesOut = mTiles.image("uTiles");
+    SamplerSlot mDilateSource = mDilate.sampler("uSource");
+    ImageSlot mDilateOut = mDilate.image("uTiles");
+    SamplerSlot mFarField = mFar.sampler("uField");
+    SamplerSlot mFarTiles = mFar.sampler("uTiles"); ///< read by the near gather only: inactive here
+    ImageSlot mFarOut = mFar.image("uOut");
+    SamplerSlot mNearField = mNear.sampler("uField");
+    SamplerSlot mNearTiles = mNear.sampler("uTiles");
+    ImageSlot mNearOut = mNear.image("uOut");
+    SamplerSlot mCompositeColor = mComposite.sampler("uColor");
+    SamplerSlot mCompositeCoc = mComposite.sampler("uCoc");
+    SamplerSlot mCompositeFar = mComposite.sampler("uFar");
+    SamplerSlot mCompositeNear = mComposite.sampler("uNear");
+    ImageSlot mCompositeOut = mComposite.image("uOut");
     ParameterBlock<DofParameters> mParameters;
 };
 

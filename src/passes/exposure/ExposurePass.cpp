@@ -147,23 +147,11 @@ std::vector<ExposureTelemetry> ExposurePass::drainTelemetry() {
     return out;
 }
 
-void ExposurePass::execute(const Inputs& in) noexcept {
-    DebugGroup group("exposure adaptation");
+namespace {
+
+/// The adaptation kernel's parameter block for `in`.
+ExposureParameters adaptationParameters(const ExposurePass::Inputs& in) noexcept {
     const AutoExposureSettings& s = *in.settings;
-    // Auto exposure off, nothing metered, no reset: the kernel writes the manual exposure and zeros, from the
-    // manual EV alone. When the last dispatch was such a frame on this buffer with this EV, the buffer
-    // already holds what this one would write, and the dispatch is skipped (the bracket stays, empty, for the
-    // timings' table).
-    const bool idle = !s.enabled && !in.metered && !in.histogramBuilt && !in.reset && !in.appliedOverride;
-    const std::uint32_t evBits = std::bit_cast<std::uint32_t>(in.manualEV);
-    const bool unchanged = idle && mIdleBuffer == in.exposureState->id() && mIdleManualEvBits == evBits;
-    ScopedGpuTimer timer(in.timers, "exposure adaptation",
-                         unchanged ? 0.0 : double(sizeof(GpuExposureState)) * 2 + 1024);
-    if (unchanged) {
-        return;
-    }
-    mIdleBuffer = idle ? in.exposureState->id() : 0;
-    mIdleManualEvBits = evBits;
     // Settings validation caps the curve at kMaxCompensationCurvePoints; the clamp keeps an unvalidated
     // struct from overrunning the shader's array.
     const std::size_t curveCount = std::min(s.compensationCurve.size(), kMaxCompensationCurvePoints);
@@ -197,17 +185,38 @@ void ExposurePass::execute(const Inputs& in) noexcept {
         parameters.curve[i].x = s.compensationCurve[i].x;
         parameters.curve[i].y = s.compensationCurve[i].y;
     }
-    mParameters.update(parameters);
+    return parameters;
+}
+
+} // namespace
+
+void ExposurePass::execute(const Inputs& in) noexcept {
+    DebugGroup group("exposure adaptation");
+    const AutoExposureSettings& s = *in.settings;
+    // Auto exposure off, nothing metered, no reset: the kernel writes the manual exposure and zeros, from the
+    // manual EV alone. When the last dispatch was such a frame on this buffer with this EV, the buffer
+    // already holds what this one would write, and the dispatch is skipped (the bracket stays, empty, for the
+    // timings' table).
+    const bool idle = !s.enabled && !in.metered && !in.histogramBuilt && !in.reset && !in.appliedOverride;
+    const std::uint32_t evBits = std::bit_cast<std::uint32_t>(in.manualEV);
+    const bool unchanged = idle && mIdleBuffer == in.exposureState->id() && mIdleManualEvBits == evBits;
+    ScopedGpuTimer timer(in.timers, "exposure adaptation",
+                         unchanged ? 0.0 : double(sizeof(GpuExposureState)) * 2 + 1024);
+    if (unchanged) {
+        return;
+    }
+    mIdleBuffer = idle ? in.exposureState->id() : 0;
+    mIdleManualEvBits = evBits;
+    mParameters.update(adaptationParameters(in));
     mParameters.bind(kBindingParameters);
 
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingExposureState, in.exposureState->id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingHistogram, in.histogram->id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingMetering, in.metering->id());
     mProgram.use();
-    glDispatchCompute(1, 1, 1);
     // Later passes read the state as a uniform block (bindExposureStateForReading), the next frame's
     // adaptation as a storage buffer; the readback copies it.
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    dispatch(mProgram, Groups{}, Barrier::StorageAsUniform);
 }
 
 } // namespace photopic

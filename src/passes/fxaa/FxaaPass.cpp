@@ -36,11 +36,11 @@ void FxaaPass::execute(FrameContext& ctx, FrameResources& resources) {
                         .edgeThreshold = s.edgeThreshold,
                         .edgeThresholdMin = s.edgeThresholdMin});
     mParameters.bind(kBindingParameters);
-    mProgram.at(bitDepth).use();
-    glBindTextureUnit(0, display.id());
-    glBindImageTexture(0, out.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
-    dispatchPixels(e);
-    imageWriteBarrier();
+    const Program& program = mProgram.at(bitDepth);
+    program.use();
+    bind(mInput, display);
+    bind(mOutput, out.texture(), ImageAccess::Write);
+    dispatch(program, e, Barrier::ImageWrite);
     resources.bind(Resource::DisplayColor, out.texture());
 }
 

@@ -35,6 +35,8 @@ public:
 
 private:
     DisplayProgram mProgram;
+    SamplerSlot mInput = mProgram.sampler("uInput");
+    ImageSlot mOutput = mProgram.image("uOutput");
     ParameterBlock<FxaaParameters> mParameters;
 };
 

@@ -17,7 +17,8 @@ namespace photopic {
 
 namespace {
 constexpr const char* kFft = "passes/glare/glare_fft.comp.glsl";
-// The pass's texture and image units, declared once (the shader gets them as UNIT_* / IMAGE_* #defines).
+// The pass's texture and image units, declared once (the shader gets them as UNIT_* / IMAGE_* #defines; the
+// passes bind them through the programs' slots).
 constexpr GLuint kUnitSource = 0;         ///< the scene, or the kernel image
 constexpr GLuint kUnitKernelSpectrum = 1; ///< the kernel's spectrum (the inverse column pass)
 constexpr GLuint kImageSpectrum = 0;      ///< the spectrum, read in place
@@ -104,6 +105,12 @@ const GlarePass::Programs& GlarePass::programs(int rowSize, int columnSize) {
         kFft, fftDefines(rowSize, {{"ROWS", "1"}, {"INVERSE", "1"}, {"STORE_GLARE", "1"}}));
     p.kernelRows = makeComputeProgram(kFft, fftDefines(rowSize, {{"ROWS", "1"}, {"LOAD_KERNEL", "1"}}));
     p.kernelColumns = makeComputeProgram(kFft, fftDefines(columnSize, {{"STORE_SPECTRUM", "1"}}));
+    p.source = p.rowsScene.sampler("uSource");
+    p.kernelSpectrum = p.columnsInverse.sampler("uKernelSpectrum");
+    p.spectrumIn = p.columnsForward.image("uSpectrumIn");
+    p.spectrumOut = p.rowsScene.image("uSpectrumOut");
+    p.kernelOut = p.kernelColumns.image("uKernelOut");
+    p.glare = p.rowsInverse.image("uGlare");
     return mPrograms.emplace(key, std::move(p)).first->second;
 }
 
@@ -118,13 +125,13 @@ void GlarePass::ensureTargets(Extent glare, Extent padded) {
     }
 }
 
-void GlarePass::transform(Step step, const Program& program, int lines,
-                          const GlareFftParameters& parameters) {
+void GlarePass::transform(Step step, const Program& program, int lines, const GlareFftParameters& parameters,
+                          Barrier after) {
     ParameterBlock<GlareFftParameters>& block = mParameters[std::size_t(step)];
     block.update(parameters);
     block.bind(kBindingParameters);
     program.use();
-    glDispatchCompute(GLuint(lines), 1, 1);
+    dispatch(program, Groups{GLuint(lines), 1, 1}, after);
 }
 
 void GlarePass::ensureKernel(const GlareKernelParameters& p, int radius) {
@@ -146,14 +153,12 @@ void GlarePass::ensureKernel(const GlareKernelParameters& p, int radius) {
     glTextureSubImage2D(image.id(), 0, 0, 0, nx, ny, GL_RED, GL_FLOAT, wrapped.data());
     mKernelSpectrum = Texture({.extent = mPadded, .format = GL_RG32F, .debugName = "glare kernel spectrum"});
     const Programs& programs = this->programs(nx, ny);
-    glBindTextureUnit(kUnitSource, image.id());
-    glBindImageTexture(kImageTarget, mSpectrum.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    bind(programs.source, image);
+    bind(programs.spectrumOut, mSpectrum, ImageAccess::Write);
     transform(KernelRows, programs.kernelRows, ny, {.columns = nx, .loadRows = ny, .storeRows = ny});
-    computeReadBarrier();
-    glBindImageTexture(kImageSpectrum, mSpectrum.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glBindImageTexture(kImageTarget, mKernelSpectrum.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    bind(programs.spectrumIn, mSpectrum, ImageAccess::Read);
+    bind(programs.kernelOut, mKernelSpectrum, ImageAccess::Write);
     transform(KernelColumns, programs.kernelColumns, nx, {.columns = nx, .loadRows = ny, .storeRows = ny});
-    computeReadBarrier();
     mHaloShare = 1.0f - kernel.core();
     mKernelKey = p;
     mKernelPadded = mPadded;
@@ -161,41 +166,39 @@ void GlarePass::ensureKernel(const GlareKernelParameters& p, int radius) {
     ++mKernelBuilds;
 }
 
-void GlarePass::convolve(int divisor, GpuTimers* timers) {
+void GlarePass::convolve(const Texture& scene, int divisor, GpuTimers* timers) {
     const Extent glare = mGlareExtent, padded = mPadded;
     const Programs& programs = this->programs(padded.width, padded.height);
     const double spectrumBytes = texelBytes(padded, GL_RGBA32F);
+    bind(programs.source, scene);
     {
         ScopedGpuTimer timer(timers, "glare rows", texelBytes(mExtent, GL_RGBA16F) + spectrumBytes);
-        glBindImageTexture(kImageTarget, mSpectrum.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        bind(programs.spectrumOut, mSpectrum, ImageAccess::Write);
         transform(RowsScene, programs.rowsScene, glare.height,
                   {.columns = glare.width,
                    .loadRows = glare.height,
                    .storeRows = glare.height,
                    .divisor = divisor});
-        computeReadBarrier();
     }
-    glBindImageTexture(kImageSpectrum, mSpectrum.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    bind(programs.spectrumIn, mSpectrum, ImageAccess::Read);
     {
         ScopedGpuTimer timer(timers, "glare columns", 3.0 * spectrumBytes);
         transform(ColumnsForward, programs.columnsForward, padded.width,
                   {.columns = padded.width, .loadRows = glare.height, .storeRows = padded.height});
-        computeReadBarrier();
-        glBindTextureUnit(kUnitKernelSpectrum, mKernelSpectrum.id());
+        bind(programs.kernelSpectrum, mKernelSpectrum);
         transform(ColumnsInverse, programs.columnsInverse, padded.width,
                   {.columns = padded.width, .loadRows = padded.height, .storeRows = glare.height});
-        computeReadBarrier();
     }
     {
         ScopedGpuTimer timer(timers, "glare inverse rows", spectrumBytes + texelBytes(glare, GL_RGBA16F));
-        glBindImageTexture(kImageTarget, mGlare.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        bind(programs.glare, mGlare, ImageAccess::Write);
         transform(RowsInverse, programs.rowsInverse, glare.height,
                   {.columns = glare.width,
                    .loadRows = glare.height,
                    .storeRows = glare.height,
                    .scale = 1.0f / (float(padded.width) * float(padded.height)),
-                   .haloShare = mHaloShare});
-        imageWriteBarrier(); // the tone-map pass samples it
+                   .haloShare = mHaloShare},
+                  Barrier::ImageWrite); // the tone-map pass samples it
     }
 }
 
@@ -238,8 +241,7 @@ const Texture& GlarePass::execute(const Inputs& in) {
     DebugGroup group("glare");
     ensureKernel(p, radius);
     bindExposureStateForReading(*in.exposureState);
-    glBindTextureUnit(kUnitSource, in.scene->id());
-    convolve(divisor, in.timers);
+    convolve(*in.scene, divisor, in.timers);
     return mGlare;
 }
 

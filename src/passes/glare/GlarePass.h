@@ -4,8 +4,8 @@
 // pixel that stays where it is, and the halo around it (core glareHalo): this pass convolves the scene with
 // the halo alone and writes s times it, with s in alpha, as Resource::Bloom; the tone-map pass composites it
 // as it does energy-conserving bloom, scene (1 - intensity alpha) + intensity bloom, which is
-// mix(scene, mix(scene, halo, s), intensity): a light's core is the source's own pixels at full resolution and
-// the composite is energy-conserving.
+// mix(scene, mix(scene, halo, s), intensity): a light's core is the source's own pixels at full resolution
+// and the composite is energy-conserving.
 //
 // The FFT runs over a padded power-of-two frame, Nx x Ny >= (width + r) x (height + r) for a kernel of r
 // pixels, so the circular convolution's wrap-around never carries one edge of the image onto the other. The
@@ -92,17 +92,27 @@ public:
     [[nodiscard]] int kernelBuilds() const { return mKernelBuilds; }
 
 private:
+    /// The FFT's programs for one pair of line sizes, and their samplers and images: every program that
+    /// declares one has it on the same unit (the UNIT_* and IMAGE_* #defines), so one slot binds it for all.
     struct Programs {
         Program rowsScene, columnsForward, columnsInverse, rowsInverse, kernelRows, kernelColumns;
+        SamplerSlot source;         ///< the scene, or the kernel image (rowsScene, kernelRows)
+        SamplerSlot kernelSpectrum; ///< columnsInverse
+        ImageSlot spectrumIn;       ///< the spectrum, read in place (the column passes, rowsInverse)
+        ImageSlot spectrumOut;      ///< rowsScene, kernelRows, columnsForward, columnsInverse
+        ImageSlot kernelOut;        ///< kernelColumns
+        ImageSlot glare;            ///< rowsInverse
     };
     const Programs& programs(int rowSize, int columnSize);
     void ensureTargets(Extent glare, Extent padded);
     void ensureKernel(const GlareKernelParameters& p, int radius);
     /// The dispatches, each with its own parameter block (written only when its contents change).
     enum Step { RowsScene, ColumnsForward, ColumnsInverse, RowsInverse, KernelRows, KernelColumns, Steps };
-    /// The four passes of the FFT convolution of the scene into mGlare, timed when `timers`.
-    void convolve(int divisor, GpuTimers* timers);
-    void transform(Step step, const Program& program, int lines, const GlareFftParameters& parameters);
+    /// The four passes of the FFT convolution of `scene` into mGlare, timed when `timers`.
+    void convolve(const Texture& scene, int divisor, GpuTimers* timers);
+    /// One FFT dispatch of `program`, one line a work group, then `after`.
+    void transform(Step step, const Program& program, int lines, const GlareFftParameters& parameters,
+                   Barrier after = Barrier::ComputeRead);
 
     int mDivisor = 1;
     Extent mExtent;

@@ -37,9 +37,9 @@ void LinearDepthPass::execute(FrameContext& ctx, FrameResources& resources) {
                         .farPlane = camera.farPlane});
     mParameters.bind(kBindingParameters);
     mProgram.use();
-    glBindTextureUnit(0, depth.id());
-    glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    dispatchPixels(ctx.extent);
+    bind(mDepth, depth);
+    bind(mLinear, out, ImageAccess::Write);
+    dispatch(mProgram, ctx.extent, Barrier::None);
     resources.bind(Resource::LinearDepth, out);
 }
 
@@ -81,9 +81,9 @@ void CameraMotionPass::execute(FrameContext& ctx, FrameResources& resources) {
                         .cut = camera.cut ? 1 : 0});
     mParameters.bind(kBindingParameters);
     mProgram.use();
-    glBindTextureUnit(0, resources.texture(Resource::LinearDepth)->id());
-    glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-    dispatchPixels(ctx.extent);
+    bind(mLinearDepth, *resources.texture(Resource::LinearDepth));
+    bind(mMotion, out, ImageAccess::Write);
+    dispatch(mProgram, ctx.extent, Barrier::None);
     resources.bind(Resource::Motion, out);
 }
 

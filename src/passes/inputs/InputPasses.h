@@ -42,6 +42,8 @@ public:
 
 private:
     Program mProgram;
+    SamplerSlot mDepth = mProgram.sampler("uDepth");
+    ImageSlot mLinear = mProgram.image("uLinear");
     ParameterBlock<LinearDepthParameters> mParameters;
 };
 
@@ -57,6 +59,8 @@ public:
 
 private:
     Program mProgram;
+    SamplerSlot mLinearDepth = mProgram.sampler("uLinearDepth");
+    ImageSlot mMotion = mProgram.image("uMotion");
     ParameterBlock<CameraMotionParameters> mParameters;
 };
 

@@ -67,10 +67,9 @@ const Texture& LensFlarePass::execute(const Inputs& in) {
         mPrefilterParameters.bind(kBindingParameters);
         mPrefilter.use();
         bindExposureStateForReading(*in.exposureState);
-        glBindTextureUnit(0, in.scene->id());
-        glBindImageTexture(0, mSource.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
-        dispatchPixels(e);
-        imageWriteBarrier();
+        bind(mPrefilterScene, *in.scene);
+        bind(mPrefilterTarget, mSource, ImageAccess::Write);
+        dispatch(mPrefilter, e, Barrier::ImageWrite);
     }
     {
         // The small source read once from memory (every ghost's taps hit the cache), the flare written.
@@ -83,10 +82,9 @@ const Texture& LensFlarePass::execute(const Inputs& in) {
                                     .aspect = float(mExtent.width) / float(mExtent.height)});
         mFeaturesParameters.bind(kBindingParameters);
         mFeatures.use();
-        glBindTextureUnit(0, mSource.id());
-        glBindImageTexture(0, mFlare.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFormat);
-        dispatchPixels(e);
-        imageWriteBarrier();
+        bind(mFeaturesSource, mSource);
+        bind(mFeaturesTarget, mFlare, ImageAccess::Write);
+        dispatch(mFeatures, e, Barrier::ImageWrite);
     }
     return mFlare;
 }

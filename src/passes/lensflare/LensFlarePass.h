@@ -64,6 +64,10 @@ private:
 
     Program mPrefilter;
     Program mFeatures;
+    SamplerSlot mPrefilterScene = mPrefilter.sampler("uScene");
+    ImageSlot mPrefilterTarget = mPrefilter.image("uTarget");
+    SamplerSlot mFeaturesSource = mFeatures.sampler("uSource");
+    ImageSlot mFeaturesTarget = mFeatures.image("uTarget");
     ParameterBlock<LensFlarePrefilterParameters> mPrefilterParameters;
     ParameterBlock<LensFlareFeaturesParameters> mFeaturesParameters;
     Extent mExtent;

@@ -159,6 +159,56 @@ void MeteringPass::resize(Extent extent) {
     mMetering = Buffer({.size = bytes, .flags = 0, .data = nullptr, .debugName = "metering partials"});
 }
 
+void MeteringPass::clear(bool idle) {
+    if (!(idle && mCleared)) {
+        const std::uint32_t zero = 0;
+        glClearNamedBufferData(mHistogram.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+        glCopyNamedBufferSubData(mMeteringReset.id(), mMetering.id(), 0, 0, sizeof(GpuMeteringHeader));
+    }
+    mCleared = idle;
+}
+
+int MeteringPass::meter(const Inputs& in, int weightsIndex) {
+    const Extent e = mExtent;
+    const AutoExposureSettings& s = *in.settings;
+    mMeterParameters.update({.buildHistogram = in.histogram ? 1 : 0,
+                             .weights = weightsIndex,
+                             .log2Min = s.histogramLog2Min,
+                             .log2Max = s.histogramLog2Max});
+    mMeterParameters.bind(kBindingParameters);
+    // A histogram without partial sums takes the run-length kernel alone. Where the row shader is wanted (a
+    // software renderer), a histogram with a mean takes both, two reads of the image instead of the block
+    // shader's barriers; elsewhere the block shader builds both in one read.
+    const bool histogramOnly = in.histogram && weightsIndex < 0;
+    const bool rows = mRowsWithoutHistogram && !histogramOnly;
+    if (in.histogram && (histogramOnly || rows)) {
+        mMeterHistogram.use();
+        const int span = kGroupSize * kHistogramRun; // a group is kHistogramRun times as wide
+        dispatch(mMeterHistogram, Groups{GLuint((e.width + span - 1) / span), GLuint(mGroupsY), 1},
+                 Barrier::None);
+    }
+    if (!histogramOnly) {
+        const Program& program = rows ? mMeterRows[rowsVariant(weightsIndex)] : mMeter;
+        program.use();
+        dispatch(program, Groups{GLuint(mGroupsX), GLuint(mGroupsY), 1}, Barrier::None);
+    }
+    return rows ? kGroupSize : 1;
+}
+
+void MeteringPass::reduce(const Inputs& in, int rowsPerGroup) {
+    const AutoExposureSettings& s = *in.settings;
+    memoryBarrier(Barrier::Storage);
+    mReduceParameters.update({.spot = in.weights == Weights::Spot ? 1 : 0,
+                              .groups = mGroupsX * mGroupsY,
+                              .spotUv = {s.spot.u, s.spot.v},
+                              .spotRadius = s.spot.radius,
+                              .spotTaps = s.spot.taps,
+                              .rowsPerGroup = rowsPerGroup});
+    mReduceParameters.bind(kBindingParameters);
+    mReduce.use();
+    dispatch(mReduce, Groups{}, Barrier::None);
+}
+
 MeteringPass::Outputs MeteringPass::execute(const Inputs& in) noexcept {
     const Extent e = mExtent;
     const bool weighted = in.weights != Weights::None && in.weights != Weights::Spot;
@@ -170,59 +220,20 @@ MeteringPass::Outputs MeteringPass::execute(const Inputs& in) noexcept {
 
     // Every frame starts from empty bins (nothing carries over between frames) and an empty min/max, which a
     // frame that writes nothing into them finds there if the frame before wrote nothing either.
-    const bool idle = !meters && !in.metered;
-    if (!(idle && mCleared)) {
-        const std::uint32_t zero = 0;
-        glClearNamedBufferData(mHistogram.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-        glCopyNamedBufferSubData(mMeteringReset.id(), mMetering.id(), 0, 0, sizeof(GpuMeteringHeader));
-    }
-    mCleared = idle;
-
+    clear(!meters && !in.metered);
     if (!meters) {
         return outputs(); // nothing is metered: the bins stay empty
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingHistogram, mHistogram.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingMetering, mMetering.id());
-    glBindTextureUnit(0, in.scene->id());
-    glBindTextureUnit(1, in.weights == Weights::Mask && in.mask ? in.mask->id() : in.scene->id());
+    bind(mScene, *in.scene);
+    bind(mMaskSlot, in.weights == Weights::Mask && in.mask ? *in.mask : *in.scene);
     const Weights weights = in.weights == Weights::Mask && !in.mask ? Weights::Average : in.weights;
-
-    const AutoExposureSettings& s = *in.settings;
-    const int weightsIndex = weighted ? meteringModeIndex(weights) : -1;
-    mMeterParameters.update({.buildHistogram = in.histogram ? 1 : 0,
-                             .weights = weightsIndex,
-                             .log2Min = s.histogramLog2Min,
-                             .log2Max = s.histogramLog2Max});
-    mMeterParameters.bind(kBindingParameters);
-    // A histogram without partial sums takes the run-length kernel alone. Where the row shader is wanted (a
-    // software renderer), a histogram with a mean takes both, two reads of the image instead of the block
-    // shader's barriers; elsewhere the block shader builds both in one read.
-    const bool histogramOnly = in.histogram && weightsIndex < 0;
-    const bool rows = mRowsWithoutHistogram && !histogramOnly;
-    const int rowsPerGroup = rows ? kGroupSize : 1;
-    if (in.histogram && (histogramOnly || rows)) {
-        mMeterHistogram.use();
-        const int span = kGroupSize * kHistogramRun; // a group is kHistogramRun times as wide
-        glDispatchCompute(GLuint((e.width + span - 1) / span), GLuint(mGroupsY), 1);
-    }
-    if (!histogramOnly) {
-        (rows ? mMeterRows[rowsVariant(weightsIndex)] : mMeter).use();
-        glDispatchCompute(GLuint(mGroupsX), GLuint(mGroupsY), 1);
-    }
-
+    const int rowsPerGroup = meter(in, weighted ? meteringModeIndex(weights) : -1);
     if (in.weights != Weights::None) {
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        mReduceParameters.update({.spot = in.weights == Weights::Spot ? 1 : 0,
-                                  .groups = mGroupsX * mGroupsY,
-                                  .spotUv = {s.spot.u, s.spot.v},
-                                  .spotRadius = s.spot.radius,
-                                  .spotTaps = s.spot.taps,
-                                  .rowsPerGroup = rowsPerGroup});
-        mReduceParameters.bind(kBindingParameters);
-        mReduce.use();
-        glDispatchCompute(1, 1, 1);
+        reduce(in, rowsPerGroup);
     }
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    memoryBarrier(Barrier::StorageReadback);
     return outputs();
 }
 

@@ -107,6 +107,13 @@ public:
     static constexpr int kHistogramRun = 8;
 
 private:
+    /// Clears the bins and the header unless they hold their cleared state and this frame writes nothing.
+    void clear(bool idle);
+    /// The histogram and partial-sum dispatches; returns the rows a partial sum covers.
+    int meter(const Inputs& in, int weightsIndex);
+    /// The reduction of the partial sums to the reading.
+    void reduce(const Inputs& in, int rowsPerGroup);
+
     Program mMeter;
     /// No histogram: one invocation per block row, no barriers; one variant per weighting (WEIGHTS: -1 none,
     /// or the mode's index), since a CPU rasteriser computes every weight a uniform branch could choose.
@@ -115,6 +122,9 @@ private:
     /// and extremes as mMeter (metering_histogram.comp.glsl).
     Program mMeterHistogram;
     Program mReduce;
+    /// The scene and the mask: every metering program that reads one declares it on the same unit.
+    SamplerSlot mScene = mMeter.sampler("uScene");
+    SamplerSlot mMaskSlot = mMeter.sampler("uMask");
     ParameterBlock<MeteringParameters> mMeterParameters;
     ParameterBlock<MeteringReduceParameters> mReduceParameters;
     Buffer mHistogram;

@@ -50,26 +50,25 @@ bool MotionBlurPass::enabled(const FrameContext& ctx) const {
     return ctx.hdr && ctx.settings.motionBlur.enabled && ctx.settings.motionBlur.placement == mPlacement;
 }
 
-void MotionBlurPass::execute(FrameContext& ctx, FrameResources& resources) {
+MotionBlurPass::Targets MotionBlurPass::acquireTargets(const FrameContext& ctx, FrameResources& resources,
+                                                       Extent tiles) {
+    const Extent e = ctx.extent;
+    TexturePool& pool = resources.pool();
+    Targets t;
+    t.velocity = &pool.acquire(transient(e, GL_RG16F, "motion blur velocity")).texture();
+    t.tileMax = &pool.acquire(transient(tiles, GL_RG16F, "velocity tile max")).texture();
+    t.neighbourMax = &pool.acquire(transient(tiles, GL_RG16F, "velocity neighbour max")).texture();
+    t.out = &pool.acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with motion blur"})
+                 .texture();
+    if (ctx.settings.debug.view == DebugView::VelocityTiles) {
+        t.tilesView = &pool.acquire(transient(e, GL_RGBA16F, "velocity tiles (view)")).texture();
+    }
+    return t;
+}
+
+MotionBlurParameters MotionBlurPass::parameters(const FrameContext& ctx, Extent tiles, bool writeTiles) {
     const MotionBlurSettings& s = ctx.settings.motionBlur;
     const Extent e = ctx.extent;
-    const Extent tiles{(e.width + s.tileSize - 1) / s.tileSize, (e.height + s.tileSize - 1) / s.tileSize};
-    const Texture& velocity =
-        resources.pool().acquire(transient(e, GL_RG16F, "motion blur velocity")).texture();
-    const Texture& tileMax =
-        resources.pool().acquire(transient(tiles, GL_RG16F, "velocity tile max")).texture();
-    const Texture& neighbourMax =
-        resources.pool().acquire(transient(tiles, GL_RG16F, "velocity neighbour max")).texture();
-    const Texture& out =
-        resources.pool()
-            .acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with motion blur"})
-            .texture();
-    const bool writeTiles = ctx.settings.debug.view == DebugView::VelocityTiles;
-    const Texture* tilesView = nullptr;
-    if (writeTiles) {
-        tilesView = &resources.pool().acquire(transient(e, GL_RGBA16F, "velocity tiles (view)")).texture();
-    }
-
     MotionBlurParameters p{};
     p.fullSize = glm::vec2(float(e.width), float(e.height));
     p.radiusScale = 0.5f * shutterFraction(s, ctx.inputs.camera, ctx.time.dt) * s.intensity;
@@ -79,55 +78,65 @@ void MotionBlurPass::execute(FrameContext& ctx, FrameResources& resources) {
     p.frame = std::uint32_t(ctx.time.frameIndex % 1024u);
     p.writeTiles = writeTiles ? 1 : 0;
     p.tileCount = glm::ivec2(tiles.width, tiles.height);
-    mParameters.update(p);
-    mParameters.bind(kBindingParameters);
+    return p;
+}
 
+void MotionBlurPass::tileVelocities(const FrameContext& ctx, const FrameResources& resources,
+                                    const Targets& t, Extent tiles) {
+    const Extent e = ctx.extent;
     const double texels = double(e.width) * e.height;
-    const Texture& motion = *resources.texture(Resource::Motion);
-    const Texture& depth = *resources.texture(Resource::LinearDepth);
     {
         ScopedGpuTimer timer(ctx.timers, "motion blur prepare", texels * (4.0 + 4.0));
         mPrepare.use();
-        glBindTextureUnit(0, motion.id());
-        glBindImageTexture(0, velocity.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-        dispatchPixels(e);
+        bind(mPrepareMotion, *resources.texture(Resource::Motion));
+        bind(mPrepareVelocity, *t.velocity, ImageAccess::Write);
+        dispatch(mPrepare, e, Barrier::TextureFetch);
     }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
         ScopedGpuTimer timer(ctx.timers, "motion blur tile max", texels * 4.0);
         mTiles.use();
-        glBindTextureUnit(0, velocity.id());
-        glBindImageTexture(0, tileMax.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-        dispatchPixels(tiles);
+        bind(mTilesVelocity, *t.velocity);
+        bind(mTilesTileMax, *t.tileMax, ImageAccess::Write);
+        dispatch(mTiles, tiles, Barrier::TextureFetch);
     }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
         ScopedGpuTimer timer(ctx.timers, "motion blur neighbour max",
                              double(tiles.width) * tiles.height * 40.0);
         mNeighbours.use();
-        glBindTextureUnit(0, tileMax.id());
-        glBindImageTexture(0, neighbourMax.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-        dispatchPixels(tiles);
+        bind(mNeighboursTileMax, *t.tileMax);
+        bind(mNeighboursNeighbourMax, *t.neighbourMax, ImageAccess::Write);
+        dispatch(mNeighbours, tiles, Barrier::TextureFetch);
     }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    {
-        // Colour, velocity and depth, each read once from memory (the samples along a streak hit the cache),
-        // the result (and the view) written.
-        ScopedGpuTimer timer(ctx.timers, "motion blur gather",
-                             texels * (8.0 + 4.0 + 4.0 + 8.0 + (writeTiles ? 8.0 : 0.0)));
-        mGather.use();
-        glBindTextureUnit(0, resources.texture(Resource::SceneColor)->id());
-        glBindTextureUnit(1, velocity.id());
-        glBindTextureUnit(2, depth.id());
-        glBindTextureUnit(3, neighbourMax.id());
-        glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glBindImageTexture(1, tilesView ? tilesView->id() : mNoTiles.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                           GL_RGBA16F);
-        dispatchPixels(e);
-    }
-    resources.bind(Resource::SceneColor, out);
-    if (tilesView) {
-        resources.bind(Resource::VelocityTiles, *tilesView);
+}
+
+void MotionBlurPass::gather(const FrameContext& ctx, const FrameResources& resources, const Targets& t) {
+    const Extent e = ctx.extent;
+    // Colour, velocity and depth, each read once from memory (the samples along a streak hit the cache), the
+    // result (and the view) written.
+    ScopedGpuTimer timer(ctx.timers, "motion blur gather",
+                         double(e.width) * e.height * (8.0 + 4.0 + 4.0 + 8.0 + (t.tilesView ? 8.0 : 0.0)));
+    mGather.use();
+    bind(mGatherScene, *resources.texture(Resource::SceneColor));
+    bind(mGatherVelocity, *t.velocity);
+    bind(mGatherDepth, *resources.texture(Resource::LinearDepth));
+    bind(mGatherNeighbourMax, *t.neighbourMax);
+    bind(mGatherOut, *t.out, ImageAccess::Write);
+    bind(mGatherTiles, t.tilesView ? *t.tilesView : mNoTiles, ImageAccess::Write);
+    dispatch(mGather, e, Barrier::None);
+}
+
+void MotionBlurPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const MotionBlurSettings& s = ctx.settings.motionBlur;
+    const Extent e = ctx.extent;
+    const Extent tiles{(e.width + s.tileSize - 1) / s.tileSize, (e.height + s.tileSize - 1) / s.tileSize};
+    const Targets t = acquireTargets(ctx, resources, tiles);
+    mParameters.update(parameters(ctx, tiles, t.tilesView != nullptr));
+    mParameters.bind(kBindingParameters);
+    tileVelocities(ctx, resources, t, tiles);
+    gather(ctx, resources, t);
+    resources.bind(Resource::SceneColor, *t.out);
+    if (t.tilesView) {
+        resources.bind(Resource::VelocityTiles, *t.tilesView);
     }
 }
 

@@ -51,11 +51,42 @@ public:
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
 private:
+    /// The frame's intermediate textures and outputs.
+    struct Targets {
+        const Texture* velocity = nullptr;     ///< full resolution, RG16F
+        const Texture* tileMax = nullptr;      ///< per tile
+        const Texture* neighbourMax = nullptr; ///< per tile, over its 3x3 neighbourhood
+        const Texture* out = nullptr;
+        const Texture* tilesView = nullptr; ///< the velocity tiles debug view, when asked for
+    };
+    [[nodiscard]] static Targets acquireTargets(const FrameContext& ctx, FrameResources& resources,
+                                                Extent tiles);
+    /// This frame's parameter block.
+    [[nodiscard]] static MotionBlurParameters parameters(const FrameContext& ctx, Extent tiles,
+                                                         bool writeTiles);
+    /// The velocity, its per-tile maximum and the tiles' neighbourhood maximum.
+    void tileVelocities(const FrameContext& ctx, const FrameResources& resources, const Targets& t,
+                        Extent tiles);
+    /// The blur: each pixel gathers along the neighbourhood's dominant velocity.
+    void gather(const FrameContext& ctx, const FrameResources& resources, const Targets& t);
+
     MotionBlurPlacement mPlacement;
     Program mPrepare;
     Program mTiles;
     Program mNeighbours;
     Program mGather;
+    SamplerSlot mPrepareMotion = mPrepare.sampler("uMotion");
+    ImageSlot mPrepareVelocity = mPrepare.image("uVelocity");
+    SamplerSlot mTilesVelocity = mTiles.sampler("uVelocity");
+    ImageSlot mTilesTileMax = mTiles.image("uTileMax");
+    SamplerSlot mNeighboursTileMax = mNeighbours.sampler("uTileMax");
+    ImageSlot mNeighboursNeighbourMax = mNeighbours.image("uNeighbourMax");
+    SamplerSlot mGatherScene = mGather.sampler("uScene");
+    SamplerSlot mGatherVelocity = mGather.sampler("uVelocity");
+    SamplerSlot mGatherDepth = mGather.sampler("uDepth");
+    SamplerSlot mGatherNeighbourMax = mGather.sampler("uNeighbourMax");
+    ImageSlot mGatherOut = mGather.image("uOut");
+    ImageSlot mGatherTiles = mGather.image("uTiles");
     ParameterBlock<MotionBlurParameters> mParameters;
     Texture mNoTiles; ///< bound to the debug image unit when no debug view asks for the tiles
 };

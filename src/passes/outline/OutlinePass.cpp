@@ -38,11 +38,11 @@ void OutlinePass::execute(FrameContext& ctx, FrameResources& resources) {
                                                                                              : 1});
     mParameters.bind(kBindingParameters);
     mProgram.use();
-    glBindTextureUnit(0, resources.texture(Resource::SceneColor)->id());
-    glBindTextureUnit(1, depth.id());
-    glBindTextureUnit(2, normals ? normals->id() : depth.id());
-    glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    dispatchPixels(e);
+    bind(mScene, *resources.texture(Resource::SceneColor));
+    bind(mDepth, depth);
+    bind(mNormals, normals ? *normals : depth);
+    bind(mOut, out, ImageAccess::Write);
+    dispatch(mProgram, e, Barrier::None);
     resources.bind(Resource::SceneColor, out);
 }
 

@@ -35,6 +35,10 @@ public:
 
 private:
     Program mProgram;
+    SamplerSlot mScene = mProgram.sampler("uScene");
+    SamplerSlot mDepth = mProgram.sampler("uDepth");
+    SamplerSlot mNormals = mProgram.sampler("uNormals");
+    ImageSlot mOut = mProgram.image("uOut");
     ParameterBlock<OutlineParameters> mParameters;
 };
 

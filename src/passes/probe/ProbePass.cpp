@@ -145,15 +145,14 @@ void ProbePass::execute(const Inputs& in) noexcept {
     if (in.metering) {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingMetering, in.metering->id());
     }
-    glBindTextureUnit(0, in.scene->id());
+    bind(mScene, *in.scene);
     mParameters.update({.writeReading = in.metering ? 1 : 0});
     mParameters.bind(kBindingParameters);
     mProgram.use();
     // At least one invocation: it writes the reading on frames without a probe of the subject.
     const GLuint groups = GLuint(std::max<std::size_t>((count + kGroupSize - 1) / kGroupSize, 1));
-    glDispatchCompute(groups, 1, 1);
     // The adaptation pass reads gReading as an SSBO; the readback copies the probe buffer.
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    dispatch(mProgram, Groups{groups, 1, 1}, Barrier::StorageReadback);
 }
 
 } // namespace photopic

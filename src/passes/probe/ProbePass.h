@@ -74,6 +74,7 @@ public:
 
 private:
     Program mProgram;
+    SamplerSlot mScene = mProgram.sampler("uScene");
     ParameterBlock<ProbeParameters> mParameters;
     Buffer mProbes;
     Buffer mState; ///< GpuSubjectState, across frames

@@ -25,9 +25,9 @@ void SanitizePass::execute(FrameContext& ctx, FrameResources& resources) {
     const double bytes = double(e.width) * e.height * (bytesPerTexel(color.format()) + 8);
     ScopedGpuTimer timer(ctx.timers, "sanitize", bytes);
     mProgram.use();
-    glBindTextureUnit(0, color.id());
-    glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    glDispatchCompute(GLuint((e.width + 7) / 8), GLuint((e.height + 7) / 8), 1);
+    bind(mInput, color);
+    bind(mOutput, out, ImageAccess::Write);
+    dispatch(mProgram, e, Barrier::None);
     resources.bind(Resource::SceneColor, out);
 }
 

@@ -21,6 +21,8 @@ public:
 
 private:
     Program mProgram;
+    SamplerSlot mInput = mProgram.sampler("uInput");
+    ImageSlot mOutput = mProgram.image("uOutput");
 };
 
 } // namespace photopic

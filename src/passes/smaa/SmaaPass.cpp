@@ -71,28 +71,23 @@ void SmaaPass::configure(const Settings& settings) {
     }
 }
 
-void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
-    const Extent e = ctx.extent;
-    const double pixels = double(e.width) * e.height;
-    const bool hdr = mDomain == Domain::Hdr;
-    const smaa::Preset preset = smaa::preset(int(ctx.settings.smaa.quality));
-    const Resource colorResource = hdr ? Resource::SceneColor : Resource::DisplayColor;
-    const int bitDepth = hdr ? 8 : ctx.settings.output.bitDepth;
-    const GLenum colorFormat = hdr ? GL_RGBA16F : displayFormat(bitDepth);
-    const double colorBytes = bytesPerTexel(colorFormat);
-    const Texture& color = *resources.texture(colorResource);
+SmaaPass::Targets SmaaPass::acquireTargets(Extent e, GLenum colorFormat, FrameResources& resources) {
+    TexturePool& pool = resources.pool();
+    Targets t;
     // The weights step fetches two edge pixels at once through bilinear filtering.
-    const Texture& edges =
-        resources.pool().acquire({.extent = e, .format = GL_RG8, .debugName = "smaa edges"}).texture();
-    const Texture& weights = resources.pool()
-                                 .acquire({.extent = e,
-                                           .format = GL_RGBA8,
-                                           .minFilter = GL_NEAREST,
-                                           .magFilter = GL_NEAREST,
-                                           .debugName = "smaa weights"})
-                                 .texture();
-    const Texture& out =
-        resources.pool().acquire({.extent = e, .format = colorFormat, .debugName = "smaa output"}).texture();
+    t.edges = &pool.acquire({.extent = e, .format = GL_RG8, .debugName = "smaa edges"}).texture();
+    t.weights = &pool.acquire({.extent = e,
+                               .format = GL_RGBA8,
+                               .minFilter = GL_NEAREST,
+                               .magFilter = GL_NEAREST,
+                               .debugName = "smaa weights"})
+                     .texture();
+    t.out = &pool.acquire({.extent = e, .format = colorFormat, .debugName = "smaa output"}).texture();
+    return t;
+}
+
+void SmaaPass::updateParameters(const FrameContext& ctx, bool hdr) {
+    const smaa::Preset preset = smaa::preset(int(ctx.settings.smaa.quality));
     // Under taa+smaa the sub-pixel ridges are TAA's to resolve: its jittered frames sample a thin line
     // without bias, and dimming each of them would take a third of the line away from the converged image.
     mParameters.update(
@@ -103,56 +98,80 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
          .diagonalSteps = preset.diagonalSteps,
          .subpixel = hdr ? 0.0f : ctx.settings.smaa.subpixel});
     mParameters.bind(kBindingParameters);
+}
+
+void SmaaPass::detectEdges(const FrameContext& ctx, const FrameResources& resources, const Texture& color,
+                           const Targets& t, const std::string& prefix) {
+    const Extent e = ctx.extent;
+    // A 3D host's linear depth marks the silhouettes; its program is compiled the first time a frame brings
+    // one, so 2D hosts never pay for it.
+    const Texture* depth = resources.texture(Resource::LinearDepth);
+    if (depth && !mEdgesDepth) {
+        mEdgesDepth.emplace(makeComputeProgram("passes/smaa/smaa_edges.comp.glsl", depthDefines(mDomain)));
+    }
+    // Up to ten colour reads per pixel (neighbours hit the cache), the depth's and one RG8 write.
+    ScopedGpuTimer timer(
+        ctx.timers, prefix + "edges",
+        double(e.width) * e.height *
+            (bytesPerTexel(t.out->format()) + (depth ? bytesPerTexel(depth->format()) : 0.0) + 2.0));
+    const EdgesProgram& program = depth ? *mEdgesDepth : mEdges;
+    program.program.use();
+    bind(program.color, color);
+    if (depth) {
+        bind(program.depth, *depth);
+    }
+    bind(program.edges, *t.edges, ImageAccess::Write);
+    dispatch(program.program, e, Barrier::TextureFetch);
+}
+
+void SmaaPass::blendingWeights(const FrameContext& ctx, const Targets& t, const std::string& prefix) {
+    const Extent e = ctx.extent;
+    // Edge pixels search; the rest read their RG8 texel and write RGBA8.
+    ScopedGpuTimer timer(ctx.timers, prefix + "weights", double(e.width) * e.height * 6.0);
+    mWeights.use();
+    bind(mWeightsEdges, *t.edges);
+    bind(mWeightsAreaOrtho, mAreaOrtho);
+    bind(mWeightsAreaDiag, mAreaDiag);
+    bind(mWeightsSearch, mSearch);
+    bind(mWeightsOut, *t.weights, ImageAccess::Write);
+    dispatch(mWeights, e, Barrier::TextureFetch);
+}
+
+void SmaaPass::blend(const FrameContext& ctx, const Texture& color, const Targets& t, int bitDepth,
+                     const std::string& prefix) {
+    const Extent e = ctx.extent;
+    // Colour, weights and edges in (the neighbours hit the cache), colour out.
+    ScopedGpuTimer timer(ctx.timers, prefix + "blend",
+                         double(e.width) * e.height * (2.0 * bytesPerTexel(t.out->format()) + 6.0));
+    const Program& program = mBlend.at(bitDepth);
+    program.use();
+    bind(mBlendColor, color);
+    bind(mBlendWeights, *t.weights);
+    bind(mBlendEdges, *t.edges);
+    bind(mBlendOutput, *t.out, ImageAccess::Write);
+    dispatch(program, e, Barrier::None);
+}
+
+void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const bool hdr = mDomain == Domain::Hdr;
+    const Resource colorResource = hdr ? Resource::SceneColor : Resource::DisplayColor;
+    const int bitDepth = hdr ? 8 : ctx.settings.output.bitDepth;
+    const GLenum colorFormat = hdr ? GL_RGBA16F : displayFormat(bitDepth);
+    const Texture& color = *resources.texture(colorResource);
+    const Targets t = acquireTargets(ctx.extent, colorFormat, resources);
+    updateParameters(ctx, hdr);
     if (hdr) {
         bindExposureStateForReading(*resources.buffer(Resource::ExposureState));
     }
     const std::string prefix = hdr ? "smaa (hdr) " : "smaa ";
-    {
-        // A 3D host's linear depth marks the silhouettes; its program is compiled the first time a frame
-        // brings one, so 2D hosts never pay for it.
-        const Texture* depth = resources.texture(Resource::LinearDepth);
-        if (depth && !mEdgesDepth) {
-            mEdgesDepth.emplace(
-                makeComputeProgram("passes/smaa/smaa_edges.comp.glsl", depthDefines(mDomain)));
-        }
-        // Up to ten colour reads per pixel (neighbours hit the cache), the depth's and one RG8 write.
-        ScopedGpuTimer timer(ctx.timers, prefix + "edges",
-                             pixels * (colorBytes + (depth ? bytesPerTexel(depth->format()) : 0.0) + 2.0));
-        (depth ? *mEdgesDepth : mEdges).use();
-        glBindTextureUnit(0, color.id());
-        if (depth) {
-            glBindTextureUnit(1, depth->id());
-        }
-        glBindImageTexture(0, edges.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG8);
-        dispatchPixels(e);
+    detectEdges(ctx, resources, color, t, prefix);
+    blendingWeights(ctx, t, prefix);
+    blend(ctx, color, t, bitDepth, prefix);
+    // The weights step reads on units 0-3, the most of the three: none stays bound.
+    for (const SamplerSlot slot : {mWeightsEdges, mWeightsAreaOrtho, mWeightsAreaDiag, mWeightsSearch}) {
+        unbind(slot);
     }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    {
-        // Edge pixels search; the rest read their RG8 texel and write RGBA8.
-        ScopedGpuTimer timer(ctx.timers, prefix + "weights", pixels * 6.0);
-        mWeights.use();
-        glBindTextureUnit(0, edges.id());
-        glBindTextureUnit(1, mAreaOrtho.id());
-        glBindTextureUnit(2, mAreaDiag.id());
-        glBindTextureUnit(3, mSearch.id());
-        glBindImageTexture(0, weights.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
-        dispatchPixels(e);
-    }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    {
-        // Colour, weights and edges in (the neighbours hit the cache), colour out.
-        ScopedGpuTimer timer(ctx.timers, prefix + "blend", pixels * (2.0 * colorBytes + 6.0));
-        mBlend.at(bitDepth).use();
-        glBindTextureUnit(0, color.id());
-        glBindTextureUnit(1, weights.id());
-        glBindTextureUnit(2, edges.id());
-        glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, colorFormat);
-        dispatchPixels(e);
-    }
-    for (GLuint unit = 0; unit < 4; ++unit) {
-        glBindTextureUnit(unit, 0);
-    }
-    resources.bind(colorResource, out);
+    resources.bind(colorResource, *t.out);
 }
 
 } // namespace photopic

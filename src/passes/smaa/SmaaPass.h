@@ -61,12 +61,45 @@ public:
     [[nodiscard]] const Texture& searchTexture() const { return mSearch; }
 
 private:
+    /// An edge detection program and its slots (uLinearDepth inactive without SMAA_DEPTH).
+    struct EdgesProgram {
+        explicit EdgesProgram(Program p)
+            : program(std::move(p)) {}
+        Program program;
+        SamplerSlot color = program.sampler("uColor");
+        SamplerSlot depth = program.sampler("uLinearDepth");
+        ImageSlot edges = program.image("uEdges");
+    };
+    /// The frame's intermediate textures and output.
+    struct Targets {
+        const Texture* edges = nullptr;
+        const Texture* weights = nullptr;
+        const Texture* out = nullptr;
+    };
+    [[nodiscard]] static Targets acquireTargets(Extent e, GLenum colorFormat, FrameResources& resources);
+    void updateParameters(const FrameContext& ctx, bool hdr);
+    /// The three steps: edges (with the linear depth, when the frame brings one), blending weights, blend.
+    void detectEdges(const FrameContext& ctx, const FrameResources& resources, const Texture& color,
+                     const Targets& t, const std::string& prefix);
+    void blendingWeights(const FrameContext& ctx, const Targets& t, const std::string& prefix);
+    void blend(const FrameContext& ctx, const Texture& color, const Targets& t, int bitDepth,
+               const std::string& prefix);
+
     Domain mDomain;
-    Program mEdges;
+    EdgesProgram mEdges;
     /// With the frame's linear depth: silhouettes are kept whatever their neighbours. Made on first use.
-    std::optional<Program> mEdgesDepth;
+    std::optional<EdgesProgram> mEdgesDepth;
     Program mWeights;
+    SamplerSlot mWeightsEdges = mWeights.sampler("uEdges");
+    SamplerSlot mWeightsAreaOrtho = mWeights.sampler("uAreaOrtho");
+    SamplerSlot mWeightsAreaDiag = mWeights.sampler("uAreaDiag");
+    SamplerSlot mWeightsSearch = mWeights.sampler("uSearch");
+    ImageSlot mWeightsOut = mWeights.image("uWeights");
     DisplayProgram mBlend; ///< the HDR domain only ever uses its 8-bit build (which stores RGBA16F)
+    SamplerSlot mBlendColor = mBlend.sampler("uColor");
+    SamplerSlot mBlendWeights = mBlend.sampler("uWeights");
+    SamplerSlot mBlendEdges = mBlend.sampler("uEdges");
+    ImageSlot mBlendOutput = mBlend.image("uOutput");
     Texture mAreaOrtho;
     Texture mAreaDiag;
     Texture mSearch;

@@ -41,10 +41,9 @@ void SsaaAccumulator::add(const Texture& subframe, float weight, GpuTimers* time
     mParameters.update({.fraction = mCount == 0 ? 1.0f : weight / mWeightSum});
     mParameters.bind(kBindingParameters);
     mProgram.use();
-    glBindTextureUnit(0, subframe.id());
-    glBindImageTexture(0, mMean.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-    glDispatchCompute(GLuint((e.width + 7) / 8), GLuint((e.height + 7) / 8), 1);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    bind(mSubframe, subframe);
+    bind(mMeanSlot, mMean, ImageAccess::ReadWrite);
+    dispatch(mProgram, e, Barrier::ComputeRead);
     ++mCount;
 }
 

@@ -36,6 +36,8 @@ public:
 
 private:
     Program mProgram;
+    SamplerSlot mSubframe = mProgram.sampler("uSubframe");
+    ImageSlot mMeanSlot = mProgram.image("uMean");
     ParameterBlock<SsaaAccumulateParameters> mParameters;
     Texture mMean;
     float mWeightSum = 0.0f;

@@ -58,14 +58,13 @@ void DepthPyramidPass::execute(FrameContext& ctx, FrameResources& resources) {
     ScopedGpuTimer timer(ctx.timers, "ssr depth pyramid",
                          double(size0.width) * size0.height * (8.0 + 8.0 / 3.0));
     mProgram.use();
-    glBindTextureUnit(0, resources.texture(Resource::LinearDepth)->id());
-    glBindImageTexture(0, pyramid.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
     glProgramUniform2i(mProgram.id(), 1, size0.width, size0.height);
     for (int level = 0; level < levels; ++level) {
+        bind(mLinearDepth, *resources.texture(Resource::LinearDepth));
+        bind(mPyramid, pyramid, ImageAccess::ReadWrite);
         glProgramUniform1i(mProgram.id(), 0, level);
-        dispatchPixels({size0.width >> level, size0.height >> level});
         // The next level reads what this one wrote.
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        dispatch(mProgram, Extent{size0.width >> level, size0.height >> level}, Barrier::ImageAccess);
     }
     resources.bind(Resource::DepthPyramid, pyramid);
 }
@@ -95,10 +94,9 @@ void SsrHistoryPass::execute(FrameContext& ctx, FrameResources& resources) {
         ScopedGpuTimer timer(ctx.timers, "ssr history",
                              double(e.width) * e.height * (8.0 + 8.0 + 16.0 / 3.0));
         mProgram.use();
-        glBindTextureUnit(0, resources.texture(Resource::SceneColor)->id());
-        glBindImageTexture(0, mHistory.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        dispatchPixels(e);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+        bind(mScene, *resources.texture(Resource::SceneColor));
+        bind(mHistorySlot, mHistory, ImageAccess::Write); // level 0
+        dispatch(mProgram, e, Barrier::TextureFetchAndCopy);
         glGenerateTextureMipmap(mHistory.id());
     }
     mValid = true;
@@ -121,43 +119,39 @@ std::span<const ResourceUse> SsrPass::uses() const {
     return kUses;
 }
 
-void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
+SsrPass::Targets SsrPass::acquireTargets(Extent e, bool half, FrameResources& resources) {
+    TexturePool& pool = resources.pool();
+    const auto hitTexture = [&](Extent extent, const char* name) {
+        return &pool.acquire({.extent = extent,
+                              .format = GL_RGBA32F,
+                              .minFilter = GL_NEAREST,
+                              .magFilter = GL_NEAREST,
+                              .debugName = name})
+                    .texture();
+    };
+    // One hit per pixel; at half resolution the blocks' hits first, from which each pixel finds its own.
+    Targets t;
+    t.hits = hitTexture(e, "ssr hits");
+    t.blockHits = half ? hitTexture({(e.width + 1) / 2, (e.height + 1) / 2}, "ssr block hits") : nullptr;
+    t.sceneOut =
+        &pool.acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with reflections"})
+             .texture();
+    t.reflections =
+        &pool.acquire({.extent = e, .format = GL_RGBA16F, .debugName = "ssr reflections"}).texture();
+    return t;
+}
+
+const Texture* SsrPass::history(const FrameContext& ctx) const {
+    const Texture* history = ctx.resetHistory ? nullptr : mHistory.previous();
+    return history != nullptr && history->extent() == ctx.extent ? history : nullptr;
+}
+
+SsrParameters SsrPass::parameters(const FrameContext& ctx, const FrameResources& resources,
+                                  Extent traceExtent) const {
     const ReflectionSettings& s = ctx.settings.ssr;
     const Camera& camera = *ctx.inputs.camera;
     const Extent e = ctx.extent;
-    const bool half = s.resolution == ReflectionResolution::Half;
-    const Extent traceExtent = half ? Extent{(e.width + 1) / 2, (e.height + 1) / 2} : e;
-    const auto hitTexture = [&](Extent extent, const char* name) -> const Texture& {
-        return resources.pool()
-            .acquire({.extent = extent,
-                      .format = GL_RGBA32F,
-                      .minFilter = GL_NEAREST,
-                      .magFilter = GL_NEAREST,
-                      .debugName = name})
-            .texture();
-    };
-    // One hit per pixel; at half resolution the blocks' hits first, from which each pixel finds its own.
-    const Texture& hits = hitTexture(e, "ssr hits");
-    const Texture* blockHits = half ? &hitTexture(traceExtent, "ssr block hits") : nullptr;
-    const Texture& sceneOut =
-        resources.pool()
-            .acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with reflections"})
-            .texture();
-    const Texture& reflections =
-        resources.pool()
-            .acquire({.extent = e, .format = GL_RGBA16F, .debugName = "ssr reflections"})
-            .texture();
     const Texture* normals = resources.texture(Resource::Normals);
-    const Texture* material = resources.texture(Resource::Material);
-    const Texture* motion = resources.texture(Resource::Motion);
-    const Texture* history = ctx.resetHistory ? nullptr : mHistory.previous();
-    if (history != nullptr && history->extent() != e) {
-        history = nullptr;
-    }
-    const Texture& depth = *resources.texture(Resource::LinearDepth);
-    const Texture& pyramid = *resources.texture(Resource::DepthPyramid);
-    const Texture& scene = *resources.texture(Resource::SceneColor);
-
     SsrParameters p{};
     p.projection = camera.projection;
     p.reprojection = camera.prevViewProjection * glm::inverse(camera.view);
@@ -174,55 +168,82 @@ void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Extent pyramidSize = depthPyramidExtent(e);
     p.pyramidSize = glm::ivec2(pyramidSize.width, pyramidSize.height);
     p.normals = normals == nullptr ? 0 : ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 2 : 1;
-    p.hasMaterial = material ? 1 : 0;
-    p.hasHistory = history ? 1 : 0;
-    p.hasMotion = motion ? 1 : 0;
-    p.half = half ? 1 : 0;
-    mParameters.update(p);
-    mParameters.bind(kBindingParameters);
+    p.hasMaterial = resources.texture(Resource::Material) ? 1 : 0;
+    p.hasHistory = history(ctx) ? 1 : 0;
+    p.hasMotion = resources.texture(Resource::Motion) ? 1 : 0;
+    p.half = s.resolution == ReflectionResolution::Half ? 1 : 0;
+    return p;
+}
 
-    const double tracePixels = double(traceExtent.width) * traceExtent.height;
+void SsrPass::bindTrace(const TraceProgram& trace, const FrameResources& resources, const Texture& hits) {
+    const Texture& depth = *resources.texture(Resource::LinearDepth);
+    const Texture* normals = resources.texture(Resource::Normals);
+    const Texture* material = resources.texture(Resource::Material);
+    trace.program.use();
+    bind(trace.depth, depth);
+    bind(trace.normals, normals ? *normals : depth);
+    bind(trace.material, material ? *material : depth);
+    bind(trace.pyramid, *resources.texture(Resource::DepthPyramid));
+    bind(trace.hits, hits, ImageAccess::Write);
+}
+
+void SsrPass::trace(const FrameContext& ctx, const FrameResources& resources, const Targets& t,
+                    Extent traceExtent) {
+    const Extent e = ctx.extent;
     const double pixels = double(e.width) * e.height;
-    glBindTextureUnit(0, depth.id());
-    glBindTextureUnit(1, normals ? normals->id() : depth.id());
-    glBindTextureUnit(2, material ? material->id() : depth.id());
-    {
-        // Depth, normal and material at the origin, the pyramid (4/3 of a full-resolution R32F) read once
-        // from memory, the hit written; at half resolution the blocks' hits also written and read.
-        const double inputs =
-            pixels * (4.0 + (normals ? 8.0 : 0.0) + (material ? 8.0 : 0.0) + 4.0 * 4.0 / 3.0);
-        ScopedGpuTimer timer(ctx.timers, "ssr trace",
-                             inputs + pixels * 16.0 + (half ? 2.0 * tracePixels * 16.0 : 0.0));
-        mTrace.use();
-        glBindTextureUnit(3, pyramid.id());
-        glBindImageTexture(0, (half ? *blockHits : hits).id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        dispatchPixels(traceExtent);
-        if (half) {
-            glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-            mRefine.use();
-            glBindTextureUnit(4, blockHits->id());
-            glBindImageTexture(0, hits.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-            dispatchPixels(e);
-        }
+    const double tracePixels = double(traceExtent.width) * traceExtent.height;
+    const bool half = t.blockHits != nullptr;
+    // Depth, normal and material at the origin, the pyramid (4/3 of a full-resolution R32F) read once from
+    // memory, the hit written; at half resolution the blocks' hits also written and read.
+    const double inputs = pixels * (4.0 + (resources.texture(Resource::Normals) ? 8.0 : 0.0) +
+                                    (resources.texture(Resource::Material) ? 8.0 : 0.0) + 4.0 * 4.0 / 3.0);
+    ScopedGpuTimer timer(ctx.timers, "ssr trace",
+                         inputs + pixels * 16.0 + (half ? 2.0 * tracePixels * 16.0 : 0.0));
+    bindTrace(mTrace, resources, half ? *t.blockHits : *t.hits);
+    dispatch(mTrace.program, traceExtent, half ? Barrier::TextureFetch : Barrier::None);
+    if (half) {
+        bindTrace(mRefine, resources, *t.hits);
+        bind(mRefine.blockHits, *t.blockHits);
+        dispatch(mRefine.program, e, Barrier::None);
     }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    {
-        // The hits, the scene colour, the history, motion and material where present, each once; two outputs.
-        ScopedGpuTimer timer(ctx.timers, "ssr resolve",
-                             pixels * (16.0 + 8.0 + (history ? 8.0 : 0.0) + (motion ? 4.0 : 0.0) +
-                                       (material ? 8.0 : 0.0) + 16.0));
-        mResolve.use();
-        glBindTextureUnit(1, scene.id());
-        glBindTextureUnit(2, history ? history->id() : scene.id());
-        glBindTextureUnit(3, hits.id());
-        glBindTextureUnit(4, motion ? motion->id() : depth.id());
-        glBindTextureUnit(5, material ? material->id() : depth.id());
-        glBindImageTexture(0, sceneOut.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glBindImageTexture(1, reflections.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        dispatchPixels(e);
-    }
-    resources.bind(Resource::SceneColor, sceneOut);
-    resources.bind(Resource::Reflections, reflections);
+}
+
+void SsrPass::resolve(const FrameContext& ctx, const FrameResources& resources, const Targets& t) {
+    const Extent e = ctx.extent;
+    const Texture* history = this->history(ctx);
+    const Texture* motion = resources.texture(Resource::Motion);
+    const Texture* material = resources.texture(Resource::Material);
+    const Texture& depth = *resources.texture(Resource::LinearDepth);
+    const Texture& scene = *resources.texture(Resource::SceneColor);
+    // The hits, the scene colour, the history, motion and material where present, each once; two outputs.
+    ScopedGpuTimer timer(
+        ctx.timers, "ssr resolve",
+        double(e.width) * e.height *
+            (16.0 + 8.0 + (history ? 8.0 : 0.0) + (motion ? 4.0 : 0.0) + (material ? 8.0 : 0.0) + 16.0));
+    mResolve.use();
+    bind(mResolveDepth, depth);
+    bind(mResolveScene, scene);
+    bind(mResolveHistory, history ? *history : scene);
+    bind(mResolveHits, *t.hits);
+    bind(mResolveMotion, motion ? *motion : depth);
+    bind(mResolveMaterial, material ? *material : depth);
+    bind(mResolveOutScene, *t.sceneOut, ImageAccess::Write);
+    bind(mResolveOutReflections, *t.reflections, ImageAccess::Write);
+    dispatch(mResolve, e, Barrier::None);
+}
+
+void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
+    const Extent e = ctx.extent;
+    const bool half = ctx.settings.ssr.resolution == ReflectionResolution::Half;
+    const Extent traceExtent = half ? Extent{(e.width + 1) / 2, (e.height + 1) / 2} : e;
+    const Targets t = acquireTargets(e, half, resources);
+    mParameters.update(parameters(ctx, resources, traceExtent));
+    mParameters.bind(kBindingParameters);
+    trace(ctx, resources, t, traceExtent);
+    memoryBarrier(Barrier::TextureFetch);
+    resolve(ctx, resources, t);
+    resources.bind(Resource::SceneColor, *t.sceneOut);
+    resources.bind(Resource::Reflections, *t.reflections);
 }
 
 } // namespace photopic

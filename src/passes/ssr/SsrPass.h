@@ -72,6 +72,8 @@ public:
 
 private:
     Program mProgram;
+    SamplerSlot mLinearDepth = mProgram.sampler("uLinearDepth");
+    ImageSlot mPyramid = mProgram.image("uPyramid");
 };
 
 /// Keeps the frame's HDR image after TAA for the next frame's reflections.
@@ -93,6 +95,8 @@ public:
 
 private:
     Program mProgram;
+    SamplerSlot mScene = mProgram.sampler("uScene");
+    ImageSlot mHistorySlot = mProgram.image("uHistory");
     Texture mHistory;
     bool mValid = false;
 };
@@ -110,10 +114,49 @@ public:
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
 private:
+    /// A trace program (ssr_trace.comp.glsl, with or without REFINE) and its slots.
+    struct TraceProgram {
+        explicit TraceProgram(Program p)
+            : program(std::move(p)) {}
+        Program program;
+        SamplerSlot depth = program.sampler("uLinearDepth");
+        SamplerSlot normals = program.sampler("uNormalTexture");
+        SamplerSlot material = program.sampler("uMaterial");
+        SamplerSlot pyramid = program.sampler("uPyramid");
+        SamplerSlot blockHits = program.sampler("uBlockHits"); ///< REFINE only
+        ImageSlot hits = program.image("uHits");
+    };
+    /// The frame's intermediate textures and outputs.
+    struct Targets {
+        const Texture* hits = nullptr;      ///< one per pixel
+        const Texture* blockHits = nullptr; ///< half resolution: the blocks' hits
+        const Texture* sceneOut = nullptr;
+        const Texture* reflections = nullptr;
+    };
+    [[nodiscard]] static Targets acquireTargets(Extent e, bool half, FrameResources& resources);
+    /// Last frame's image when this frame can reuse it, else nullptr.
+    [[nodiscard]] const Texture* history(const FrameContext& ctx) const;
+    [[nodiscard]] SsrParameters parameters(const FrameContext& ctx, const FrameResources& resources,
+                                           Extent traceExtent) const;
+    /// Binds the inputs a trace program reads, and its output.
+    static void bindTrace(const TraceProgram& trace, const FrameResources& resources, const Texture& hits);
+    /// The trace, and at half resolution the refinement of the blocks' hits to each pixel's.
+    void trace(const FrameContext& ctx, const FrameResources& resources, const Targets& t,
+               Extent traceExtent);
+    void resolve(const FrameContext& ctx, const FrameResources& resources, const Targets& t);
+
     const SsrHistoryPass& mHistory;
-    Program mTrace;
-    Program mRefine; ///< half resolution: each pixel's hit from the blocks' hits
+    TraceProgram mTrace;
+    TraceProgram mRefine; ///< half resolution: each pixel's hit from the blocks' hits
     Program mResolve;
+    SamplerSlot mResolveDepth = mResolve.sampler("uLinearDepth");
+    SamplerSlot mResolveScene = mResolve.sampler("uScene");
+    SamplerSlot mResolveHistory = mResolve.sampler("uHistory");
+    SamplerSlot mResolveHits = mResolve.sampler("uHits");
+    SamplerSlot mResolveMotion = mResolve.sampler("uMotion");
+    SamplerSlot mResolveMaterial = mResolve.sampler("uMaterial");
+    ImageSlot mResolveOutScene = mResolve.image("uOutScene");
+    ImageSlot mResolveOutReflections = mResolve.image("uOutReflections");
     ParameterBlock<SsrParameters> mParameters;
 };
 

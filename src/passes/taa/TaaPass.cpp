@@ -30,64 +30,77 @@ bool TaaPass::enabled(const FrameContext& ctx) const {
     return ctx.hdr && ctx.settings.temporalAntiAliasing(); // on the HDR path when aa.mode selects it
 }
 
+const Texture* TaaPass::debugTarget(const FrameContext& ctx, FrameResources& resources) {
+    const DebugView view = ctx.settings.debug.view;
+    if (view != DebugView::TaaHistoryWeight && view != DebugView::Disocclusion) {
+        return nullptr;
+    }
+    return &resources.pool()
+                .acquire({.extent = ctx.extent,
+                          .format = GL_RG8,
+                          .minFilter = GL_NEAREST,
+                          .magFilter = GL_NEAREST,
+                          .debugName = "taa debug"})
+                .texture();
+}
+
+TaaParameters TaaPass::parameters(const FrameContext& ctx, const FrameResources& resources,
+                                  bool debug) const {
+    const TaaSettings& s = ctx.settings.taa;
+    // null when validation dropped it
+    const Camera* camera = resources.has(Resource::Camera) ? ctx.inputs.camera : nullptr;
+    return {.invProjection = camera ? glm::inverse(camera->projection) : glm::mat4(1.0f),
+            .invView = camera ? glm::inverse(camera->view) : glm::mat4(1.0f),
+            .prevViewProjection = camera ? camera->prevViewProjection : glm::mat4(1.0f),
+            .blend = s.blendFactor,
+            .gamma = s.varianceGamma,
+            .feedbackMin = s.feedbackMin,
+            .feedbackMax = s.feedbackMax,
+            .stillPixels = kStillPixels,
+            .hasHistory = mHistory.valid() && !ctx.resetHistory ? 1 : 0,
+            .hasDepth = resources.texture(Resource::LinearDepth) ? 1 : 0,
+            .hasCamera = camera ? 1 : 0,
+            .writeDebug = debug ? 1 : 0,
+            .adaptive = s.adaptiveFeedback ? 1 : 0,
+            .bilinearHistory = s.historyFilter == HistoryFilter::Bilinear ? 1 : 0,
+            .padding = 0};
+}
+
+void TaaPass::bindInputs(const FrameResources& resources, const Texture* debugTarget) const {
+    const Texture* depth = resources.texture(Resource::LinearDepth);
+    const Texture& motion = *resources.texture(Resource::Motion);
+    bindExposureStateForReading(*resources.buffer(Resource::ExposureState));
+    bind(mCurrent, *resources.texture(Resource::SceneColor));
+    // Without a history the shader reads none; a bound texture keeps every sampler complete.
+    bind(mHistorySlot, mHistory.previous() ? *mHistory.previous() : mHistory.current());
+    bind(mMotion, motion);
+    bind(mDepth, depth ? *depth : motion);
+    bind(mHistoryAuxSlot, mHistoryAux.previous() ? *mHistoryAux.previous() : mHistoryAux.current());
+    bind(mOutputAux, mHistoryAux.current(), ImageAccess::Write);
+    bind(mOutput, mHistory.current(), ImageAccess::Write);
+    bind(mDebug, debugTarget ? *debugTarget : mNoDebug, ImageAccess::Write);
+}
+
 void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     // Made on the first frame TAA runs at a size (a pipeline with TAA off holds no history); a new size
     // remakes them and the history starts over.
     mHistory.ensure(ctx.extent, GL_RGBA16F, "taa history");
     mHistoryAux.ensure(ctx.extent, GL_RG16F, "taa history depth and stability");
     const Extent e = ctx.extent;
-    const TaaSettings& s = ctx.settings.taa;
     const Texture* depth = resources.texture(Resource::LinearDepth);
-    const bool hasCamera = resources.has(Resource::Camera);
-    const DebugView view = ctx.settings.debug.view;
-    const bool debug = view == DebugView::TaaHistoryWeight || view == DebugView::Disocclusion;
-    const Texture* debugTarget = nullptr;
-    if (debug) {
-        debugTarget = &resources.pool()
-                           .acquire({.extent = e,
-                                     .format = GL_RG8,
-                                     .minFilter = GL_NEAREST,
-                                     .magFilter = GL_NEAREST,
-                                     .debugName = "taa debug"})
-                           .texture();
-    }
+    const Texture* debug = debugTarget(ctx, resources);
     const double bytes =
         double(e.width) * e.height *
         (8.0 /*current*/ + 12.0 /*history*/ + 4.0 /*motion*/ + (depth ? 4.0 : 0.0) + 12.0 /*output*/);
     ScopedGpuTimer timer(ctx.timers, "taa", bytes);
-    const Camera* camera = hasCamera ? ctx.inputs.camera : nullptr; // null when validation dropped it
-    mParameters.update({.invProjection = camera ? glm::inverse(camera->projection) : glm::mat4(1.0f),
-                        .invView = camera ? glm::inverse(camera->view) : glm::mat4(1.0f),
-                        .prevViewProjection = camera ? camera->prevViewProjection : glm::mat4(1.0f),
-                        .blend = s.blendFactor,
-                        .gamma = s.varianceGamma,
-                        .feedbackMin = s.feedbackMin,
-                        .feedbackMax = s.feedbackMax,
-                        .stillPixels = kStillPixels,
-                        .hasHistory = mHistory.valid() && !ctx.resetHistory ? 1 : 0,
-                        .hasDepth = depth ? 1 : 0,
-                        .hasCamera = camera ? 1 : 0,
-                        .writeDebug = debug ? 1 : 0,
-                        .adaptive = s.adaptiveFeedback ? 1 : 0,
-                        .bilinearHistory = s.historyFilter == HistoryFilter::Bilinear ? 1 : 0,
-                        .padding = 0});
+    mParameters.update(parameters(ctx, resources, debug != nullptr));
     mParameters.bind(kBindingParameters);
     mProgram.use();
-    bindExposureStateForReading(*resources.buffer(Resource::ExposureState));
-    glBindTextureUnit(0, resources.texture(Resource::SceneColor)->id());
-    // Without a history the shader reads none; a bound texture keeps every sampler complete.
-    glBindTextureUnit(1, mHistory.previous() ? mHistory.previous()->id() : mHistory.current().id());
-    glBindTextureUnit(2, resources.texture(Resource::Motion)->id());
-    glBindTextureUnit(3, depth ? depth->id() : resources.texture(Resource::Motion)->id());
-    glBindTextureUnit(4, mHistoryAux.previous() ? mHistoryAux.previous()->id() : mHistoryAux.current().id());
-    glBindImageTexture(2, mHistoryAux.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-    glBindImageTexture(0, mHistory.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    glBindImageTexture(1, debugTarget ? debugTarget->id() : mNoDebug.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                       GL_RG8);
-    glDispatchCompute(GLuint((e.width + 7) / 8), GLuint((e.height + 7) / 8), 1);
+    bindInputs(resources, debug);
+    dispatch(mProgram, e, Barrier::None);
     resources.bind(Resource::SceneColor, mHistory.current());
-    if (debugTarget) {
-        resources.bind(Resource::TaaDebug, *debugTarget);
+    if (debug) {
+        resources.bind(Resource::TaaDebug, *debug);
     }
     mHistory.advance();
     mHistoryAux.advance();

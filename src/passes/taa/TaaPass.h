@@ -47,7 +47,22 @@ public:
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
 private:
+    /// This frame's parameter block.
+    [[nodiscard]] TaaParameters parameters(const FrameContext& ctx, const FrameResources& resources,
+                                           bool debug) const;
+    /// The debug target when a TAA debug view asks for one, else null.
+    [[nodiscard]] static const Texture* debugTarget(const FrameContext& ctx, FrameResources& resources);
+    void bindInputs(const FrameResources& resources, const Texture* debugTarget) const;
+
     Program mProgram;
+    SamplerSlot mCurrent = mProgram.sampler("uCurrent");
+    SamplerSlot mHistorySlot = mProgram.sampler("uHistory");
+    SamplerSlot mHistoryAuxSlot = mProgram.sampler("uHistoryAux");
+    SamplerSlot mMotion = mProgram.sampler("uMotion");
+    SamplerSlot mDepth = mProgram.sampler("uDepth");
+    ImageSlot mOutput = mProgram.image("uOutput");
+    ImageSlot mOutputAux = mProgram.image("uOutputAux");
+    ImageSlot mDebug = mProgram.image("uDebug");
     ParameterBlock<TaaParameters> mParameters;
     HistoryTexture mHistory;    ///< the resolved colour
     HistoryTexture mHistoryAux; ///< per pixel: linear depth and stability (how long it has held still)

@@ -59,8 +59,8 @@ std::span<const ResourceUse> TonemapPass::uses() const {
     return kUses;
 }
 
-const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene,
-                                    bool display16, bool blocks) {
+const TonemapPass::Variant& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool grade,
+                                                 bool scene, bool display16, bool blocks) {
     // The scene-referred output stops before the curve: one program serves every mode and depth.
     const int curve = scene ? 0 : int(mode);
     display16 = display16 && !scene;
@@ -87,7 +87,7 @@ const Program& TonemapPass::variant(ToneMapper mode, bool bloom, bool glow, bool
             defines.emplace_back("OUTPUT_SCENE", "1");
         }
         defines = withPixelGroup(std::move(defines), mGroup);
-        it = mPrograms.emplace(key, makeComputeProgram(kCompute, bindingDefines(defines))).first;
+        it = mPrograms.emplace(key, Variant(makeComputeProgram(kCompute, bindingDefines(defines)))).first;
     }
     return it->second;
 }
@@ -105,7 +105,7 @@ void TonemapPass::configure(const Settings& settings) {
     }
 }
 
-void TonemapPass::dispatch(const Program& program, const Inputs& in, const Texture& target, bool blocks) {
+void TonemapPass::run(const Variant& variant, const Inputs& in, const Texture& target, bool blocks) {
     const Extent extent = target.extent();
     // The dither hides 8-bit steps (1/255 apart). At 16 bits a step is 1/257 of that, far below what a
     // display or an eye resolves, so there is no banding to hide; noise scaled to that step would only make
@@ -124,7 +124,7 @@ void TonemapPass::dispatch(const Program& program, const Inputs& in, const Textu
         parameters.bloomAdditive = in.bloomSettings->mode == BloomMode::Threshold ? 1 : 0;
         parameters.bloomIntensity = in.bloomSettings->intensity;
         parameters.bloomPixels = float(bloomPixels(extent, in.bloom->extent()));
-        glBindTextureUnit(1, in.bloom->id());
+        bind(variant.bloom, *in.bloom);
     }
     if (in.glow) {
         const BloomSettings& b = *in.bloomSettings;
@@ -155,12 +155,12 @@ void TonemapPass::dispatch(const Program& program, const Inputs& in, const Textu
     }
     mParameters.update(parameters);
     mParameters.bind(kBindingParameters);
-    program.use();
-    glBindTextureUnit(0, in.scene->id());
+    variant.program.use();
+    bind(variant.scene, *in.scene);
     bindExposureStateForReading(*in.exposureState);
-    glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, target.format());
-    dispatchPixels(blocks ? Extent{(extent.width + 3) / 4, (extent.height + 3) / 4} : extent, mGroup);
-    imageWriteBarrier();
+    bind(variant.output, target, ImageAccess::Write);
+    dispatch(variant.program, blocks ? Extent{(extent.width + 3) / 4, (extent.height + 3) / 4} : extent,
+             Barrier::ImageWrite, mGroup);
 }
 
 void TonemapPass::execute(FrameContext& ctx, FrameResources& resources) {
@@ -197,8 +197,7 @@ void TonemapPass::execute(FrameContext& ctx, FrameResources& resources) {
     ScopedGpuTimer timer(in.timers, "composite + grade + tonemap", bytes);
     const bool grade = in.grading && in.grading->enabled;
     const bool blocks = bloomBlocks(in, out.texture().extent());
-    dispatch(
-        variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, false, bitDepth == 16, blocks), in,
+    run(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, false, bitDepth == 16, blocks), in,
         out.texture(), blocks);
     resources.bind(Resource::DisplayColor, out.texture());
 }
@@ -211,8 +210,8 @@ const Texture& TonemapPass::renderScene(const Inputs& in) {
     DebugGroup group("scene-referred output");
     const bool grade = in.grading && in.grading->enabled;
     const bool blocks = bloomBlocks(in, e);
-    dispatch(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, true, false, blocks), in,
-             mScene, blocks);
+    run(variant(in.tonemapping->mode, in.bloom != nullptr, in.glow, grade, true, false, blocks), in, mScene,
+        blocks);
     return mScene;
 }
 

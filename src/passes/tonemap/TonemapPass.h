@@ -83,18 +83,28 @@ public:
     void setBloomBlocks(bool on);
 
 private:
-    /// One dispatch of `program` over `target` (RGBA8 or RGBA16 display, or RGBA32F scene-referred output).
-    void dispatch(const Program& program, const Inputs& in, const Texture& target, bool blocks = false);
+    /// One program of the pass and its samplers and image (uBloom inactive where BLOOM is not defined).
+    struct Variant {
+        explicit Variant(Program p)
+            : program(std::move(p)) {}
+        Program program;
+        SamplerSlot scene = program.sampler("uScene");
+        SamplerSlot bloom = program.sampler("uBloom");
+        ImageSlot output = program.image("uOutput");
+    };
+    /// One dispatch of `variant` over `target` (RGBA8 or RGBA16 display, or RGBA32F scene-referred output).
+    void run(const Variant& variant, const Inputs& in, const Texture& target, bool blocks = false);
     /// Whether this dispatch takes the bloom in 4x4 blocks (setBloomBlocks, and the bloom half of `target`).
     [[nodiscard]] bool bloomBlocks(const Inputs& in, Extent target) const;
     /// One program per (curve, bloom, grading, scene output, display depth): the curve and the switches are
     /// #defines, not
     /// uniforms. Mesa llvmpipe executes every case of a switch on a uniform under a SIMD mask, so a runtime
-    /// curve switch costs all eleven curves per pixel; on a GPU the branch is uniform but registers are allocated for the costliest case.
-    const Program& variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene, bool display16,
+    /// curve switch costs all eleven curves per pixel; on a GPU the branch is uniform but registers are
+    /// allocated for the costliest case.
+    const Variant& variant(ToneMapper mode, bool bloom, bool glow, bool grade, bool scene, bool display16,
                            bool blocks = false);
 
-    std::map<int, Program> mPrograms; ///< by variant key (see variant())
+    std::map<int, Variant> mPrograms; ///< by variant key (see variant())
     ParameterBlock<TonemapParameters> mParameters;
     const Capabilities& mCaps;
     PixelGroup mGroup; ///< the programs' invocation shape (gl/ShaderLibrary.h pixelGroup)

@@ -153,6 +153,54 @@ void VolumetricLightPass::execute(FrameContext& ctx, FrameResources& resources) 
     }
 }
 
+void VolumetricLightPass::shadowMarch(const FrameContext& ctx, const FrameResources& resources,
+                                      const Texture& shadowMap, const Texture& raw, Extent low) {
+    const int samples = ctx.settings.volumetricLight.samples;
+    // One depth per texel, `samples` shadow-map lookups (a 2x2 comparison of 4-byte depths, mostly cached),
+    // the light and depth out.
+    ScopedGpuTimer timer(ctx.timers, "volumetric light march (shadow map)",
+                         double(low.width) * low.height * (4.0 + samples * 16.0 + 8.0 + 4.0));
+    mShadowMarch.use();
+    bind(mMarchDepth, *resources.texture(Resource::LinearDepth));
+    bind(mMarchShadowMap, shadowMap, mShadowSampler);
+    bind(mMarchOut, raw, ImageAccess::Write);
+    bind(mMarchLowDepth, mShadowDepth.current(), ImageAccess::Write);
+    dispatch(mShadowMarch, low, Barrier::None);
+    bindSampler(mMarchShadowMap, nullptr);
+    unbind(mMarchShadowMap);
+}
+
+void VolumetricLightPass::shadowResolve(const FrameContext& ctx, const Texture& raw, Extent low) {
+    // This frame's march and depths (a tile with its border), the history's light and depths, the output.
+    ScopedGpuTimer timer(ctx.timers, "volumetric light resolve (shadow map)",
+                         double(low.width) * low.height * (8.0 + 4.0 + 4 * (8.0 + 4.0) + 8.0));
+    mShadowResolve.use();
+    const Texture& current = mShadowDepth.current();
+    bind(mShadowResolveRaw, raw);
+    bind(mShadowResolveHistory, mShadowLight.previous() ? *mShadowLight.previous() : raw);
+    bind(mShadowResolveLowDepth, current);
+    bind(mShadowResolvePrevLowDepth, mShadowDepth.previous() ? *mShadowDepth.previous() : current);
+    bind(mShadowResolveOut, mShadowLight.current(), ImageAccess::Write);
+    dispatch(mShadowResolve, low, Barrier::None);
+}
+
+void VolumetricLightPass::shadowComposite(const FrameContext& ctx, const FrameResources& resources,
+                                          const Texture& out, const Texture* view, Extent low) {
+    const Extent e = ctx.extent;
+    // The colour and depth in, the colour out, four texels of light and depth, the view when it is on.
+    ScopedGpuTimer timer(ctx.timers, "volumetric light composite (shadow map)",
+                         double(e.width) * e.height * (8.0 + 4.0 + 8.0 + (view ? 8.0 : 0.0)) +
+                             double(low.width) * low.height * 12.0);
+    mShadowComposite.use();
+    bind(mShadowCompositeScene, *resources.texture(Resource::SceneColor));
+    bind(mShadowCompositeDepth, *resources.texture(Resource::LinearDepth));
+    bind(mShadowCompositeLowDepth, mShadowDepth.current());
+    bind(mShadowCompositeAccumulated, mShadowLight.current());
+    bind(mShadowCompositeOut, out, ImageAccess::Write);
+    bind(mShadowCompositeView, view ? *view : mNoView, ImageAccess::Write);
+    dispatch(mShadowComposite, e, Barrier::None);
+}
+
 void VolumetricLightPass::executeShadowMap(FrameContext& ctx, FrameResources& resources,
                                            const Texture& shadowMap) {
     const Extent e = ctx.extent;
@@ -168,66 +216,73 @@ void VolumetricLightPass::executeShadowMap(FrameContext& ctx, FrameResources& re
                                        .debugName = "volumetric light march (this frame)"})
                              .texture();
     const CompositeTargets targets = acquireCompositeTargets(ctx, resources);
-    const Texture& out = targets.out;
-    const Texture* view = targets.view;
-    const bool writeView = view != nullptr;
     const bool hasHistory =
         mShadowLight.valid() && mShadowDepth.valid() && !ctx.resetHistory && !ctx.inputs.camera->cut;
-    mShadowParameters.update(shadowParametersFor(ctx, low, factor, hasHistory, writeView));
+    mShadowParameters.update(shadowParametersFor(ctx, low, factor, hasHistory, targets.view != nullptr));
     mShadowParameters.bind(kBindingParameters);
-
-    const Texture& scene = *resources.texture(Resource::SceneColor);
-    const Texture& depth = *resources.texture(Resource::LinearDepth);
-    const double full = double(e.width) * e.height;
-    const double lowTexels = double(low.width) * low.height;
-    const int samples = ctx.settings.volumetricLight.samples;
-    constexpr GLuint kShadowUnit = 7;
-    {
-        // One depth per texel, `samples` shadow-map lookups (a 2x2 comparison of 4-byte depths, mostly
-        // cached), the light and depth out.
-        ScopedGpuTimer timer(ctx.timers, "volumetric light march (shadow map)",
-                             lowTexels * (4.0 + samples * 16.0 + 8.0 + 4.0));
-        mShadowMarch.use();
-        glBindTextureUnit(1, depth.id());
-        glBindTextureUnit(kShadowUnit, shadowMap.id());
-        glBindSampler(kShadowUnit, mShadowSampler.id());
-        glBindImageTexture(0, raw.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glBindImageTexture(1, mShadowDepth.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-        dispatchPixels(low);
-        glBindSampler(kShadowUnit, 0);
-        glBindTextureUnit(kShadowUnit, 0);
-    }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    {
-        // This frame's march and depths (a tile with its border), the history's light and depths, the output.
-        ScopedGpuTimer timer(ctx.timers, "volumetric light resolve (shadow map)",
-                             lowTexels * (8.0 + 4.0 + 4 * (8.0 + 4.0) + 8.0));
-        mShadowResolve.use();
-        const Texture& current = mShadowDepth.current();
-        glBindTextureUnit(3, raw.id());
-        glBindTextureUnit(4, mShadowLight.previous() ? mShadowLight.previous()->id() : raw.id());
-        glBindTextureUnit(5, current.id());
-        glBindTextureUnit(6, mShadowDepth.previous() ? mShadowDepth.previous()->id() : current.id());
-        glBindImageTexture(0, mShadowLight.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        dispatchPixels(low);
-    }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    {
-        // The colour and depth in, the colour out, four texels of light and depth, the view when it is on.
-        ScopedGpuTimer timer(ctx.timers, "volumetric light composite (shadow map)",
-                             full * (8.0 + 4.0 + 8.0 + (writeView ? 8.0 : 0.0)) + lowTexels * 12.0);
-        mShadowComposite.use();
-        glBindTextureUnit(0, scene.id());
-        glBindTextureUnit(1, depth.id());
-        glBindTextureUnit(5, mShadowDepth.current().id());
-        glBindTextureUnit(6, mShadowLight.current().id());
-        glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glBindImageTexture(1, view ? view->id() : mNoView.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        dispatchPixels(e);
-    }
+    shadowMarch(ctx, resources, shadowMap, raw, low);
+    memoryBarrier(Barrier::TextureFetch);
+    shadowResolve(ctx, raw, low);
+    memoryBarrier(Barrier::TextureFetch);
+    shadowComposite(ctx, resources, targets.out, targets.view, low);
     mShadowLight.advance();
     mShadowDepth.advance();
     publish(resources, targets);
+}
+
+void VolumetricLightPass::lightSource(const FrameContext& ctx, const FrameResources& resources,
+                                      const Texture& source) {
+    const Extent e = ctx.extent;
+    // Colour and depth in, one RGBA16F texel out.
+    ScopedGpuTimer timer(ctx.timers, "volumetric light source",
+                         double(e.width) * e.height * (8.0 + 4.0 + 8.0));
+    mPrepare.use();
+    bind(mPrepareScene, *resources.texture(Resource::SceneColor));
+    bind(mPrepareDepth, *resources.texture(Resource::LinearDepth));
+    bind(mPrepareSource, source, ImageAccess::Write);
+    dispatch(mPrepare, e, Barrier::None);
+}
+
+void VolumetricLightPass::scatter(const FrameContext& ctx, const Texture& source, const Texture& raw,
+                                  Extent half) {
+    const Extent e = ctx.extent;
+    // The full-resolution source read once from memory (the samples along each ray hit the cache), one
+    // half-resolution texel out.
+    ScopedGpuTimer timer(ctx.timers, "volumetric light march",
+                         double(e.width) * e.height * 8.0 + double(half.width) * half.height * 8.0);
+    mScatter.use();
+    bind(mScatterSource, source);
+    bind(mScatterOut, raw, ImageAccess::Write);
+    dispatch(mScatter, half, Barrier::None);
+}
+
+void VolumetricLightPass::resolve(const FrameContext& ctx, const FrameResources& resources,
+                                  const Texture& raw, Extent half) {
+    const Texture* motion = resources.texture(Resource::Motion);
+    // This frame's march (a tile with its border), motion, the history, the output.
+    ScopedGpuTimer timer(ctx.timers, "volumetric light resolve",
+                         double(half.width) * half.height * (8.0 + 8.0 + 8.0 + 8.0));
+    mResolve.use();
+    bind(mResolveRaw, raw);
+    bind(mResolveHistory, mHistory.previous() ? *mHistory.previous() : raw);
+    bind(mResolveMotion, motion ? *motion : *resources.texture(Resource::LinearDepth));
+    bind(mResolveOut, mHistory.current(), ImageAccess::Write);
+    dispatch(mResolve, half, Barrier::None);
+}
+
+void VolumetricLightPass::composite(const FrameContext& ctx, const FrameResources& resources,
+                                    const Texture& out, const Texture* view, Extent half) {
+    const Extent e = ctx.extent;
+    // The colour in and out, the accumulated light (upsampled), the view when it is on.
+    ScopedGpuTimer timer(ctx.timers, "volumetric light composite",
+                         double(e.width) * e.height * (8.0 + 8.0 + (view ? 8.0 : 0.0)) +
+                             double(half.width) * half.height * 8.0);
+    mComposite.use();
+    bind(mCompositeScene, *resources.texture(Resource::SceneColor));
+    bind(mCompositeLight, mHistory.current());
+    bind(mCompositeOut, out, ImageAccess::Write);
+    bind(mCompositeView, view ? *view : mNoView, ImageAccess::Write);
+    dispatch(mComposite, e, Barrier::None);
 }
 
 void VolumetricLightPass::executeScreen(FrameContext& ctx, FrameResources& resources) {
@@ -246,60 +301,17 @@ void VolumetricLightPass::executeScreen(FrameContext& ctx, FrameResources& resou
                                        .debugName = "volumetric light (this frame)"})
                              .texture();
     const CompositeTargets targets = acquireCompositeTargets(ctx, resources);
-    const Texture& out = targets.out;
-    const Texture* view = targets.view;
-    const bool writeView = view != nullptr;
-    const Texture* motion = resources.texture(Resource::Motion);
     const bool hasHistory = mHistory.valid() && !ctx.resetHistory;
-    const VolumetricLightParameters p = parametersFor(ctx, half, hasHistory, motion != nullptr, writeView);
-    mParameters.update(p);
+    mParameters.update(parametersFor(ctx, half, hasHistory, resources.texture(Resource::Motion) != nullptr,
+                                     targets.view != nullptr));
     mParameters.bind(kBindingParameters);
-
-    const Texture& scene = *resources.texture(Resource::SceneColor);
-    const Texture& depth = *resources.texture(Resource::LinearDepth);
-    const double full = double(e.width) * e.height;
-    const double halfTexels = double(half.width) * half.height;
-    glBindTextureUnit(0, scene.id());
-    glBindTextureUnit(1, depth.id());
-    {
-        // Colour and depth in, one RGBA16F texel out.
-        ScopedGpuTimer timer(ctx.timers, "volumetric light source", full * (8.0 + 4.0 + 8.0));
-        mPrepare.use();
-        glBindImageTexture(0, source.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        dispatchPixels(e);
-    }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    {
-        // The full-resolution source read once from memory (the samples along each ray hit the cache), one
-        // half-resolution texel out.
-        ScopedGpuTimer timer(ctx.timers, "volumetric light march", full * 8.0 + halfTexels * 8.0);
-        mScatter.use();
-        glBindTextureUnit(2, source.id());
-        glBindImageTexture(0, raw.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        dispatchPixels(half);
-    }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    {
-        // This frame's march (a tile with its border), motion, the history, the output.
-        ScopedGpuTimer timer(ctx.timers, "volumetric light resolve", halfTexels * (8.0 + 8.0 + 8.0 + 8.0));
-        mResolve.use();
-        glBindTextureUnit(3, raw.id());
-        glBindTextureUnit(4, mHistory.previous() ? mHistory.previous()->id() : raw.id());
-        glBindTextureUnit(5, motion ? motion->id() : depth.id());
-        glBindImageTexture(0, mHistory.current().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        dispatchPixels(half);
-    }
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    {
-        // The colour in and out, the accumulated light (upsampled), the view when it is on.
-        ScopedGpuTimer timer(ctx.timers, "volumetric light composite",
-                             full * (8.0 + 8.0 + (writeView ? 8.0 : 0.0)) + halfTexels * 8.0);
-        mComposite.use();
-        glBindTextureUnit(6, mHistory.current().id());
-        glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glBindImageTexture(1, view ? view->id() : mNoView.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        dispatchPixels(e);
-    }
+    lightSource(ctx, resources, source);
+    memoryBarrier(Barrier::TextureFetch);
+    scatter(ctx, source, raw, half);
+    memoryBarrier(Barrier::TextureFetch);
+    resolve(ctx, resources, raw, half);
+    memoryBarrier(Barrier::TextureFetch);
+    composite(ctx, resources, targets.out, targets.view, half);
     mHistory.advance();
     publish(resources, targets);
 }

@@ -99,17 +99,59 @@ public:
 private:
     void executeScreen(FrameContext& ctx, FrameResources& resources);
     void executeShadowMap(FrameContext& ctx, FrameResources& resources, const Texture& shadowMap);
+    /// The screen-space march's steps: the light source (the sky, from colour and depth), the march toward
+    /// the sun at half resolution, the resolve with the history, the composite (`view`: the debug view).
+    void lightSource(const FrameContext& ctx, const FrameResources& resources, const Texture& source);
+    void scatter(const FrameContext& ctx, const Texture& source, const Texture& raw, Extent half);
+    void resolve(const FrameContext& ctx, const FrameResources& resources, const Texture& raw, Extent half);
+    void composite(const FrameContext& ctx, const FrameResources& resources, const Texture& out,
+                   const Texture* view, Extent half);
+    /// The shadow map's steps: the march through the map at `low` resolution, the resolve with the
+    /// histories, the composite.
+    void shadowMarch(const FrameContext& ctx, const FrameResources& resources, const Texture& shadowMap,
+                     const Texture& raw, Extent low);
+    void shadowResolve(const FrameContext& ctx, const Texture& raw, Extent low);
+    void shadowComposite(const FrameContext& ctx, const FrameResources& resources, const Texture& out,
+                         const Texture* view, Extent low);
 
     Program mPrepare;
     Program mScatter;
     Program mResolve;
     Program mComposite;
+    SamplerSlot mPrepareScene = mPrepare.sampler("uScene");
+    SamplerSlot mPrepareDepth = mPrepare.sampler("uDepth");
+    ImageSlot mPrepareSource = mPrepare.image("uSource");
+    SamplerSlot mScatterSource = mScatter.sampler("uSource");
+    ImageSlot mScatterOut = mScatter.image("uOut");
+    SamplerSlot mResolveRaw = mResolve.sampler("uRaw");
+    SamplerSlot mResolveHistory = mResolve.sampler("uHistory");
+    SamplerSlot mResolveMotion = mResolve.sampler("uMotion");
+    ImageSlot mResolveOut = mResolve.image("uOut");
+    SamplerSlot mCompositeScene = mComposite.sampler("uScene");
+    SamplerSlot mCompositeLight = mComposite.sampler("uLight");
+    ImageSlot mCompositeOut = mComposite.image("uOut");
+    ImageSlot mCompositeView = mComposite.image("uView");
     ParameterBlock<VolumetricLightParameters> mParameters;
     HistoryTexture mHistory; ///< the accumulated half-resolution light (before the final scale)
     Texture mNoView;         ///< bound to the view's image unit when no debug view asks for it
     Program mShadowMarch;
     Program mShadowResolve;
     Program mShadowComposite;
+    SamplerSlot mMarchDepth = mShadowMarch.sampler("uDepth");
+    SamplerSlot mMarchShadowMap = mShadowMarch.sampler("uShadowMap");
+    ImageSlot mMarchOut = mShadowMarch.image("uOut");
+    ImageSlot mMarchLowDepth = mShadowMarch.image("uLowDepth");
+    SamplerSlot mShadowResolveRaw = mShadowResolve.sampler("uRaw");
+    SamplerSlot mShadowResolveHistory = mShadowResolve.sampler("uHistory");
+    SamplerSlot mShadowResolveLowDepth = mShadowResolve.sampler("uLowDepth");
+    SamplerSlot mShadowResolvePrevLowDepth = mShadowResolve.sampler("uPrevLowDepth");
+    ImageSlot mShadowResolveOut = mShadowResolve.image("uOut");
+    SamplerSlot mShadowCompositeScene = mShadowComposite.sampler("uScene");
+    SamplerSlot mShadowCompositeDepth = mShadowComposite.sampler("uDepth");
+    SamplerSlot mShadowCompositeLowDepth = mShadowComposite.sampler("uLowDepth");
+    SamplerSlot mShadowCompositeAccumulated = mShadowComposite.sampler("uAccumulated");
+    ImageSlot mShadowCompositeOut = mShadowComposite.image("uOut");
+    ImageSlot mShadowCompositeView = mShadowComposite.image("uView");
     ParameterBlock<VolumetricShadowParameters> mShadowParameters;
     HistoryTexture mShadowLight; ///< the shadow-map march's accumulated light (before intensity)
     HistoryTexture mShadowDepth; ///< the march texels' linear depths, this frame's and last frame's

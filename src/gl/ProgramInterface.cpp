@@ -1,0 +1,141 @@
+// Program's samplers and images by name (SamplerSlot, ImageSlot), binding through them, and the check that a
+// dispatch found every one its program declares bound.
+
+#include "gl/Objects.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+
+namespace photopic {
+
+namespace {
+
+/// Per unit (0-63), the bind count when a slot last bound it: a program's sampler or image is bound for a
+/// dispatch when its unit's count is past the program's last check.
+std::array<std::uint64_t, 64> gSamplerBound{};
+std::array<std::uint64_t, 64> gImageBound{};
+std::uint64_t gBinds = 0;
+UnboundSlotHandler gUnboundSlotHandler;
+
+void stamp(std::array<std::uint64_t, 64>& bound, GLint unit) noexcept {
+    if (unit < 64) {
+        bound[std::size_t(unit)] = ++gBinds;
+    }
+}
+
+bool isIdentifierChar(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
+/// Whether `source` names `name` as a whole identifier.
+bool names(std::string_view source, std::string_view name) {
+    for (auto at = source.find(name); at != std::string_view::npos; at = source.find(name, at + 1)) {
+        const bool startsWord = at == 0 || !isIdentifierChar(source[at - 1]);
+        const std::size_t end = at + name.size();
+        const bool endsWord = end == source.size() || !isIdentifierChar(source[end]);
+        if (startsWord && endsWord) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/// The uniform `name` of kind `image`; nullptr when the program has none active (optimised away, when its
+/// source names it). Throws GlError when the program declares no such sampler or image.
+const ProgramInterface::Uniform* lookUp(const ProgramInterface* interface, std::string_view name,
+                                        bool image) {
+    const char* kind = image ? "image" : "sampler";
+    if (interface == nullptr) {
+        throw GlError(fmt::format("{} {}: the program was not reflected", kind, name));
+    }
+    const auto& all = interface->uniforms;
+    const auto it = std::find_if(all.begin(), all.end(), [&](const auto& u) { return u.name == name; });
+    if (it != all.end()) {
+        if (it->image != image) {
+            throw GlError(
+                fmt::format("{}: {} is not {} {}", interface->label, name, image ? "an" : "a", kind));
+        }
+        return &*it;
+    }
+    if (!names(interface->source, name)) {
+        throw GlError(fmt::format("{} declares no {} {}", interface->label, kind, name));
+    }
+    return nullptr; // declared, and the compiler optimised it away: the slot binds nothing
+}
+
+} // namespace
+
+SamplerSlot Program::sampler(std::string_view name) const {
+    const ProgramInterface::Uniform* u = lookUp(mInterface.get(), name, false);
+    return SamplerSlot{u ? u->unit : -1};
+}
+
+ImageSlot Program::image(std::string_view name) const {
+    const ProgramInterface::Uniform* u = lookUp(mInterface.get(), name, true);
+    return ImageSlot{u ? u->unit : -1};
+}
+
+void bind(SamplerSlot slot, const Texture& texture) noexcept {
+    if (slot.active()) {
+        glBindTextureUnit(GLuint(slot.unit), texture.id());
+        stamp(gSamplerBound, slot.unit);
+    }
+}
+
+void bind(SamplerSlot slot, const Texture& texture, const Sampler& sampler) noexcept {
+    bind(slot, texture);
+    bindSampler(slot, &sampler);
+}
+
+void unbind(SamplerSlot slot) noexcept {
+    if (slot.active()) {
+        glBindTextureUnit(GLuint(slot.unit), 0);
+        if (slot.unit < 64) {
+            gSamplerBound[std::size_t(slot.unit)] = 0; // a program reading it next finds it unbound
+        }
+    }
+}
+
+void bindSampler(SamplerSlot slot, const Sampler* sampler) noexcept {
+    if (slot.active()) {
+        glBindSampler(GLuint(slot.unit), sampler ? sampler->id() : 0);
+    }
+}
+
+void bind(ImageSlot slot, const Texture& texture, ImageAccess access, int level) noexcept {
+    if (slot.active()) {
+        glBindImageTexture(GLuint(slot.unit), texture.id(), level, GL_FALSE, 0, GLenum(access),
+                           texture.format());
+        stamp(gImageBound, slot.unit);
+    }
+}
+
+bool checkBindings(const Program& program) {
+    const ProgramInterface* interface = program.interface();
+    if (interface == nullptr) {
+        return true;
+    }
+    bool bound = true;
+    for (const ProgramInterface::Uniform& u : interface->uniforms) {
+        if (u.unit < 0 || u.unit >= 64 ||
+            (u.image ? gImageBound : gSamplerBound)[std::size_t(u.unit)] > interface->checked) {
+            continue;
+        }
+        bound = false;
+        if (gUnboundSlotHandler) {
+            gUnboundSlotHandler(
+                fmt::format("{}: {} {} (unit {}) was not bound since the program's last dispatch",
+                            interface->label, u.image ? "image" : "sampler", u.name, u.unit));
+        }
+    }
+    interface->checked = gBinds;
+    return bound;
+}
+
+UnboundSlotHandler setUnboundSlotHandler(UnboundSlotHandler handler) {
+    return std::exchange(gUnboundSlotHandler, std::move(handler));
+}
+
+} // namespace photopic
