@@ -80,22 +80,29 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
                         .frame = std::uint32_t(ctx.time.frameIndex % 1024u),
                         .octahedral = ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 1 : 0});
     mParameters.bind(kBindingParameters);
-    glBindTextureUnit(0, resources.texture(Resource::LinearDepth)->id());
-    glBindTextureUnit(1, resources.texture(Resource::Normals)->id());
-
-    {
-        ScopedGpuTimer timer(ctx.timers, "gtao", searchBytes);
-        mMain.use();
-        glBindImageTexture(0, raw.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-        dispatchPixels(rawExtent);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    }
-    ScopedGpuTimer timer(ctx.timers, "gtao denoise", denoiseBytes);
-    mDenoise.use();
-    glBindTextureUnit(2, raw.id());
-    glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-    dispatchPixels(e);
+    search(resources, raw, searchBytes, ctx.timers);
+    denoise(resources, raw, out, denoiseBytes, ctx.timers);
     resources.bind(Resource::AmbientOcclusion, out);
+}
+
+void GtaoPass::search(FrameResources& resources, const Texture& raw, double bytes, GpuTimers* timers) {
+    ScopedGpuTimer timer(timers, "gtao", bytes);
+    mMain.use();
+    bind(mMainDepth, *resources.texture(Resource::LinearDepth));
+    bind(mMainNormals, *resources.texture(Resource::Normals));
+    bind(mMainRaw, raw, ImageAccess::Write);
+    dispatch(mMain, raw.extent(), Barrier::TextureFetch);
+}
+
+void GtaoPass::denoise(FrameResources& resources, const Texture& raw, const Texture& out, double bytes,
+                       GpuTimers* timers) {
+    ScopedGpuTimer timer(timers, "gtao denoise", bytes);
+    mDenoise.use();
+    bind(mDenoiseDepth, *resources.texture(Resource::LinearDepth));
+    bind(mDenoiseNormals, *resources.texture(Resource::Normals));
+    bind(mDenoiseRaw, raw);
+    bind(mDenoiseOut, out, ImageAccess::Write);
+    dispatch(mDenoise, out.extent(), Barrier::None);
 }
 
 AoMultiplyPass::AoMultiplyPass()
@@ -123,10 +130,10 @@ void AoMultiplyPass::execute(FrameContext& ctx, FrameResources& resources) {
     mParameters.update({.power = ctx.settings.ssao.power});
     mParameters.bind(kBindingParameters);
     mProgram.use();
-    glBindTextureUnit(0, resources.texture(Resource::SceneColor)->id());
-    glBindTextureUnit(1, resources.texture(Resource::AmbientOcclusion)->id());
-    glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    dispatchPixels(e);
+    bind(mScene, *resources.texture(Resource::SceneColor));
+    bind(mVisibility, *resources.texture(Resource::AmbientOcclusion));
+    bind(mOut, out, ImageAccess::Write);
+    dispatch(mProgram, e, Barrier::None);
     resources.bind(Resource::SceneColor, out);
 }
 

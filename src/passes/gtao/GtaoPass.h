@@ -55,10 +55,22 @@ public:
     [[nodiscard]] static glm::ivec2 slicesAndSteps(AoQuality quality) noexcept;
 
 private:
+    /// The horizon search into `raw` (one texel per AO texel), then the denoise into `out`.
+    void search(FrameResources& resources, const Texture& raw, double bytes, GpuTimers* timers);
+    void denoise(FrameResources& resources, const Texture& raw, const Texture& out, double bytes,
+                 GpuTimers* timers);
+
     Stage mStage;
     Program mMain;
     Program mDenoise;
     ParameterBlock<GtaoParameters> mParameters;
+    SamplerSlot mMainDepth = mMain.sampler("uLinearDepth");
+    SamplerSlot mMainNormals = mMain.sampler("uNormals");
+    ImageSlot mMainRaw = mMain.image("uRaw");
+    SamplerSlot mDenoiseDepth = mDenoise.sampler("uLinearDepth");
+    SamplerSlot mDenoiseNormals = mDenoise.sampler("uNormals");
+    SamplerSlot mDenoiseRaw = mDenoise.sampler("uRaw");
+    ImageSlot mDenoiseOut = mDenoise.image("uVisibility");
 };
 
 /// ssao.apply = multiply: sceneColor *= visibility^power (before TAA and metering). It darkens direct light
@@ -74,6 +86,9 @@ public:
 private:
     Program mProgram;
     ParameterBlock<AoMultiplyParameters> mParameters;
+    SamplerSlot mScene = mProgram.sampler("uScene");
+    SamplerSlot mVisibility = mProgram.sampler("uVisibility");
+    ImageSlot mOut = mProgram.image("uOut");
 };
 
 } // namespace photopic
