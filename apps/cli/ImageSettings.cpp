@@ -27,14 +27,14 @@ Settings imageSettings(const ImageOptions& options) {
     // lighting stage to hand ambient occlusion to, so it multiplies the scene colour unless the settings
     // say otherwise: no look sets ssao.apply (Settings::applyLook), so lighting over this base is the user's.
     Settings base = Settings::stills();
-    base.ssao.apply = AoApply::Multiply;
+    base.gtao.apply = GtaoApply::Multiply;
     Settings settings = resolveSettings(options.settings, base);
-    const bool lightingAsked = settings.ssao.apply == AoApply::Lighting;
+    const bool lightingAsked = settings.gtao.apply == GtaoApply::Lighting;
     if (options.bitDepth) {
         settings.output.bitDepth = *options.bitDepth;
     }
     // Said in the CLI's words; the keys are the pipeline's own, so its host-API wording stays unsaid.
-    if (settings.ssao.enabled && lightingAsked) {
+    if (settings.gtao.enabled && lightingAsked) {
         warnOnce("ssao.no-lighting",
                  "ssao.apply=lighting: an image has no lighting stage to hand ambient occlusion to, so none "
                  "is applied; ssao.apply=multiply (photopic image's default) multiplies the colour by it");
@@ -52,7 +52,7 @@ namespace {
 /// The setting that turns on the effect a data view shows, for the error of a view that could not be made.
 const char* debugViewSwitch(DebugView view) {
     switch (view) {
-    case DebugView::Ao:
+    case DebugView::Gtao:
         return "ssao.enabled=true";
     case DebugView::Coc:
         return "dof.enabled=true";

@@ -118,7 +118,7 @@ std::optional<std::string> applyToggleKey(std::string_view key, Settings& s) {
     const std::string name(1, k);
     switch (k) {
     case '1':
-        return toggle(s.ssao.enabled, "ambient occlusion", name);
+        return toggle(s.gtao.enabled, "ambient occlusion", name);
     case '2':
         return toggle(s.contactShadows.enabled, "contact shadows", name);
     case '3':

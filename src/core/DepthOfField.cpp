@@ -22,7 +22,7 @@ float CocModel::radius(float z) const noexcept {
     return std::clamp(r, -maxRadius, maxRadius);
 }
 
-CocModel cocModel(const DepthOfFieldSettings& s, const Lens& lens, int imageHeight) noexcept {
+CocModel cocModel(const DofSettings& s, const Lens& lens, int imageHeight) noexcept {
     CocModel m;
     m.maxRadius = s.maxCocRadius;
     m.artistic = s.mode == DofMode::Artistic;

@@ -9,7 +9,7 @@
 // an affine function of 1 / z, so the shader evaluates scale / z + bias.
 
 #include "core/Camera.h"
-#include "core/settings/DepthOfFieldSettings.h"
+#include "passes/dof/DofSettings.h"
 
 namespace photopic {
 
@@ -30,7 +30,7 @@ struct CocModel {
 
 /// The CoC model for an image `imageHeight` pixels high. Physical mode: from the camera's lens (a focus
 /// closer than the focal length, where the thin lens has no real image, is held just beyond it).
-[[nodiscard]] CocModel cocModel(const DepthOfFieldSettings& settings, const Lens& lens,
+[[nodiscard]] CocModel cocModel(const DofSettings& settings, const Lens& lens,
                                 int imageHeight) noexcept;
 
 /// The shutter's open time in seconds: the lens's exposure time when set, else the shutter angle's

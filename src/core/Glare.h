@@ -15,7 +15,7 @@
 // aperture's straight blade edges (each edge diffracts perpendicular to itself; a ray of an even count of
 // blades coincides with the opposite edge's, an odd count gives twice as many rays).
 
-#include "core/settings/BloomSettings.h"
+#include "passes/bloom/BloomSettings.h"
 
 #include <vector>
 

@@ -1,26 +1,31 @@
 #pragma once
-// Every setting of the pipeline, one typed struct per effect (see core/settings/), gathered here.
+// Every setting of the pipeline, one typed struct per effect, gathered here: an effect's settings header
+// sits beside its pass (src/passes/<effect>/<Effect>Settings.h), the rest in core/settings/.
 // JSON: {"version": 1, "postEffects": {<key>: {...}}} with the keys below.
 
-#include "core/settings/AmbientOcclusionSettings.h"
 #include "core/settings/AntiAliasingSettings.h"
 #include "core/settings/AutoExposureSettings.h"
-#include "core/settings/BloomSettings.h"
 #include "core/settings/ColorGradingSettings.h"
-#include "core/settings/ContactShadowSettings.h"
 #include "core/settings/DebugSettings.h"
-#include "core/settings/DepthOfFieldSettings.h"
-#include "core/settings/DisplaySettings.h"
 #include "core/settings/ExposureModeSettings.h"
-#include "core/settings/MotionBlurSettings.h"
-#include "core/settings/OutlineSettings.h"
 #include "core/settings/OutputSettings.h"
 #include "core/settings/QualitySettings.h"
-#include "core/settings/ReflectionSettings.h"
 #include "core/settings/SubjectSettings.h"
 #include "core/settings/TemporalSettings.h"
 #include "core/settings/ToneMappingSettings.h"
-#include "core/settings/VolumetricLightSettings.h"
+#include "passes/bloom/BloomSettings.h"
+#include "passes/contactshadows/ContactShadowsSettings.h"
+#include "passes/display/DisplaySettings.h"
+#include "passes/dof/DofSettings.h"
+#include "passes/fxaa/FxaaSettings.h"
+#include "passes/gtao/GtaoSettings.h"
+#include "passes/lensflare/LensFlareSettings.h"
+#include "passes/motionblur/MotionBlurSettings.h"
+#include "passes/outline/OutlineSettings.h"
+#include "passes/smaa/SmaaSettings.h"
+#include "passes/ssr/SsrSettings.h"
+#include "passes/taa/TaaSettings.h"
+#include "passes/volumetriclight/VolumetricLightSettings.h"
 
 #include <optional>
 #include <span>
@@ -49,11 +54,11 @@ struct Settings {
     AntiAliasingSettings aa;
     TaaSettings taa;
     SmaaSettings smaa;
-    AmbientOcclusionSettings ssao;
-    ContactShadowSettings contactShadows;
-    DepthOfFieldSettings dof;
+    GtaoSettings gtao;
+    ContactShadowsSettings contactShadows;
+    DofSettings dof;
     ExposureModeSettings exposure;
-    ReflectionSettings ssr;
+    SsrSettings ssr;
     MotionBlurSettings motionBlur;
     OutlineSettings outline;
     VolumetricLightSettings volumetricLight;
@@ -110,7 +115,7 @@ struct Settings {
         v.object("aa", aa);
         v.object("taa", taa);
         v.object("smaa", smaa);
-        v.object("ssao", ssao);
+        v.object("ssao", gtao); // the JSON key users write
         v.object("contactShadows", contactShadows);
         v.object("dof", dof);
         v.object("exposure", exposure);

@@ -5,7 +5,7 @@
 
 #include "core/Camera.h"
 #include "core/Image.h"
-#include "core/settings/VolumetricLightSettings.h"
+#include "passes/volumetriclight/VolumetricLightSettings.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -25,7 +25,7 @@
 #include "passes/ssr/SsrPass.h"
 #include "passes/taa/TaaPass.h"
 #include "passes/tonemap/TonemapPass.h"
-#include "passes/volumetric/VolumetricLightPass.h"
+#include "passes/volumetriclight/VolumetricLightPass.h"
 
 #include <span>
 #include <vector>

@@ -275,7 +275,7 @@ const LightingOutputs& Pipeline::renderLighting(const FrameInputs& inputs, const
     }
     mLightingSequencer.run(mOrder->lighting(), {.resources = kLightingOutputs}, ctx, mResources);
     mLighting.ambientOcclusion = mResources.texture(Resource::AmbientOcclusion);
-    mLighting.ambientOcclusionPower = mSettings.ssao.power;
+    mLighting.ambientOcclusionPower = mSettings.gtao.power;
     mLighting.contactShadows = mResources.texture(Resource::ContactShadows);
     mContactShadowSteps = mResources.texture(Resource::ContactShadowSteps);
     return mLighting;
@@ -283,7 +283,7 @@ const LightingOutputs& Pipeline::renderLighting(const FrameInputs& inputs, const
 
 void Pipeline::warnLightingStageMissing() const {
     try {
-        if (mSettings.ssao.enabled && mSettings.ssao.apply == AoApply::Lighting)
+        if (mSettings.gtao.enabled && mSettings.gtao.apply == GtaoApply::Lighting)
             warnOnce(
                 "ssao.no-lighting",
                 "ssao.apply is lighting but the host does not call renderLighting(): no ambient occlusion "

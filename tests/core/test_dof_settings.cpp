@@ -12,7 +12,7 @@
 namespace photopic {
 namespace {
 
-TEST(DepthOfFieldSettings, KeysLoadAndBadValuesNameTheirPath) {
+TEST(DofSettings, KeysLoadAndBadValuesNameTheirPath) {
     Settings s;
     EXPECT_TRUE(readSettingsJson(R"({"postEffects": {"dof": {"enabled": true, "mode": "artistic",
         "kernel": "hexagon", "quality": "high", "maxCocRadius": 24, "focalDistance": 3, "focalRange": 2,
@@ -36,7 +36,7 @@ TEST(DepthOfFieldModel, ThinLensRadiusInPixels) {
     lens.sensorHeightMm = 24.0f;
     lens.fNumber = 2.0f;
     lens.focusDistance = 2.0f;
-    DepthOfFieldSettings s;
+    DofSettings s;
     s.maxCocRadius = 64.0f;
     const CocModel m = cocModel(s, lens, 1080);
     // c = (f / N) f |z - F| / (z (F - f)) on the sensor; radius in pixels = c / 2 / h * H.
@@ -55,7 +55,7 @@ TEST(DepthOfFieldModel, ThinLensRadiusInPixels) {
 }
 
 TEST(DepthOfFieldModel, ArtisticRadius) {
-    DepthOfFieldSettings s;
+    DofSettings s;
     s.mode = DofMode::Artistic;
     const CocModel m = cocModel(s, Lens{}, 1080);
     EXPECT_EQ(m.radius(10.0f), 0.0f);

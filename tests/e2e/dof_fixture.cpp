@@ -50,7 +50,7 @@ int run(char** argv) {
     lens.sensorHeightMm = std::strtof(argv[4], nullptr);
     lens.focusDistance = std::strtof(argv[5], nullptr);
     lens.focalLengthMm = 0.5f * lens.sensorHeightMm / std::tan(0.5f * 0.785398163f);
-    photopic::DepthOfFieldSettings settings;
+    photopic::DofSettings settings;
     settings.maxCocRadius = std::strtof(argv[6], nullptr);
     const photopic::CocModel model = photopic::cocModel(settings, lens, view.height);
     long compared = 0, nearCount = 0, farCount = 0;

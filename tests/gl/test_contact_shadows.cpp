@@ -40,7 +40,7 @@ constexpr std::uint64_t kSettleFrames = 12;
 /// sun truth counting occluders within the default contact distance.
 testbed::TruthOptions stillOptions(float seconds) {
     TestbedScene scene;
-    const float distance = ContactShadowSettings{}.distance;
+    const float distance = ContactShadowsSettings{}.distance;
     for (const std::string& a :
          {std::string("cameraSpeed=0"), std::string("objectSpeed=0"),
           "cameraStart=" + std::to_string(seconds), "objectStart=" + std::to_string(seconds),

@@ -188,8 +188,8 @@ std::vector<EffectCase> effectCases() {
         cases.push_back({name, s, lighting});
     };
     add("ssao", [](Settings& s) {
-        s.ssao.enabled = true;
-        s.ssao.apply = AoApply::Multiply;
+        s.gtao.enabled = true;
+        s.gtao.apply = GtaoApply::Multiply;
     });
     add("taa", [](Settings& s) { s.aa.mode = AntiAliasing::Taa; });
     add("dof", [](Settings& s) { s.dof.enabled = true; });
@@ -202,8 +202,8 @@ std::vector<EffectCase> effectCases() {
     add(
         "lighting stage", // SSAO and contact shadows for a host that shades with them
         [](Settings& s) {
-            s.ssao.enabled = true;
-            s.ssao.apply = AoApply::Lighting;
+            s.gtao.enabled = true;
+            s.gtao.apply = GtaoApply::Lighting;
             s.contactShadows.enabled = true;
         },
         true);

@@ -30,12 +30,12 @@ std::unique_ptr<TestbedScene> stillScene(float cameraTime) {
     return scene;
 }
 
-Settings aoSettings(AoResolution resolution) {
+Settings aoSettings(GtaoResolution resolution) {
     Settings s;
     s.autoExposure.enabled = false;
-    s.ssao.enabled = true;
-    s.ssao.radius = 1.0f; // the testbed's aoRadius default: the reference's
-    s.ssao.resolution = resolution;
+    s.gtao.enabled = true;
+    s.gtao.radius = 1.0f; // the testbed's aoRadius default: the reference's
+    s.gtao.resolution = resolution;
     return s;
 }
 
@@ -127,7 +127,7 @@ TEST_F(GlTest, GtaoMatchesTheRayTracedAmbientOcclusion) {
     const ImageF truth = testbed::renderTruth(testbed::TruthKind::Ao, options);
     const ImageF depth = testbed::renderTruth(testbed::TruthKind::Depth, options);
 
-    Pipeline full({.settings = aoSettings(AoResolution::Full)});
+    Pipeline full({.settings = aoSettings(GtaoResolution::Full)});
     const ImageF gtao = gtaoVisibility(*scene, full, 0);
     const AoFigures f = measure(gtao, truth, depth, options.aoRadius);
     std::printf("gtao full (high, radius 1): MAE %.4f, bias %+.4f over %ld occluded px; halo band mean %.4f "
@@ -136,7 +136,7 @@ TEST_F(GlTest, GtaoMatchesTheRayTracedAmbientOcclusion) {
     std::printf("gtao full: clear band (background side, reference >= 0.97): mean %.4f over %ld px\n",
                 f.clearHalo, f.clearBand);
 
-    Pipeline half({.settings = aoSettings(AoResolution::Half)});
+    Pipeline half({.settings = aoSettings(GtaoResolution::Half)});
     const AoFigures h = measure(gtaoVisibility(*scene, half, 0), truth, depth, options.aoRadius);
     std::printf("gtao half (high, radius 1): MAE %.4f, bias %+.4f; halo band mean %.4f\n", h.mae, h.bias,
                 h.halo);
@@ -158,7 +158,7 @@ TEST_F(GlTest, GtaoIsStableUnderASlowOrbit) {
         EXPECT_TRUE(scene->applyOverride(a).empty()) << a;
     }
     scene->resize({kW, kH});
-    Pipeline pipeline({.settings = aoSettings(AoResolution::Full)});
+    Pipeline pipeline({.settings = aoSettings(GtaoResolution::Full)});
     ImageF previous;
     double change = 0.0;
     long count = 0;
@@ -191,15 +191,15 @@ TEST_F(GlTest, GtaoRunsInTheStageItsApplyModeNames) {
     const FrameTime time{.dt = kDt, .frameIndex = 0};
     std::vector<double> telemetry;
 
-    Settings off = aoSettings(AoResolution::Full);
-    off.ssao.enabled = false;
+    Settings off = aoSettings(GtaoResolution::Full);
+    off.gtao.enabled = false;
     Pipeline plain({.settings = off});
     FrameInputs in = scene->render(time, plain, telemetry);
     EXPECT_EQ(plain.renderLighting(in, time).ambientOcclusion, nullptr);
     const ImageF without = readTextureF(plain.execute(in, time));
 
-    Settings multiply = aoSettings(AoResolution::Full);
-    multiply.ssao.apply = AoApply::Multiply;
+    Settings multiply = aoSettings(GtaoResolution::Full);
+    multiply.gtao.apply = GtaoApply::Multiply;
     Pipeline post({.settings = multiply});
     in = scene->render(time, post, telemetry);
     EXPECT_EQ(post.renderLighting(in, time).ambientOcclusion, nullptr);

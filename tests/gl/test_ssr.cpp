@@ -48,7 +48,7 @@ testbed::TruthOptions stillOptions(float seconds) {
 /// SSR traced and resolved but not added to the image (intensity 0): the ray tracer's truth is the local
 /// shading of the reflected point, and with intensity 1 the history the resolve reads would hold the
 /// reflections SSR added to that point (F0 0.04 on every dielectric), a second bounce the truth has not.
-Settings ssrSettings(ReflectionResolution resolution = ReflectionResolution::Full) {
+Settings ssrSettings(SsrResolution resolution = SsrResolution::Full) {
     Settings s;
     s.ssr.intensity = 0.0f;
     s.autoExposure.enabled = false;
@@ -267,7 +267,7 @@ TEST_F(GlTest, SsrMatchesTheRayTracedMirrorReflectionOnTheStrip) {
         // ray misses what theirs hit: measured 100% covered, 99.1% and 100% within 10%, p95 0.037 and 0.027,
         // 0 and 2 unresolvable pixels with a confidence.
         const Figures half =
-            measure(renderSsr(o, ssrSettings(ReflectionResolution::Half), 4), truth, classes);
+            measure(renderSsr(o, ssrSettings(SsrResolution::Half), 4), truth, classes);
         print("half", half);
         EXPECT_GE(half.covered, int(0.95 * half.resolvable));
         EXPECT_GE(half.within10, 0.95);

@@ -1,7 +1,9 @@
 #pragma once
-// Anti-aliasing: one mode for the frame, and each method's own settings. FXAA and SMAA work on the
-// display-referred image after tone mapping; TAA resolves in the HDR domain before metering; SSAA renders
-// several jittered sub-frames through the host and accumulates them in HDR.
+// Anti-aliasing: one mode for the frame (`aa`), with SSAA's level and filter (SSAA runs the host's sub-frames
+// through passes/ssaa/'s accumulator, outside the frame order). Each method's own settings sit beside its pass: passes/taa/TaaSettings.h, passes/smaa/SmaaSettings.h,
+// passes/fxaa/FxaaSettings.h. FXAA and SMAA work on the display-referred image after tone mapping; TAA
+// resolves in the HDR domain before metering; SSAA renders several jittered sub-frames through the host and
+// accumulates them in HDR.
 
 #include "core/settings/Reflect.h"
 
@@ -50,73 +52,6 @@ struct AntiAliasingSettings {
         v.field("ssaaFilter", ssaaFilter, ssaaFilterNames(),
                 "SSAA reconstruction: box weighs every sub-frame alike, blackman-harris weighs those near "
                 "the pixel centre more");
-    }
-};
-
-enum class SmaaQuality { Low, Medium, High, Ultra };
-
-inline std::span<const std::string_view> smaaQualityNames() {
-    static constexpr std::array<std::string_view, 4> kNames{"low", "medium", "high", "ultra"};
-    return kNames;
-}
-
-/// SMAA 1x (Jimenez et al. 2012) on the display-referred image.
-struct SmaaSettings {
-    SmaaQuality quality = SmaaQuality::High;
-    float subpixel = 0.33f;
-
-    template <class V>
-    void visit(V& v) {
-        v.field(
-            "quality", quality, smaaQualityNames(),
-            "sMAA preset. The reference presets: luma threshold 0.15 / 0.1 / 0.1 / 0.05, orthogonal search "
-            "steps 4 / 8 / 16 / 32, diagonal steps - / - / 8 / 16, corner rounding - / - / 25% / 25%");
-        v.field(
-            "subpixel", subpixel, Range{0, 1},
-            "a pixel the patterns leave alone that is a ridge one pixel wide (edges on both sides, darker "
-            "or brighter than both) moves this far towards its sides' mean in linear light: a line thinner "
-            "than a pixel is drawn fainter, as its coverage would have it. 0 is the reference SMAA 1x. Not "
-            "under taa+smaa, where TAA's jittered frames resolve thin lines");
-    }
-};
-
-enum class HistoryFilter {
-    CatmullRom, ///< sharp: a bicubic fetch keeps a moving image from softening frame after frame
-    Bilinear,   ///< cheaper, but every reprojection at a fractional position blurs the history a little
-};
-
-inline std::span<const std::string_view> historyFilterNames() {
-    static constexpr std::array<std::string_view, 2> kNames{"catmull-rom", "bilinear"};
-    return kNames;
-}
-
-/// Temporal anti-aliasing (Karis 2014; Salvi 2016 variance clipping; Playdead's adaptive feedback).
-struct TaaSettings {
-    bool enabled = false;
-    float blendFactor = 0.9f;
-    float varianceGamma = 1.0f;
-    bool adaptiveFeedback = false;
-    float feedbackMin = 0.88f;
-    float feedbackMax = 0.97f;
-    HistoryFilter historyFilter = HistoryFilter::CatmullRom;
-
-    template <class V>
-    void visit(V& v) {
-        v.field("enabled", enabled, "turns TAA on; selects TAA when aa.mode is none");
-        v.field("blendFactor", blendFactor, Range{0, 0.99}, "the history's weight in the blend");
-        v.field("varianceGamma", varianceGamma, Range{0.5, 2},
-                "the clip box is mean +- gamma * sigma (YCoCg)");
-        v.field("adaptiveFeedback", adaptiveFeedback,
-                "the history weight rises from feedbackMin to feedbackMax where the history agrees with the "
-                "current frame (less blur on moving edges, longer accumulation where it is stable)");
-        v.field("feedbackMin", feedbackMin, Range{0, 0.99},
-                "adaptive feedback: the history weight where the history disagrees");
-        v.field("feedbackMax", feedbackMax, Range{0, 0.99},
-                "adaptive feedback: the history weight where the history agrees");
-        v.field("historyFilter", historyFilter, historyFilterNames(),
-                "how the history is fetched: catmull-rom keeps a moving image sharp, bilinear is cheaper but "
-                "blurs a little at every reprojection");
-        v.require(feedbackMin <= feedbackMax, "feedbackMin", "must not exceed feedbackMax");
     }
 };
 

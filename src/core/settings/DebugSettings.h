@@ -42,7 +42,7 @@ enum class DebugView {
     VolumetricLight,
     /// Ambient occlusion's visibility (GTAO, after its denoise, before ssao.power) as grey: raw values in an
     /// EXR; needs ssao.enabled, depth, normals and a camera
-    Ao,
+    Gtao,
 };
 
 inline std::span<const std::string_view> debugViewNames() {

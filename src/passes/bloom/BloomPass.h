@@ -8,7 +8,7 @@
 // tests/gl/test_bloom_roundness.cpp (the glow of a point in every mode and preset).
 
 #include "core/Bloom.h"
-#include "core/settings/BloomSettings.h"
+#include "passes/bloom/BloomSettings.h"
 #include "gl/ShaderLibrary.h"
 #include "passes/FramePass.h"
 

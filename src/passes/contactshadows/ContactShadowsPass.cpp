@@ -83,7 +83,7 @@ ContactShadowsPass::Targets ContactShadowsPass::acquireTargets(const FrameContex
 ContactShadowParameters ContactShadowsPass::parameters(const FrameContext& ctx,
                                                        const FrameResources& resources, bool writeSteps,
                                                        bool hasHistory) const {
-    const ContactShadowSettings& s = ctx.settings.contactShadows;
+    const ContactShadowsSettings& s = ctx.settings.contactShadows;
     const Camera& camera = *ctx.inputs.camera;
     const Extent e = ctx.extent;
     const Texture* normals = resources.texture(Resource::Normals);

@@ -47,7 +47,7 @@ constexpr ResourceUse kAoViewUses[] = {{Resource::AmbientOcclusion, Access::Read
 bool isDataView(DebugView view) {
     return view == DebugView::ContactShadows || view == DebugView::ContactShadowSteps ||
            view == DebugView::Coc || view == DebugView::Ssr || view == DebugView::VelocityTiles ||
-           view == DebugView::VolumetricLight || view == DebugView::Ao;
+           view == DebugView::VolumetricLight || view == DebugView::Gtao;
 }
 
 bool isInputView(DebugView view) {
@@ -86,7 +86,7 @@ std::span<const ResourceUse> DebugViewPass::uses() const {
         return kVelocityTilesViewUses;
     case DebugView::VolumetricLight:
         return kVolumetricLightViewUses;
-    case DebugView::Ao:
+    case DebugView::Gtao:
         return kAoViewUses;
     default:
         return kSceneViewUses;
@@ -175,7 +175,7 @@ const Program& DebugViewPass::bindInputView(const FrameContext& ctx, const Frame
                             : mView == DebugView::Ssr                ? Resource::Reflections
                             : mView == DebugView::VelocityTiles      ? Resource::VelocityTiles
                             : mView == DebugView::VolumetricLight    ? Resource::VolumetricLight
-                            : mView == DebugView::Ao                 ? Resource::AmbientOcclusion
+                            : mView == DebugView::Gtao                 ? Resource::AmbientOcclusion
                                                                      : Resource::TaaDebug;
     const Program& p = (raw ? mInputRawProgram : mInputProgram).at(bitDepth);
     const Camera* camera = ctx.inputs.camera;

@@ -86,7 +86,7 @@ void DofPass::warnIfInvisible(const FrameContext& ctx, const CocModel& model) {
 }
 
 DofParameters DofPass::parameters(const FrameContext& ctx, const CocModel& model, const Targets& t) {
-    const DepthOfFieldSettings& s = ctx.settings.dof;
+    const DofSettings& s = ctx.settings.dof;
     DofParameters p{};
     p.fullSize = glm::vec2(float(t.full.width), float(t.full.height));
     p.halfSize = glm::vec2(float(t.half.width), float(t.half.height));

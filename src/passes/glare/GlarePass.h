@@ -23,7 +23,7 @@
 // energy; the LDR path's warning), tests/core/test_glare.cpp (the kernel).
 
 #include "core/Glare.h"
-#include "core/settings/BloomSettings.h"
+#include "passes/bloom/BloomSettings.h"
 #include "gl/ShaderLibrary.h"
 #include "passes/FramePass.h"
 

@@ -19,33 +19,33 @@ std::span<const ResourceUse> GtaoPass::uses() const {
 }
 
 bool GtaoPass::enabled(const FrameContext& ctx) const {
-    const AmbientOcclusionSettings& s = ctx.settings.ssao;
+    const GtaoSettings& s = ctx.settings.gtao;
     if (!s.enabled) {
         return false;
     }
     // The post-stage instance feeds the multiply pass, which works on the HDR path's scene colour.
-    return mStage == Stage::Lighting ? s.apply == AoApply::Lighting : s.apply == AoApply::Multiply && ctx.hdr;
+    return mStage == Stage::Lighting ? s.apply == GtaoApply::Lighting : s.apply == GtaoApply::Multiply && ctx.hdr;
 }
 
-glm::ivec2 GtaoPass::slicesAndSteps(AoQuality quality) noexcept {
+glm::ivec2 GtaoPass::slicesAndSteps(GtaoQuality quality) noexcept {
     switch (quality) {
-    case AoQuality::Low:
+    case GtaoQuality::Low:
         return {1, 2};
-    case AoQuality::Medium:
+    case GtaoQuality::Medium:
         return {2, 2};
-    case AoQuality::High:
+    case GtaoQuality::High:
         return {3, 3};
-    case AoQuality::Ultra:
+    case GtaoQuality::Ultra:
         return {9, 3};
     }
     return {3, 3};
 }
 
 void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
-    const AmbientOcclusionSettings& s = ctx.settings.ssao;
+    const GtaoSettings& s = ctx.settings.gtao;
     const Camera& camera = *ctx.inputs.camera;
     const Extent e = ctx.extent;
-    const int scale = s.resolution == AoResolution::Half ? 2 : 1;
+    const int scale = s.resolution == GtaoResolution::Half ? 2 : 1;
     const Extent rawExtent{(e.width + scale - 1) / scale, (e.height + scale - 1) / scale};
     const Texture& raw = resources.pool()
                              .acquire({.extent = rawExtent,
@@ -117,7 +117,7 @@ std::span<const ResourceUse> AoMultiplyPass::uses() const {
 }
 
 bool AoMultiplyPass::enabled(const FrameContext& ctx) const {
-    return ctx.hdr && ctx.settings.ssao.enabled && ctx.settings.ssao.apply == AoApply::Multiply;
+    return ctx.hdr && ctx.settings.gtao.enabled && ctx.settings.gtao.apply == GtaoApply::Multiply;
 }
 
 void AoMultiplyPass::execute(FrameContext& ctx, FrameResources& resources) {
@@ -127,7 +127,7 @@ void AoMultiplyPass::execute(FrameContext& ctx, FrameResources& resources) {
             .acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with ao"})
             .texture();
     ScopedGpuTimer timer(ctx.timers, "ao multiply", double(e.width) * e.height * (8 + 2 + 8));
-    mParameters.update({.power = ctx.settings.ssao.power});
+    mParameters.update({.power = ctx.settings.gtao.power});
     mParameters.bind(kBindingParameters);
     mProgram.use();
     bind(mScene, *resources.texture(Resource::SceneColor));

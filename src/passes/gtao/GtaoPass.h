@@ -52,7 +52,7 @@ public:
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
     /// Slices and steps per side for a quality tier.
-    [[nodiscard]] static glm::ivec2 slicesAndSteps(AoQuality quality) noexcept;
+    [[nodiscard]] static glm::ivec2 slicesAndSteps(GtaoQuality quality) noexcept;
 
 private:
     /// The horizon search into `raw` (one texel per AO texel), then the denoise into `out`.

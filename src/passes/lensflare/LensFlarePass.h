@@ -3,7 +3,7 @@
 // ghosts + halo, an HDR buffer the display-effects pass adds in the display domain. Independent of bloom and
 // its settings.
 
-#include "core/settings/DisplaySettings.h"
+#include "passes/lensflare/LensFlareSettings.h"
 #include "passes/FramePass.h"
 
 #include <cstddef>

@@ -148,7 +148,7 @@ const Texture* SsrPass::history(const FrameContext& ctx) const {
 
 SsrParameters SsrPass::parameters(const FrameContext& ctx, const FrameResources& resources,
                                   Extent traceExtent) const {
-    const ReflectionSettings& s = ctx.settings.ssr;
+    const SsrSettings& s = ctx.settings.ssr;
     const Camera& camera = *ctx.inputs.camera;
     const Extent e = ctx.extent;
     const Texture* normals = resources.texture(Resource::Normals);
@@ -171,7 +171,7 @@ SsrParameters SsrPass::parameters(const FrameContext& ctx, const FrameResources&
     p.hasMaterial = resources.texture(Resource::Material) ? 1 : 0;
     p.hasHistory = history(ctx) ? 1 : 0;
     p.hasMotion = resources.texture(Resource::Motion) ? 1 : 0;
-    p.half = s.resolution == ReflectionResolution::Half ? 1 : 0;
+    p.half = s.resolution == SsrResolution::Half ? 1 : 0;
     return p;
 }
 
@@ -234,7 +234,7 @@ void SsrPass::resolve(const FrameContext& ctx, const FrameResources& resources, 
 
 void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Extent e = ctx.extent;
-    const bool half = ctx.settings.ssr.resolution == ReflectionResolution::Half;
+    const bool half = ctx.settings.ssr.resolution == SsrResolution::Half;
     const Extent traceExtent = half ? Extent{(e.width + 1) / 2, (e.height + 1) / 2} : e;
     const Targets t = acquireTargets(e, half, resources);
     mParameters.update(parameters(ctx, resources, traceExtent));

@@ -32,7 +32,7 @@ layout(std140, binding = BINDING_PARAMETERS) uniform TaaParameters {
     float uGamma;
     float uFeedbackMin;
     float uFeedbackMax;
-    float uStaticPixels; // motion (pixels per frame) below which a neighbourhood counts as still
+    float uStillPixels; // motion (pixels per frame) below which a neighbourhood counts as still
     int uHasHistory;
     int uHasDepth;
     int uHasCamera;
@@ -186,7 +186,7 @@ void main() {
         // disocclusion test to fall back on, so the clip stays full everywhere.
         ivec2 hp = clamp(ivec2(prevUv * vec2(size)), ivec2(0), size - 1);
         float previousStability = texelFetch(uHistoryAux, hp, 0).g;
-        stability = fastest < uStaticPixels ? min(previousStability + 1.0 / kStableFrames, 1.0) : 0.0;
+        stability = fastest < uStillPixels ? min(previousStability + 1.0 / kStableFrames, 1.0) : 0.0;
         float clipStrength = (uHasDepth != 0 && uHasCamera != 0) ? 1.0 - previousStability : 1.0;
         h = mix(h, clipToBox(boxMin, boxMax, h), clipStrength);
         weight = uBlend;

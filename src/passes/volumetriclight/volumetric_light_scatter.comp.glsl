@@ -6,7 +6,7 @@
 // (interleaved gradient noise, Jimenez 2014) and moved every frame along the golden-ratio sequence: the
 // samples' steps would otherwise show as bands at the sun's distance, and the accumulation (step 3) averages
 // the dither away.
-#include "passes/volumetric/volumetric_light_common.h.glsl"
+#include "passes/volumetriclight/volumetric_light_common.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 

@@ -9,7 +9,7 @@
 // 2014) moved every frame along the golden-ratio sequence: the accumulation (step 2) averages the visibility
 // of a shaft's edge over the whole step. Writes this texel's linear depth too, for the reprojection and the
 // upsample.
-#include "passes/volumetric/volumetric_shadow_common.h.glsl"
+#include "passes/volumetriclight/volumetric_shadow_common.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 

@@ -12,7 +12,7 @@ namespace photopic {
 /// The most object ids `contactShadows.mask` may list (the pass's parameter block holds this many).
 inline constexpr std::size_t kMaxContactShadowMaskIds = 16;
 
-struct ContactShadowSettings {
+struct ContactShadowsSettings {
     bool enabled = false;
     float distance = 0.18f;
     float thickness = 0.003f;

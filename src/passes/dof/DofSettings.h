@@ -49,7 +49,7 @@ inline std::span<const std::string_view> dofQualityNames() {
     return kNames;
 }
 
-struct DepthOfFieldSettings {
+struct DofSettings {
     bool enabled = false;
     DofMode mode = DofMode::Physical;
     DofKernel kernel = DofKernel::Disc;

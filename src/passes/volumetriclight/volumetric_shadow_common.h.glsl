@@ -2,7 +2,7 @@
 #ifndef PHOTOPIC_VOLUMETRIC_SHADOW_COMMON_H_GLSL
 #define PHOTOPIC_VOLUMETRIC_SHADOW_COMMON_H_GLSL
 
-// Mirrors photopic::VolumetricShadowParameters (passes/volumetric/VolumetricLightPass.h), std140.
+// Mirrors photopic::VolumetricShadowParameters (passes/volumetriclight/VolumetricLightPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform VolumetricShadowParameters {
     mat4 uWorldToShadowClip;  // world -> the sun view's clip space
     mat4 uInverseView;        // view -> world: the camera's axes and position

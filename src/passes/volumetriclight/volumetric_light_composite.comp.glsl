@@ -2,7 +2,7 @@
 // shaft's edge is as soft as the march's samples make it) and scaled by intensity x weight x exposure x the
 // sun's fade, is added to the scene colour. The light in the air lies in front of every surface, so it is
 // added to occluders too, as in the paper. The debug view gets the light added.
-#include "passes/volumetric/volumetric_light_common.h.glsl"
+#include "passes/volumetriclight/volumetric_light_common.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 

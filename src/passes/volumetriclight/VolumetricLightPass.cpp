@@ -1,4 +1,4 @@
-#include "passes/volumetric/VolumetricLightPass.h"
+#include "passes/volumetriclight/VolumetricLightPass.h"
 
 #include "core/Log.h"
 #include "core/VolumetricLight.h"
@@ -107,19 +107,19 @@ void publish(FrameResources& resources, const CompositeTargets& targets) {
 } // namespace
 
 VolumetricLightPass::VolumetricLightPass()
-    : mPrepare(makeComputeProgram("passes/volumetric/volumetric_light_prepare.comp.glsl", bindingDefines()))
-    , mScatter(makeComputeProgram("passes/volumetric/volumetric_light_scatter.comp.glsl", bindingDefines()))
-    , mResolve(makeComputeProgram("passes/volumetric/volumetric_light_resolve.comp.glsl", bindingDefines()))
+    : mPrepare(makeComputeProgram("passes/volumetriclight/volumetric_light_prepare.comp.glsl", bindingDefines()))
+    , mScatter(makeComputeProgram("passes/volumetriclight/volumetric_light_scatter.comp.glsl", bindingDefines()))
+    , mResolve(makeComputeProgram("passes/volumetriclight/volumetric_light_resolve.comp.glsl", bindingDefines()))
     , mComposite(
-          makeComputeProgram("passes/volumetric/volumetric_light_composite.comp.glsl", bindingDefines()))
+          makeComputeProgram("passes/volumetriclight/volumetric_light_composite.comp.glsl", bindingDefines()))
     , mParameters("volumetric light parameters")
     , mNoView({.extent = {1, 1}, .format = GL_RGBA16F, .debugName = "volumetric light view (unused)"})
     , mShadowMarch(
-          makeComputeProgram("passes/volumetric/volumetric_shadow_march.comp.glsl", bindingDefines()))
+          makeComputeProgram("passes/volumetriclight/volumetric_shadow_march.comp.glsl", bindingDefines()))
     , mShadowResolve(
-          makeComputeProgram("passes/volumetric/volumetric_shadow_resolve.comp.glsl", bindingDefines()))
+          makeComputeProgram("passes/volumetriclight/volumetric_shadow_resolve.comp.glsl", bindingDefines()))
     , mShadowComposite(
-          makeComputeProgram("passes/volumetric/volumetric_shadow_composite.comp.glsl", bindingDefines()))
+          makeComputeProgram("passes/volumetriclight/volumetric_shadow_composite.comp.glsl", bindingDefines()))
     , mShadowParameters("volumetric light (shadow map) parameters")
     , mShadowSampler(Sampler::depthCompare("volumetric light sun shadow map")) {}
 

@@ -11,29 +11,29 @@
 namespace photopic {
 
 /// Slices x steps per side of each slice.
-enum class AoQuality {
+enum class GtaoQuality {
     Low,    ///< 1 slice x 2 steps per side
     Medium, ///< 2 x 2
     High,   ///< 3 x 3
     Ultra,  ///< 9 x 3
 };
 
-inline std::span<const std::string_view> aoQualityNames() {
+inline std::span<const std::string_view> gtaoQualityNames() {
     static constexpr std::array<std::string_view, 4> kNames{"low", "medium", "high", "ultra"};
     return kNames;
 }
 
-enum class AoResolution {
+enum class GtaoResolution {
     Full, ///< one horizon search per pixel
     Half, ///< one per 2 x 2 pixels, upsampled by the depth-aware denoiser
 };
 
-inline std::span<const std::string_view> aoResolutionNames() {
+inline std::span<const std::string_view> gtaoResolutionNames() {
     static constexpr std::array<std::string_view, 2> kNames{"full", "half"};
     return kNames;
 }
 
-enum class AoApply {
+enum class GtaoApply {
     /// The lighting stage hands the visibility to the host, which multiplies its indirect (ambient, IBL)
     /// light only.
     Lighting,
@@ -43,19 +43,19 @@ enum class AoApply {
     Multiply,
 };
 
-inline std::span<const std::string_view> aoApplyNames() {
+inline std::span<const std::string_view> gtaoApplyNames() {
     static constexpr std::array<std::string_view, 2> kNames{"lighting", "multiply"};
     return kNames;
 }
 
-struct AmbientOcclusionSettings {
+struct GtaoSettings {
     bool enabled = false;
     float radius = 1.0f;
     float bias = 0.0f;
     float power = 1.0f;
-    AoQuality quality = AoQuality::High;
-    AoResolution resolution = AoResolution::Full;
-    AoApply apply = AoApply::Lighting;
+    GtaoQuality quality = GtaoQuality::High;
+    GtaoResolution resolution = GtaoResolution::Full;
+    GtaoApply apply = GtaoApply::Lighting;
 
     template <class V>
     void visit(V& v) {
@@ -69,12 +69,12 @@ struct AmbientOcclusionSettings {
             "power", power, Range{0.1, 8},
             "visibility^power, an artistic shaping applied after the raw visibility (the lighting stage's "
             "texture stays raw and hands the exponent to the host; the multiply pass applies it)");
-        v.field("quality", quality, aoQualityNames(),
+        v.field("quality", quality, gtaoQualityNames(),
                 "slices x steps per side of each slice: low 1 x 2, medium 2 x 2, high 3 x 3, ultra 9 x 3");
-        v.field("resolution", resolution, aoResolutionNames(),
+        v.field("resolution", resolution, gtaoResolutionNames(),
                 "full: one horizon search per pixel; half: one per 2 x 2 pixels, upsampled by the "
                 "depth-aware denoiser");
-        v.field("apply", apply, aoApplyNames(),
+        v.field("apply", apply, gtaoApplyNames(),
                 "lighting: the lighting stage hands the visibility to the host, which multiplies its "
                 "indirect light only; multiply: a post pass multiplies the scene colour by it before TAA and "
                 "metering (darkens direct light too)");

@@ -11,17 +11,17 @@
 
 namespace photopic {
 
-enum class ReflectionResolution {
+enum class SsrResolution {
     Full, ///< one ray per pixel
     Half, ///< one ray per 2 x 2 pixels, shared by the four (a quarter of the trace's cost, softer edges)
 };
 
-inline std::span<const std::string_view> reflectionResolutionNames() {
+inline std::span<const std::string_view> ssrResolutionNames() {
     static constexpr std::array<std::string_view, 2> kNames{"full", "half"};
     return kNames;
 }
 
-struct ReflectionSettings {
+struct SsrSettings {
     bool enabled = false;
     float intensity = 1.0f;
     int maxSteps = 200;
@@ -29,7 +29,7 @@ struct ReflectionSettings {
     float maxDistance = 50.0f;
     float roughnessCutoff = 0.6f;
     float edgeFade = 0.05f;
-    ReflectionResolution resolution = ReflectionResolution::Full;
+    SsrResolution resolution = SsrResolution::Full;
 
     template <class V>
     void visit(V& v) {
@@ -50,7 +50,7 @@ struct ReflectionSettings {
         v.field("edgeFade", edgeFade, Range{0, 0.5},
                 "fraction of the image's smaller side: hits this close to the image's border fade out, where "
                 "the reflected object is partly off screen");
-        v.field("resolution", resolution, reflectionResolutionNames(),
+        v.field("resolution", resolution, ssrResolutionNames(),
                 "full or half: the trace's resolution (the resolve and composite run at full resolution)");
     }
 };

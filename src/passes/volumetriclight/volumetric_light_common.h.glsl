@@ -2,7 +2,7 @@
 #ifndef PHOTOPIC_VOLUMETRIC_LIGHT_COMMON_H_GLSL
 #define PHOTOPIC_VOLUMETRIC_LIGHT_COMMON_H_GLSL
 
-// Mirrors photopic::VolumetricLightParameters (passes/volumetric/VolumetricLightPass.h), std140.
+// Mirrors photopic::VolumetricLightParameters (passes/volumetriclight/VolumetricLightPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform VolumetricLightParameters {
     vec2 uSunUv;    // the sun's projected position, UV, (0, 0) bottom-left; may be off screen
     vec2 uHalfSize; // texels of the half-resolution march

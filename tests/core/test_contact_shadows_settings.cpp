@@ -12,7 +12,7 @@ std::vector<SettingsIssue> readContact(const std::string& body, Settings& s) {
     return readSettingsJson(R"({"postEffects": {"contactShadows": )" + body + "}}", s);
 }
 
-TEST(ContactShadowSettings, DefaultsAreOffWithTheDocumentedValues) {
+TEST(ContactShadowsSettings, DefaultsAreOffWithTheDocumentedValues) {
     const nlohmann::json cs = settingsToJsonValue(Settings{})["postEffects"]["contactShadows"];
     EXPECT_FALSE(cs["enabled"].get<bool>());
     EXPECT_DOUBLE_EQ(cs["distance"].get<double>(), 0.18);
@@ -23,7 +23,7 @@ TEST(ContactShadowSettings, DefaultsAreOffWithTheDocumentedValues) {
     EXPECT_TRUE(cs["mask"].empty());
 }
 
-TEST(ContactShadowSettings, RangesAreCheckedByJsonPath) {
+TEST(ContactShadowsSettings, RangesAreCheckedByJsonPath) {
     Settings s;
     const struct {
         const char* body;
@@ -54,7 +54,7 @@ TEST(ContactShadowSettings, RangesAreCheckedByJsonPath) {
     }
 }
 
-TEST(ContactShadowSettings, MaskReadsWritesAndOverrides) {
+TEST(ContactShadowsSettings, MaskReadsWritesAndOverrides) {
     Settings s;
     ASSERT_TRUE(readContact(R"({"enabled": true, "mask": [4, 4294967295, 1], "steps": 64})", s).empty());
     EXPECT_TRUE(s.contactShadows.enabled);
@@ -78,7 +78,7 @@ TEST(ContactShadowSettings, MaskReadsWritesAndOverrides) {
     EXPECT_EQ(issues[0].path, "postEffects.contactShadows.strength");
 }
 
-TEST(ContactShadowSettings, DebugViewsAreNamed) {
+TEST(ContactShadowsSettings, DebugViewsAreNamed) {
     Settings s;
     ASSERT_TRUE(
         readSettingsJson(R"({"postEffects": {"debug": {"view": "contact-shadows-steps"}}})", s).empty());

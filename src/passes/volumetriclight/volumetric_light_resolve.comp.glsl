@@ -5,7 +5,7 @@
 // Quality Temporal Supersampling"), so a ray that moved or an occluder that passed leaves no trail. Without
 // it the dither, and the sun's rasterised disc gaining and losing pixels from frame to frame on a slow pan
 // (+-7% of its light at 160x90), would make the rays pump.
-#include "passes/volumetric/volumetric_light_common.h.glsl"
+#include "passes/volumetriclight/volumetric_light_common.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 

@@ -7,7 +7,7 @@
 // another surface (a disocclusion) is rejected; with no tap left the texel starts over. The history is
 // clamped to this frame's 3x3 range (Karis 2014) so a shadow that moved leaves no trail. A cut, a resize or
 // a reset starts every texel over.
-#include "passes/volumetric/volumetric_shadow_common.h.glsl"
+#include "passes/volumetriclight/volumetric_shadow_common.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 

@@ -4,7 +4,7 @@
 // and everything in front of them blocks. At full resolution although the march runs at half: a
 // half-resolution source spreads the sun's disc sideways, off the rays through its centre (at 160x90, where
 // the disc is 5 px across, the rays lost 9% of their light against the CPU reference).
-#include "passes/volumetric/volumetric_light_common.h.glsl"
+#include "passes/volumetriclight/volumetric_light_common.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 

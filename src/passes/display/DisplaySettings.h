@@ -1,27 +1,11 @@
 #pragma once
-// Display-domain effects after the single tone mapping (docs/architecture.md). Common keys: fxaa
-// `enabled`; vignette `enabled`, `intensity`, `chromaticAberration`. Every effect here is off by default
+// Display-domain effects after the single tone mapping (docs/architecture.md). Vignette, grain and
+// dazzle are the display pass's; FXAA and lens flare have their own passes and settings headers. Every effect here is off by default
 // (they are a look, so opt-in, and weak when on).
 
 #include "core/settings/Reflect.h"
 
 namespace photopic {
-
-/// FXAA 3.11 quality preset (Lottes 2011) on display-referred luma.
-struct FxaaSettings {
-    bool enabled = false;
-    float subpix = 0.75f;
-    float edgeThreshold = 0.166f;
-    float edgeThresholdMin = 0.0833f;
-
-    template <class V>
-    void visit(V& v) {
-        v.field("enabled", enabled, "camera images arrive anti-aliased, FXAA would soften them");
-        v.field("subpix", subpix, Range{0, 1}, "sub-pixel aliasing removal");
-        v.field("edgeThreshold", edgeThreshold, Range{0.063, 0.333}, "local contrast needed, relative");
-        v.field("edgeThresholdMin", edgeThresholdMin, Range{0, 0.25}, "darkest contrast processed, absolute");
-    }
-};
 
 /// Lens vignetting (light fall-off, in linear display light) and lateral chromatic aberration.
 struct VignetteSettings {
@@ -48,27 +32,6 @@ struct GrainSettings {
     void visit(V& v) {
         v.field("enabled", enabled, "turns film grain on");
         v.field("intensity", intensity, Range{0, 0.5}, "display code values: peak grain amplitude");
-    }
-};
-
-/// Post lens flare (a lens artefact, so display-referred): ghosts and a halo from a thresholded, downsampled
-/// HDR buffer, independent of bloom, added in the display domain.
-struct LensFlareSettings {
-    bool enabled = false;
-    float intensity = 0.05f;
-    float threshold = 4.0f;
-    int ghosts = 4;
-    float ghostSpacing = 0.3f;
-    float haloRadius = 0.45f;
-
-    template <class V>
-    void visit(V& v) {
-        v.field("enabled", enabled, "turns the lens flare (ghosts and halo) on");
-        v.field("intensity", intensity, Range{0, 10}, "gain of the flare before it is added");
-        v.field("threshold", threshold, Range{0, 65000}, "exposed scene-linear: what feeds the flare");
-        v.field("ghosts", ghosts, Range{0, 8}, "ghost images along the line through the centre");
-        v.field("ghostSpacing", ghostSpacing, Range{0, 1}, "UV: distance between ghosts");
-        v.field("haloRadius", haloRadius, Range{0, 1}, "UV: radius of the halo ring");
     }
 };
 

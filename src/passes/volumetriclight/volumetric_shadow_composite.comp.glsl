@@ -3,7 +3,7 @@
 // when all four lie on the pixel's surface (depth within 5%); else the texel whose depth is nearest the
 // pixel's, so the light in front of a near edge does not bleed onto the far side or the reverse. The light
 // in the air lies in front of every surface, so it is added everywhere. The debug view gets the light added.
-#include "passes/volumetric/volumetric_shadow_common.h.glsl"
+#include "passes/volumetriclight/volumetric_shadow_common.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
