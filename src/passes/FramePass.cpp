@@ -35,6 +35,7 @@ constexpr std::array<std::string_view, kResourceCount> kResourceNames = {
     "velocityTiles",      // VelocityTiles
     "volumetricLight",    // VolumetricLight
     "sunShadow",          // SunShadowMap
+    "ssrHistory",         // SsrHistory
 };
 static_assert(!kResourceNames.back().empty(), "one name per Resource, in its order");
 } // namespace

@@ -24,6 +24,9 @@
 
 namespace photopic {
 
+class SubjectTracker;
+struct ExposureTelemetry;
+
 /// The frame's named resources. Host inputs come first; `Camera` is a resource without a GL object, present
 /// when the host gave a valid camera.
 enum class Resource : std::uint8_t {
@@ -59,6 +62,9 @@ enum class Resource : std::uint8_t {
     /// RGBA16F: the light volumetric light added, when the volumetric-light debug view shows it
     VolumetricLight,
     SunShadowMap, ///< host: the sun's shadow map (FrameInputs::sunShadow), valid
+    /// RGBA16F with mips: last frame's finished HDR image, the source screen-space reflections sample
+    /// (published by the SSR history pass while it holds one)
+    SsrHistory,
     Count
 };
 inline constexpr std::size_t kResourceCount = std::size_t(Resource::Count);
@@ -135,6 +141,11 @@ struct FrameContext {
     bool sanitizeScene = true;
     /// EV: the host's planned auto exposure for this frame (Pipeline::setExposureOverride), else none.
     std::optional<float> exposureOverrideLog2{};
+    /// The frame's state on the CPU side, which one pass leaves for another as the resources do on the GPU
+    /// side (the pipeline wires them; no pass holds another): the subjects the probe pass schedules and
+    /// the subject-contexts pass completes, and the exposure pass's newest telemetry.
+    SubjectTracker* subjects = nullptr;
+    const ExposureTelemetry* exposureTelemetry = nullptr;
 };
 
 class FramePass {
@@ -148,6 +159,9 @@ public:
     [[nodiscard]] virtual std::span<const ResourceUse> uses() const = 0;
     /// The settings turn the pass on for this frame (inputs are the sequencer's business).
     [[nodiscard]] virtual bool enabled(const FrameContext&) const { return true; }
+    /// Binds the state the pass keeps from frame to frame (a history, the exposure state) as resources,
+    /// before each stage runs: passes read it from the blackboard, never from the pass that keeps it.
+    virtual void publishState(FrameResources&) const {}
     /// Runs even when nothing downstream reads its outputs (readbacks a host polls: telemetry, probes).
     [[nodiscard]] virtual bool hasSideEffects() const { return false; }
     /// Every value it reads of the scene colour goes through sanitize() (passes/common/sanitize.h.glsl) or

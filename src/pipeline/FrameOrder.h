@@ -45,40 +45,49 @@ public:
     /// Every pass once (configure, resize, history).
     [[nodiscard]] std::span<FramePass* const> all() const { return mAll; }
 
-    // The passes, for the pipeline's API (telemetry, subjects, the scene-referred output, status).
-    LinearDepthPass lightingLinearDepth; ///< the lighting stage's own (its linear depth is not kept for post)
-    GtaoPass gtao{GtaoPass::Stage::Lighting};
-    ContactShadowsPass contactShadows;
-    SanitizePass sanitize;
-    LinearDepthPass linearDepth;
-    GtaoPass gtaoPost{GtaoPass::Stage::Post};
-    AoMultiplyPass aoMultiply;
-    CameraMotionPass cameraMotion;
-    TaaPass taa;
-    MeteringPass metering;
-    ProbePass probes;
-    ExposurePass exposure;
-    SubjectContextsPass subjectContexts;
-    BloomPass bloom;
-    GlarePass glare;
-    DebugViewPass debugView;
-    TonemapPass tonemap;
-    FxaaPass fxaa;
-    SmaaPass smaaHdr{SmaaPass::Domain::Hdr};
-    SmaaPass smaa{SmaaPass::Domain::Display};
-    LensFlarePass lensFlare;
-    DisplayEffectsPass displayEffects;
-    HistogramOverlayPass histogramOverlay;
-    DofPass dof;
-    SsrHistoryPass ssrHistory; ///< before ssr, which reads the history it keeps
-    DepthPyramidPass ssrPyramid;
-    SsrPass ssr{ssrHistory};
-    VolumetricLightPass volumetricLight;
-    OutlinePass outline;
-    MotionBlurPass motionBlur{MotionBlurPlacement::BeforeTaa};
-    MotionBlurPass motionBlurLate{MotionBlurPlacement::AfterTaa};
+    // The passes whose state the pipeline's API reads (telemetry, subjects, the scene-referred output, the
+    // status). The frame itself reaches them only through the resources and the context.
+    [[nodiscard]] ExposurePass& exposure() noexcept { return mExposure; }
+    [[nodiscard]] ProbePass& probes() noexcept { return mProbes; }
+    [[nodiscard]] TonemapPass& tonemap() noexcept { return mTonemap; }
+    [[nodiscard]] const DebugViewPass& debugView() const noexcept { return mDebugView; }
+    [[nodiscard]] const BloomPass& bloom() const noexcept { return mBloom; }
+    [[nodiscard]] const SanitizePass& sanitize() const noexcept { return mSanitize; }
 
 private:
+    LinearDepthPass
+        mLightingLinearDepth; ///< the lighting stage's own (its linear depth is not kept for post)
+    GtaoPass mGtao{GtaoPass::Stage::Lighting};
+    ContactShadowsPass mContactShadows;
+    SanitizePass mSanitize;
+    LinearDepthPass mLinearDepth;
+    GtaoPass mGtaoPost{GtaoPass::Stage::Post};
+    AoMultiplyPass mAoMultiply;
+    CameraMotionPass mCameraMotion;
+    TaaPass mTaa;
+    MeteringPass mMetering;
+    ProbePass mProbes;
+    ExposurePass mExposure;
+    SubjectContextsPass mSubjectContexts;
+    BloomPass mBloom;
+    GlarePass mGlare;
+    DebugViewPass mDebugView;
+    TonemapPass mTonemap;
+    FxaaPass mFxaa;
+    SmaaPass mSmaaHdr{SmaaPass::Domain::Hdr};
+    SmaaPass mSmaa{SmaaPass::Domain::Display};
+    LensFlarePass mLensFlare;
+    DisplayEffectsPass mDisplayEffects;
+    HistogramOverlayPass mHistogramOverlay;
+    DofPass mDof;
+    SsrHistoryPass mSsrHistory; ///< publishes ssrHistory, last frame's image, which ssr reads
+    DepthPyramidPass mSsrPyramid;
+    SsrPass mSsr;
+    VolumetricLightPass mVolumetricLight;
+    OutlinePass mOutline;
+    MotionBlurPass mMotionBlur{MotionBlurPlacement::BeforeTaa};
+    MotionBlurPass mMotionBlurLate{MotionBlurPlacement::AfterTaa};
+
     std::vector<FramePass*> mLighting;
     std::vector<FramePass*> mPost;
     std::vector<FramePass*> mAll;

@@ -181,40 +181,56 @@ bool Pipeline::bindInputs(const FrameInputs& in) {
         mInputErrors.emplace_back("color: missing (a null or empty texture); the frame shows black");
         return false;
     }
-    const Extent extent = in.color->extent();
     mResources.bind(Resource::Color, *in.color);
     mResources.bind(Resource::SceneColor, *in.color); // replaced by the sanitised copy on the HDR path
-    // Last frame's exposure until the adaptation pass writes this frame's: passes before metering (TAA)
-    // weight with the exposure the frame will most nearly be shown at.
-    mResources.bind(Resource::ExposureState, mOrder->exposure.state());
+    // What the passes keep from frame to frame (the exposure state, histories) goes on the blackboard.
+    for (const FramePass* pass : mOrder->all()) {
+        pass->publishState(mResources);
+    }
 
-    const auto optional = [&](Resource r, const char* name, const Texture* t,
-                              std::initializer_list<GLenum> formats) {
-        if (t == nullptr) {
-            return;
-        }
-        std::string problem = textureProblem(name, *t, extent, formats);
-        if (problem.empty()) {
-            mResources.bind(r, *t);
-        } else {
-            mInputErrors.push_back(std::move(problem));
-        }
-    };
-    if (in.depthKind == DepthKind::LinearView) {
-        optional(Resource::Depth, "depth", in.depth, {GL_R32F, GL_R16F, GL_RG32F, GL_RGBA32F});
+    // In this order, which the input errors keep.
+    const Extent extent = in.color->extent();
+    bindGeometry(in, extent);
+    bindCamera(in);
+    bindOptional(Resource::ObjectId, "objectId", in.objectId, extent, {GL_R32UI, GL_R16UI, GL_R8UI});
+    bindOptional(Resource::Material, "material", in.material, extent, {GL_RGBA16F, GL_RGBA32F, GL_RGBA8});
+    bindSun(in);
+    return true;
+}
+
+void Pipeline::bindOptional(Resource r, const char* name, const Texture* t, Extent extent,
+                            std::initializer_list<GLenum> formats) {
+    if (t == nullptr) {
+        return;
+    }
+    std::string problem = textureProblem(name, *t, extent, formats);
+    if (problem.empty()) {
+        mResources.bind(r, *t);
     } else {
-        optional(Resource::Depth, "depth", in.depth,
-                 {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT32F,
-                  GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8, GL_R32F});
+        mInputErrors.push_back(std::move(problem));
+    }
+}
+
+void Pipeline::bindGeometry(const FrameInputs& in, Extent extent) {
+    if (in.depthKind == DepthKind::LinearView) {
+        bindOptional(Resource::Depth, "depth", in.depth, extent, {GL_R32F, GL_R16F, GL_RG32F, GL_RGBA32F});
+    } else {
+        bindOptional(Resource::Depth, "depth", in.depth, extent,
+                     {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT32F,
+                      GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8, GL_R32F});
     }
     if (in.normalEncoding == NormalEncoding::Octahedral) {
-        optional(Resource::Normals, "normals", in.normals, {GL_RG16F, GL_RG32F, GL_RG16_SNORM, GL_RG8_SNORM});
+        bindOptional(Resource::Normals, "normals", in.normals, extent,
+                     {GL_RG16F, GL_RG32F, GL_RG16_SNORM, GL_RG8_SNORM});
     } else {
-        optional(
-            Resource::Normals, "normals", in.normals,
+        bindOptional(
+            Resource::Normals, "normals", in.normals, extent,
             {GL_RGB16F, GL_RGBA16F, GL_RGB32F, GL_RGBA32F, GL_RGB10_A2, GL_RGBA16_SNORM, GL_RGBA8_SNORM});
     }
-    optional(Resource::Motion, "motion", in.motion, {GL_RG16F, GL_RG32F, GL_RGBA16F, GL_RGBA32F});
+    bindOptional(Resource::Motion, "motion", in.motion, extent, {GL_RG16F, GL_RG32F, GL_RGBA16F, GL_RGBA32F});
+}
+
+void Pipeline::bindCamera(const FrameInputs& in) {
     if (in.camera) {
         if (const char* reason = invalidCameraReason(*in.camera)) {
             mInputErrors.emplace_back(reason);
@@ -222,8 +238,9 @@ bool Pipeline::bindInputs(const FrameInputs& in) {
             mResources.markPresent(Resource::Camera);
         }
     }
-    optional(Resource::ObjectId, "objectId", in.objectId, {GL_R32UI, GL_R16UI, GL_R8UI});
-    optional(Resource::Material, "material", in.material, {GL_RGBA16F, GL_RGBA32F, GL_RGBA8});
+}
+
+void Pipeline::bindSun(const FrameInputs& in) {
     if (in.sunDirection) {
         const glm::vec3 d = *in.sunDirection;
         const float length2 = glm::dot(d, d);
@@ -240,7 +257,6 @@ bool Pipeline::bindInputs(const FrameInputs& in) {
             mInputErrors.push_back(std::move(problem));
         }
     }
-    return true;
 }
 
 FrameContext Pipeline::makeContext(const FrameInputs& inputs, const FrameTime& time,
@@ -256,7 +272,9 @@ FrameContext Pipeline::makeContext(const FrameInputs& inputs, const FrameTime& t
                         .resetHistory = mResetHistory,
                         .timers = &mTimers,
                         .autoExposure = &mSettings.autoExposure,
-                        .exposureOverrideLog2 = mExposureOverride};
+                        .exposureOverrideLog2 = mExposureOverride,
+                        .subjects = &mOrder->probes().tracker(),
+                        .exposureTelemetry = &mOrder->exposure().lastTelemetry()};
 }
 
 const LightingOutputs& Pipeline::renderLighting(const FrameInputs& inputs, const FrameTime& time) {
@@ -301,35 +319,13 @@ void Pipeline::warnLightingStageMissing() const {
 const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& time) {
     const GlStateScope hostState;
     // The lighting stage's outputs stay bound for the post stage when the host ran it this frame.
-    const LightingOutputs lighting = mLighting;
-    mLighting = {};
+    const LightingOutputs lighting = std::exchange(mLighting, {});
     const Texture* contactShadowSteps = std::exchange(mContactShadowSteps, nullptr);
     if (!bindInputs(inputs)) {
-        if (mLightingTimed) {
-            mTimers.endFrame();
-            mLightingTimed = false;
-        }
-        try {
-            warnOnce("input.color", "execute(): " + mInputErrors.front());
-        } catch (...) { // logging must not take the frame down
-        }
-        return mInvalid;
+        return invalidFrame();
     }
-    for (const std::string& problem : mInputErrors) {
-        try {
-            warnOnce("input." + problem.substr(0, problem.find(':')), "execute(): " + problem + "; ignored");
-        } catch (...) {
-        }
-    }
-    if (lighting.ambientOcclusion) {
-        mResources.bind(Resource::AmbientOcclusion, *lighting.ambientOcclusion);
-    }
-    if (lighting.contactShadows) {
-        mResources.bind(Resource::ContactShadows, *lighting.contactShadows);
-    }
-    if (contactShadowSteps) {
-        mResources.bind(Resource::ContactShadowSteps, *contactShadowSteps);
-    }
+    warnInputProblems();
+    bindLightingOutputs(lighting, contactShadowSteps);
     resize(inputs.color->extent());
     if (mResetHistory) {
         for (FramePass* pass : mOrder->all()) {
@@ -343,10 +339,59 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
     mLightingTimed = false;
     const QualityTier tier = effectiveTier(mCaps, mSettings.quality);
     FrameContext ctx = makeContext(inputs, time, tier);
-    ctx.sanitizeScene = readsRawScene(mOrder->post(), mOrder->sanitize, ctx);
+    ctx.sanitizeScene = readsRawScene(mOrder->post(), mOrder->sanitize(), ctx);
     if (lighting.ambientOcclusion == nullptr && lighting.contactShadows == nullptr) {
         mResources.pool().beginFrame(); // else the lighting stage began it and its textures are in use
     }
+    warnHostCallsMissing(lightingRan);
+    mOutput = mPostSequencer.run(mOrder->post(), {.resources = kPostOutputs, .firstAvailable = true}, ctx,
+                                 mResources);
+    mResourcesRead = mPostSequencer.neededReads();
+    if (lightingRan)
+        mResourcesRead |= mLightingSequencer.neededReads();
+    mResetExposure = false;
+    mResetHistory = false;
+    mTimers.endFrame();
+    const Texture* out = mResources.texture(mOutput);
+    PHOTOPIC_ASSERT(out != nullptr);
+    return *out;
+}
+
+const Texture& Pipeline::invalidFrame() noexcept {
+    if (mLightingTimed) {
+        mTimers.endFrame();
+        mLightingTimed = false;
+    }
+    try {
+        warnOnce("input.color", "execute(): " + mInputErrors.front());
+    } catch (...) { // logging must not take the frame down
+    }
+    return mInvalid;
+}
+
+void Pipeline::warnInputProblems() noexcept {
+    for (const std::string& problem : mInputErrors) {
+        try {
+            warnOnce("input." + problem.substr(0, problem.find(':')), "execute(): " + problem + "; ignored");
+        } catch (...) { // logging must not take the frame down
+        }
+    }
+}
+
+void Pipeline::bindLightingOutputs(const LightingOutputs& lighting,
+                                   const Texture* contactShadowSteps) noexcept {
+    if (lighting.ambientOcclusion) {
+        mResources.bind(Resource::AmbientOcclusion, *lighting.ambientOcclusion);
+    }
+    if (lighting.contactShadows) {
+        mResources.bind(Resource::ContactShadows, *lighting.contactShadows);
+    }
+    if (contactShadowSteps) {
+        mResources.bind(Resource::ContactShadowSteps, *contactShadowSteps);
+    }
+}
+
+void Pipeline::warnHostCallsMissing(bool lightingRan) noexcept {
     if (mSettings.antiAliasing() == AntiAliasing::Ssaa && !mAccumulating) {
         try {
             warnOnce("ssaa.no-subframes", "aa.mode is ssaa but the host rendered no sub-frames "
@@ -365,17 +410,6 @@ const Texture& Pipeline::execute(const FrameInputs& inputs, const FrameTime& tim
     mBeganFrame = false;
     if (!lightingRan)
         warnLightingStageMissing();
-    mOutput = mPostSequencer.run(mOrder->post(), {.resources = kPostOutputs, .firstAvailable = true}, ctx,
-                                 mResources);
-    mResourcesRead = mPostSequencer.neededReads();
-    if (lightingRan)
-        mResourcesRead |= mLightingSequencer.neededReads();
-    mResetExposure = false;
-    mResetHistory = false;
-    mTimers.endFrame();
-    const Texture* out = mResources.texture(mOutput);
-    PHOTOPIC_ASSERT(out != nullptr);
-    return *out;
 }
 
 std::bitset<kResourceCount> Pipeline::plannedReads(std::bitset<kResourceCount> inputs, bool lighting) {
@@ -418,7 +452,7 @@ std::bitset<kResourceCount> Pipeline::plannedReads(std::bitset<kResourceCount> i
             bound.set(std::size_t(r), made.test(std::size_t(r)));
         }
     }
-    ctx.sanitizeScene = readsRawScene(mOrder->post(), mOrder->sanitize, ctx);
+    ctx.sanitizeScene = readsRawScene(mOrder->post(), mOrder->sanitize(), ctx);
     Sequencer stage;
     (void)stage.plan(mOrder->post(), {.resources = kPostOutputs, .firstAvailable = true}, ctx, bound);
     return reads | stage.neededReads();
@@ -481,22 +515,22 @@ const Texture& Pipeline::sceneReferred() {
         throw GlError("no frame has been executed: there is no scene-referred image yet");
     }
     // A debug view of data (visibility, steps) writes its values as they are, not an image of them.
-    if (const Texture* raw = mOrder->debugView.rawValues();
-        raw != nullptr && mOutput == Resource::DebugColor && mPostSequencer.ran(mOrder->debugView)) {
+    if (const Texture* raw = mOrder->debugView().rawValues();
+        raw != nullptr && mOutput == Resource::DebugColor && mPostSequencer.ran(mOrder->debugView())) {
         return *raw;
     }
     const QualityTier tier = effectiveTier(mCaps, mSettings.quality);
     const Texture* bloom = mResources.texture(Resource::Bloom);
-    return mOrder->tonemap.renderScene({.scene = scene,
-                                        .exposureState = &mOrder->exposure.state(),
-                                        .tonemapping = &mSettings.tonemapping,
-                                        .output = &mSettings.output,
-                                        .bloom = bloom,
-                                        .bloomSettings = &mSettings.bloom,
-                                        .glow = bloom == nullptr && legacyGlow(tier, mSettings),
-                                        .grading = &mSettings.colorGrading,
-                                        .frameIndex = 0,
-                                        .timers = nullptr});
+    return mOrder->tonemap().renderScene({.scene = scene,
+                                          .exposureState = &mOrder->exposure().state(),
+                                          .tonemapping = &mSettings.tonemapping,
+                                          .output = &mSettings.output,
+                                          .bloom = bloom,
+                                          .bloomSettings = &mSettings.bloom,
+                                          .glow = bloom == nullptr && legacyGlow(tier, mSettings),
+                                          .grading = &mSettings.colorGrading,
+                                          .frameIndex = 0,
+                                          .timers = nullptr});
 }
 
 PipelineStatus Pipeline::status() const {
@@ -510,7 +544,7 @@ PipelineStatus Pipeline::status() const {
         t.path = ColorPath::Ldr;
         t.pathReason = mCaps.path == ColorPath::Ldr ? mCaps.pathReason : "quality=legacy runs the LDR path";
     }
-    t.bloomLevels = mPostSequencer.ran(mOrder->bloom) ? mOrder->bloom.levels() : 0;
+    t.bloomLevels = mPostSequencer.ran(mOrder->bloom()) ? mOrder->bloom().levels() : 0;
     t.passes = mTimers.latest();
     for (const Sequencer* s : {&mLightingSequencer, &mPostSequencer}) {
         for (std::string& name : s->ranPasses()) {
@@ -526,52 +560,52 @@ PipelineStatus Pipeline::status() const {
 
 const ExposureTelemetry& Pipeline::telemetry() {
     const GlStateScope hostState;
-    return mOrder->exposure.telemetry();
+    return mOrder->exposure().telemetry();
 }
 
 std::vector<ExposureTelemetry> Pipeline::drainTelemetry() {
     const GlStateScope hostState;
-    return mOrder->exposure.drainTelemetry();
+    return mOrder->exposure().drainTelemetry();
 }
 
 std::uint64_t Pipeline::droppedTelemetry() const {
-    return mOrder->exposure.droppedTelemetry();
+    return mOrder->exposure().droppedTelemetry();
 }
 
 void Pipeline::setTelemetryReadyOverride(std::function<bool()> ready) {
-    mOrder->exposure.setTelemetryReadyOverride(std::move(ready));
+    mOrder->exposure().setTelemetryReadyOverride(std::move(ready));
 }
 
 const Buffer& Pipeline::exposureState() const {
-    return mOrder->exposure.state();
+    return mOrder->exposure().state();
 }
 
 void Pipeline::setSubjects(std::span<const Subject> subjects, glm::vec2 viewCentreWorld) noexcept {
-    mOrder->probes.setPending(subjects, viewCentreWorld);
+    mOrder->probes().setPending(subjects, viewCentreWorld);
 }
 
 void Pipeline::setOutdoorsMask(const OutdoorsMask* mask) noexcept {
-    mOrder->probes.tracker().setOutdoorsMask(mask);
+    mOrder->probes().tracker().setOutdoorsMask(mask);
 }
 
 const SubjectContext* Pipeline::contextForSubject(std::uint32_t id) const noexcept {
-    return mOrder->probes.tracker().contextForSubject(id);
+    return mOrder->probes().tracker().contextForSubject(id);
 }
 
 const SubjectContext* Pipeline::subjectContext() const noexcept {
-    return mOrder->probes.tracker().subjectContext();
+    return mOrder->probes().tracker().subjectContext();
 }
 
 float Pipeline::outdoorsAtWorld(float x, float y) const noexcept {
-    return mOrder->probes.tracker().outdoorsAtWorld(x, y);
+    return mOrder->probes().tracker().outdoorsAtWorld(x, y);
 }
 
 const SubjectTracker& Pipeline::subjects() const {
-    return mOrder->probes.tracker();
+    return mOrder->probes().tracker();
 }
 
 std::uint64_t Pipeline::droppedProbes() const {
-    return mOrder->probes.droppedProbes();
+    return mOrder->probes().droppedProbes();
 }
 
 Image8 processImage(Pipeline& pipeline, const ImageF& image, const FrameTime& time) {

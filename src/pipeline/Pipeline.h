@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <span>
@@ -41,10 +42,10 @@ struct PipelineStatus {
     ColorPath path = ColorPath::Hdr; ///< the path frames take now (quality=legacy forces LDR)
     std::string pathReason;          ///< why
     Quality quality = Quality::High;
-    int bloomLevels = 0; ///< levels the last frame's bloom chain ran (0: no bloom)
-    std::vector<PassTiming> passes;            ///< the most recent frame with GPU timings available
-    std::vector<std::string> ran;              ///< the passes the last frame ran, in order (both stages)
-    std::vector<SkippedPass> skipped;          ///< passes the last frame needed but could not run, and why
+    int bloomLevels = 0;              ///< levels the last frame's bloom chain ran (0: no bloom)
+    std::vector<PassTiming> passes;   ///< the most recent frame with GPU timings available
+    std::vector<std::string> ran;     ///< the passes the last frame ran, in order (both stages)
+    std::vector<SkippedPass> skipped; ///< passes the last frame needed but could not run, and why
     /// Problems with the last frame's inputs (a null colour, an input of another size or an unusable format,
     /// a camera with NaN): each names the input; the input was ignored for the frame.
     std::vector<std::string> inputErrors;
@@ -194,6 +195,20 @@ private:
     void resize(Extent extent);
     /// Binds the frame's inputs (those that pass validation) to the blackboard.
     bool bindInputs(const FrameInputs& inputs);
+    /// bindInputs' steps: an optional host texture checked against the frame's extent and `formats` (a
+    /// problem becomes an input error and the resource stays absent), then the inputs by kind.
+    void bindOptional(Resource r, const char* name, const Texture* t, Extent extent,
+                      std::initializer_list<GLenum> formats);
+    void bindGeometry(const FrameInputs& in, Extent extent);
+    void bindCamera(const FrameInputs& in);
+    void bindSun(const FrameInputs& in);
+    /// execute()'s steps: the frame without a colour input, the input problems logged once each, the
+    /// lighting stage's outputs bound for the post stage, and the host calls a setting needs but the host
+    /// did not make this frame (sub-frames, jitter, the lighting stage) logged once each.
+    const Texture& invalidFrame() noexcept;
+    void warnInputProblems() noexcept;
+    void bindLightingOutputs(const LightingOutputs& lighting, const Texture* contactShadowSteps) noexcept;
+    void warnHostCallsMissing(bool lightingRan) noexcept;
     FrameContext makeContext(const FrameInputs& inputs, const FrameTime& time, const QualityTier& tier);
     /// Warns once of each enabled effect that runs only in the lighting stage, for a frame without it.
     void warnLightingStageMissing() const;

@@ -31,11 +31,17 @@ Sequencer::ResourceSet Sequencer::plan(std::span<FramePass* const> passes, Stage
     mPasses.assign(passes.begin(), passes.end());
     mStates.assign(passes.size(), State::Off);
     mMissing.assign(passes.size(), ResourceSet());
+    const ResourceSet available = markRunnable(ctx, bound);
+    ResourceSet needed = chooseOutput(outputs, available, output);
+    markNeeded(needed);
+    return available;
+}
 
+Sequencer::ResourceSet Sequencer::markRunnable(const FrameContext& ctx, ResourceSet bound) {
     // Forward: what can run, and what will be available.
     ResourceSet available = bound;
-    for (std::size_t i = 0; i < passes.size(); ++i) {
-        const FramePass& pass = *passes[i];
+    for (std::size_t i = 0; i < mPasses.size(); ++i) {
+        const FramePass& pass = *mPasses[i];
         if (!pass.enabled(ctx)) {
             continue;
         }
@@ -48,8 +54,11 @@ Sequencer::ResourceSet Sequencer::plan(std::span<FramePass* const> passes, Stage
         mStates[i] = State::Candidate;
         available |= usesOf(pass, Access::Write);
     }
+    return available;
+}
 
-    // The stage's output.
+Sequencer::ResourceSet Sequencer::chooseOutput(StageOutputs outputs, ResourceSet available,
+                                               Resource& output) {
     ResourceSet needed;
     output = Resource::Count;
     for (const Resource r : outputs.resources) {
@@ -70,11 +79,14 @@ Sequencer::ResourceSet Sequencer::plan(std::span<FramePass* const> passes, Stage
         output = outputs.resources.back();
         needed.set(std::size_t(output));
     }
+    return needed;
+}
 
+void Sequencer::markNeeded(ResourceSet needed) {
     // Backward: what must run. A needed pass that cannot run is skipped and reported; a pass that must run
     // needs what it reads, required or optional.
-    for (std::size_t i = passes.size(); i-- > 0;) {
-        const FramePass& pass = *passes[i];
+    for (std::size_t i = mPasses.size(); i-- > 0;) {
+        const FramePass& pass = *mPasses[i];
         if (mStates[i] == State::Off) {
             continue;
         }
@@ -94,7 +106,6 @@ Sequencer::ResourceSet Sequencer::plan(std::span<FramePass* const> passes, Stage
         needed &= ~writes;
         needed |= usesOf(pass, Access::Read) | usesOf(pass, Access::ReadOptional);
     }
-    return available;
 }
 
 void Sequencer::barrierBefore(const FramePass& pass, const FrameResources& resources) {

@@ -63,6 +63,12 @@ private:
     [[nodiscard]] State stateOf(const FramePass& pass) const;
     ResourceSet plan(std::span<FramePass* const> passes, StageOutputs outputs, const FrameContext& ctx,
                      ResourceSet bound, Resource& output);
+    /// plan()'s steps over mPasses: forward, which enabled passes have their inputs (returns what is then
+    /// available); the stage's output among `available` (returns it as the first needed resource); backward,
+    /// which passes something needed depends on.
+    ResourceSet markRunnable(const FrameContext& ctx, ResourceSet bound);
+    static ResourceSet chooseOutput(StageOutputs outputs, ResourceSet available, Resource& output);
+    void markNeeded(ResourceSet needed);
     void barrierBefore(const FramePass& pass, const FrameResources& resources);
 
     std::vector<FramePass*> mPasses; ///< the last run's list (capacity kept: no allocation per frame)

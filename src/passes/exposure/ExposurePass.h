@@ -53,7 +53,7 @@ struct ExposureParameters {
     float lowPercent = 0.0f;
     float highPercent = 0.0f;
     std::int32_t overrideApplied = 0; ///< 1: overrideLog2 replaces the adapted auto exposure
-    float overrideLog2 = 0.0f; ///< EV
+    float overrideLog2 = 0.0f;        ///< EV
     float padding1 = 0.0f;
 };
 static_assert(kMaxCompensationCurvePoints == 16, "exposure_adapt.comp.glsl declares uCurve[16]");
@@ -118,6 +118,11 @@ public:
 
     /// The GPU exposure state every later pass reads (GpuExposureState).
     [[nodiscard]] const Buffer& state() const { return mState; }
+    /// `exposure`: the state as the last frame left it, until this frame's adaptation rewrites it (passes
+    /// before metering, TAA, weight with the exposure the frame will most nearly be shown at).
+    void publishState(FrameResources& resources) const override {
+        resources.bind(Resource::ExposureState, mState);
+    }
     /// The newest telemetry that has arrived, without blocking; the last result again when nothing new has
     /// finished (a continuity cache); `valid` is false before the first.
     const ExposureTelemetry& telemetry();

@@ -1,5 +1,8 @@
 #include "passes/probe/SubjectContextsPass.h"
 
+#include "core/Subjects.h"
+#include "passes/exposure/ExposurePass.h"
+
 namespace photopic {
 
 std::span<const ResourceUse> SubjectContextsPass::uses() const {
@@ -10,7 +13,9 @@ std::span<const ResourceUse> SubjectContextsPass::uses() const {
 
 void SubjectContextsPass::execute(FrameContext& ctx, FrameResources&) {
     // The base settings: the tracker applies each subject's own outdoors coupling.
-    mProbes.tracker().updateExposure(ctx.settings.autoExposure, mExposure.lastTelemetry().appliedLog2);
+    if (ctx.subjects != nullptr && ctx.exposureTelemetry != nullptr) {
+        ctx.subjects->updateExposure(ctx.settings.autoExposure, ctx.exposureTelemetry->appliedLog2);
+    }
 }
 
 } // namespace photopic

@@ -102,9 +102,14 @@ void SsrHistoryPass::execute(FrameContext& ctx, FrameResources& resources) {
     mValid = true;
 }
 
-SsrPass::SsrPass(const SsrHistoryPass& history)
-    : mHistory(history)
-    , mTrace(makeComputeProgram("passes/ssr/ssr_trace.comp.glsl", bindingDefines()))
+void SsrHistoryPass::publishState(FrameResources& resources) const {
+    if (const Texture* last = previous()) {
+        resources.bind(Resource::SsrHistory, *last);
+    }
+}
+
+SsrPass::SsrPass()
+    : mTrace(makeComputeProgram("passes/ssr/ssr_trace.comp.glsl", bindingDefines()))
     , mRefine(makeComputeProgram("passes/ssr/ssr_trace.comp.glsl", bindingDefines({{"REFINE", "1"}})))
     , mResolve(makeComputeProgram("passes/ssr/ssr_resolve.comp.glsl", bindingDefines()))
     , mParameters("ssr parameters") {}
@@ -114,8 +119,8 @@ std::span<const ResourceUse> SsrPass::uses() const {
         {Resource::SceneColor, Access::Read},      {Resource::DepthPyramid, Access::Read},
         {Resource::LinearDepth, Access::Read},     {Resource::Camera, Access::Read},
         {Resource::Normals, Access::ReadOptional}, {Resource::Material, Access::ReadOptional},
-        {Resource::Motion, Access::ReadOptional},  {Resource::SceneColor, Access::Write},
-        {Resource::Reflections, Access::Write}};
+        {Resource::Motion, Access::ReadOptional},  {Resource::SsrHistory, Access::ReadOptional},
+        {Resource::SceneColor, Access::Write},     {Resource::Reflections, Access::Write}};
     return kUses;
 }
 
@@ -141,8 +146,8 @@ SsrPass::Targets SsrPass::acquireTargets(Extent e, bool half, FrameResources& re
     return t;
 }
 
-const Texture* SsrPass::history(const FrameContext& ctx) const {
-    const Texture* history = ctx.resetHistory ? nullptr : mHistory.previous();
+const Texture* SsrPass::history(const FrameContext& ctx, const FrameResources& resources) {
+    const Texture* history = ctx.resetHistory ? nullptr : resources.texture(Resource::SsrHistory);
     return history != nullptr && history->extent() == ctx.extent ? history : nullptr;
 }
 
@@ -169,7 +174,7 @@ SsrParameters SsrPass::parameters(const FrameContext& ctx, const FrameResources&
     p.pyramidSize = glm::ivec2(pyramidSize.width, pyramidSize.height);
     p.normals = normals == nullptr ? 0 : ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 2 : 1;
     p.hasMaterial = resources.texture(Resource::Material) ? 1 : 0;
-    p.hasHistory = history(ctx) ? 1 : 0;
+    p.hasHistory = history(ctx, resources) ? 1 : 0;
     p.hasMotion = resources.texture(Resource::Motion) ? 1 : 0;
     p.half = s.resolution == SsrResolution::Half ? 1 : 0;
     return p;
@@ -210,7 +215,7 @@ void SsrPass::trace(const FrameContext& ctx, const FrameResources& resources, co
 
 void SsrPass::resolve(const FrameContext& ctx, const FrameResources& resources, const Targets& t) {
     const Extent e = ctx.extent;
-    const Texture* history = this->history(ctx);
+    const Texture* history = SsrPass::history(ctx, resources);
     const Texture* motion = resources.texture(Resource::Motion);
     const Texture* material = resources.texture(Resource::Material);
     const Texture& depth = *resources.texture(Resource::LinearDepth);

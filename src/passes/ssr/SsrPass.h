@@ -7,8 +7,8 @@
 //     those of the 2 x 2 blocks around it), then the resolve, which reads the
 //     reflected radiance from last frame's image and adds it, weighted by the material's specular weight and
 //     the confidence, to sceneColor; it also writes `reflections` (radiance, confidence) for the debug view;
-//   - SsrHistoryPass: after TAA, keeps the frame's finished HDR image (with mips) for the next frame's
-//     resolve.
+//   - SsrHistoryPass: after TAA, keeps the frame's finished HDR image (with mips) and publishes it as
+//     `ssrHistory` for the next frame's resolve.
 
 #include "passes/FramePass.h"
 
@@ -92,6 +92,8 @@ public:
 
     /// Last frame's image, or nullptr when there is none to reuse (first frame, resize, cut, reset).
     [[nodiscard]] const Texture* previous() const { return mValid ? &mHistory : nullptr; }
+    /// `ssrHistory`: last frame's image, while there is one to reuse.
+    void publishState(FrameResources& resources) const override;
 
 private:
     Program mProgram;
@@ -103,7 +105,7 @@ private:
 
 class SsrPass final : public FramePass {
 public:
-    explicit SsrPass(const SsrHistoryPass& history);
+    SsrPass();
     [[nodiscard]] std::string_view name() const override { return "ssr"; }
     /// sceneColor, depthPyramid, linearDepth and the camera; normals (else reconstructed from depth),
     /// material (else a dielectric mirror) and motion (else the camera's reprojection) when present.
@@ -135,7 +137,7 @@ private:
     };
     [[nodiscard]] static Targets acquireTargets(Extent e, bool half, FrameResources& resources);
     /// Last frame's image when this frame can reuse it, else nullptr.
-    [[nodiscard]] const Texture* history(const FrameContext& ctx) const;
+    [[nodiscard]] static const Texture* history(const FrameContext& ctx, const FrameResources& resources);
     [[nodiscard]] SsrParameters parameters(const FrameContext& ctx, const FrameResources& resources,
                                            Extent traceExtent) const;
     /// Binds the inputs a trace program reads, and its output.
@@ -145,7 +147,6 @@ private:
                Extent traceExtent);
     void resolve(const FrameContext& ctx, const FrameResources& resources, const Targets& t);
 
-    const SsrHistoryPass& mHistory;
     TraceProgram mTrace;
     TraceProgram mRefine; ///< half resolution: each pixel's hit from the blocks' hits
     Program mResolve;
