@@ -6,6 +6,8 @@
 // [0, 1] (R16F, 1 for the sky), which the host multiplies into its direct sun term only; ambient and
 // image-based light keep their own occlusion (GTAO). docs/architecture.md ("Contact shadows") has the
 // algorithm and its measured agreement with the testbed's ray-traced sun visibility.
+// Tests: tests/gl/test_contact_shadows.cpp, tests/core/test_contact_shadows_settings.cpp,
+// tests/e2e/contact_shadows.sh.
 
 #include "passes/FramePass.h"
 #include "passes/HistoryTexture.h"

@@ -3,6 +3,7 @@
 // bloom), the 3D input views (depth, normals, motion) and the lighting stage's contact shadows replace the
 // image before tone mapping and are shown as they are. The histogram is an overlay over the tone-mapped
 // image, drawn from the GPU histogram buffer, by HistogramOverlayPass.
+// Tests: tests/gl/test_debug_views.cpp.
 
 #include "core/Settings.h"
 #include "passes/DisplayProgram.h"

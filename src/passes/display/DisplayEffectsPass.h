@@ -2,6 +2,7 @@
 // Display-domain effects in one pass (after tone mapping; fused because full-resolution traffic is the cost):
 // chromatic aberration, lens flare composite, dazzle, vignette and grain on the tone-mapped display image,
 // one read and one write.
+// Tests: tests/gl/test_display_effects.cpp, tests/gl/test_display_bit_depth.cpp.
 
 #include "passes/DisplayProgram.h"
 #include "passes/FramePass.h"

@@ -6,6 +6,7 @@
 // scene-referred colour after exposure is metered and before bloom, so bokeh highlights stay HDR and bloom.
 // docs/architecture.md ("Depth of field") has the algorithm and its measured agreement with the testbed's
 // thin-lens ray tracing.
+// Tests: tests/gl/test_dof.cpp, tests/core/test_dof_settings.cpp, tests/e2e/dof.sh, tests/e2e/blender.sh.
 
 #include "passes/FramePass.h"
 

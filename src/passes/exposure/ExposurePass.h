@@ -3,6 +3,7 @@
 // the frame's metering and updates the GPU exposure state (GpuExposureState) that every later pass reads.
 // Same frame, no CPU round trip. With auto exposure off it still runs: it writes exposure = 2^manualEV and
 // the histogram statistics a debug view may need.
+// Tests: tests/gl/test_autoexposure_gpu.cpp, tests/e2e/autoexposure.sh.
 
 #include "core/settings/AutoExposureSettings.h"
 #include "gl/ReadbackRing.h"

@@ -1,6 +1,7 @@
 #pragma once
 // FXAA 3.11 (quality path) on the display-referred image (RGBA8 or RGBA16), after tone mapping: anti-aliasing
 // judges edges by perceived contrast, which display-referred values carry.
+// Tests: tests/gl/test_display_effects.cpp, tests/gl/test_smaa.cpp (FXAA beside SMAA).
 
 #include "passes/DisplayProgram.h"
 #include "passes/FramePass.h"

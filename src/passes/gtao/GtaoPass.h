@@ -7,6 +7,7 @@
 //
 // Two instances: one in the lighting stage (ssao.apply = lighting: the host multiplies its indirect light by
 // it) and one in the post stage (ssao.apply = multiply), followed by AoMultiplyPass.
+// Tests: tests/gl/test_gtao.cpp, tests/e2e/blender.sh (against Cycles' AO).
 
 #include "passes/FramePass.h"
 

@@ -1,6 +1,7 @@
 #pragma once
 // Passes that turn the host's 3D inputs into the pipeline's conventions: linear view depth for every 3D pass,
 // and camera-only motion from depth when the host gives no motion vectors.
+// Tests: tests/gl/test_renderer_inputs.cpp, tests/gl/test_frame_graph.cpp.
 
 #include "passes/FramePass.h"
 

@@ -2,6 +2,7 @@
 // Post lens flare (a lens artefact, so added in the display domain): thresholded, downsampled exposed HDR ->
 // ghosts + halo, an HDR buffer the display-effects pass adds in the display domain. Independent of bloom and
 // its settings.
+// Tests: tests/gl/test_display_effects.cpp.
 
 #include "passes/lensflare/LensFlareSettings.h"
 #include "passes/FramePass.h"

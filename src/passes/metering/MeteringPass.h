@@ -2,6 +2,7 @@
 // Metering (frame order: docs/architecture.md): reads the sanitised HDR image before exposure and leaves, on
 // the GPU, the 256-bin histogram, the frame's min/max meterable luminance and the weighted geometric mean
 // that the adaptation pass (passes/exposure/) turns into exposure. Nothing is read back here.
+// Tests: tests/gl/test_metering_gpu.cpp, tests/gl/test_autoexposure_gpu.cpp.
 
 #include "core/settings/AutoExposureSettings.h"
 #include "passes/FramePass.h"

@@ -7,6 +7,7 @@
 // to back: samples nearer than the pixel cover it by the share of their streak that reaches it, and the
 // pixel's own layer fills the rest: the points its own streak sweeps (its surface, what its motion uncovers
 // behind it, and its own colour where a still nearer surface hides where it comes from).
+// Tests: tests/gl/test_motion_blur.cpp, tests/e2e/mblur.sh, tests/e2e/blender.sh.
 
 #include "passes/FramePass.h"
 

@@ -3,6 +3,7 @@
 // the HDR image before TAA, so TAA smooths them like any other edge. One dispatch. The depth test works in
 // 1/z, which is affine across any plane, so tilted planes give no edge at any angle, and the jump is relative
 // (no scene units); only the nearer side of a jump is drawn, `width` pixels deep.
+// Tests: tests/gl/test_outline.cpp.
 
 #include "passes/FramePass.h"
 

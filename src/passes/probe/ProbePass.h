@@ -5,6 +5,7 @@
 // the pipeline copies into a readback ring (never waited on). For `subject` metering the same dispatch keeps
 // the subject of the view's luma on the GPU (with the probe deadband) and writes it as the metering reading,
 // so exposure follows it in the same frame and keeps adapting between probes.
+// Tests: tests/gl/test_subjects_gpu.cpp.
 
 #include "core/OutdoorsMask.h"
 #include "core/Subjects.h"

@@ -2,6 +2,7 @@
 // Completes each subject's context after exposure: its target from its probed luma and the applied exposure
 // from the newest telemetry that came back (never waited on), so the context API a host polls reads
 // target and applied from the same controller the image uses.
+// Tests: tests/gl/test_subjects_gpu.cpp.
 
 #include "passes/FramePass.h"
 

@@ -1,6 +1,7 @@
 #pragma once
 // The first read of the host's colour: any float format -> RGBA16F with NaN, +-Inf and negatives -> 0 and
 // values clamped below the half-float maximum, so nothing non-finite reaches metering, exposure or bloom.
+// Tests: tests/gl/test_frame_graph.cpp, tests/gl/test_output_reference.cpp.
 
 #include "passes/FramePass.h"
 

@@ -11,6 +11,7 @@
 //    the pair). Edges are judged on a display-like luma of the exposed colour (last frame's exposure, as TAA
 //    uses), sqrt(l E / (1 + l E)), so the thresholds mean what they mean after tone mapping; silhouettes are
 //    kept by the linear depth as above; the blend mixes scene light, as a supersampled render would.
+// Tests: tests/gl/test_smaa.cpp, tests/e2e/smaa.sh.
 
 #include "passes/DisplayProgram.h"
 #include "passes/FramePass.h"

@@ -9,6 +9,7 @@
 //     the confidence, to sceneColor; it also writes `reflections` (radiance, confidence) for the debug view;
 //   - SsrHistoryPass: after TAA, keeps the frame's finished HDR image (with mips) and publishes it as
 //     `ssrHistory` for the next frame's resolve.
+// Tests: tests/gl/test_ssr.cpp, tests/e2e/ssr.sh.
 
 #include "passes/FramePass.h"
 

@@ -2,6 +2,7 @@
 // Temporal anti-aliasing: this frame's jittered samples resolved with the reprojected history, in the HDR
 // domain before metering (the image the exposure reads is the anti-aliased one). The resolve replaces
 // sceneColor and keeps itself, with each pixel's depth, as next frame's history.
+// Tests: tests/gl/test_taa.cpp.
 
 #include "passes/FramePass.h"
 #include "passes/HistoryTexture.h"

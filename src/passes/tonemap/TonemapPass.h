@@ -1,4 +1,5 @@
 #pragma once
+// Tests: tests/gl/test_tonemap_gpu.cpp, tests/gl/test_bloom.cpp (the composite).
 
 #include "core/Settings.h"
 #include "gl/ShaderLibrary.h"

@@ -10,6 +10,7 @@
 // its temporal accumulation reprojected by the camera's motion from depth, and a depth-aware upsample added
 // to the image at the same place in the frame.
 // docs/architecture.md ("Volumetric light") has the settings, the measured figures and the limits.
+// Tests: tests/gl/test_volumetric_light.cpp, tests/gl/test_volumetric_shadow.cpp, tests/e2e/volumetric_light.sh.
 
 #include "passes/FramePass.h"
 #include "passes/HistoryTexture.h"
