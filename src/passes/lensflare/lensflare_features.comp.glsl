@@ -2,8 +2,8 @@
 // sources into ghosts along the line through the image centre, mirrored; a halo ring appears around the
 // centre. Each ghost samples the thresholded buffer at uv + i * spacing * (centre - uv), weighted to fade
 // towards the edges (ghosts of sources near the rim are dim); the halo samples a fixed distance along the
-// same direction, weighted by closeness to the ring. The buffer is small and bilinear, which blurs the
-// ghosts enough that no separate blur pass is needed at this resolution.
+// same direction, weighted by closeness to the ring. The buffer is small and each ghost reads it through a
+// round Gaussian footprint, which blurs the ghosts enough that no separate blur pass is needed.
 layout(local_size_x = 8, local_size_y = 8) in; // a compute pass: 8x8 groups, image store
 
 layout(binding = 0) uniform sampler2D uSource;
@@ -18,9 +18,25 @@ layout(std140, binding = BINDING_PARAMETERS) uniform LensFlareFeaturesParameters
     float uAspect; // width / height, keeps the halo round
 };
 
+// A ghost sees the source through a round footprint: a Gaussian of one texel (sigma) taken as a centre tap
+// and eight on a ring 1.25 texels out, each bilinear. One bilinear tap is a tent whose contours are squares,
+// and a bright source's ghost then shows the buffer's grid as a square.
+const float kCentreWeight = 0.21447;
+const float kRingWeight = 0.09819; // exp(-1.25^2 / 2) times the centre's, the nine summing to 1
+const float kRingRadius = 1.25;
+
+vec3 sampleRound(vec2 uv) {
+    vec3 c = textureLod(uSource, uv, 0.0).rgb * kCentreWeight;
+    for (int k = 0; k < 8; ++k) {
+        float a = float(k) * 0.78539816;
+        c += textureLod(uSource, uv + vec2(cos(a), sin(a)) * kRingRadius * uTargetTexel, 0.0).rgb * kRingWeight;
+    }
+    return c;
+}
+
 vec3 sampleFaded(vec2 uv) {
     float fade = 1.0 - clamp(length(uv - 0.5) / 0.70710678, 0.0, 1.0);
-    return textureLod(uSource, uv, 0.0).rgb * fade * fade;
+    return sampleRound(uv) * fade * fade;
 }
 
 void main() {

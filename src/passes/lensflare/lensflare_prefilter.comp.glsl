@@ -1,6 +1,7 @@
 // Lens flare source (a post pass driven by the bright parts of the HDR image, decoupled from
 // bloom): the exposed scene, reduced to a small buffer with a 2x2 bilinear box (4 taps = 4x4 texels), keeping
-// only what exceeds the flare threshold (a hard threshold; the ghosts are blurred, so no knee is needed).
+// only what exceeds the flare threshold (a hard threshold; the ghosts are blurred, so no knee is needed),
+// capped so that a sun's ghosts stay within a few times white.
 #include "passes/common/exposure.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in; // a compute pass: 8x8 groups, image store
@@ -14,6 +15,8 @@ layout(std140, binding = BINDING_PARAMETERS) uniform LensFlarePrefilterParameter
     float uThreshold;
 };
 
+const float kSourceCap = 16.0;
+
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, imageSize(uTarget)))) {
@@ -25,5 +28,11 @@ void main() {
              textureLod(uScene, uv + vec2(-uSourceStep.x, uSourceStep.y), 0.0).rgb +
              textureLod(uScene, uv + vec2(uSourceStep.x, uSourceStep.y), 0.0).rgb;
     c *= 0.25 * gExposure.exposure;
-    imageStore(uTarget, p, vec4(max(c - vec3(uThreshold), vec3(0.0)), 1.0));
+    c = max(c - vec3(uThreshold), vec3(0.0));
+    // A source many times white (a sun) is scaled down to kSourceCap, hue kept: a lens's ghosts are faint
+    // copies of the aperture, and a ghost thousands of times white would show the buffer's texels as
+    // saturated blocks however it is filtered.
+    float peak = max(c.r, max(c.g, c.b));
+    c *= kSourceCap / max(kSourceCap, peak);
+    imageStore(uTarget, p, vec4(c, 1.0));
 }
