@@ -116,4 +116,15 @@ std::vector<std::vector<PassTiming>> GpuTimers::drain() {
     return std::exchange(mHarvested, {});
 }
 
+std::vector<std::vector<PassTiming>> GpuTimers::collect() {
+    // Oldest first, stopping at the first frame still in flight so the order holds.
+    for (int i = 0; i < kFramesInFlight; ++i) {
+        Slot& slot = mSlots[std::size_t((mCurrent + i) % kFramesInFlight)];
+        if (slot.pending && !harvest(slot, false)) {
+            break;
+        }
+    }
+    return std::exchange(mHarvested, {});
+}
+
 } // namespace photopic

@@ -49,6 +49,9 @@ public:
     /// passes: at most the newest kKeptFrames since the last drain, so a frame loop that never drains holds
     /// a bounded amount, however long it runs.
     std::vector<std::vector<PassTiming>> drain();
+    /// The frames whose results have arrived since the last drain() or collect(), oldest first; never waits
+    /// (a frame still in flight comes in a later call).
+    std::vector<std::vector<PassTiming>> collect();
     static constexpr std::size_t kKeptFrames = 256;
 
 private:

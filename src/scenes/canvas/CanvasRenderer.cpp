@@ -85,9 +85,7 @@ void CanvasRenderer::setCanvas(const CanvasImages& images, int tileSize) {
     const int w = images.color.width, h = images.color.height;
     mGrid = grid;
     mTrial.restart();
-    for (TrialFrame& f : mTrialFrames) {
-        f.pending = false;
-    }
+    mTrialTimers = {}; // the old canvas's trial frames still in flight are not this one's
     DebugGroup group("canvas upload + tile lists");
     if (!mColor.valid() || mColor.extent() != Extent{w, h}) {
         mColor = Texture({.extent = {w, h}, .format = GL_RGBA16F, .debugName = "canvas colour"});
@@ -149,7 +147,9 @@ const Texture& CanvasRenderer::execute(const CanvasLighting& lighting, CanvasSha
     if (shading != CanvasShading::Auto) {
         return shade(lighting, shading, timers);
     }
-    collectTrialTimes();
+    if (!mTrial.chosen()) {
+        collectTrialTimes(); // logs the choice once, when the trial ends
+    }
     if (const std::optional<CanvasShading> chosen = mTrial.chosen()) {
         return shade(lighting, *chosen, timers);
     }
@@ -158,41 +158,27 @@ const Texture& CanvasRenderer::execute(const CanvasLighting& lighting, CanvasSha
 
 const Texture& CanvasRenderer::shadeTimed(const CanvasLighting& lighting, GpuTimers* timers) {
     const CanvasShading path = mTrial.take();
-    auto frame = std::find_if(mTrialFrames.begin(), mTrialFrames.end(),
-                              [](const TrialFrame& f) { return !f.pending; });
-    if (frame == mTrialFrames.end()) {
-        return shade(lighting, path, timers); // every query still in flight: this frame goes untimed
-    }
-    glQueryCounter(frame->start.id(), GL_TIMESTAMP);
+    mTrialTimers.beginFrame();
+    mTrialTimers.begin(kShadingNames[std::size_t(path)]);
     const Texture& out = shade(lighting, path, timers);
-    glQueryCounter(frame->end.id(), GL_TIMESTAMP);
-    frame->path = path;
-    frame->pending = true;
+    mTrialTimers.end();
+    mTrialTimers.endFrame();
     return out;
 }
 
 void CanvasRenderer::collectTrialTimes() {
-    for (TrialFrame& f : mTrialFrames) {
-        GLint ready = 0;
-        if (f.pending) {
-            glGetQueryObjectiv(f.end.id(), GL_QUERY_RESULT_AVAILABLE, &ready);
+    for (const std::vector<PassTiming>& frame : mTrialTimers.collect()) {
+        for (const PassTiming& t : frame) {
+            mTrial.record(t.name == kShadingNames[0] ? CanvasShading::Tiled : CanvasShading::Fullscreen,
+                          t.gpuMs);
         }
-        if (ready == 0) {
-            continue;
-        }
-        GLuint64 start = 0, end = 0;
-        glGetQueryObjectui64v(f.start.id(), GL_QUERY_RESULT, &start);
-        glGetQueryObjectui64v(f.end.id(), GL_QUERY_RESULT, &end);
-        f.pending = false;
-        mTrial.record(f.path, double(end - start) * 1e-6);
-        if (const std::optional<CanvasShading> chosen = mTrial.chosen()) {
-            const std::array<double, 2> ms = mTrial.medians();
-            logInfo(
-                "canvas shading auto: {} ({:.3f} ms a frame against {:.3f} ms {}, median of {} frames each)",
-                kShadingNames[std::size_t(*chosen)], ms[*chosen == CanvasShading::Tiled ? 0 : 1],
-                ms[*chosen == CanvasShading::Tiled ? 1 : 0],
-                *chosen == CanvasShading::Tiled ? "full screen" : "tiled", CanvasPathTrial::kSamples);
-        }
+    }
+    if (const std::optional<CanvasShading> chosen = mTrial.chosen()) {
+        const std::size_t kept = *chosen == CanvasShading::Tiled ? 0 : 1;
+        const std::array<double, 2> ms = mTrial.medians();
+        logInfo("canvas shading auto: {} ({:.3f} ms a frame against {:.3f} ms {}, median of {} frames each)",
+                kShadingNames[kept], ms[kept], ms[1 - kept], kept == 0 ? "full screen" : "tiled",
+                CanvasPathTrial::kSamples);
     }
 }
 

@@ -65,14 +65,6 @@ public:
     }
 
 private:
-    /// A frame of `Auto` during the trial: its path and the timestamps around its dispatches.
-    struct TrialFrame {
-        CanvasShading path = CanvasShading::Tiled;
-        Query start{GL_TIMESTAMP};
-        Query end{GL_TIMESTAMP};
-        bool pending = false;
-    };
-
     void setLightingUniforms(const Program& program, const CanvasLighting& lighting) const;
     const Texture& shade(const CanvasLighting& lighting, CanvasShading path, GpuTimers* timers);
     const Texture& shadeTimed(const CanvasLighting& lighting, GpuTimers* timers);
@@ -90,7 +82,7 @@ private:
     TileGrid mGrid;
     int mOccupiedTiles = 0;
     CanvasPathTrial mTrial;
-    std::array<TrialFrame, 4> mTrialFrames;
+    GpuTimers mTrialTimers; ///< `Auto`'s trial frames, one timing each, named by the path it ran
 };
 
 } // namespace photopic
