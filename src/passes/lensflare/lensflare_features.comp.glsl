@@ -24,12 +24,15 @@ layout(std140, binding = BINDING_PARAMETERS) uniform LensFlareFeaturesParameters
 const float kCentreWeight = 0.21447;
 const float kRingWeight = 0.09819; // exp(-1.25^2 / 2) times the centre's, the nine summing to 1
 const float kRingRadius = 1.25;
+const float kDiagonal = 0.70710678;
+const vec2 kRing[8] = vec2[8](vec2(1.0, 0.0), vec2(kDiagonal, kDiagonal), vec2(0.0, 1.0),
+                              vec2(-kDiagonal, kDiagonal), vec2(-1.0, 0.0), vec2(-kDiagonal, -kDiagonal),
+                              vec2(0.0, -1.0), vec2(kDiagonal, -kDiagonal));
 
 vec3 sampleRound(vec2 uv) {
     vec3 c = textureLod(uSource, uv, 0.0).rgb * kCentreWeight;
     for (int k = 0; k < 8; ++k) {
-        float a = float(k) * 0.78539816;
-        c += textureLod(uSource, uv + vec2(cos(a), sin(a)) * kRingRadius * uTargetTexel, 0.0).rgb * kRingWeight;
+        c += textureLod(uSource, uv + kRing[k] * kRingRadius * uTargetTexel, 0.0).rgb * kRingWeight;
     }
     return c;
 }
