@@ -272,6 +272,7 @@ int bytesPerTexel(GLenum format) {
     case GL_RGBA16:
         return 8;
     case GL_RG32F:
+    case GL_RG32UI:
     case GL_DEPTH32F_STENCIL8:
         return 8;
     case GL_RGB16F:
@@ -309,6 +310,8 @@ std::string_view formatName(GLenum format) {
         return "R32F";
     case GL_R32UI:
         return "R32UI";
+    case GL_RG32UI:
+        return "RG32UI";
     case GL_RGBA8:
         return "RGBA8";
     case GL_RGBA16:

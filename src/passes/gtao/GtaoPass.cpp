@@ -6,6 +6,7 @@ namespace photopic {
 
 GtaoPass::GtaoPass(Stage stage)
     : mStage(stage)
+    , mPrepare(makeComputeProgram("passes/gtao/gtao_prepare.comp.glsl", bindingDefines()))
     , mMain(makeComputeProgram("passes/gtao/gtao_main.comp.glsl", bindingDefines()))
     , mDenoise(makeComputeProgram("passes/gtao/gtao_denoise.comp.glsl", bindingDefines()))
     , mParameters("gtao parameters") {}
@@ -47,9 +48,16 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Extent e = ctx.extent;
     const int scale = s.resolution == GtaoResolution::Half ? 2 : 1;
     const Extent rawExtent{(e.width + scale - 1) / scale, (e.height + scale - 1) / scale};
+    const Texture& surface = resources.pool()
+                                 .acquire({.extent = e,
+                                           .format = GL_RG32UI,
+                                           .minFilter = GL_NEAREST,
+                                           .magFilter = GL_NEAREST,
+                                           .debugName = "gtao surface"})
+                                 .texture();
     const Texture& raw = resources.pool()
                              .acquire({.extent = rawExtent,
-                                       .format = GL_R16F,
+                                       .format = GL_RG32UI,
                                        .minFilter = GL_NEAREST,
                                        .magFilter = GL_NEAREST,
                                        .debugName = "gtao raw"})
@@ -64,11 +72,11 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
     const glm::ivec2 tier = slicesAndSteps(s.quality);
     const double rawTexels = double(rawExtent.width) * rawExtent.height;
     const double fullTexels = double(e.width) * e.height;
-    // Horizon search: depth per step (2 sides) plus the centre's depth and normal; denoise: 9 (25 at half
-    // resolution) depths, normals and raw values per pixel, mostly cache hits. Two timers: the search and
-    // the denoiser cost differently with the preset and the resolution.
-    const double searchBytes = rawTexels * (4.0 * 2.0 * tier.x * tier.y + 4.0 + 8.0 + 2.0);
-    const double denoiseBytes = fullTexels * (4 + 8 + 4 + 2);
+    // Horizon search: a surface texel per step (2 sides) and per side's depth check, plus the centre's;
+    // denoise: 9 (25 at half resolution) surface texels and raw values per pixel, mostly cache hits. Three
+    // timers: the packing, the search and the denoiser cost differently with the preset and the resolution.
+    const double searchBytes = rawTexels * (8.0 * 2.0 * tier.x * (tier.y + 1) + 8.0 + 2.0);
+    const double denoiseBytes = fullTexels * (8 + 2 + 2);
     mParameters.update({.invProjection = glm::inverse(camera.projection),
                         .projection = camera.projection,
                         .fullSize = glm::vec2(float(e.width), float(e.height)),
@@ -80,26 +88,35 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
                         .frame = std::uint32_t(ctx.time.frameIndex % 1024u),
                         .octahedral = ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 1 : 0});
     mParameters.bind(kBindingParameters);
-    search(resources, raw, searchBytes, ctx.timers);
-    denoise(resources, raw, out, denoiseBytes, ctx.timers);
+    prepare(resources, surface, ctx.timers);
+    search(surface, raw, searchBytes, ctx.timers);
+    denoise(surface, raw, out, denoiseBytes, ctx.timers);
     resources.bind(Resource::AmbientOcclusion, out);
 }
 
-void GtaoPass::search(FrameResources& resources, const Texture& raw, double bytes, GpuTimers* timers) {
+void GtaoPass::prepare(FrameResources& resources, const Texture& surface, GpuTimers* timers) {
+    const Extent e = surface.extent();
+    ScopedGpuTimer timer(timers, "gtao surface", double(e.width) * e.height * (4 + 8 + 8));
+    mPrepare.use();
+    bind(mPrepareDepth, *resources.texture(Resource::LinearDepth));
+    bind(mPrepareNormals, *resources.texture(Resource::Normals));
+    bind(mPrepareSurface, surface, ImageAccess::Write);
+    dispatch(mPrepare, e, Barrier::TextureFetch);
+}
+
+void GtaoPass::search(const Texture& surface, const Texture& raw, double bytes, GpuTimers* timers) {
     ScopedGpuTimer timer(timers, "gtao", bytes);
     mMain.use();
-    bind(mMainDepth, *resources.texture(Resource::LinearDepth));
-    bind(mMainNormals, *resources.texture(Resource::Normals));
+    bind(mMainSurface, surface);
     bind(mMainRaw, raw, ImageAccess::Write);
     dispatch(mMain, raw.extent(), Barrier::TextureFetch);
 }
 
-void GtaoPass::denoise(FrameResources& resources, const Texture& raw, const Texture& out, double bytes,
+void GtaoPass::denoise(const Texture& surface, const Texture& raw, const Texture& out, double bytes,
                        GpuTimers* timers) {
     ScopedGpuTimer timer(timers, "gtao denoise", bytes);
     mDenoise.use();
-    bind(mDenoiseDepth, *resources.texture(Resource::LinearDepth));
-    bind(mDenoiseNormals, *resources.texture(Resource::Normals));
+    bind(mDenoiseSurface, surface);
     bind(mDenoiseRaw, raw);
     bind(mDenoiseOut, out, ImageAccess::Write);
     dispatch(mDenoise, out.extent(), Barrier::None);

@@ -56,20 +56,24 @@ public:
     [[nodiscard]] static glm::ivec2 slicesAndSteps(GtaoQuality quality) noexcept;
 
 private:
-    /// The horizon search into `raw` (one texel per AO texel), then the denoise into `out`.
-    void search(FrameResources& resources, const Texture& raw, double bytes, GpuTimers* timers);
-    void denoise(FrameResources& resources, const Texture& raw, const Texture& out, double bytes,
+    /// Depth and normal packed into `surface` (gtao_surface.h.glsl), the horizon search into `raw` (one texel
+    /// per AO texel), then the denoise into `out`.
+    void prepare(FrameResources& resources, const Texture& surface, GpuTimers* timers);
+    void search(const Texture& surface, const Texture& raw, double bytes, GpuTimers* timers);
+    void denoise(const Texture& surface, const Texture& raw, const Texture& out, double bytes,
                  GpuTimers* timers);
 
     Stage mStage;
+    Program mPrepare;
     Program mMain;
     Program mDenoise;
     ParameterBlock<GtaoParameters> mParameters;
-    SamplerSlot mMainDepth = mMain.sampler("uLinearDepth");
-    SamplerSlot mMainNormals = mMain.sampler("uNormals");
+    SamplerSlot mPrepareDepth = mPrepare.sampler("uLinearDepth");
+    SamplerSlot mPrepareNormals = mPrepare.sampler("uNormals");
+    ImageSlot mPrepareSurface = mPrepare.image("uSurfaceOut");
+    SamplerSlot mMainSurface = mMain.sampler("uSurface");
     ImageSlot mMainRaw = mMain.image("uRaw");
-    SamplerSlot mDenoiseDepth = mDenoise.sampler("uLinearDepth");
-    SamplerSlot mDenoiseNormals = mDenoise.sampler("uNormals");
+    SamplerSlot mDenoiseSurface = mDenoise.sampler("uSurface");
     SamplerSlot mDenoiseRaw = mDenoise.sampler("uRaw");
     ImageSlot mDenoiseOut = mDenoise.image("uVisibility");
 };

@@ -3,12 +3,11 @@
 // how its normal turns away, so occlusion does not bleed across depth discontinuities (no halos) and the
 // half-resolution result is upsampled along surfaces. Sky pixels are 1.
 #include "passes/gtao/gtao_common.h.glsl"
+#include "passes/gtao/gtao_surface.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uLinearDepth;
-layout(binding = 1) uniform sampler2D uNormals;
-layout(binding = 2) uniform sampler2D uRaw;
+layout(binding = 1) uniform usampler2D uRaw; // packAoTexel
 layout(binding = 0, r16f) uniform writeonly image2D uVisibility;
 
 // Neighbours farther from the centre point than this fraction of the radius weigh exp(-1) less, and so on:
@@ -16,28 +15,25 @@ layout(binding = 0, r16f) uniform writeonly image2D uVisibility;
 // pixel row to the next, and without this the ground in front of a wall's foot took the wall's occlusion.
 const float kReach = 0.5;
 
-vec3 normalAt(ivec2 p) {
-    vec4 t = texelFetch(uNormals, p, 0);
-    return normalize(uOctahedral != 0 ? octahedralDecode(t.rg) : t.xyz);
-}
-
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     ivec2 full = imageSize(uVisibility);
     if (any(greaterThanEqual(p, full))) {
         return;
     }
-    float z = texelFetch(uLinearDepth, p, 0).r;
-    if (isinf(z) || !(z > 0.0)) {
+    GtaoSurface surface = surfaceAt(p);
+    float z = surface.z;
+    if (!isSurface(z)) {
         imageStore(uVisibility, p, vec4(1.0));
         return;
     }
-    vec3 normal = normalAt(p);
+    vec3 normal = normalize(surface.n);
     vec3 position = viewPositionAt(vec2(p) + 0.5, z);
     ivec2 rawSize = textureSize(uRaw, 0);
     ivec2 centre = p / uScale;
     // Tolerance for the distance from the tangent plane: a few per cent of the depth.
-    float tolerance = 0.02 * z;
+    float invTolerance = 1.0 / (0.02 * z);
+    float invReach = 1.0 / (kReach * uRadius);
     float sum = 0.0;
     float weights = 0.0;
     // 3 x 3 texels at full resolution, 5 x 5 at half (where the upsampling needs texels 2 out). At full
@@ -51,25 +47,28 @@ void main() {
                 continue;
             }
             ivec2 source = aoSourcePixel(q, full);
-            float sz = texelFetch(uLinearDepth, source, 0).r;
-            if (isinf(sz) || !(sz > 0.0)) {
+            AoTexel neighbour = unpackAoTexel(texelFetch(uRaw, q, 0).xy);
+            if (!isSurface(neighbour.z)) {
                 continue;
             }
-            vec3 offset = viewPositionAt(vec2(source) + 0.5, sz) - position;
-            float plane = abs(dot(offset, normal)) / tolerance;
-            float reach = length(offset) / (kReach * uRadius);
+            vec3 offset = viewPositionAt(vec2(source) + 0.5, neighbour.z) - position;
+            float plane = dot(offset, normal) * invTolerance;
+            float distance2 = dot(offset, offset) * (invReach * invReach);
             // A crease (a wall meeting the ground) lies in both faces' tangent planes; the normals tell the
-            // faces apart, whose occlusion differs.
-            float facing = pow(max(dot(normalAt(source), normal), 0.0), 4.0);
+            // faces apart, whose occlusion differs: the cosine between them to the fourth power, from the
+            // unnormalized neighbour normal as dot^2 / |n|^2 squared.
+            float along = max(dot(neighbour.n, normal), 0.0);
+            float cosine2 = along * along / dot(neighbour.n, neighbour.n);
             // The Gaussian is in full-resolution pixels: at half resolution it spans the same area of the
             // image, not twice as much.
             vec2 d = vec2(source - p);
-            float w = exp(-0.5 * dot(d, d) / 2.25 - plane * plane - reach * reach) * facing;
-            sum += w * texelFetch(uRaw, q, 0).r;
+            float w = exp(-0.5 * dot(d, d) / 2.25 - plane * plane - distance2) * (cosine2 * cosine2);
+            sum += w * neighbour.visibility;
             weights += w;
         }
     }
-    float visibility =
-        weights > 1e-6 ? sum / weights : texelFetch(uRaw, clamp(centre, ivec2(0), rawSize - 1), 0).r;
+    float visibility = weights > 1e-6
+                           ? sum / weights
+                           : unpackAoTexel(texelFetch(uRaw, clamp(centre, ivec2(0), rawSize - 1), 0).xy).visibility;
     imageStore(uVisibility, p, vec4(clamp(visibility, 0.0, 1.0)));
 }

@@ -1,16 +1,15 @@
 // GTAO's horizon search and analytic integral (Jimenez et al. 2016, "Practical Real-Time Strategies for
 // Accurate Indirect Occlusion", section 4 and eq. 10), one invocation per AO texel. Output: the raw,
-// cosine-weighted visibility in [0, 1], noisy (a few slices per pixel); gtao_denoise.comp.glsl filters it.
+// cosine-weighted visibility in [0, 1], noisy (a few slices per pixel), centreTexel with the surface it was
+// computed at (packAoTexel); gtao_denoise.comp.glsl filters it.
 #include "passes/gtao/gtao_common.h.glsl"
+#include "passes/gtao/gtao_surface.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uLinearDepth; // R32F, +inf: sky
-layout(binding = 1) uniform sampler2D uNormals;     // view space (or octahedral)
-layout(binding = 0, r16f) uniform writeonly image2D uRaw;
+layout(binding = 0, rg32ui) uniform writeonly uimage2D uRaw;
 
 const float kPi = 3.14159265358979;
-const float kHalfPi = 1.57079632679490;
 // The thickness heuristic of Jimenez et al. 2016: a sample within the radius but below the horizon found so
 // far pulls the horizon this far towards itself. Depth has no thickness, so a thin pole or wire in front of
 // the point reads as a wall; the ground seen past it, below the horizon it set, says otherwise. Partial,
@@ -24,49 +23,40 @@ float interleavedGradientNoise(vec2 p, uint frame) {
     return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
 }
 
-vec3 viewNormalAt(ivec2 p) {
-    vec4 t = texelFetch(uNormals, p, 0);
-    return normalize(uOctahedral != 0 ? octahedralDecode(t.rg) : t.xyz);
-}
+// Coordinates within a slice: the slice plane holds the view vector v and the screen direction; e is that
+// direction made perpendicular to v. A point x relative to the origin is (dot(x, e), dot(x, v)), and its
+// horizon cosine is the second coordinate over its length.
+struct SliceFrame {
+    vec3 e;
+    vec3 v;
+};
 
 // A sample's surface continued along its tangent plane within the slice: the surface may cross the radius
 // between two samples (a plane seen at a grazing angle, whose part within the radius is narrower than a
 // pixel: the ground at the foot of a wall). The plane is cut with the slice plane itself, not followed from
 // the sample: a sample sits up to half a texel off the slice, and on a plane seen edge-on (the ground far
 // away) a line through it, parallel to the slice, passes beside the centre and reads as a steep horizon on
-// the wrong side of the centre's own tangent plane. Returns the highest cosine to the view vector of the
-// trace's part within the radius on this side, or -1, and where that part meets the radius (view space) in
-// `point`. Only planes the centre point lies in front of count (a surface behind the point cannot reach it).
-float planeHorizon(vec3 hit, vec3 sampleNormal, vec3 origin, vec3 axis, vec3 sideVec, vec3 viewVec,
-                   out vec3 point) {
-    point = vec3(0.0);
-    if (dot(origin - hit, sampleNormal) < 0.0) {
-        return -1.0;
-    }
-    // The plane's trace on the slice plane: the points x (relative to origin) with dot(x, axis) = 0 and
-    // dot(x - o, sampleNormal) = 0; m is the normal projected into the slice plane.
-    vec3 o = hit - origin;
-    vec3 m = sampleNormal - axis * dot(sampleNormal, axis);
+// the wrong side of the centre's own tangent plane. In slice coordinates the trace is the line
+// dot(m, x) = c, m the normal's slice coordinates and c = dot(delta, n); it meets the radius at
+// x0 +- sqrt(R^2 m.m - c^2) perp(m) / m.m with x0 = m c / m.m. Returns the point of the trace's part
+// within the radius on side `sign` (+1: along +e) with the highest second coordinate, or (0, -R).
+// Only planes the origin lies in front of count (c <= 0: a surface behind the point cannot reach it).
+vec2 planeHorizon(vec3 delta, vec3 sampleNormal, SliceFrame f, float sign) {
+    vec2 none = vec2(0.0, -uRadius);
+    float c = dot(delta, sampleNormal);
+    vec2 m = vec2(dot(sampleNormal, f.e), dot(sampleNormal, f.v));
     float m2 = dot(m, m);
-    if (m2 < 1e-8) {
-        return -1.0;
+    float disc = uRadius * uRadius * m2 - c * c;
+    if (c > 0.0 || !(m2 > 1e-9) || disc <= 0.0) {
+        return none;
     }
-    vec3 x0 = m * (dot(o, sampleNormal) / m2);
-    vec3 d = normalize(cross(axis, sampleNormal));
-    float disc = uRadius * uRadius - dot(x0, x0);
-    if (disc <= 0.0) {
-        return -1.0;
-    }
-    float best = -1.0;
-    for (int k = 0; k < 2; ++k) {
-        vec3 p = x0 + (k == 0 ? -1.0 : 1.0) * sqrt(disc) * d;
-        float c = dot(p, viewVec) / uRadius;
-        if (dot(p, sideVec) > 0.0 && c > best) {
-            best = c;
-            point = origin + p;
-        }
-    }
-    return best;
+    vec2 x0 = m * (c / m2);
+    vec2 d = vec2(-m.y, m.x) * (sqrt(disc) / m2);
+    vec2 a = x0 + d;
+    vec2 b = x0 - d;
+    a = sign * a.x > 0.0 ? a : none;
+    b = sign * b.x > 0.0 ? b : none;
+    return a.y >= b.y ? a : b;
 }
 
 // Whether the depth buffer allows a continued surface to reach `point` (view space): false where the visible
@@ -83,12 +73,63 @@ bool depthAgrees(vec3 point) {
     if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, ivec2(uFullSize)))) {
         return true;
     }
-    float z = texelFetch(uLinearDepth, texel, 0).r;
-    if (isinf(z) || !(z > 0.0)) {
+    GtaoSurface s = surfaceAt(texel);
+    if (!isSurface(s.z)) {
         return false;
     }
-    vec3 visible = viewPositionAt(vec2(texel) + 0.5, z);
-    return dot(point - visible, viewNormalAt(texel)) <= 0.05 * uRadius;
+    vec3 visible = viewPositionAt(vec2(texel) + 0.5, s.z);
+    return dot(point - visible, normalize(s.n)) <= 0.05 * uRadius;
+}
+
+// The highest horizon cosine on one side of a slice (sign +1: along +omega), starting from `low` (the
+// tangent plane's): the samples' own cosines within the radius, with the thickness heuristic, and the best
+// tangent-plane continuation of any sample, checked against the depth buffer once.
+float sideHorizon(vec2 centre, vec2 omega, float sign, vec3 origin, SliceFrame f, float low, float radiusPixels,
+                  float jitter) {
+    ivec2 full = ivec2(uFullSize);
+    float radius2 = uRadius * uRadius;
+    float best = low;
+    vec2 plane = vec2(0.0, -uRadius);
+    for (int s = 0; s < uSteps; ++s) {
+        // Quadratic spacing: denser near the centre, where occluders subtend the largest angles.
+        float t = (float(s) + jitter) / float(uSteps);
+        float offset = mix(1.0, radiusPixels, t * t);
+        ivec2 texel = ivec2(floor(centre + sign * omega * offset));
+        if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, full))) {
+            break;
+        }
+        GtaoSurface hit = surfaceAt(texel);
+        if (!isSurface(hit.z)) {
+            continue; // the sky occludes nothing
+        }
+        vec3 delta = viewPositionAt(vec2(texel) + 0.5, hit.z) - origin;
+        float dist2 = dot(delta, delta);
+        if (dist2 < 1e-12) {
+            continue;
+        }
+        if (dist2 <= radius2) {
+            float c = dot(delta, f.v) * inversesqrt(dist2);
+            best = c > best ? c : mix(best, c, kThickness);
+        }
+        vec2 candidate = planeHorizon(delta, hit.n, f, sign);
+        plane = candidate.y > plane.y ? candidate : plane;
+    }
+    float planeCos = plane.y / uRadius;
+    if (planeCos > best && depthAgrees(origin + plane.x * f.e + plane.y * f.v)) {
+        best = planeCos;
+    }
+    return max(best, low);
+}
+
+// The inner integral (eq. 10) of one side: the cosine-weighted visible arc between the view vector and the
+// horizon at angle h = sign * acos(horizonCos), for a projected normal at angle n (cos n, sin n), written
+// with cos(2h - n) = cos 2h cos n + sin 2h sin n so that only h itself takes an inverse cosine.
+float visibleArc(float horizonCos, float sign, float cosN, float sinN) {
+    float c = clamp(horizonCos, -1.0, 1.0);
+    float h = sign * acos(c);
+    float cos2h = 2.0 * c * c - 1.0;
+    float sin2h = sign * 2.0 * c * sqrt(max(1.0 - c * c, 0.0));
+    return 0.25 * (-(cos2h * cosN + sin2h * sinN) + cosN + 2.0 * h * sinN);
 }
 
 void main() {
@@ -97,16 +138,16 @@ void main() {
     if (any(greaterThanEqual(q, size))) {
         return;
     }
-    ivec2 full = ivec2(uFullSize);
-    ivec2 p = aoSourcePixel(q, full);
-    float z = texelFetch(uLinearDepth, p, 0).r;
-    if (isinf(z) || !(z > 0.0)) {
-        imageStore(uRaw, q, vec4(1.0));
+    ivec2 p = aoSourcePixel(q, ivec2(uFullSize));
+    uvec2 centreTexel = texelFetch(uSurface, p, 0).xy;
+    GtaoSurface surface = GtaoSurface(uintBitsToFloat(centreTexel.x), octahedralDirection(unpackSnorm2x16(centreTexel.y)));
+    if (!isSurface(surface.z)) {
+        imageStore(uRaw, q, uvec4(packAoTexel(centreTexel.x, centreTexel.y, 1.0), 0u, 0u));
         return;
     }
     vec2 centre = vec2(p) + 0.5;
-    vec3 position = viewPositionAt(centre, z);
-    vec3 normal = viewNormalAt(p);
+    vec3 position = viewPositionAt(centre, surface.z);
+    vec3 normal = normalize(surface.n);
     vec3 viewVec = normalize(-position);
     vec3 origin = position + uBias * normal;
 
@@ -115,7 +156,7 @@ void main() {
     float clipW = uProjection[2][3] * position.z + uProjection[3][3];
     float radiusPixels = uRadius * 0.5 * uFullSize.y * uProjection[1][1] / max(clipW, 1e-6);
     if (radiusPixels < 1.0) {
-        imageStore(uRaw, q, vec4(1.0)); // no texel lies within the radius
+        imageStore(uRaw, q, uvec4(packAoTexel(centreTexel.x, centreTexel.y, 1.0), 0u, 0u)); // no texel within the radius
         return;
     }
 
@@ -125,85 +166,25 @@ void main() {
     for (int slice = 0; slice < uSlices; ++slice) {
         float phi = (float(slice) + sliceNoise) * kPi / float(uSlices);
         vec2 omega = vec2(cos(phi), sin(phi)); // screen direction, pixels (y up, as view space)
-
-        // The slice plane holds the view vector and the direction; the normal projected into it sets the
-        // hemisphere the horizons are clamped to (angle n from the view vector, signed towards +omega).
         vec3 direction = vec3(omega, 0.0);
-        vec3 orthoDirection = direction - dot(direction, viewVec) * viewVec;
-        vec3 axis = normalize(cross(orthoDirection, viewVec));
-        vec3 projectedNormal = normal - axis * dot(normal, axis);
-        float projectedLength = length(projectedNormal);
+        SliceFrame f = SliceFrame(normalize(direction - dot(direction, viewVec) * viewVec), viewVec);
+
+        // The normal projected into the slice plane: its length weighs the slice, its angle n from the view
+        // vector (towards +e) bounds the hemisphere: the horizons lie no lower than the tangent plane, whose
+        // cosines are cos(n +- pi/2) = -+ sin n.
+        vec2 projected = vec2(dot(normal, f.e), dot(normal, f.v));
+        float projectedLength = length(projected);
         if (projectedLength < 1e-4) {
-            visibility += 0.0;
             continue;
         }
-        float cosN = clamp(dot(projectedNormal, viewVec) / projectedLength, -1.0, 1.0);
-        float n = (dot(orthoDirection, projectedNormal) < 0.0 ? -1.0 : 1.0) * acos(cosN);
-
-        // Horizons: the largest cosine to the view vector of any surface point within the radius, on each
-        // side; starting at the tangent plane (the lowest horizon the normal's hemisphere allows).
-        float lowCos0 = cos(n + kHalfPi); // +omega side
-        float lowCos1 = cos(n - kHalfPi); // -omega side
-        float horizonCos0 = lowCos0;
-        float horizonCos1 = lowCos1;
-        for (int side = 0; side < 2; ++side) {
-            vec2 sideDir = side == 0 ? omega : -omega;
-            float best = side == 0 ? lowCos0 : lowCos1;
-            vec3 sideVec = side == 0 ? orthoDirection : -orthoDirection;
-            float planeBest = -1.0;
-            vec3 planePoint = vec3(0.0);
-            for (int s = 0; s < uSteps; ++s) {
-                // Quadratic spacing: denser near the centre, where occluders subtend the largest angles.
-                float jitter = fract(stepNoise + 0.618034 * float(slice) + 0.5 * float(side));
-                float t = (float(s) + jitter) / float(uSteps);
-                float offset = mix(1.0, radiusPixels, t * t);
-                vec2 window = centre + sideDir * offset;
-                ivec2 texel = ivec2(floor(window));
-                if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, full))) {
-                    break;
-                }
-                float sz = texelFetch(uLinearDepth, texel, 0).r;
-                if (isinf(sz) || !(sz > 0.0)) {
-                    continue; // the sky occludes nothing
-                }
-                vec3 hit = viewPositionAt(vec2(texel) + 0.5, sz);
-                vec3 delta = hit - origin;
-                float dist = length(delta);
-                if (dist < 1e-6) {
-                    continue;
-                }
-                vec3 sampleNormal = viewNormalAt(texel);
-                if (dist <= uRadius) {
-                    float c = dot(delta / dist, viewVec);
-                    best = c > best ? c : mix(best, c, kThickness);
-                }
-                vec3 point;
-                float c = planeHorizon(hit, sampleNormal, origin, axis, sideVec, viewVec, point);
-                if (c > planeBest) {
-                    planeBest = c;
-                    planePoint = point;
-                }
-            }
-            if (planeBest > best && depthAgrees(planePoint)) {
-                best = planeBest;
-            }
-            if (side == 0) {
-                horizonCos0 = best;
-            } else {
-                horizonCos1 = best;
-            }
-        }
-        // Horizon angles from the view vector, clamped to the normal's hemisphere.
-        float h0 = acos(clamp(horizonCos0, -1.0, 1.0));
-        float h1 = -acos(clamp(horizonCos1, -1.0, 1.0));
-        h0 = n + min(h0 - n, kHalfPi);
-        h1 = n + max(h1 - n, -kHalfPi);
-        // The inner integral (eq. 10): cosine-weighted visible arc on each side of the view vector.
-        float sinN = sin(n);
-        float arc0 = 0.25 * (-cos(2.0 * h0 - n) + cosN + 2.0 * h0 * sinN);
-        float arc1 = 0.25 * (-cos(2.0 * h1 - n) + cosN + 2.0 * h1 * sinN);
-        visibility += projectedLength * (arc0 + arc1);
+        float sinN = projected.x / projectedLength;
+        float cosN = projected.y / projectedLength;
+        float jitter = fract(stepNoise + 0.618034 * float(slice));
+        float jitterBack = fract(jitter + 0.5);
+        float cos0 = sideHorizon(centre, omega, 1.0, origin, f, -sinN, radiusPixels, jitter);
+        float cos1 = sideHorizon(centre, omega, -1.0, origin, f, sinN, radiusPixels, jitterBack);
+        visibility += projectedLength * (visibleArc(cos0, 1.0, cosN, sinN) + visibleArc(cos1, -1.0, cosN, sinN));
     }
     visibility = clamp(visibility / float(uSlices), 0.0, 1.0);
-    imageStore(uRaw, q, vec4(visibility));
+    imageStore(uRaw, q, uvec4(packAoTexel(centreTexel.x, centreTexel.y, visibility), 0u, 0u));
 }

@@ -1,0 +1,49 @@
+// GTAO's surface texture: one RG32UI texel per full-resolution pixel holding the linear view depth (x, its
+// float bits; +inf for the sky) and the view-space normal, octahedral-encoded as two snorm16 (y), so a
+// sample of the horizon search or the denoiser is one fetch, not a depth and a normal fetch.
+#ifndef PHOTOPIC_GTAO_SURFACE_H_GLSL
+#define PHOTOPIC_GTAO_SURFACE_H_GLSL
+
+layout(binding = 0) uniform usampler2D uSurface;
+
+struct GtaoSurface {
+    float z;   // linear view depth; +inf: sky
+    vec3 n;    // view-space normal, NOT normalized (length 1/sqrt(3) to 1): callers that need a unit
+               // normal normalize it; plane equations do not need to
+};
+
+// Octahedral decode without the normalization (the branchless form of octahedralDecode's fold).
+vec3 octahedralDirection(vec2 e) {
+    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+    float t = max(-n.z, 0.0);
+    n.xy += vec2(n.x >= 0.0 ? -t : t, n.y >= 0.0 ? -t : t);
+    return n;
+}
+
+GtaoSurface surfaceAt(ivec2 p) {
+    uvec2 t = texelFetch(uSurface, p, 0).xy;
+    return GtaoSurface(uintBitsToFloat(t.x), octahedralDirection(unpackSnorm2x16(t.y)));
+}
+
+// The horizon search's output texel (RG32UI): the surface it was computed at (the depth's bits, the normal's
+// octahedral pair as two snorm8, enough for the denoiser's weights) and the raw visibility as unorm16, so a
+// tap of the denoiser is one fetch. `octahedral` is the pair as the surface texture holds it (snorm16).
+uvec2 packAoTexel(uint depthBits, uint octahedral, float visibility) {
+    vec2 e = unpackSnorm2x16(octahedral);
+    return uvec2(depthBits, (packSnorm4x8(vec4(e, 0.0, 0.0)) & 0xFFFFu) | (packUnorm2x16(vec2(0.0, visibility)) & 0xFFFF0000u));
+}
+
+struct AoTexel {
+    float z;          // +inf: sky
+    vec3 n;           // not normalized
+    float visibility; // raw, [0, 1]
+};
+
+AoTexel unpackAoTexel(uvec2 t) {
+    vec4 e = unpackSnorm4x8(t.y);
+    return AoTexel(uintBitsToFloat(t.x), octahedralDirection(e.xy), unpackUnorm2x16(t.y).y);
+}
+
+bool isSurface(float z) { return !isinf(z) && z > 0.0; }
+
+#endif
