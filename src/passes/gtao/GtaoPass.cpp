@@ -25,7 +25,8 @@ bool GtaoPass::enabled(const FrameContext& ctx) const {
         return false;
     }
     // The post-stage instance feeds the multiply pass, which works on the HDR path's scene colour.
-    return mStage == Stage::Lighting ? s.apply == GtaoApply::Lighting : s.apply == GtaoApply::Multiply && ctx.hdr;
+    return mStage == Stage::Lighting ? s.apply == GtaoApply::Lighting
+                                     : s.apply == GtaoApply::Multiply && ctx.hdr;
 }
 
 glm::ivec2 GtaoPass::slicesAndSteps(GtaoQuality quality) noexcept {
@@ -40,6 +41,15 @@ glm::ivec2 GtaoPass::slicesAndSteps(GtaoQuality quality) noexcept {
         return {9, 3};
     }
     return {3, 3};
+}
+
+void GtaoPass::texelToView(GtaoParameters& p) noexcept {
+    // ndc = (texel + 0.5) 2 / size - 1 and xy = (ndc w + P[2].xy z - P[3].xy) / (P[0][0], P[1][1]).
+    const glm::vec2 diagonal{p.projection[0][0], p.projection[1][1]};
+    p.texelScale = 2.0f / (p.fullSize * diagonal);
+    p.texelBias = (1.0f / p.fullSize - 1.0f) / diagonal;
+    p.depthScale = glm::vec2(p.projection[2][0], p.projection[2][1]) / diagonal;
+    p.viewOffset = -glm::vec2(p.projection[3][0], p.projection[3][1]) / diagonal;
 }
 
 void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
@@ -77,16 +87,18 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
     // timers: the packing, the search and the denoiser cost differently with the preset and the resolution.
     const double searchBytes = rawTexels * (8.0 * 2.0 * tier.x * (tier.y + 1) + 8.0 + 2.0);
     const double denoiseBytes = fullTexels * (8 + 2 + 2);
-    mParameters.update({.invProjection = glm::inverse(camera.projection),
-                        .projection = camera.projection,
-                        .fullSize = glm::vec2(float(e.width), float(e.height)),
-                        .radius = s.radius,
-                        .bias = s.bias,
-                        .slices = tier.x,
-                        .steps = tier.y,
-                        .scale = scale,
-                        .frame = std::uint32_t(ctx.time.frameIndex % 1024u),
-                        .octahedral = ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 1 : 0});
+    GtaoParameters parameters{.invProjection = glm::inverse(camera.projection),
+                              .projection = camera.projection,
+                              .fullSize = glm::vec2(float(e.width), float(e.height)),
+                              .radius = s.radius,
+                              .bias = s.bias,
+                              .slices = tier.x,
+                              .steps = tier.y,
+                              .scale = scale,
+                              .frame = std::uint32_t(ctx.time.frameIndex % 1024u),
+                              .octahedral = ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 1 : 0};
+    texelToView(parameters);
+    mParameters.update(parameters);
     mParameters.bind(kBindingParameters);
     prepare(resources, surface, ctx.timers);
     search(surface, raw, searchBytes, ctx.timers);

@@ -29,9 +29,16 @@ struct GtaoParameters {
     std::int32_t scale = 1;      ///< full-resolution pixels per AO texel (1 or 2)
     std::uint32_t frame = 0;     ///< rotates the noise
     std::int32_t octahedral = 0; ///< normals are octahedral-encoded (else view xyz)
-    std::int32_t padding[3] = {};
+    std::int32_t padding = 0;
+    /// A texel's view position without divisions (gtao_common.h.glsl viewPositionAtTexel): texelToView().
+    glm::vec2 texelScale{0.0f};
+    glm::vec2 texelBias{0.0f};
+    glm::vec2 depthScale{0.0f};
+    glm::vec2 viewOffset{0.0f};
+    std::int32_t padding2[2] = {};
 };
-static_assert(sizeof(GtaoParameters) == 176);
+static_assert(sizeof(GtaoParameters) == 208);
+static_assert(offsetof(GtaoParameters, texelScale) == 168);
 static_assert(offsetof(GtaoParameters, fullSize) == 128);
 static_assert(offsetof(GtaoParameters, frame) == 156);
 
@@ -54,6 +61,9 @@ public:
 
     /// Slices and steps per side for a quality tier.
     [[nodiscard]] static glm::ivec2 slicesAndSteps(GtaoQuality quality) noexcept;
+    /// Sets `p`'s texel-to-view constants from its projection and full size: a texel's view xy at linear
+    /// depth z is (texel scale + bias) w + z depthScale + viewOffset, w = P[3][3] - P[2][3] z.
+    static void texelToView(GtaoParameters& p) noexcept;
 
 private:
     /// Depth and normal packed into `surface` (gtao_surface.h.glsl), the horizon search into `raw` (one texel

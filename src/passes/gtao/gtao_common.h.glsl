@@ -16,6 +16,10 @@ layout(std140, binding = BINDING_PARAMETERS) uniform GtaoParameters {
     int uScale; // full-resolution pixels per AO texel
     uint uFrame;
     int uOctahedral;
+    vec2 uTexelScale; // viewPositionAtTexel's constants, from the projection and the extent
+    vec2 uTexelBias;
+    vec2 uDepthScale;
+    vec2 uViewOffset;
 };
 
 // View-space point on the ray through a full-resolution window position (pixels, GL origin) at linear view
@@ -29,6 +33,13 @@ vec3 viewPositionAt(vec2 window, float z) {
     vec2 xy = (ndc * w + vec2(uProjection[2][0], uProjection[2][1]) * z - vec2(uProjection[3][0], uProjection[3][1])) /
               vec2(uProjection[0][0], uProjection[1][1]);
     return vec3(xy, -z);
+}
+
+// viewPositionAt at a texel's centre with the divisions folded into constants the pass computes once
+// (GtaoPass::texelToView): xy = (texel uTexelScale + uTexelBias) w + z uDepthScale + uViewOffset.
+vec3 viewPositionAtTexel(ivec2 texel, float z) {
+    float w = uProjection[3][3] - uProjection[2][3] * z;
+    return vec3((vec2(texel) * uTexelScale + uTexelBias) * w + z * uDepthScale + uViewOffset, -z);
 }
 
 // The full-resolution pixel an AO texel is computed at. At half resolution the pixel within the 2 x 2 block

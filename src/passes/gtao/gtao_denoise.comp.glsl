@@ -28,7 +28,7 @@ void main() {
         return;
     }
     vec3 normal = normalize(surface.n);
-    vec3 position = viewPositionAt(vec2(p) + 0.5, z);
+    vec3 position = viewPositionAtTexel(p, z);
     ivec2 rawSize = textureSize(uRaw, 0);
     ivec2 centre = p / uScale;
     // Tolerance for the distance from the tangent plane: a few per cent of the depth.
@@ -51,7 +51,7 @@ void main() {
             if (!isSurface(neighbour.z)) {
                 continue;
             }
-            vec3 offset = viewPositionAt(vec2(source) + 0.5, neighbour.z) - position;
+            vec3 offset = viewPositionAtTexel(source, neighbour.z) - position;
             float plane = dot(offset, normal) * invTolerance;
             float distance2 = dot(offset, offset) * (invReach * invReach);
             // A crease (a wall meeting the ground) lies in both faces' tangent planes; the normals tell the

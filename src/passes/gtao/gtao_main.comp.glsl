@@ -77,7 +77,7 @@ bool depthAgrees(vec3 point) {
     if (!isSurface(s.z)) {
         return false;
     }
-    vec3 visible = viewPositionAt(vec2(texel) + 0.5, s.z);
+    vec3 visible = viewPositionAtTexel(texel, s.z);
     return dot(point - visible, normalize(s.n)) <= 0.05 * uRadius;
 }
 
@@ -90,9 +90,10 @@ float sideHorizon(vec2 centre, vec2 omega, float sign, vec3 origin, SliceFrame f
     float radius2 = uRadius * uRadius;
     float best = low;
     vec2 plane = vec2(0.0, -uRadius);
+    float stepScale = 1.0 / float(uSteps);
     for (int s = 0; s < uSteps; ++s) {
         // Quadratic spacing: denser near the centre, where occluders subtend the largest angles.
-        float t = (float(s) + jitter) / float(uSteps);
+        float t = (float(s) + jitter) * stepScale;
         float offset = mix(1.0, radiusPixels, t * t);
         ivec2 texel = ivec2(floor(centre + sign * omega * offset));
         if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, full))) {
@@ -102,7 +103,7 @@ float sideHorizon(vec2 centre, vec2 omega, float sign, vec3 origin, SliceFrame f
         if (!isSurface(hit.z)) {
             continue; // the sky occludes nothing
         }
-        vec3 delta = viewPositionAt(vec2(texel) + 0.5, hit.z) - origin;
+        vec3 delta = viewPositionAtTexel(texel, hit.z) - origin;
         float dist2 = dot(delta, delta);
         if (dist2 < 1e-12) {
             continue;
@@ -146,7 +147,7 @@ void main() {
         return;
     }
     vec2 centre = vec2(p) + 0.5;
-    vec3 position = viewPositionAt(centre, surface.z);
+    vec3 position = viewPositionAtTexel(p, surface.z);
     vec3 normal = normalize(surface.n);
     vec3 viewVec = normalize(-position);
     vec3 origin = position + uBias * normal;
