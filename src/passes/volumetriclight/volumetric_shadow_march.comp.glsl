@@ -22,20 +22,59 @@ float interleavedGradientNoise(vec2 p) {
     return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
 }
 
-// 1 where the sun's light reaches `p` (or `p` lies outside the map), 0 in a caster's shadow.
-float sunVisibility(vec3 p) {
-    vec4 clip = uWorldToShadowClip * vec4(p, 1.0);
+// The shadow map's clip coordinates are affine along a view ray, c(t) = c0 + t cd, and the ray lies in the
+// map where -w <= c.xyz <= w and w > 0: linear constraints on t, so the interval of t inside the map is found
+// once per ray, and each step costs one multiply-add, a division and the lookup. Outside the interval the sun
+// reaches the point (1).
+struct ShadowRay {
+    vec4 c0;
+    vec4 cd;
+    float lo; // t within [lo, hi] lies in the map
+    float hi;
+};
+
+// Narrows [lo, hi] to the t where a + b t >= 0.
+void keepNonNegative(float a, float b, inout float lo, inout float hi) {
+    if (b > 0.0) {
+        lo = max(lo, -a / b);
+    } else if (b < 0.0) {
+        hi = min(hi, -a / b);
+    } else if (a < 0.0) {
+        hi = -1.0;
+        lo = 1.0;
+    }
+}
+
+ShadowRay shadowRay(vec3 origin, vec3 dir, float rayLength) {
+    ShadowRay r;
+    r.c0 = uWorldToShadowClip * vec4(origin, 1.0);
+    r.cd = uWorldToShadowClip * vec4(dir, 0.0);
+    r.lo = 0.0;
+    r.hi = rayLength;
+    // w > 0 (within rounding: the points with w = 0 exactly are the limit, not lit by the map)
+    keepNonNegative(r.c0.w, r.cd.w, r.lo, r.hi);
+    for (int k = 0; k < 3; ++k) {
+        keepNonNegative(r.c0.w + r.c0[k], r.cd.w + r.cd[k], r.lo, r.hi);
+        keepNonNegative(r.c0.w - r.c0[k], r.cd.w - r.cd[k], r.lo, r.hi);
+    }
+    return r;
+}
+
+// 1 where the sun's light reaches the ray's point at t (or the point lies outside the map), 0 in a caster's
+// shadow.
+float sunVisibility(ShadowRay r, float t) {
+    if (!(t >= r.lo && t <= r.hi)) {
+        return 1.0;
+    }
+    vec4 clip = r.c0 + t * r.cd;
     if (!(clip.w > 0.0)) {
         return 1.0;
     }
     vec3 s = clip.xyz / clip.w * 0.5 + 0.5;
-    if (any(lessThan(s, vec3(0.0))) || any(greaterThan(s, vec3(1.0)))) {
-        return 1.0;
-    }
     // No depth bias: the points are in the air, not on a surface that could shadow itself. A bias would light
     // the air just under every occluder (measured: 13 cm of it under the test's roof doubled the light in
     // its shadow); without it only the last step in front of a lit surface can read its own texel.
-    return texture(uShadowMap, vec3(s.xy, s.z));
+    return texture(uShadowMap, s);
 }
 
 float henyeyGreenstein(float cosTheta, float g) {
@@ -70,9 +109,9 @@ void main() {
         float stepTransmittance = 1.0 - stepLoss;
         float transmittance = 1.0;
         float visible = 0.0;
-        vec3 origin = cameraPosition();
+        ShadowRay shadow = shadowRay(cameraPosition(), dir, rayLength);
         for (int i = 0; i < uSamples; ++i) {
-            visible += transmittance * sunVisibility(origin + dir * ((float(i) + offset) * stepLength));
+            visible += transmittance * sunVisibility(shadow, (float(i) + offset) * stepLength);
             transmittance *= stepTransmittance;
         }
         float phase = henyeyGreenstein(dot(dir, uToSun.xyz), uLight.w);
