@@ -11,6 +11,11 @@
 #   bench-1920x1080-gl-debug.txt  a KHR_debug context: the driver's messages are in the log
 #   ae-histogram-1920x1080.*      queued, histogram metering with auto exposure
 #   aa-MODE-1920x1080.*           queued, each anti-aliasing method's passes (fxaa, smaa, taa, taa+smaa)
+#   3d-all-SIZE.*                 queued, every 3D effect at once (TAA + SMAA, GTAO, contact shadows, SSR, DoF,
+#                                 motion blur, outline, volumetric light): the 3D chain's per-pass times
+#   gtao-PRESET-SIZE.*            queued, GTAO alone at each preset (low, medium, high, ultra)
+#   3d-EFFECT-SIZE.*              queued, each other 3D effect alone (contact shadows, SSR, volumetric light,
+#                                 DoF, motion blur, outline)
 #   cli.txt                       `photopic image` over a 1080p EXR sequence (AE + bloom + ACES): wall time and,
 #                                 from -v, the median milliseconds a frame spends in each stage
 # Usage: scripts/gpu-figures.sh OUT PHOTOPIC...   PHOTOPIC is the command that runs photopic (a path, or a
@@ -74,6 +79,18 @@ bench ae-histogram-1920x1080 --size 1920x1080 --queue-ahead --set autoExposure.e
     --set autoExposure.metering=histogram
 for mode in fxaa smaa taa taa+smaa; do
     bench "aa-${mode/+/-}-1920x1080" --size 1920x1080 --queue-ahead --set aa.mode="$mode"
+done
+all3d=(--set aa.mode=taa+smaa --set ssao.enabled=true --set contactShadows.enabled=true --set ssr.enabled=true
+    --set dof.enabled=true --set motionBlur.enabled=true --set outline.enabled=true
+    --set volumetricLight.enabled=true)
+for size in "${sizes[@]}"; do
+    bench "3d-all-$size" --size "$size" --queue-ahead "${all3d[@]}"
+    for preset in low medium high ultra; do
+        bench "gtao-$preset-$size" --size "$size" --queue-ahead --set ssao.enabled=true --set ssao.quality="$preset"
+    done
+    for effect in contactShadows ssr volumetricLight dof motionBlur outline; do
+        bench "3d-$effect-$size" --size "$size" --queue-ahead --set "$effect.enabled=true"
+    done
 done
 echo "== cli"
 seq_dir=$(mktemp -d)
