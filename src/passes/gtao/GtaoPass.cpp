@@ -87,8 +87,7 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
     // timers: the packing, the search and the denoiser cost differently with the preset and the resolution.
     const double searchBytes = rawTexels * (8.0 * 2.0 * tier.x * (tier.y + 1) + 8.0 + 2.0);
     const double denoiseBytes = fullTexels * (8 + 2 + 2);
-    GtaoParameters parameters{.invProjection = glm::inverse(camera.projection),
-                              .projection = camera.projection,
+    GtaoParameters parameters{.projection = camera.projection,
                               .fullSize = glm::vec2(float(e.width), float(e.height)),
                               .radius = s.radius,
                               .bias = s.bias,

@@ -19,7 +19,6 @@ namespace photopic {
 
 /// std140 mirror of gtao_common.h.glsl's parameter block (the horizon search and the denoiser).
 struct GtaoParameters {
-    glm::mat4 invProjection{1.0f};
     glm::mat4 projection{1.0f};
     glm::vec2 fullSize{1.0f}; ///< full-resolution extent, pixels
     float radius = 1.0f;      ///< world units
@@ -37,10 +36,10 @@ struct GtaoParameters {
     glm::vec2 viewOffset{0.0f};
     std::int32_t padding2[2] = {};
 };
-static_assert(sizeof(GtaoParameters) == 208);
-static_assert(offsetof(GtaoParameters, texelScale) == 168);
-static_assert(offsetof(GtaoParameters, fullSize) == 128);
-static_assert(offsetof(GtaoParameters, frame) == 156);
+static_assert(sizeof(GtaoParameters) == 144);
+static_assert(offsetof(GtaoParameters, fullSize) == 64);
+static_assert(offsetof(GtaoParameters, frame) == 92);
+static_assert(offsetof(GtaoParameters, texelScale) == 104);
 
 /// std140 mirror of ao_multiply.comp.glsl's parameter block.
 struct AoMultiplyParameters {

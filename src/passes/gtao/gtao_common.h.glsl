@@ -6,7 +6,6 @@
 
 // Mirrors photopic::GtaoParameters (passes/gtao/GtaoPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform GtaoParameters {
-    mat4 uInvProjection;
     mat4 uProjection;
     vec2 uFullSize; // full-resolution extent, pixels
     float uRadius;  // world units
@@ -22,21 +21,12 @@ layout(std140, binding = BINDING_PARAMETERS) uniform GtaoParameters {
     vec2 uViewOffset;
 };
 
-// View-space point on the ray through a full-resolution window position (pixels, GL origin) at linear view
-// depth z (view z = -z), solved from the projection's rows in closed form: clip w = P[2][3] vz + P[3][3] and
-// ndc.x = (P[0][0] vx + P[2][0] vz + P[3][0]) / w (y alike), for the perspective and orthographic projections
-// the frame takes (off-centre included; no shear between x and y). A few multiply-adds where unprojecting two
-// points took two matrix products and two divisions, at every sample.
-vec3 viewPositionAt(vec2 window, float z) {
-    vec2 ndc = window / uFullSize * 2.0 - 1.0;
-    float w = uProjection[3][3] - uProjection[2][3] * z;
-    vec2 xy = (ndc * w + vec2(uProjection[2][0], uProjection[2][1]) * z - vec2(uProjection[3][0], uProjection[3][1])) /
-              vec2(uProjection[0][0], uProjection[1][1]);
-    return vec3(xy, -z);
-}
-
-// viewPositionAt at a texel's centre with the divisions folded into constants the pass computes once
-// (GtaoPass::texelToView): xy = (texel uTexelScale + uTexelBias) w + z uDepthScale + uViewOffset.
+// View-space point at the centre of a full-resolution texel at linear view depth z (view z = -z), solved
+// from the projection's rows in closed form: clip w = P[2][3] vz + P[3][3] and ndc.x = (P[0][0] vx + P[2][0] vz
+// + P[3][0]) / w (y alike), for the perspective and orthographic projections the frame takes (off-centre
+// included; no shear between x and y). With ndc = (texel + 0.5) 2 / size - 1 the divisions fold into four
+// constants the pass computes once (GtaoPass::texelToView): xy = (texel uTexelScale + uTexelBias) w + z
+// uDepthScale + uViewOffset, w = P[3][3] - P[2][3] z. A few multiply-adds a sample.
 vec3 viewPositionAtTexel(ivec2 texel, float z) {
     float w = uProjection[3][3] - uProjection[2][3] * z;
     return vec3((vec2(texel) * uTexelScale + uTexelBias) * w + z * uDepthScale + uViewOffset, -z);

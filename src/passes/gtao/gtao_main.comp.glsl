@@ -1,6 +1,6 @@
 // GTAO's horizon search and analytic integral (Jimenez et al. 2016, "Practical Real-Time Strategies for
 // Accurate Indirect Occlusion", section 4 and eq. 10), one invocation per AO texel. Output: the raw,
-// cosine-weighted visibility in [0, 1], noisy (a few slices per pixel), centreTexel with the surface it was
+// cosine-weighted visibility in [0, 1], noisy (a few slices per pixel), packed with the surface it was
 // computed at (packAoTexel); gtao_denoise.comp.glsl filters it.
 #include "passes/gtao/gtao_common.h.glsl"
 #include "passes/gtao/gtao_surface.h.glsl"
@@ -133,6 +133,11 @@ float visibleArc(float horizonCos, float sign, float cosN, float sinN) {
     return 0.25 * (-(cos2h * cosN + sin2h * sinN) + cosN + 2.0 * h * sinN);
 }
 
+// The output texel: `visibility` beside the surface texel it was computed at.
+void store(ivec2 q, uvec2 surfaceTexel, float visibility) {
+    imageStore(uRaw, q, uvec4(packAoTexel(surfaceTexel.x, surfaceTexel.y, visibility), 0u, 0u));
+}
+
 void main() {
     ivec2 q = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = imageSize(uRaw);
@@ -141,9 +146,9 @@ void main() {
     }
     ivec2 p = aoSourcePixel(q, ivec2(uFullSize));
     uvec2 centreTexel = texelFetch(uSurface, p, 0).xy;
-    GtaoSurface surface = GtaoSurface(uintBitsToFloat(centreTexel.x), octahedralDirection(unpackSnorm2x16(centreTexel.y)));
+    GtaoSurface surface = unpackSurface(centreTexel);
     if (!isSurface(surface.z)) {
-        imageStore(uRaw, q, uvec4(packAoTexel(centreTexel.x, centreTexel.y, 1.0), 0u, 0u));
+        store(q, centreTexel, 1.0);
         return;
     }
     vec2 centre = vec2(p) + 0.5;
@@ -157,7 +162,7 @@ void main() {
     float clipW = uProjection[2][3] * position.z + uProjection[3][3];
     float radiusPixels = uRadius * 0.5 * uFullSize.y * uProjection[1][1] / max(clipW, 1e-6);
     if (radiusPixels < 1.0) {
-        imageStore(uRaw, q, uvec4(packAoTexel(centreTexel.x, centreTexel.y, 1.0), 0u, 0u)); // no texel within the radius
+        store(q, centreTexel, 1.0); // no texel lies within the radius
         return;
     }
 
@@ -184,8 +189,9 @@ void main() {
         float jitterBack = fract(jitter + 0.5);
         float cos0 = sideHorizon(centre, omega, 1.0, origin, f, -sinN, radiusPixels, jitter);
         float cos1 = sideHorizon(centre, omega, -1.0, origin, f, sinN, radiusPixels, jitterBack);
-        visibility += projectedLength * (visibleArc(cos0, 1.0, cosN, sinN) + visibleArc(cos1, -1.0, cosN, sinN));
+        visibility +=
+            projectedLength * (visibleArc(cos0, 1.0, cosN, sinN) + visibleArc(cos1, -1.0, cosN, sinN));
     }
     visibility = clamp(visibility / float(uSlices), 0.0, 1.0);
-    imageStore(uRaw, q, uvec4(packAoTexel(centreTexel.x, centreTexel.y, visibility), 0u, 0u));
+    store(q, centreTexel, visibility);
 }

@@ -20,17 +20,19 @@ vec3 octahedralDirection(vec2 e) {
     return n;
 }
 
-GtaoSurface surfaceAt(ivec2 p) {
-    uvec2 t = texelFetch(uSurface, p, 0).xy;
+GtaoSurface unpackSurface(uvec2 t) {
     return GtaoSurface(uintBitsToFloat(t.x), octahedralDirection(unpackSnorm2x16(t.y)));
 }
+
+GtaoSurface surfaceAt(ivec2 p) { return unpackSurface(texelFetch(uSurface, p, 0).xy); }
 
 // The horizon search's output texel (RG32UI): the surface it was computed at (the depth's bits, the normal's
 // octahedral pair as two snorm8, enough for the denoiser's weights) and the raw visibility as unorm16, so a
 // tap of the denoiser is one fetch. `octahedral` is the pair as the surface texture holds it (snorm16).
 uvec2 packAoTexel(uint depthBits, uint octahedral, float visibility) {
     vec2 e = unpackSnorm2x16(octahedral);
-    return uvec2(depthBits, (packSnorm4x8(vec4(e, 0.0, 0.0)) & 0xFFFFu) | (packUnorm2x16(vec2(0.0, visibility)) & 0xFFFF0000u));
+    uint normal = packSnorm4x8(vec4(e, 0.0, 0.0)) & 0xFFFFu;
+    return uvec2(depthBits, normal | (packUnorm2x16(vec2(0.0, visibility)) & 0xFFFF0000u));
 }
 
 struct AoTexel {
