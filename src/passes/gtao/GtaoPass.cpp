@@ -82,11 +82,12 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
     const glm::ivec2 tier = slicesAndSteps(s.quality);
     const double rawTexels = double(rawExtent.width) * rawExtent.height;
     const double fullTexels = double(e.width) * e.height;
-    // Horizon search: a surface texel per step (2 sides) and per side's depth check, plus the centre's;
-    // denoise: 9 (25 at half resolution) surface texels and raw values per pixel, mostly cache hits. Three
-    // timers: the packing, the search and the denoiser cost differently with the preset and the resolution.
-    const double searchBytes = rawTexels * (8.0 * 2.0 * tier.x * (tier.y + 1) + 8.0 + 2.0);
-    const double denoiseBytes = fullTexels * (8 + 2 + 2);
+    // Horizon search: a surface texel per step (2 sides) and per side's depth check, plus the centre's, and
+    // its output texel; denoise: the centre's surface texel, 9 (25 at half resolution) output texels of the
+    // search, mostly cache hits, and the visibility. Three timers: the packing, the search and the denoiser
+    // cost differently with the preset and the resolution.
+    const double searchBytes = rawTexels * (8.0 * 2.0 * tier.x * (tier.y + 1) + 8.0 + 8.0);
+    const double denoiseBytes = fullTexels * (8 + 8 + 2);
     GtaoParameters parameters{.projection = camera.projection,
                               .fullSize = glm::vec2(float(e.width), float(e.height)),
                               .radius = s.radius,
