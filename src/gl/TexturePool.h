@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 namespace photopic {
@@ -33,6 +34,15 @@ public:
     /// A texture matching `info` (its debug name aside) not yet handed out this frame; made only when none
     /// is free. The reference stays valid until clear().
     PooledTexture& acquire(const TextureCreateInfo& info);
+    /// acquire()'s texture for one level sampled nearest (what texel fetches and image stores use).
+    const Texture& acquireNearest(Extent extent, GLenum format, std::string_view debugName) {
+        return acquire({.extent = extent,
+                        .format = format,
+                        .minFilter = GL_NEAREST,
+                        .magFilter = GL_NEAREST,
+                        .debugName = debugName})
+            .texture();
+    }
     /// Every texture handed out is free again (call once per frame, before the first pass).
     void beginFrame() noexcept;
     /// Deletes every texture (resize: the old sizes will not be asked for again).

@@ -62,20 +62,12 @@ void ContactShadowsPass::invalidateHistory() {
 ContactShadowsPass::Targets ContactShadowsPass::acquireTargets(const FrameContext& ctx,
                                                                FrameResources& resources) {
     const Extent e = ctx.extent;
-    const auto nearest = [&](GLenum format, std::string_view name) {
-        return &resources.pool()
-                    .acquire({.extent = e,
-                              .format = format,
-                              .minFilter = GL_NEAREST,
-                              .magFilter = GL_NEAREST,
-                              .debugName = name})
-                    .texture();
-    };
+    TexturePool& pool = resources.pool();
     Targets t;
-    t.surface = nearest(GL_RGBA32F, "contact shadow surfaces");
-    t.raw = nearest(GL_R16F, "contact shadows (this frame)");
+    t.surface = &pool.acquireNearest(e, GL_RGBA32F, "contact shadow surfaces");
+    t.raw = &pool.acquireNearest(e, GL_R16F, "contact shadows (this frame)");
     if (ctx.settings.debug.view == DebugView::ContactShadowSteps) {
-        t.steps = nearest(GL_R8, "contact shadow steps");
+        t.steps = &pool.acquireNearest(e, GL_R8, "contact shadow steps");
     }
     return t;
 }

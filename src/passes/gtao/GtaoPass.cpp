@@ -58,27 +58,10 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Extent e = ctx.extent;
     const int scale = s.resolution == GtaoResolution::Half ? 2 : 1;
     const Extent rawExtent{(e.width + scale - 1) / scale, (e.height + scale - 1) / scale};
-    const Texture& surface = resources.pool()
-                                 .acquire({.extent = e,
-                                           .format = GL_RG32UI,
-                                           .minFilter = GL_NEAREST,
-                                           .magFilter = GL_NEAREST,
-                                           .debugName = "gtao surface"})
-                                 .texture();
-    const Texture& raw = resources.pool()
-                             .acquire({.extent = rawExtent,
-                                       .format = GL_RG32UI,
-                                       .minFilter = GL_NEAREST,
-                                       .magFilter = GL_NEAREST,
-                                       .debugName = "gtao raw"})
-                             .texture();
-    const Texture& out = resources.pool()
-                             .acquire({.extent = e,
-                                       .format = GL_R16F,
-                                       .minFilter = GL_NEAREST,
-                                       .magFilter = GL_NEAREST,
-                                       .debugName = "ambient occlusion"})
-                             .texture();
+    TexturePool& pool = resources.pool();
+    const Texture& surface = pool.acquireNearest(e, GL_RG32UI, "gtao surface");
+    const Texture& raw = pool.acquireNearest(rawExtent, GL_RG32UI, "gtao raw");
+    const Texture& out = pool.acquireNearest(e, GL_R16F, "ambient occlusion");
     const glm::ivec2 tier = slicesAndSteps(s.quality);
     const double rawTexels = double(rawExtent.width) * rawExtent.height;
     const double fullTexels = double(e.width) * e.height;

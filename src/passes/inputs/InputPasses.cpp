@@ -22,13 +22,7 @@ bool LinearDepthPass::enabled(const FrameContext& ctx) const {
 
 void LinearDepthPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Camera& camera = *ctx.inputs.camera;
-    const Texture& out = resources.pool()
-                             .acquire({.extent = ctx.extent,
-                                       .format = GL_R32F,
-                                       .minFilter = GL_NEAREST,
-                                       .magFilter = GL_NEAREST,
-                                       .debugName = "linear depth"})
-                             .texture();
+    const Texture& out = resources.pool().acquireNearest(ctx.extent, GL_R32F, "linear depth");
     const Texture& depth = *resources.texture(Resource::Depth);
     ScopedGpuTimer timer(ctx.timers, "linear depth",
                          double(ctx.extent.width) * ctx.extent.height * (bytesPerTexel(depth.format()) + 4));
@@ -67,13 +61,7 @@ void CameraMotionPass::execute(FrameContext& ctx, FrameResources& resources) {
     } catch (...) { // logging must not take the frame down
     }
     const Camera& camera = *ctx.inputs.camera;
-    const Texture& out = resources.pool()
-                             .acquire({.extent = ctx.extent,
-                                       .format = GL_RG16F,
-                                       .minFilter = GL_NEAREST,
-                                       .magFilter = GL_NEAREST,
-                                       .debugName = "camera motion"})
-                             .texture();
+    const Texture& out = resources.pool().acquireNearest(ctx.extent, GL_RG16F, "camera motion");
     ScopedGpuTimer timer(ctx.timers, "camera motion", double(ctx.extent.width) * ctx.extent.height * 8);
     mParameters.update({.invProjection = glm::inverse(camera.projection),
                         .invView = glm::inverse(camera.view),

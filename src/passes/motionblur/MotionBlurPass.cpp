@@ -15,11 +15,6 @@ constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read},
                                  {Resource::SceneColor, Access::Write},
                                  {Resource::VelocityTiles, Access::Write}};
 
-TextureCreateInfo transient(Extent e, GLenum format, const char* name) {
-    return {
-        .extent = e, .format = format, .minFilter = GL_NEAREST, .magFilter = GL_NEAREST, .debugName = name};
-}
-
 } // namespace
 
 float shutterFraction(const MotionBlurSettings& settings, const Camera* camera, float dt) noexcept {
@@ -55,13 +50,13 @@ MotionBlurPass::Targets MotionBlurPass::acquireTargets(const FrameContext& ctx, 
     const Extent e = ctx.extent;
     TexturePool& pool = resources.pool();
     Targets t;
-    t.velocity = &pool.acquire(transient(e, GL_RG16F, "motion blur velocity")).texture();
-    t.tileMax = &pool.acquire(transient(tiles, GL_RG16F, "velocity tile max")).texture();
-    t.neighbourMax = &pool.acquire(transient(tiles, GL_RG16F, "velocity neighbour max")).texture();
+    t.velocity = &pool.acquireNearest(e, GL_RG16F, "motion blur velocity");
+    t.tileMax = &pool.acquireNearest(tiles, GL_RG16F, "velocity tile max");
+    t.neighbourMax = &pool.acquireNearest(tiles, GL_RG16F, "velocity neighbour max");
     t.out = &pool.acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with motion blur"})
                  .texture();
     if (ctx.settings.debug.view == DebugView::VelocityTiles) {
-        t.tilesView = &pool.acquire(transient(e, GL_RGBA16F, "velocity tiles (view)")).texture();
+        t.tilesView = &pool.acquireNearest(e, GL_RGBA16F, "velocity tiles (view)");
     }
     return t;
 }

@@ -76,12 +76,7 @@ SmaaPass::Targets SmaaPass::acquireTargets(Extent e, GLenum colorFormat, FrameRe
     Targets t;
     // The weights step fetches two edge pixels at once through bilinear filtering.
     t.edges = &pool.acquire({.extent = e, .format = GL_RG8, .debugName = "smaa edges"}).texture();
-    t.weights = &pool.acquire({.extent = e,
-                               .format = GL_RGBA8,
-                               .minFilter = GL_NEAREST,
-                               .magFilter = GL_NEAREST,
-                               .debugName = "smaa weights"})
-                     .texture();
+    t.weights = &pool.acquireNearest(e, GL_RGBA8, "smaa weights");
     t.out = &pool.acquire({.extent = e, .format = colorFormat, .debugName = "smaa output"}).texture();
     return t;
 }

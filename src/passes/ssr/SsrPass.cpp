@@ -47,13 +47,8 @@ void DepthPyramidPass::execute(FrameContext& ctx, FrameResources& resources) {
     const int levels = depthPyramidLevels(ctx.extent);
     const Extent size0 = depthPyramidExtent(ctx.extent);
     // One level holding them all (ssr_pyramid.h.glsl): every read of it is a texelFetch at lod 0.
-    const Texture& pyramid = resources.pool()
-                                 .acquire({.extent = depthPyramidAtlasExtent(ctx.extent),
-                                           .format = GL_R32F,
-                                           .minFilter = GL_NEAREST,
-                                           .magFilter = GL_NEAREST,
-                                           .debugName = "ssr depth pyramid"})
-                                 .texture();
+    const Texture& pyramid =
+        resources.pool().acquireNearest(depthPyramidAtlasExtent(ctx.extent), GL_R32F, "ssr depth pyramid");
     // Level 0 reads a depth and writes one; the rest of the chain is a third of that again.
     ScopedGpuTimer timer(ctx.timers, "ssr depth pyramid",
                          double(size0.width) * size0.height * (8.0 + 8.0 / 3.0));
@@ -127,12 +122,7 @@ std::span<const ResourceUse> SsrPass::uses() const {
 SsrPass::Targets SsrPass::acquireTargets(Extent e, bool half, FrameResources& resources) {
     TexturePool& pool = resources.pool();
     const auto hitTexture = [&](Extent extent, const char* name) {
-        return &pool.acquire({.extent = extent,
-                              .format = GL_RGBA32F,
-                              .minFilter = GL_NEAREST,
-                              .magFilter = GL_NEAREST,
-                              .debugName = name})
-                    .texture();
+        return &pool.acquireNearest(extent, GL_RGBA32F, name);
     };
     // One hit per pixel; at half resolution the blocks' hits first, from which each pixel finds its own.
     Targets t;

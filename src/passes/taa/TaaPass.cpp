@@ -35,13 +35,7 @@ const Texture* TaaPass::debugTarget(const FrameContext& ctx, FrameResources& res
     if (view != DebugView::TaaHistoryWeight && view != DebugView::Disocclusion) {
         return nullptr;
     }
-    return &resources.pool()
-                .acquire({.extent = ctx.extent,
-                          .format = GL_RG8,
-                          .minFilter = GL_NEAREST,
-                          .magFilter = GL_NEAREST,
-                          .debugName = "taa debug"})
-                .texture();
+    return &resources.pool().acquireNearest(ctx.extent, GL_RG8, "taa debug");
 }
 
 TaaParameters TaaPass::parameters(const FrameContext& ctx, const FrameResources& resources,

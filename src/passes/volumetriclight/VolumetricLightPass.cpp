@@ -88,13 +88,7 @@ CompositeTargets acquireCompositeTargets(const FrameContext& ctx, FrameResources
     if (ctx.settings.debug.view != DebugView::VolumetricLight) {
         return {out};
     }
-    return {out, &resources.pool()
-                      .acquire({.extent = e,
-                                .format = GL_RGBA16F,
-                                .minFilter = GL_NEAREST,
-                                .magFilter = GL_NEAREST,
-                                .debugName = "volumetric light view"})
-                      .texture()};
+    return {out, &resources.pool().acquireNearest(e, GL_RGBA16F, "volumetric light view")};
 }
 
 void publish(FrameResources& resources, const CompositeTargets& targets) {
@@ -107,9 +101,12 @@ void publish(FrameResources& resources, const CompositeTargets& targets) {
 } // namespace
 
 VolumetricLightPass::VolumetricLightPass()
-    : mPrepare(makeComputeProgram("passes/volumetriclight/volumetric_light_prepare.comp.glsl", bindingDefines()))
-    , mScatter(makeComputeProgram("passes/volumetriclight/volumetric_light_scatter.comp.glsl", bindingDefines()))
-    , mResolve(makeComputeProgram("passes/volumetriclight/volumetric_light_resolve.comp.glsl", bindingDefines()))
+    : mPrepare(
+          makeComputeProgram("passes/volumetriclight/volumetric_light_prepare.comp.glsl", bindingDefines()))
+    , mScatter(
+          makeComputeProgram("passes/volumetriclight/volumetric_light_scatter.comp.glsl", bindingDefines()))
+    , mResolve(
+          makeComputeProgram("passes/volumetriclight/volumetric_light_resolve.comp.glsl", bindingDefines()))
     , mComposite(
           makeComputeProgram("passes/volumetriclight/volumetric_light_composite.comp.glsl", bindingDefines()))
     , mParameters("volumetric light parameters")
@@ -118,8 +115,8 @@ VolumetricLightPass::VolumetricLightPass()
           makeComputeProgram("passes/volumetriclight/volumetric_shadow_march.comp.glsl", bindingDefines()))
     , mShadowResolve(
           makeComputeProgram("passes/volumetriclight/volumetric_shadow_resolve.comp.glsl", bindingDefines()))
-    , mShadowComposite(
-          makeComputeProgram("passes/volumetriclight/volumetric_shadow_composite.comp.glsl", bindingDefines()))
+    , mShadowComposite(makeComputeProgram("passes/volumetriclight/volumetric_shadow_composite.comp.glsl",
+                                          bindingDefines()))
     , mShadowParameters("volumetric light (shadow map) parameters")
     , mShadowSampler(Sampler::depthCompare("volumetric light sun shadow map")) {}
 
@@ -208,13 +205,8 @@ void VolumetricLightPass::executeShadowMap(FrameContext& ctx, FrameResources& re
     const Extent low{(e.width + factor - 1) / factor, (e.height + factor - 1) / factor};
     mShadowLight.ensure(low, GL_RGBA16F, "volumetric light (shadow map)");
     mShadowDepth.ensure(low, GL_R32F, "volumetric light (shadow map) depth");
-    const Texture& raw = resources.pool()
-                             .acquire({.extent = low,
-                                       .format = GL_RGBA16F,
-                                       .minFilter = GL_NEAREST,
-                                       .magFilter = GL_NEAREST,
-                                       .debugName = "volumetric light march (this frame)"})
-                             .texture();
+    const Texture& raw =
+        resources.pool().acquireNearest(low, GL_RGBA16F, "volumetric light march (this frame)");
     const CompositeTargets targets = acquireCompositeTargets(ctx, resources);
     const bool hasHistory =
         mShadowLight.valid() && mShadowDepth.valid() && !ctx.resetHistory && !ctx.inputs.camera->cut;
@@ -293,13 +285,7 @@ void VolumetricLightPass::executeScreen(FrameContext& ctx, FrameResources& resou
         resources.pool()
             .acquire({.extent = e, .format = GL_RGBA16F, .debugName = "volumetric light source"})
             .texture();
-    const Texture& raw = resources.pool()
-                             .acquire({.extent = half,
-                                       .format = GL_RGBA16F,
-                                       .minFilter = GL_NEAREST,
-                                       .magFilter = GL_NEAREST,
-                                       .debugName = "volumetric light (this frame)"})
-                             .texture();
+    const Texture& raw = resources.pool().acquireNearest(half, GL_RGBA16F, "volumetric light (this frame)");
     const CompositeTargets targets = acquireCompositeTargets(ctx, resources);
     const bool hasHistory = mHistory.valid() && !ctx.resetHistory;
     mParameters.update(parametersFor(ctx, half, hasHistory, resources.texture(Resource::Motion) != nullptr,
