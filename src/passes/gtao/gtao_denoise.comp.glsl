@@ -43,14 +43,9 @@ void main() {
     for (int dy = -reach; dy <= reach; ++dy) {
         for (int dx = -reach; dx <= reach; ++dx) {
             ivec2 q = centre + ivec2(dx, dy);
-            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, rawSize))) {
-                continue;
-            }
+            bool inside = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, rawSize));
             ivec2 source = aoSourcePixel(q, full);
-            AoTexel neighbour = unpackAoTexel(texelFetch(uRaw, q, 0).xy);
-            if (!isSurface(neighbour.z)) {
-                continue;
-            }
+            AoTexel neighbour = unpackAoTexel(texelFetch(uRaw, clamp(q, ivec2(0), rawSize - 1), 0).xy);
             vec3 offset = viewPositionAtTexel(source, neighbour.z) - position;
             float plane = dot(offset, normal) * invTolerance;
             float distance2 = dot(offset, offset) * (invReach * invReach);
@@ -63,6 +58,7 @@ void main() {
             // image, not twice as much.
             vec2 d = vec2(source - p);
             float w = exp(-0.5 * dot(d, d) / 2.25 - plane * plane - distance2) * (cosine2 * cosine2);
+            w = inside && isSurface(neighbour.z) ? w : 0.0;
             sum += w * neighbour.visibility;
             weights += w;
         }

@@ -47,16 +47,15 @@ vec2 planeHorizon(vec3 delta, vec3 sampleNormal, SliceFrame f, float sign) {
     vec2 m = vec2(dot(sampleNormal, f.e), dot(sampleNormal, f.v));
     float m2 = dot(m, m);
     float disc = uRadius * uRadius * m2 - c * c;
-    if (c > 0.0 || !(m2 > 1e-9) || disc <= 0.0) {
-        return none;
-    }
-    vec2 x0 = m * (c / m2);
-    vec2 d = vec2(-m.y, m.x) * (sqrt(disc) / m2);
+    float inv = 1.0 / max(m2, 1e-9);
+    vec2 x0 = m * (c * inv);
+    vec2 d = vec2(-m.y, m.x) * (sqrt(max(disc, 0.0)) * inv);
     vec2 a = x0 + d;
     vec2 b = x0 - d;
     a = sign * a.x > 0.0 ? a : none;
     b = sign * b.x > 0.0 ? b : none;
-    return a.y >= b.y ? a : b;
+    vec2 best = a.y >= b.y ? a : b;
+    return c <= 0.0 && m2 > 1e-9 && disc > 0.0 ? best : none;
 }
 
 // Whether the depth buffer allows a continued surface to reach `point` (view space): false where the visible
@@ -66,19 +65,12 @@ vec2 planeHorizon(vec3 delta, vec3 sampleNormal, SliceFrame f, float sign) {
 // continued to the foot of a wall passes (it lies on the ground the pixels there show).
 bool depthAgrees(vec3 point) {
     vec4 clip = uProjection * vec4(point, 1.0);
-    if (!(clip.w > 0.0)) {
-        return true;
-    }
+    ivec2 full = ivec2(uFullSize);
     ivec2 texel = ivec2(floor((clip.xy / clip.w * 0.5 + 0.5) * uFullSize));
-    if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, ivec2(uFullSize)))) {
-        return true;
-    }
-    GtaoSurface s = surfaceAt(texel);
-    if (!isSurface(s.z)) {
-        return false;
-    }
+    bool unknown = !(clip.w > 0.0) || any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, full));
+    GtaoSurface s = surfaceAt(clamp(texel, ivec2(0), full - 1));
     vec3 visible = viewPositionAtTexel(texel, s.z);
-    return dot(point - visible, normalize(s.n)) <= 0.05 * uRadius;
+    return unknown || (isSurface(s.z) && dot(point - visible, normalize(s.n)) <= 0.05 * uRadius);
 }
 
 // The highest horizon cosine on one side of a slice (sign +1: along +omega), starting from `low` (the
@@ -96,29 +88,20 @@ float sideHorizon(vec2 centre, vec2 omega, float sign, vec3 origin, SliceFrame f
         float t = (float(s) + jitter) * stepScale;
         float offset = mix(1.0, radiusPixels, t * t);
         ivec2 texel = ivec2(floor(centre + sign * omega * offset));
-        if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, full))) {
-            break;
-        }
-        GtaoSurface hit = surfaceAt(texel);
-        if (!isSurface(hit.z)) {
-            continue; // the sky occludes nothing
-        }
+        bool inside = all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, full));
+        GtaoSurface hit = surfaceAt(clamp(texel, ivec2(0), full - 1));
         vec3 delta = viewPositionAtTexel(texel, hit.z) - origin;
         float dist2 = dot(delta, delta);
-        if (dist2 < 1e-12) {
-            continue;
-        }
-        if (dist2 <= radius2) {
-            float c = dot(delta, f.v) * inversesqrt(dist2);
-            best = c > best ? c : mix(best, c, kThickness);
-        }
+        bool valid = inside && isSurface(hit.z) && dist2 >= 1e-12;
+        float c = dot(delta, f.v) * inversesqrt(dist2);
+        float moved = c > best ? c : mix(best, c, kThickness);
+        best = valid && dist2 <= radius2 ? moved : best;
         vec2 candidate = planeHorizon(delta, hit.n, f, sign);
-        plane = candidate.y > plane.y ? candidate : plane;
+        plane = valid && candidate.y > plane.y ? candidate : plane;
     }
     float planeCos = plane.y / uRadius;
-    if (planeCos > best && depthAgrees(origin + plane.x * f.e + plane.y * f.v)) {
-        best = planeCos;
-    }
+    bool agrees = depthAgrees(origin + plane.x * f.e + plane.y * f.v);
+    best = planeCos > best && agrees ? planeCos : best;
     return max(best, low);
 }
 
@@ -180,17 +163,14 @@ void main() {
         // cosines are cos(n +- pi/2) = -+ sin n.
         vec2 projected = vec2(dot(normal, f.e), dot(normal, f.v));
         float projectedLength = length(projected);
-        if (projectedLength < 1e-4) {
-            continue;
-        }
-        float sinN = projected.x / projectedLength;
-        float cosN = projected.y / projectedLength;
+        float sinN = projected.x / max(projectedLength, 1e-4);
+        float cosN = projected.y / max(projectedLength, 1e-4);
         float jitter = fract(stepNoise + 0.618034 * float(slice));
         float jitterBack = fract(jitter + 0.5);
         float cos0 = sideHorizon(centre, omega, 1.0, origin, f, -sinN, radiusPixels, jitter);
         float cos1 = sideHorizon(centre, omega, -1.0, origin, f, sinN, radiusPixels, jitterBack);
-        visibility +=
-            projectedLength * (visibleArc(cos0, 1.0, cosN, sinN) + visibleArc(cos1, -1.0, cosN, sinN));
+        float arcs = visibleArc(cos0, 1.0, cosN, sinN) + visibleArc(cos1, -1.0, cosN, sinN);
+        visibility += projectedLength < 1e-4 ? 0.0 : projectedLength * arcs;
     }
     visibility = clamp(visibility / float(uSlices), 0.0, 1.0);
     store(q, centreTexel, visibility);
