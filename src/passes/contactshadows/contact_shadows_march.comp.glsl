@@ -40,10 +40,8 @@ bool hasSurface(vec4 surface) { return dot(surface.xyz, surface.xyz) > 0.5; }
 // neighbourhood).
 float surfaceDepthAt(vec3 a, vec3 d, vec4 plane) {
     float denom = dot(d, plane.xyz);
-    if (denom * denom <= kGrazingCos * kGrazingCos * dot(d, d)) {
-        return -1.0;
-    }
-    return -(a.z + ((plane.w - dot(a, plane.xyz)) / denom) * d.z);
+    float depth = -(a.z + ((plane.w - dot(a, plane.xyz)) / denom) * d.z);
+    return denom * denom <= kGrazingCos * kGrazingCos * dot(d, d) ? -1.0 : depth;
 }
 
 float fade(float t, vec2 window) {
@@ -70,36 +68,30 @@ float march(ivec2 p, vec3 origin, out float taken) {
     vec3 originD = originB - originA;
     float originDepth = -origin.z;
     taken = 0.0;
+    float occlusion = 0.0;
+    bool done = false; // hit, or off screen from there on (the ray's image is a line: it does not come back)
     for (int i = 0; i < uSteps; ++i) {
         float t = (float(i) + jitter) * stepLength;
         vec4 clip = clip0 + t * clipStep; // clip space is linear along the ray
-        if (!(clip.w > 0.0)) {
-            break; // behind the camera
-        }
         vec2 window = (clip.xy / clip.w * 0.5 + 0.5) * uFullSize;
-        if (any(lessThan(window, vec2(0.0))) || any(greaterThanEqual(window, uFullSize))) {
-            break; // off screen: nothing more is known
-        }
-        taken = float(i + 1);
-        ivec2 texel = ivec2(window);
-        vec4 plane = texelFetch(uSurface, texel, 0);
-        if (!hasSurface(plane)) {
-            continue;
-        }
+        // Behind the camera or off screen: nothing more is known.
+        bool onScreen =
+            clip.w > 0.0 && all(greaterThanEqual(window, vec2(0.0))) && all(lessThan(window, uFullSize));
+        done = done || !onScreen;
+        vec4 plane = texelFetch(uSurface, clamp(ivec2(window), ivec2(0), ivec2(uFullSize) - 1), 0);
         vec3 a, b;
         viewRay(window, a, b);
         float here = surfaceDepthAt(a, b - a, plane);
         float atStart = surfaceDepthAt(originA, originD, plane);
-        if (!(here > 0.0) || !(atStart > 0.0)) {
-            continue;
-        }
         float behind = -(origin.z + t * sun.z) - here;
         float behindAtStart = originDepth - atStart;
-        if (behind > kDepthEpsilon * here && (behindAtStart <= 0.0 || behind < uThickness)) {
-            return fade(t, window);
-        }
+        bool hit = hasSurface(plane) && here > 0.0 && atStart > 0.0 && behind > kDepthEpsilon * here &&
+                   (behindAtStart <= 0.0 || behind < uThickness);
+        taken = done ? taken : float(i + 1);
+        occlusion = !done && hit ? fade(t, window) : occlusion;
+        done = done || hit;
     }
-    return 0.0;
+    return occlusion;
 }
 
 void main() {
