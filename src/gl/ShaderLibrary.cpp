@@ -319,6 +319,9 @@ void memoryBarrier(Barrier barrier) noexcept {
     case Barrier::StorageAsUniform:
         bits = GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
         break;
+    case Barrier::IndirectDispatch:
+        bits = GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT;
+        break;
     }
     glMemoryBarrier(bits);
 }
@@ -331,6 +334,14 @@ void dispatch(const Program& program, Groups groups, Barrier after) {
 
 void dispatch(const Program& program, Extent extent, Barrier after, PixelGroup group) {
     dispatch(program, pixelGroups(extent, group), after);
+}
+
+void dispatchIndirect(const Program& program, GLuint arguments, GLintptr offset, Barrier after) {
+    checkBindings(program);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, arguments);
+    glDispatchComputeIndirect(offset);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    memoryBarrier(after);
 }
 
 Groups pixelGroups(Extent extent, PixelGroup group) noexcept {

@@ -76,6 +76,9 @@ enum class Barrier {
     Storage,             ///< the next pass reads a storage buffer this one wrote (SHADER_STORAGE)
     StorageReadback,     ///< ... or copies or reads it back (SHADER_STORAGE | BUFFER_UPDATE)
     StorageAsUniform,    ///< ... also as a uniform block (SHADER_STORAGE | UNIFORM | BUFFER_UPDATE)
+    /// the next pass is dispatched with arguments this one wrote, reads its storage buffer and samples what
+    /// it stored (COMMAND | SHADER_STORAGE | TEXTURE_FETCH)
+    IndirectDispatch,
 };
 void memoryBarrier(Barrier barrier) noexcept;
 
@@ -94,6 +97,9 @@ struct Groups {
 void dispatch(const Program& program, Groups groups, Barrier after);
 /// The same over the pixels of `extent`, in work groups of `group`.
 void dispatch(const Program& program, Extent extent, Barrier after, PixelGroup group = kPixelGroupSquare);
+/// The same with the work groups a GPU pass wrote: glDispatchComputeIndirect on the three uints at byte
+/// `offset` of `arguments` (bound to GL_DISPATCH_INDIRECT_BUFFER for the call, then unbound).
+void dispatchIndirect(const Program& program, GLuint arguments, GLintptr offset, Barrier after);
 
 /// Set uniforms by name on a program (DSA: no bind needed). Missing names are ignored (optimised away).
 void setUniform(const Program& p, const char* name, float v);

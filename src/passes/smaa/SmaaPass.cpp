@@ -3,6 +3,8 @@
 #include "core/SmaaTextures.h"
 #include "passes/Bindings.h"
 
+#include <cstddef>
+
 namespace photopic {
 
 namespace {
@@ -27,6 +29,12 @@ ShaderDefines depthDefines(SmaaPass::Domain domain) {
     ShaderDefines defines = domainVariant(domain);
     defines.emplace_back("SMAA_DEPTH", "1");
     return bindingDefines(defines);
+}
+
+constexpr int kTileSize = 8; // the edge and weights steps' work groups
+
+Extent tileGrid(Extent e) {
+    return {(e.width + kTileSize - 1) / kTileSize, (e.height + kTileSize - 1) / kTileSize};
 }
 
 Texture makeTable(int width, int height, GLenum internalFormat, GLenum format, GLenum type, const void* data,
@@ -81,8 +89,26 @@ SmaaPass::Targets SmaaPass::acquireTargets(Extent e, GLenum colorFormat, FrameRe
     return t;
 }
 
+void SmaaPass::resetTiles(Extent e) {
+    const Extent grid = tileGrid(e);
+    const std::size_t tiles = std::size_t(grid.width) * std::size_t(grid.height);
+    const std::size_t bytes = sizeof(GpuSmaaTilesHeader) + 2 * tiles * sizeof(std::uint32_t);
+    if (mTiles.size() < bytes) {
+        mTiles = Buffer({.size = bytes, .flags = 0, .debugName = "smaa tiles"});
+    }
+    // On the GPU: the header's dispatch (0, 1, 1) and the flags' zeros.
+    const GpuSmaaTilesHeader header;
+    glClearNamedBufferSubData(mTiles.id(), GL_RGBA32UI, 0, sizeof(header), GL_RGBA_INTEGER, GL_UNSIGNED_INT,
+                              &header);
+    glClearNamedBufferSubData(
+        mTiles.id(), GL_R32UI, GLintptr(sizeof(GpuSmaaTilesHeader) + tiles * sizeof(std::uint32_t)),
+        GLsizeiptr(tiles * sizeof(std::uint32_t)), GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingSmaaTiles, mTiles.id());
+}
+
 void SmaaPass::updateParameters(const FrameContext& ctx, bool hdr) {
     const smaa::Preset preset = smaa::preset(int(ctx.settings.smaa.quality));
+    const Extent grid = tileGrid(ctx.extent);
     // Under taa+smaa the sub-pixel ridges are TAA's to resolve: its jittered frames sample a thin line
     // without bias, and dimming each of them would take a third of the line away from the converged image.
     mParameters.update(
@@ -91,7 +117,9 @@ void SmaaPass::updateParameters(const FrameContext& ctx, bool hdr) {
          .cornerRounding = preset.cornerRounding > 0.0f ? preset.cornerRounding / 100.0f : 1.0f,
          .searchSteps = preset.searchSteps,
          .diagonalSteps = preset.diagonalSteps,
-         .subpixel = hdr ? 0.0f : ctx.settings.smaa.subpixel});
+         .subpixel = hdr ? 0.0f : ctx.settings.smaa.subpixel,
+         .tilesX = grid.width,
+         .tileCount = grid.width * grid.height});
     mParameters.bind(kBindingParameters);
 }
 
@@ -104,11 +132,13 @@ void SmaaPass::detectEdges(const FrameContext& ctx, const FrameResources& resour
     if (depth && !mEdgesDepth) {
         mEdgesDepth.emplace(makeComputeProgram("passes/smaa/smaa_edges.comp.glsl", depthDefines(mDomain)));
     }
-    // Up to ten colour reads per pixel (neighbours hit the cache), the depth's and one RG8 write.
+    // Up to ten colour reads per pixel (neighbours hit the cache), the depth's and one RG8 write; the tile
+    // list's reset and appends (under a byte a pixel) are not counted.
     ScopedGpuTimer timer(
         ctx.timers, prefix + "edges",
         double(e.width) * e.height *
             (bytesPerTexel(t.out->format()) + (depth ? bytesPerTexel(depth->format()) : 0.0) + 2.0));
+    resetTiles(e);
     const EdgesProgram& program = depth ? *mEdgesDepth : mEdges;
     program.program.use();
     bind(program.color, color);
@@ -116,20 +146,23 @@ void SmaaPass::detectEdges(const FrameContext& ctx, const FrameResources& resour
         bind(program.depth, *depth);
     }
     bind(program.edges, *t.edges, ImageAccess::Write);
-    dispatch(program.program, e, Barrier::TextureFetch);
+    dispatch(program.program, e, Barrier::IndirectDispatch);
 }
 
 void SmaaPass::blendingWeights(const FrameContext& ctx, const Targets& t, const std::string& prefix) {
     const Extent e = ctx.extent;
-    // Edge pixels search; the rest read their RG8 texel and write RGBA8.
+    // The listed tiles' pixels search (edge pixels) or read their RG8 texel and write RGBA8 (the rest); the
+    // other tiles are cleared. Counted as every pixel: the list's length stays on the GPU.
     ScopedGpuTimer timer(ctx.timers, prefix + "weights", double(e.width) * e.height * 6.0);
+    glClearTexImage(t.weights->id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     mWeights.use();
     bind(mWeightsEdges, *t.edges);
     bind(mWeightsAreaOrtho, mAreaOrtho);
     bind(mWeightsAreaDiag, mAreaDiag);
     bind(mWeightsSearch, mSearch);
     bind(mWeightsOut, *t.weights, ImageAccess::Write);
-    dispatch(mWeights, e, Barrier::TextureFetch);
+    dispatchIndirect(mWeights, mTiles.id(), GLintptr(offsetof(GpuSmaaTilesHeader, groups)),
+                     Barrier::TextureFetch);
 }
 
 void SmaaPass::blend(const FrameContext& ctx, const Texture& color, const Targets& t, int bitDepth,

@@ -30,9 +30,19 @@ struct SmaaParameters {
     std::int32_t searchSteps = 0;   ///< orthogonal search steps (two pixels each)
     std::int32_t diagonalSteps = 0; ///< 0: no diagonal patterns
     float subpixel = 0.0f;          ///< one-pixel ridges left unblended move this far towards their sides
-    std::int32_t pad[2] = {};
+    std::int32_t tilesX = 0;        ///< 8 x 8 tiles per row of the image
+    std::int32_t tileCount = 0;     ///< tiles in the image
 };
 static_assert(sizeof(SmaaParameters) == 32);
+
+/// std430 mirror of the header of passes/smaa/smaa_tiles.h.glsl's buffer: the weights step's indirect
+/// dispatch, one work group per 8 x 8 tile the edge step listed. `uint tileData[]` follows: the listed
+/// tiles' indices, then one flag per tile of the image.
+struct GpuSmaaTilesHeader {
+    std::uint32_t groups[3] = {0, 1, 1};
+    std::uint32_t pad = 0;
+};
+static_assert(sizeof(GpuSmaaTilesHeader) == 16);
 
 class SmaaPass final : public FramePass {
 public:
@@ -79,6 +89,8 @@ private:
     };
     [[nodiscard]] static Targets acquireTargets(Extent e, GLenum colorFormat, FrameResources& resources);
     void updateParameters(const FrameContext& ctx, bool hdr);
+    /// An empty tile list for this frame's extent, bound at kBindingSmaaTiles.
+    void resetTiles(Extent e);
     /// The three steps: edges (with the linear depth, when the frame brings one), blending weights, blend.
     void detectEdges(const FrameContext& ctx, const FrameResources& resources, const Texture& color,
                      const Targets& t, const std::string& prefix);
@@ -105,6 +117,7 @@ private:
     Texture mAreaDiag;
     Texture mSearch;
     ParameterBlock<SmaaParameters> mParameters;
+    Buffer mTiles; ///< GpuSmaaTilesHeader, the list and the flags; grown to the largest extent seen
 };
 
 } // namespace photopic

@@ -9,7 +9,8 @@
 // placement (SMAA_HDR) the colour is scene-referred: luma is taken from the exposed value through a
 // Reinhard-like curve and a square root, sqrt(l E / (1 + l E)), close enough to a tone-mapped, encoded value
 // for the thresholds to keep their meaning.
-// Output RG8: r, an edge between this pixel and its -x neighbour; g, with its -y neighbour.
+// Output RG8: r, an edge between this pixel and its -x neighbour; g, with its -y neighbour; and the tile
+// list (smaa_tiles.h.glsl) of the tiles with an edge.
 #include "passes/common/color.h.glsl"
 #ifdef SMAA_HDR
 #include "passes/common/exposure.h.glsl"
@@ -34,6 +35,16 @@ float depthStep(float a, float b) {
 #endif
 
 #include "passes/smaa/smaa_parameters.h.glsl"
+#define SMAA_TILES_WRITE
+#include "passes/smaa/smaa_tiles.h.glsl"
+
+// Lists p's tile for the weights step, once.
+void listTile(ivec2 p) {
+    uint tile = uint(p.y / 8) * uint(uTilesX) + uint(p.x / 8);
+    if (atomicOr(tileData[uint(uTileCount) + tile], 1u) == 0u) {
+        tileData[atomicAdd(tileGroups[0], 1u)] = tile;
+    }
+}
 
 float lumaAt(ivec2 p) {
     p = clamp(p, ivec2(0), textureSize(uColor, 0) - 1);
@@ -82,5 +93,8 @@ void main() {
     kept = max(kept, vec2(depthStep(z, depthAt(p - ivec2(1, 0))), depthStep(z, depthAt(p - ivec2(0, 1)))));
 #endif
     edges *= kept;
+    if (edges.x + edges.y > 0.0) {
+        listTile(p);
+    }
     imageStore(uEdges, p, vec4(edges, 0.0, 0.0));
 }

@@ -6,4 +6,7 @@ layout(std140, binding = BINDING_PARAMETERS) uniform SmaaParameters {
     int uSearchSteps;
     int uDiagSteps; // 0: no diagonal patterns
     float uSubpixel; // the blend step: how far a one-pixel ridge no pattern blended moves towards its sides
+    int uTilesX;     // 8 x 8 tiles per row
+    int uTileCount;  // tiles in the image: where the tile list's flags start
 };
+

@@ -11,7 +11,8 @@
 //     the share of this pixel, and of its neighbour across the edge, that the revectorised silhouette cuts;
 //  4. corner rounding: at the nearer end, a crossing edge that goes on past the next row is a real corner,
 //     so its weights are scaled down (by 1 - rounding) to keep it sharp.
-// Output RGBA8: r, g for the -y edge (this pixel's share, the -y neighbour's share); b, a for the -x edge.
+// Output RGBA8: r, g for the -y edge (this pixel's share, the -y neighbour's share); b, a for the -x edge;
+// written over the tiles the edge step listed (smaa_tiles.h.glsl), zero elsewhere.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -22,6 +23,7 @@ layout(binding = 3) uniform usampler2D uSearch;   // R8UI, texel fetches
 layout(binding = 0, rgba8) uniform writeonly image2D uWeights;
 
 #include "passes/smaa/smaa_parameters.h.glsl"
+#include "passes/smaa/smaa_tiles.h.glsl"
 
 const int kOrthoMax = 64;
 const int kDiagMax = 20;
@@ -187,8 +189,11 @@ vec2 diagonalWeights(ivec2 q, bool mirror) {
     return texelFetch(uAreaDiag, texel, 0).gr;
 }
 
+// One work group per listed tile (an indirect dispatch over the tile list); the weights of every other
+// pixel are the zeros the image was cleared to.
 void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    uint tile = tileData[gl_WorkGroupID.x];
+    ivec2 p = ivec2(tile % uint(uTilesX), tile / uint(uTilesX)) * 8 + ivec2(gl_LocalInvocationID.xy);
     if (any(greaterThanEqual(p, gridSize()))) {
         return;
     }
