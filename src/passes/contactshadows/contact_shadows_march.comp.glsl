@@ -67,31 +67,38 @@ float march(ivec2 p, vec3 origin, out float taken) {
     viewRay(vec2(p) + 0.5, originA, originB);
     vec3 originD = originB - originA;
     float originDepth = -origin.z;
+    // The view ray through NDC (x, y) is a = near[0] + x near[1] + y near[2] on, along d = d0 + x d1 + y d2.
+    vec3 d0 = uRayFar[0].xyz - uRayNear[0].xyz;
+    vec3 d1 = uRayFar[1].xyz - uRayNear[1].xyz;
+    vec3 d2 = uRayFar[2].xyz - uRayNear[2].xyz;
     taken = 0.0;
-    float occlusion = 0.0;
+    float hitT = -1.0; // the first hit's t and window position (the fade is worked out once, after the march)
+    vec2 hitWindow = vec2(0.0);
     bool done = false; // hit, or off screen from there on (the ray's image is a line: it does not come back)
     for (int i = 0; i < uSteps; ++i) {
         float t = (float(i) + jitter) * stepLength;
         vec4 clip = clip0 + t * clipStep; // clip space is linear along the ray
-        vec2 window = (clip.xy / clip.w * 0.5 + 0.5) * uFullSize;
+        vec2 ndc = clip.xy / clip.w;
+        vec2 window = (ndc * 0.5 + 0.5) * uFullSize;
         // Behind the camera or off screen: nothing more is known.
         bool onScreen =
             clip.w > 0.0 && all(greaterThanEqual(window, vec2(0.0))) && all(lessThan(window, uFullSize));
         done = done || !onScreen;
         vec4 plane = texelFetch(uSurface, clamp(ivec2(window), ivec2(0), ivec2(uFullSize) - 1), 0);
-        vec3 a, b;
-        viewRay(window, a, b);
-        float here = surfaceDepthAt(a, b - a, plane);
+        vec3 a = uRayNear[0].xyz + ndc.x * uRayNear[1].xyz + ndc.y * uRayNear[2].xyz;
+        float here = surfaceDepthAt(a, d0 + ndc.x * d1 + ndc.y * d2, plane);
         float atStart = surfaceDepthAt(originA, originD, plane);
         float behind = -(origin.z + t * sun.z) - here;
         float behindAtStart = originDepth - atStart;
         bool hit = hasSurface(plane) && here > 0.0 && atStart > 0.0 && behind > kDepthEpsilon * here &&
                    (behindAtStart <= 0.0 || behind < uThickness);
+        bool first = !done && hit;
+        hitT = first ? t : hitT;
+        hitWindow = first ? window : hitWindow;
         taken = done ? taken : float(i + 1);
-        occlusion = !done && hit ? fade(t, window) : occlusion;
         done = done || hit;
     }
-    return occlusion;
+    return hitT >= 0.0 ? fade(hitT, hitWindow) : 0.0;
 }
 
 void main() {
