@@ -16,7 +16,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uCurrent; // sceneColor: sanitised HDR, this frame's jittered samples
 layout(binding = 1) uniform sampler2D uHistory; // last frame's resolve
-layout(binding = 4) uniform sampler2D uHistoryAux; // last frame's per pixel: r = linear depth, g = stability
+// Last frame's per pixel: r = the farthest linear depth of its 3 x 3 neighbourhood, g = stability.
+layout(binding = 4) uniform sampler2D uHistoryAux;
 layout(binding = 2) uniform sampler2D uMotion;  // UV, current - previous
 layout(binding = 3) uniform sampler2D uDepth;   // linear view depth (when uHasDepth)
 layout(binding = 0, rgba16f) writeonly uniform image2D uOutput;
@@ -112,6 +113,8 @@ void main() {
     vec3 lo = vec3(1e9), hi = vec3(-1e9);
     ivec2 closest = p;
     float closestDepth = depth;
+    float farthestDepth = depth; // for next frame's disocclusion test; NaN counts as the sky
+    const float kInfinity = uintBitsToFloat(0x7f800000u);
     float fastest = 0.0; // the longest motion of the 3x3, in pixels
     for (int y = -1; y <= 1; ++y) {
         for (int x = -1; x <= 1; ++x) {
@@ -128,6 +131,7 @@ void main() {
                     closestDepth = d;
                     closest = q;
                 }
+                farthestDepth = max(farthestDepth, isnan(d) ? kInfinity : d);
             }
         }
     }
@@ -150,16 +154,13 @@ void main() {
         vec3 ray = near.xyz / near.w;
         vec4 world = uInvView * vec4(ray * (depth / -ray.z), 1.0);
         float predicted = (uPrevViewProjection * world).w;
-        // Disoccluded means hidden last frame: every depth the history stored around the point is nearer than
-        // the point was. The history's depths come from jittered samples (at an edge, or on a wire thinner
-        // than a pixel, a pixel holds either surface from frame to frame), hence the 3x3 neighbourhood; a
-        // history that is farther than the point (a thin feature this frame's sample hit) is not disocclusion.
+        // Disoccluded means hidden last frame: every depth around the point last frame was nearer than the
+        // point was. Those depths come from jittered samples (at an edge, or on a wire thinner than a pixel,
+        // a pixel holds either surface from frame to frame), hence the 3x3 neighbourhood, whose farthest
+        // depth the history keeps (one fetch here); a history that is farther than the point (a thin feature
+        // this frame's sample hit) is not disocclusion.
         ivec2 hp = clamp(ivec2(prevUv * vec2(size)), ivec2(0), size - 1);
-        disoccluded = true;
-        for (int i = 0; i < 9 && disoccluded; ++i) {
-            ivec2 q = clamp(hp + ivec2(i % 3 - 1, i / 3 - 1), ivec2(0), size - 1);
-            disoccluded = texelFetch(uHistoryAux, q, 0).r < 0.9 * predicted;
-        }
+        disoccluded = texelFetch(uHistoryAux, hp, 0).r < 0.9 * predicted;
     }
 
     vec4 result;
@@ -200,7 +201,7 @@ void main() {
         result = vec4(sanitize(resolved), 1.0);
     }
     imageStore(uOutput, p, result);
-    imageStore(uOutputAux, p, vec4(depth, stability, 0.0, 0.0));
+    imageStore(uOutputAux, p, vec4(farthestDepth, stability, 0.0, 0.0));
     if (uWriteDebug != 0) {
         imageStore(uDebug, p, vec4(weight, disoccluded ? 1.0 : 0.0, 0.0, 0.0));
     }
