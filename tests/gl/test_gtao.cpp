@@ -2,6 +2,7 @@
 // lighting stage hands the host, on a still frame at 160x90.
 
 #include "GlTest.h"
+#include "OctahedralNormals.h"
 
 #include "gl/TextureIo.h"
 #include "scenes/testbed/TestbedRaytracer.h"
@@ -229,24 +230,7 @@ TEST_F(GlTest, GtaoReadsOctahedralNormalsAsTheDirectionsTheyEncode) {
     ASSERT_NE(in.normals, nullptr);
     const ImageF reference = readTextureF(*viewXyz.renderLighting(in, time).ambientOcclusion);
 
-    const ImageF normals = readTextureF(*in.normals);
-    ImageF encoded(normals.width, normals.height, 0.0f);
-    for (int y = 0; y < normals.height; ++y) {
-        for (int x = 0; x < normals.width; ++x) {
-            const float* n = normals.at(x, y);
-            const float l1 = std::abs(n[0]) + std::abs(n[1]) + std::abs(n[2]);
-            float ex = l1 > 0.0f ? n[0] / l1 : 0.0f;
-            float ey = l1 > 0.0f ? n[1] / l1 : 0.0f;
-            if (l1 > 0.0f && n[2] < 0.0f) {
-                const float fx = (1.0f - std::abs(ey)) * (ex >= 0.0f ? 1.0f : -1.0f);
-                const float fy = (1.0f - std::abs(ex)) * (ey >= 0.0f ? 1.0f : -1.0f);
-                ex = fx;
-                ey = fy;
-            }
-            encoded.at(x, y)[0] = ex;
-            encoded.at(x, y)[1] = ey;
-        }
-    }
+    const ImageF encoded = octahedralEncoded(readTextureF(*in.normals));
     const Texture octahedral = makeTexture(encoded, "octahedral normals", GL_RG32F);
     in.normals = &octahedral;
     in.normalEncoding = NormalEncoding::Octahedral;

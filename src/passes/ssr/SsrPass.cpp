@@ -104,9 +104,7 @@ void SsrHistoryPass::publishState(FrameResources& resources) const {
 }
 
 SsrPass::SsrPass()
-    : mTrace(makeComputeProgram("passes/ssr/ssr_trace.comp.glsl", bindingDefines()))
-    , mRefine(makeComputeProgram("passes/ssr/ssr_trace.comp.glsl", bindingDefines({{"REFINE", "1"}})))
-    , mResolve(makeComputeProgram("passes/ssr/ssr_resolve.comp.glsl", bindingDefines()))
+    : mResolve(makeComputeProgram("passes/ssr/ssr_resolve.comp.glsl", bindingDefines()))
     , mParameters("ssr parameters") {}
 
 std::span<const ResourceUse> SsrPass::uses() const {
@@ -141,12 +139,18 @@ const Texture* SsrPass::history(const FrameContext& ctx, const FrameResources& r
     return history != nullptr && history->extent() == ctx.extent ? history : nullptr;
 }
 
+int SsrPass::normalsSource(const FrameContext& ctx, const FrameResources& resources) {
+    if (resources.texture(Resource::Normals) == nullptr) {
+        return 0;
+    }
+    return ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 2 : 1;
+}
+
 SsrParameters SsrPass::parameters(const FrameContext& ctx, const FrameResources& resources,
                                   Extent traceExtent) const {
     const SsrSettings& s = ctx.settings.ssr;
     const Camera& camera = *ctx.inputs.camera;
     const Extent e = ctx.extent;
-    const Texture* normals = resources.texture(Resource::Normals);
     SsrParameters p{};
     p.projection = camera.projection;
     p.reprojection = camera.prevViewProjection * glm::inverse(camera.view);
@@ -162,12 +166,24 @@ SsrParameters SsrPass::parameters(const FrameContext& ctx, const FrameResources&
     p.levels = depthPyramidLevels(e);
     const Extent pyramidSize = depthPyramidExtent(e);
     p.pyramidSize = glm::ivec2(pyramidSize.width, pyramidSize.height);
-    p.normals = normals == nullptr ? 0 : ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 2 : 1;
+    p.normals = normalsSource(ctx, resources);
     p.hasMaterial = resources.texture(Resource::Material) ? 1 : 0;
     p.hasHistory = history(ctx, resources) ? 1 : 0;
     p.hasMotion = resources.texture(Resource::Motion) ? 1 : 0;
     p.half = s.resolution == SsrResolution::Half ? 1 : 0;
     return p;
+}
+
+const SsrPass::TraceProgram& SsrPass::traceProgram(int normals, bool refine) {
+    std::optional<TraceProgram>& slot = mTraces[refine ? 1 : 0][std::size_t(normals)];
+    if (!slot) {
+        ShaderDefines defines{{"SSR_NORMALS", std::to_string(normals)}};
+        if (refine) {
+            defines.emplace_back("REFINE", "1");
+        }
+        slot.emplace(makeComputeProgram("passes/ssr/ssr_trace.comp.glsl", bindingDefines(defines)));
+    }
+    return *slot;
 }
 
 void SsrPass::bindTrace(const TraceProgram& trace, const FrameResources& resources, const Texture& hits) {
@@ -194,12 +210,15 @@ void SsrPass::trace(const FrameContext& ctx, const FrameResources& resources, co
                                     (resources.texture(Resource::Material) ? 8.0 : 0.0) + 4.0 * 4.0 / 3.0);
     ScopedGpuTimer timer(ctx.timers, "ssr trace",
                          inputs + pixels * 16.0 + (half ? 2.0 * tracePixels * 16.0 : 0.0));
-    bindTrace(mTrace, resources, half ? *t.blockHits : *t.hits);
-    dispatch(mTrace.program, traceExtent, half ? Barrier::TextureFetch : Barrier::None);
+    const int normals = normalsSource(ctx, resources);
+    const TraceProgram& march = traceProgram(normals, false);
+    bindTrace(march, resources, half ? *t.blockHits : *t.hits);
+    dispatch(march.program, traceExtent, half ? Barrier::TextureFetch : Barrier::None);
     if (half) {
-        bindTrace(mRefine, resources, *t.hits);
-        bind(mRefine.blockHits, *t.blockHits);
-        dispatch(mRefine.program, e, Barrier::None);
+        const TraceProgram& refine = traceProgram(normals, true);
+        bindTrace(refine, resources, *t.hits);
+        bind(refine.blockHits, *t.blockHits);
+        dispatch(refine.program, e, Barrier::None);
     }
 }
 

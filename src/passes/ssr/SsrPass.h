@@ -13,10 +13,12 @@
 
 #include "passes/FramePass.h"
 
+#include <array>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
+#include <optional>
 
 namespace photopic {
 
@@ -143,13 +145,19 @@ private:
                                            Extent traceExtent) const;
     /// Binds the inputs a trace program reads, and its output.
     static void bindTrace(const TraceProgram& trace, const FrameResources& resources, const Texture& hits);
+    /// SsrParameters::normals of this frame.
+    [[nodiscard]] static int normalsSource(const FrameContext& ctx, const FrameResources& resources);
+    /// The trace program (REFINE or not) for the normals' source (SsrParameters::normals), built on first
+    /// use.
+    const TraceProgram& traceProgram(int normals, bool refine);
     /// The trace, and at half resolution the refinement of the blocks' hits to each pixel's.
     void trace(const FrameContext& ctx, const FrameResources& resources, const Targets& t,
                Extent traceExtent);
     void resolve(const FrameContext& ctx, const FrameResources& resources, const Targets& t);
 
-    TraceProgram mTrace;
-    TraceProgram mRefine; ///< half resolution: each pixel's hit from the blocks' hits
+    /// By the normals' source (0: reconstructed, 1: view xyz, 2: octahedral); [1] the REFINE build (half
+    /// resolution: each pixel's hit from the blocks' hits).
+    std::array<std::array<std::optional<TraceProgram>, 3>, 2> mTraces;
     Program mResolve;
     SamplerSlot mResolveDepth = mResolve.sampler("uLinearDepth");
     SamplerSlot mResolveScene = mResolve.sampler("uScene");

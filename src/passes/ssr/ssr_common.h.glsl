@@ -74,18 +74,20 @@ vec3 neighbourStep(sampler2D depth, ivec2 p, ivec2 o, vec3 centre, float z) {
     return vec3(0.0);
 }
 
-// The unit view-space normal at pixel p (facing the camera), or zero when there is none to trust.
+// The unit view-space normal at pixel p (facing the camera), or zero when there is none to trust. Where
+// the normals come from is the define SSR_NORMALS (uNormals' values), not the uniform: the program is
+// built once per source, so a SIMD implementation that runs every side of a branch under a mask does not
+// pay for the depth reconstruction when the host gives normals.
 vec3 surfaceNormal(sampler2D depth, sampler2D normals, ivec2 p, vec3 centre, float z) {
-    vec3 n = vec3(0.0);
-    if (uNormals == 1) {
-        n = texelFetch(normals, p, 0).xyz;
-    } else if (uNormals == 2) {
-        n = octahedralDecode(texelFetch(normals, p, 0).rg);
-    } else {
-        vec3 dx = neighbourStep(depth, p, ivec2(1, 0), centre, z);
-        vec3 dy = neighbourStep(depth, p, ivec2(0, 1), centre, z);
-        n = cross(dx, dy);
-    }
+#if SSR_NORMALS == 1
+    vec3 n = texelFetch(normals, p, 0).xyz;
+#elif SSR_NORMALS == 2
+    vec3 n = octahedralDecode(texelFetch(normals, p, 0).rg);
+#else
+    vec3 dx = neighbourStep(depth, p, ivec2(1, 0), centre, z);
+    vec3 dy = neighbourStep(depth, p, ivec2(0, 1), centre, z);
+    vec3 n = cross(dx, dy);
+#endif
     float len2 = dot(n, n);
     if (!finitePositive(len2) || len2 <= 1e-12) { // NaN, zero, tiny or infinite
         return vec3(0.0);
