@@ -63,18 +63,16 @@ ShadowRay shadowRay(vec3 origin, vec3 dir, float rayLength) {
 // 1 where the sun's light reaches the ray's point at t (or the point lies outside the map), 0 in a caster's
 // shadow.
 float sunVisibility(ShadowRay r, float t) {
-    if (!(t >= r.lo && t <= r.hi)) {
-        return 1.0;
-    }
     vec4 clip = r.c0 + t * r.cd;
-    if (!(clip.w > 0.0)) {
-        return 1.0;
-    }
     vec3 s = clip.xyz / clip.w * 0.5 + 0.5;
+    // Outside the map's interval, or behind its eye: lit, and the lookup (made anyway: selects, not branches,
+    // so a SIMD implementation pays no masks in the loop) reads a safe coordinate.
+    bool inMap = t >= r.lo && t <= r.hi && clip.w > 0.0;
     // No depth bias: the points are in the air, not on a surface that could shadow itself. A bias would light
     // the air just under every occluder (measured: 13 cm of it under the test's roof doubled the light in
     // its shadow); without it only the last step in front of a lit surface can read its own texel.
-    return texture(uShadowMap, s);
+    float lit = texture(uShadowMap, inMap ? s : vec3(0.5));
+    return inMap ? lit : 1.0;
 }
 
 float henyeyGreenstein(float cosTheta, float g) {
