@@ -12,7 +12,7 @@ ShaderDefines bindingDefines(ShaderDefines extra) {
         {"BINDING_METERING", std::to_string(kBindingMetering)},
         {"BINDING_PROBE", std::to_string(kBindingProbe)},
         {"BINDING_SUBJECT_STATE", std::to_string(kBindingSubjectState)},
-        {"BINDING_SMAA_TILES", std::to_string(kBindingSmaaTiles)},
+        {"BINDING_TILE_LIST", std::to_string(kBindingTileList)},
         {"BINDING_PARAMETERS", std::to_string(kBindingParameters)},
     };
     defines.insert(defines.end(), extra.begin(), extra.end());

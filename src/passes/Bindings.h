@@ -14,8 +14,9 @@ inline constexpr unsigned kBindingHistogram = 1; ///< SSBO: 256 uint histogram b
 inline constexpr unsigned kBindingMetering = 2;  ///< SSBO: GpuMeteringHeader + per-workgroup partial sums
 inline constexpr unsigned kBindingProbe = 3; ///< SSBO: GpuProbeHeader + GpuProbeEntry[] (this frame's probes)
 inline constexpr unsigned kBindingSubjectState = 4; ///< SSBO: GpuSubjectState (persists across frames)
-/// SSBO: SMAA's list of the 8 x 8 tiles with an edge (GpuSmaaTilesHeader, then the tiles and their flags)
-inline constexpr unsigned kBindingSmaaTiles = 5;
+/// SSBO: the running pass's tile list, for its indirect dispatches (SMAA's tiles with an edge, motion blur's
+/// moving and still tiles), one per dispatch like the parameter block
+inline constexpr unsigned kBindingTileList = 5;
 /// UBO: the running pass's std140 parameter block (ParameterBlock<T> in gl/Objects.h), one per dispatch.
 inline constexpr unsigned kBindingParameters = 0;
 /// UBO: the same buffer as kBindingExposureState, bound as a uniform block for the passes that only read it

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace photopic {
 
@@ -34,6 +35,8 @@ MotionBlurPass::MotionBlurPass(MotionBlurPlacement placement)
     , mTiles(makeComputeProgram("passes/motionblur/motion_blur_tiles.comp.glsl", bindingDefines()))
     , mNeighbours(makeComputeProgram("passes/motionblur/motion_blur_neighbours.comp.glsl", bindingDefines()))
     , mGather(makeComputeProgram("passes/motionblur/motion_blur_gather.comp.glsl", bindingDefines()))
+    , mStill(makeComputeProgram("passes/motionblur/motion_blur_gather.comp.glsl",
+                               bindingDefines({{"MOTION_BLUR_STILL", "1"}})))
     , mParameters("motion blur parameters")
     , mNoTiles({.extent = {1, 1}, .format = GL_RGBA16F, .debugName = "velocity tiles (unused)"}) {}
 
@@ -100,24 +103,53 @@ void MotionBlurPass::tileVelocities(const FrameContext& ctx, const FrameResource
         mNeighbours.use();
         bind(mNeighboursTileMax, *t.tileMax);
         bind(mNeighboursNeighbourMax, *t.neighbourMax, ImageAccess::Write);
-        dispatch(mNeighbours, tiles, Barrier::TextureFetch);
+        dispatch(mNeighbours, tiles, Barrier::IndirectDispatch);
     }
+}
+
+void MotionBlurPass::resetLists(Extent tiles, int tileSize) {
+    const std::size_t count = std::size_t(tiles.width) * std::size_t(tiles.height);
+    const std::size_t bytes = sizeof(GpuMotionTileLists) + 2 * count * sizeof(std::uint32_t);
+    if (mLists.size() < bytes) {
+        mLists = Buffer({.size = bytes, .flags = 0, .debugName = "motion blur tile lists"});
+    }
+    // On the GPU: both dispatches (groups a tile side)^2 x 0 tiles, as GpuMotionTileLists lays them out.
+    const auto side = std::uint32_t((tileSize + 7) / 8);
+    const std::uint32_t header[8] = {side, side, 0, side, side, 0, 0, 0};
+    static_assert(sizeof(header) == sizeof(GpuMotionTileLists));
+    glClearNamedBufferSubData(mLists.id(), GL_RGBA32UI, 0, 16, GL_RGBA_INTEGER, GL_UNSIGNED_INT, header);
+    glClearNamedBufferSubData(mLists.id(), GL_RGBA32UI, 16, 16, GL_RGBA_INTEGER, GL_UNSIGNED_INT, header + 4);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingTileList, mLists.id());
+}
+
+void MotionBlurPass::runGather(const GatherProgram& program, const FrameResources& resources,
+                               const Targets& t, GLintptr arguments) {
+    program.program.use();
+    bind(program.scene, *resources.texture(Resource::SceneColor));
+    bind(program.velocity, *t.velocity);
+    bind(program.depth, *resources.texture(Resource::LinearDepth));
+    bind(program.neighbourMax, *t.neighbourMax);
+    bind(program.out, *t.out, ImageAccess::Write);
+    bind(program.tiles, t.tilesView ? *t.tilesView : mNoTiles, ImageAccess::Write);
+    dispatchIndirect(program.program, mLists.id(), arguments, Barrier::None);
 }
 
 void MotionBlurPass::gather(const FrameContext& ctx, const FrameResources& resources, const Targets& t) {
     const Extent e = ctx.extent;
     // Colour, velocity and depth, each read once from memory (the samples along a streak hit the cache), the
-    // result (and the view) written.
+    // result (and the view) written; counted as if every tile moved (the lists' lengths stay on the GPU).
     ScopedGpuTimer timer(ctx.timers, "motion blur gather",
                          double(e.width) * e.height * (8.0 + 4.0 + 4.0 + 8.0 + (t.tilesView ? 8.0 : 0.0)));
-    mGather.use();
-    bind(mGatherScene, *resources.texture(Resource::SceneColor));
-    bind(mGatherVelocity, *t.velocity);
-    bind(mGatherDepth, *resources.texture(Resource::LinearDepth));
-    bind(mGatherNeighbourMax, *t.neighbourMax);
-    bind(mGatherOut, *t.out, ImageAccess::Write);
-    bind(mGatherTiles, t.tilesView ? *t.tilesView : mNoTiles, ImageAccess::Write);
-    dispatch(mGather, e, Barrier::None);
+    // The still tiles are the scene colour unchanged: a copy of the whole image, over which the gather writes
+    // the moving tiles (a copy runs at the memory's speed, a dispatch over the still tiles did not).
+    const Texture& scene = *resources.texture(Resource::SceneColor);
+    glCopyImageSubData(scene.id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.out->id(), GL_TEXTURE_2D, 0, 0, 0, 0, e.width,
+                       e.height, 1);
+    runGather(mGather, resources, t, GLintptr(offsetof(GpuMotionTileLists, movingArgs)));
+    if (t.tilesView) {
+        // The debug view's tiles where they are still (the program copies the colour again there).
+        runGather(mStill, resources, t, GLintptr(offsetof(GpuMotionTileLists, stillArgs)));
+    }
 }
 
 void MotionBlurPass::execute(FrameContext& ctx, FrameResources& resources) {
@@ -127,6 +159,7 @@ void MotionBlurPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Targets t = acquireTargets(ctx, resources, tiles);
     mParameters.update(parameters(ctx, tiles, t.tilesView != nullptr));
     mParameters.bind(kBindingParameters);
+    resetLists(tiles, s.tileSize);
     tileVelocities(ctx, resources, t, tiles);
     gather(ctx, resources, t);
     resources.bind(Resource::SceneColor, *t.out);

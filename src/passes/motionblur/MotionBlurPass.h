@@ -11,6 +11,7 @@
 
 #include "passes/FramePass.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <glm/vec2.hpp>
 
@@ -33,6 +34,16 @@ static_assert(offsetof(MotionBlurParameters, radiusScale) == 8);
 static_assert(offsetof(MotionBlurParameters, tileSize) == 16);
 static_assert(offsetof(MotionBlurParameters, writeTiles) == 28);
 static_assert(offsetof(MotionBlurParameters, tileCount) == 32);
+
+/// std430 mirror of the header of motion_blur_lists.h.glsl's buffer: the indirect dispatches of the gather
+/// over the moving tiles and of the copy over the still ones, (work groups a tile side)^2 x tiles listed.
+/// `uint listTiles[]` follows: the moving tiles, then (from the tile count on) the still ones.
+struct GpuMotionTileLists {
+    std::uint32_t movingArgs[3] = {1, 1, 0};
+    std::uint32_t stillArgs[3] = {1, 1, 0};
+    std::uint32_t pad[2] = {};
+};
+static_assert(sizeof(GpuMotionTileLists) == 32 && offsetof(GpuMotionTileLists, stillArgs) == 12);
 
 /// The shutter's open time as a fraction of the frame interval, from the settings (angle, or the camera's
 /// exposure time over dt, else its shutter angle), in [0, 1] and more for an exposure longer than a frame.
@@ -68,28 +79,43 @@ private:
     /// The velocity, its per-tile maximum and the tiles' neighbourhood maximum.
     void tileVelocities(const FrameContext& ctx, const FrameResources& resources, const Targets& t,
                         Extent tiles);
-    /// The blur: each pixel gathers along the neighbourhood's dominant velocity.
+    /// The blur: each pixel of a moving tile gathers along the neighbourhood's dominant velocity; the still
+    /// tiles keep the scene colour (an image copy).
     void gather(const FrameContext& ctx, const FrameResources& resources, const Targets& t);
+    /// Empty lists for `tiles` tiles of `tileSize` pixels, bound at kBindingTileList.
+    void resetLists(Extent tiles, int tileSize);
+
+    /// A gather program (the gather, or with MOTION_BLUR_STILL the still tiles' copy and debug view) and its
+    /// slots.
+    struct GatherProgram {
+        explicit GatherProgram(Program p)
+            : program(std::move(p)) {}
+        Program program;
+        SamplerSlot scene = program.sampler("uScene");
+        SamplerSlot velocity = program.sampler("uVelocity");
+        SamplerSlot depth = program.sampler("uDepth");
+        SamplerSlot neighbourMax = program.sampler("uNeighbourMax");
+        ImageSlot out = program.image("uOut");
+        ImageSlot tiles = program.image("uTiles");
+    };
+    void runGather(const GatherProgram& program, const FrameResources& resources, const Targets& t,
+                   GLintptr arguments);
 
     MotionBlurPlacement mPlacement;
     Program mPrepare;
     Program mTiles;
     Program mNeighbours;
-    Program mGather;
+    GatherProgram mGather;
+    GatherProgram mStill; ///< the still tiles, for the velocity-tiles view
     SamplerSlot mPrepareMotion = mPrepare.sampler("uMotion");
     ImageSlot mPrepareVelocity = mPrepare.image("uVelocity");
     SamplerSlot mTilesVelocity = mTiles.sampler("uVelocity");
     ImageSlot mTilesTileMax = mTiles.image("uTileMax");
     SamplerSlot mNeighboursTileMax = mNeighbours.sampler("uTileMax");
     ImageSlot mNeighboursNeighbourMax = mNeighbours.image("uNeighbourMax");
-    SamplerSlot mGatherScene = mGather.sampler("uScene");
-    SamplerSlot mGatherVelocity = mGather.sampler("uVelocity");
-    SamplerSlot mGatherDepth = mGather.sampler("uDepth");
-    SamplerSlot mGatherNeighbourMax = mGather.sampler("uNeighbourMax");
-    ImageSlot mGatherOut = mGather.image("uOut");
-    ImageSlot mGatherTiles = mGather.image("uTiles");
     ParameterBlock<MotionBlurParameters> mParameters;
     Texture mNoTiles; ///< bound to the debug image unit when no debug view asks for the tiles
+    Buffer mLists;    ///< GpuMotionTileLists and the lists; grown to the largest tile count seen
 };
 
 } // namespace photopic

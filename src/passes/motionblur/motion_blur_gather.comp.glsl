@@ -16,9 +16,12 @@
 //   still one keeps its colour). A nearer sample that reaches X is left out of the layer, since X's layer is
 //   not seen while it covers X; so when every velocity is the same the result is the box average along the
 //   streak whatever the depths, as a uniform pan must give.
-// A pixel whose neighbourhood moves less than half a pixel is copied unchanged.
+// A pixel whose neighbourhood moves less than half a pixel is copied unchanged. The gather runs over the tiles
+// listed moving; the program built with MOTION_BLUR_STILL copies the tiles listed still
+// (motion_blur_lists.h.glsl), so the still ones do not run the gather's code under a mask on a SIMD CPU.
 #include "passes/common/noise.h.glsl"
 #include "passes/motionblur/motion_blur_common.h.glsl"
+#include "passes/motionblur/motion_blur_lists.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -45,9 +48,16 @@ float inFront(float a, float b) {
 }
 
 void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    // This invocation's pixel in the listed tile gl_WorkGroupID.z.
+#ifdef MOTION_BLUR_STILL
+    uint tile = listTiles[uint(uTileCount.x * uTileCount.y) + gl_WorkGroupID.z];
+#else
+    uint tile = listTiles[gl_WorkGroupID.z];
+#endif
+    ivec2 inTile = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 p = ivec2(int(tile % uint(uTileCount.x)), int(tile / uint(uTileCount.x))) * uTileSize + inTile;
     ivec2 size = ivec2(uFullSize);
-    if (any(greaterThanEqual(p, size))) {
+    if (any(greaterThanEqual(inTile, ivec2(uTileSize))) || any(greaterThanEqual(p, size))) {
         return;
     }
     vec4 c0 = texelFetch(uScene, p, 0);
@@ -56,6 +66,10 @@ void main() {
     if (uWriteTiles != 0) {
         imageStore(uTiles, p, vec4(vmax, lenMax, 1.0));
     }
+#ifdef MOTION_BLUR_STILL
+    imageStore(uOut, p, c0);
+}
+#else
     if (!(lenMax >= 0.5)) {
         imageStore(uOut, p, c0);
         return;
@@ -109,3 +123,4 @@ void main() {
     vec3 result = frontCover >= 1.0 ? front / frontCover : front + (1.0 - frontCover) * own;
     imageStore(uOut, p, vec4(result, c0.a));
 }
+#endif

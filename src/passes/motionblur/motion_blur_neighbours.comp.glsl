@@ -1,7 +1,9 @@
 // Motion blur, step 3 (McGuire et al. 2012, NeighborMax): the longest tile velocity among a tile and its
 // eight neighbours. A blur radius is at most one tile, so every velocity that can reach a pixel is within
-// them.
+// them. Each tile is listed moving or still for the gather (motion_blur_lists.h.glsl).
 #include "passes/motionblur/motion_blur_common.h.glsl"
+#define MOTION_BLUR_LISTS_WRITE
+#include "passes/motionblur/motion_blur_lists.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -24,4 +26,10 @@ void main() {
         }
     }
     imageStore(uNeighbourMax, tile, vec4(m, 0.0, 0.0));
+    uint index = uint(tile.y * uTileCount.x + tile.x);
+    if (length(m) >= kStillBelow) {
+        listTiles[atomicAdd(movingArgs[2], 1u)] = index;
+    } else { // NaN too: the gather copies it
+        listTiles[uint(uTileCount.x * uTileCount.y) + atomicAdd(stillArgs[2], 1u)] = index;
+    }
 }

@@ -103,7 +103,7 @@ void SmaaPass::resetTiles(Extent e) {
     glClearNamedBufferSubData(
         mTiles.id(), GL_R32UI, GLintptr(sizeof(GpuSmaaTilesHeader) + tiles * sizeof(std::uint32_t)),
         GLsizeiptr(tiles * sizeof(std::uint32_t)), GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingSmaaTiles, mTiles.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingTileList, mTiles.id());
 }
 
 void SmaaPass::updateParameters(const FrameContext& ctx, bool hdr) {

@@ -89,7 +89,7 @@ private:
     };
     [[nodiscard]] static Targets acquireTargets(Extent e, GLenum colorFormat, FrameResources& resources);
     void updateParameters(const FrameContext& ctx, bool hdr);
-    /// An empty tile list for this frame's extent, bound at kBindingSmaaTiles.
+    /// An empty tile list for this frame's extent, bound at kBindingTileList.
     void resetTiles(Extent e);
     /// The three steps: edges (with the linear depth, when the frame brings one), blending weights, blend.
     void detectEdges(const FrameContext& ctx, const FrameResources& resources, const Texture& color,

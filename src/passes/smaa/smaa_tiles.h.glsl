@@ -8,7 +8,7 @@
 #else
 #define SMAA_TILES_ACCESS readonly
 #endif
-layout(std430, binding = BINDING_SMAA_TILES) SMAA_TILES_ACCESS buffer SmaaTiles {
+layout(std430, binding = BINDING_TILE_LIST) SMAA_TILES_ACCESS buffer SmaaTiles {
     uint tileGroups[3]; // glDispatchComputeIndirect: (tiles listed, 1, 1)
     uint tilePad;
     uint tileData[]; // [0, uTileCount): the listed tiles' indices (y * uTilesX + x); then one flag a tile
