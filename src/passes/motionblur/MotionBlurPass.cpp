@@ -141,13 +141,17 @@ void MotionBlurPass::gather(const FrameContext& ctx, const FrameResources& resou
     ScopedGpuTimer timer(ctx.timers, "motion blur gather",
                          double(e.width) * e.height * (8.0 + 4.0 + 4.0 + 8.0 + (t.tilesView ? 8.0 : 0.0)));
     // The still tiles are the scene colour unchanged: a copy of the whole image, over which the gather writes
-    // the moving tiles (a copy runs at the memory's speed, a dispatch over the still tiles did not).
+    // the moving tiles (a copy runs at the memory's speed, a dispatch over the still tiles did not). Where the
+    // scene colour is not RGBA16F (a host's colour standing in for it) the still tiles' program converts.
     const Texture& scene = *resources.texture(Resource::SceneColor);
-    glCopyImageSubData(scene.id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.out->id(), GL_TEXTURE_2D, 0, 0, 0, 0, e.width,
-                       e.height, 1);
+    const bool copied = scene.format() == t.out->format();
+    if (copied) {
+        glCopyImageSubData(scene.id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.out->id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                           e.width, e.height, 1);
+    }
     runGather(mGather, resources, t, GLintptr(offsetof(GpuMotionTileLists, movingArgs)));
-    if (t.tilesView) {
-        // The debug view's tiles where they are still (the program copies the colour again there).
+    if (!copied || t.tilesView) {
+        // The still tiles' colour, and the debug view's tiles there.
         runGather(mStill, resources, t, GLintptr(offsetof(GpuMotionTileLists, stillArgs)));
     }
 }

@@ -92,21 +92,24 @@ SmaaPass::Targets SmaaPass::acquireTargets(Extent e, GLenum colorFormat, FrameRe
 void SmaaPass::resetTiles(Extent e) {
     const Extent grid = tileGrid(e);
     const std::size_t tiles = std::size_t(grid.width) * std::size_t(grid.height);
-    const std::size_t bytes = sizeof(GpuSmaaTilesHeader) + 2 * tiles * sizeof(std::uint32_t);
+    const std::size_t bytes = sizeof(GpuSmaaTiles) + 4 * tiles * sizeof(std::uint32_t);
     if (mTiles.size() < bytes) {
         mTiles = Buffer({.size = bytes, .flags = 0, .debugName = "smaa tiles"});
     }
-    // On the GPU: the header's dispatch (0, 1, 1) and the flags' zeros.
-    const GpuSmaaTilesHeader header;
-    glClearNamedBufferSubData(mTiles.id(), GL_RGBA32UI, 0, sizeof(header), GL_RGBA_INTEGER, GL_UNSIGNED_INT,
-                              &header);
+    // On the GPU: both dispatches (0, 1, 1) and both lists' flags zero.
+    const std::uint32_t dispatchNone[4] = {0, 1, 1, 0};
+    for (const std::size_t offset :
+         {offsetof(GpuSmaaTiles, weightGroups), offsetof(GpuSmaaTiles, blendGroups)}) {
+        glClearNamedBufferSubData(mTiles.id(), GL_RGBA32UI, GLintptr(offset), sizeof(dispatchNone),
+                                  GL_RGBA_INTEGER, GL_UNSIGNED_INT, dispatchNone);
+    }
     glClearNamedBufferSubData(
-        mTiles.id(), GL_R32UI, GLintptr(sizeof(GpuSmaaTilesHeader) + tiles * sizeof(std::uint32_t)),
-        GLsizeiptr(tiles * sizeof(std::uint32_t)), GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+        mTiles.id(), GL_R32UI, GLintptr(sizeof(GpuSmaaTiles) + 2 * tiles * sizeof(std::uint32_t)),
+        GLsizeiptr(2 * tiles * sizeof(std::uint32_t)), GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingTileList, mTiles.id());
 }
 
-void SmaaPass::updateParameters(const FrameContext& ctx, bool hdr) {
+void SmaaPass::updateParameters(const FrameContext& ctx, bool hdr, bool blendAll) {
     const smaa::Preset preset = smaa::preset(int(ctx.settings.smaa.quality));
     const Extent grid = tileGrid(ctx.extent);
     // Under taa+smaa the sub-pixel ridges are TAA's to resolve: its jittered frames sample a thin line
@@ -119,7 +122,8 @@ void SmaaPass::updateParameters(const FrameContext& ctx, bool hdr) {
          .diagonalSteps = preset.diagonalSteps,
          .subpixel = hdr ? 0.0f : ctx.settings.smaa.subpixel,
          .tilesX = grid.width,
-         .tileCount = grid.width * grid.height});
+         .tileCount = grid.width * grid.height,
+         .blendAll = blendAll ? 1 : 0});
     mParameters.bind(kBindingParameters);
 }
 
@@ -161,23 +165,36 @@ void SmaaPass::blendingWeights(const FrameContext& ctx, const Targets& t, const 
     bind(mWeightsAreaDiag, mAreaDiag);
     bind(mWeightsSearch, mSearch);
     bind(mWeightsOut, *t.weights, ImageAccess::Write);
-    dispatchIndirect(mWeights, mTiles.id(), GLintptr(offsetof(GpuSmaaTilesHeader, groups)),
-                     Barrier::TextureFetch);
+    dispatchIndirect(mWeights, mTiles.id(), GLintptr(offsetof(GpuSmaaTiles, weightGroups)),
+                     Barrier::IndirectDispatch);
 }
 
 void SmaaPass::blend(const FrameContext& ctx, const Texture& color, const Targets& t, int bitDepth,
                      const std::string& prefix) {
     const Extent e = ctx.extent;
-    // Colour, weights and edges in (the neighbours hit the cache), colour out.
+    // Colour, weights and edges in (the neighbours hit the cache), colour out; counted as if every tile
+    // blended (the list's length stays on the GPU).
     ScopedGpuTimer timer(ctx.timers, prefix + "blend",
-                         double(e.width) * e.height * (2.0 * bytesPerTexel(t.out->format()) + 6.0));
+                         double(e.width) * e.height * (2.0 + bytesPerTexel(t.out->format()) + 6.0));
     const Program& program = mBlend.at(bitDepth);
     program.use();
     bind(mBlendColor, color);
     bind(mBlendWeights, *t.weights);
     bind(mBlendEdges, *t.edges);
     bind(mBlendOutput, *t.out, ImageAccess::Write);
-    dispatch(program, e, Barrier::None);
+    if (blendsAll(color, t)) {
+        dispatch(program, e, Barrier::None);
+        return;
+    }
+    // Pixels no weight or edge reaches keep their colour: the whole image copied, then the listed tiles
+    // blended over it.
+    glCopyImageSubData(color.id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.out->id(), GL_TEXTURE_2D, 0, 0, 0, 0, e.width,
+                       e.height, 1);
+    dispatchIndirect(program, mTiles.id(), GLintptr(offsetof(GpuSmaaTiles, blendGroups)), Barrier::None);
+}
+
+bool SmaaPass::blendsAll(const Texture& color, const Targets& t) {
+    return color.format() != t.out->format();
 }
 
 void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
@@ -187,7 +204,7 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     const GLenum colorFormat = hdr ? GL_RGBA16F : displayFormat(bitDepth);
     const Texture& color = *resources.texture(colorResource);
     const Targets t = acquireTargets(ctx.extent, colorFormat, resources);
-    updateParameters(ctx, hdr);
+    updateParameters(ctx, hdr, blendsAll(color, t));
     if (hdr) {
         bindExposureStateForReading(*resources.buffer(Resource::ExposureState));
     }

@@ -16,6 +16,7 @@
 #include "passes/DisplayProgram.h"
 #include "passes/FramePass.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 
@@ -32,17 +33,22 @@ struct SmaaParameters {
     float subpixel = 0.0f;          ///< one-pixel ridges left unblended move this far towards their sides
     std::int32_t tilesX = 0;        ///< 8 x 8 tiles per row of the image
     std::int32_t tileCount = 0;     ///< tiles in the image
+    std::int32_t blendAll = 0;      ///< 1: the blend step runs over the whole image, not its tile list
+    std::int32_t pad[3] = {};
 };
-static_assert(sizeof(SmaaParameters) == 32);
+static_assert(sizeof(SmaaParameters) == 48);
 
-/// std430 mirror of the header of passes/smaa/smaa_tiles.h.glsl's buffer: the weights step's indirect
-/// dispatch, one work group per 8 x 8 tile the edge step listed. `uint tileData[]` follows: the listed
-/// tiles' indices, then one flag per tile of the image.
-struct GpuSmaaTilesHeader {
-    std::uint32_t groups[3] = {0, 1, 1};
-    std::uint32_t pad = 0;
+/// std430 mirror of the header of passes/smaa/smaa_tiles.h.glsl's buffer: the indirect dispatches of the
+/// weights step (one work group per 8 x 8 tile with an edge) and of the blend step (those tiles and their
+/// left and lower neighbours). `uint tileData[]` follows: both lists, then both lists' flags, a tile count
+/// each.
+struct GpuSmaaTiles {
+    std::uint32_t weightGroups[3] = {0, 1, 1};
+    std::uint32_t pad0 = 0;
+    std::uint32_t blendGroups[3] = {0, 1, 1};
+    std::uint32_t pad1 = 0;
 };
-static_assert(sizeof(GpuSmaaTilesHeader) == 16);
+static_assert(sizeof(GpuSmaaTiles) == 32 && offsetof(GpuSmaaTiles, blendGroups) == 16);
 
 class SmaaPass final : public FramePass {
 public:
@@ -88,7 +94,7 @@ private:
         const Texture* out = nullptr;
     };
     [[nodiscard]] static Targets acquireTargets(Extent e, GLenum colorFormat, FrameResources& resources);
-    void updateParameters(const FrameContext& ctx, bool hdr);
+    void updateParameters(const FrameContext& ctx, bool hdr, bool blendAll);
     /// An empty tile list for this frame's extent, bound at kBindingTileList.
     void resetTiles(Extent e);
     /// The three steps: edges (with the linear depth, when the frame brings one), blending weights, blend.
@@ -97,6 +103,9 @@ private:
     void blendingWeights(const FrameContext& ctx, const Targets& t, const std::string& prefix);
     void blend(const FrameContext& ctx, const Texture& color, const Targets& t, int bitDepth,
                const std::string& prefix);
+    /// The blend step runs over the whole image: its input's format is not its output's, so the pixels it
+    /// leaves alone cannot be copied.
+    [[nodiscard]] static bool blendsAll(const Texture& color, const Targets& t);
 
     Domain mDomain;
     EdgesProgram mEdges;
@@ -117,7 +126,7 @@ private:
     Texture mAreaDiag;
     Texture mSearch;
     ParameterBlock<SmaaParameters> mParameters;
-    Buffer mTiles; ///< GpuSmaaTilesHeader, the list and the flags; grown to the largest extent seen
+    Buffer mTiles; ///< GpuSmaaTiles, the lists and their flags; grown to the largest extent seen
 };
 
 } // namespace photopic

@@ -3,7 +3,8 @@
 // r), +y (the +y neighbour's g), -x (its own b) and +x (the +x neighbour's a). Like the reference, only the
 // axis with the larger weight is used, so a pixel at a corner is not blended twice. The mix is done on
 // linear values (the reference reads its input as sRGB for the same reason) and encoded again; in the HDR
-// placement (SMAA_HDR) the input is linear scene light already and the output stays RGBA16F.
+// placement (SMAA_HDR) the input is linear scene light already and the output stays RGBA16F. It runs where a
+// weight or an edge can be (smaa_tiles.h.glsl).
 //
 // Sub-pixel ridges. A line thinner than a pixel (a wire, a far pole, a distant texture's stripe) shows in a
 // one-sample image as pixels of full contrast wherever a pixel centre fell on it, and the patterns leave
@@ -31,6 +32,7 @@ vec3 fromLinear(vec3 c) { return srgbEncode(c); }
 #endif
 
 #include "passes/smaa/smaa_parameters.h.glsl"
+#include "passes/smaa/smaa_tiles.h.glsl"
 
 vec4 weightsAt(ivec2 p, ivec2 size) {
     return any(greaterThanEqual(p, size)) ? vec4(0.0) : texelFetch(uWeights, p, 0);
@@ -74,8 +76,10 @@ bool subpixelRidge(ivec2 p, ivec2 size, vec3 centre, out vec3 filtered) {
     return axes > 0.0;
 }
 
+// One work group per tile the weights step listed for blending (an indirect dispatch; every other pixel
+// keeps the input's colour, copied before), or with uBlendAll one per 8 x 8 block of the image.
 void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 p = uBlendAll != 0 ? ivec2(gl_GlobalInvocationID.xy) : listedPixel(1, gl_WorkGroupID.x);
     ivec2 size = imageSize(uOutput);
     if (any(greaterThanEqual(p, size))) {
         return;

@@ -38,14 +38,6 @@ float depthStep(float a, float b) {
 #define SMAA_TILES_WRITE
 #include "passes/smaa/smaa_tiles.h.glsl"
 
-// Lists p's tile for the weights step, once.
-void listTile(ivec2 p) {
-    uint tile = uint(p.y / 8) * uint(uTilesX) + uint(p.x / 8);
-    if (atomicOr(tileData[uint(uTileCount) + tile], 1u) == 0u) {
-        tileData[atomicAdd(tileGroups[0], 1u)] = tile;
-    }
-}
-
 float lumaAt(ivec2 p) {
     p = clamp(p, ivec2(0), textureSize(uColor, 0) - 1);
 #ifdef SMAA_HDR
@@ -94,7 +86,7 @@ void main() {
 #endif
     edges *= kept;
     if (edges.x + edges.y > 0.0) {
-        listTile(p);
+        listTile(uint(p.y / 8) * uint(uTilesX) + uint(p.x / 8), 0);
     }
     imageStore(uEdges, p, vec4(edges, 0.0, 0.0));
 }

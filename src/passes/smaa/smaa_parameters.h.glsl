@@ -7,6 +7,7 @@ layout(std140, binding = BINDING_PARAMETERS) uniform SmaaParameters {
     int uDiagSteps; // 0: no diagonal patterns
     float uSubpixel; // the blend step: how far a one-pixel ridge no pattern blended moves towards its sides
     int uTilesX;     // 8 x 8 tiles per row
-    int uTileCount;  // tiles in the image: where the tile list's flags start
+    int uTileCount;  // tiles in the image: the length of each part of the tile lists
+    int uBlendAll;   // the blend step runs over the whole image (its input could not be copied to its output)
 };
 

@@ -23,6 +23,7 @@ layout(binding = 3) uniform usampler2D uSearch;   // R8UI, texel fetches
 layout(binding = 0, rgba8) uniform writeonly image2D uWeights;
 
 #include "passes/smaa/smaa_parameters.h.glsl"
+#define SMAA_TILES_WRITE
 #include "passes/smaa/smaa_tiles.h.glsl"
 
 const int kOrthoMax = 64;
@@ -190,10 +191,20 @@ vec2 diagonalWeights(ivec2 q, bool mirror) {
 }
 
 // One work group per listed tile (an indirect dispatch over the tile list); the weights of every other
-// pixel are the zeros the image was cleared to.
+// pixel are the zeros the image was cleared to. The group's first invocation lists the tiles the blend
+// step runs on: this one, the one to its left and the one below it.
 void main() {
-    uint tile = tileData[gl_WorkGroupID.x];
-    ivec2 p = ivec2(tile % uint(uTilesX), tile / uint(uTilesX)) * 8 + ivec2(gl_LocalInvocationID.xy);
+    ivec2 p = listedPixel(0, gl_WorkGroupID.x);
+    if (gl_LocalInvocationIndex == 0u) {
+        ivec2 tile = p / 8;
+        listTile(uint(tile.y * uTilesX + tile.x), 1);
+        if (tile.x > 0) {
+            listTile(uint(tile.y * uTilesX + tile.x - 1), 1);
+        }
+        if (tile.y > 0) {
+            listTile(uint((tile.y - 1) * uTilesX + tile.x), 1);
+        }
+    }
     if (any(greaterThanEqual(p, gridSize()))) {
         return;
     }
