@@ -8,7 +8,10 @@ GtaoPass::GtaoPass(Stage stage)
     : mStage(stage)
     , mPrepare(makeComputeProgram("passes/gtao/gtao_prepare.comp.glsl", bindingDefines()))
     , mMain(makeComputeProgram("passes/gtao/gtao_main.comp.glsl", bindingDefines()))
-    , mDenoise(makeComputeProgram("passes/gtao/gtao_denoise.comp.glsl", bindingDefines()))
+    , mDenoiseFull(
+          makeComputeProgram("passes/gtao/gtao_denoise.comp.glsl", bindingDefines({{"GTAO_SCALE", "1"}})))
+    , mDenoiseHalf(
+          makeComputeProgram("passes/gtao/gtao_denoise.comp.glsl", bindingDefines({{"GTAO_SCALE", "2"}})))
     , mParameters("gtao parameters") {}
 
 std::span<const ResourceUse> GtaoPass::uses() const {
@@ -85,7 +88,7 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
     mParameters.bind(kBindingParameters);
     prepare(resources, surface, ctx.timers);
     search(surface, raw, searchBytes, ctx.timers);
-    denoise(surface, raw, out, denoiseBytes, ctx.timers);
+    denoise(surface, raw, out, scale, denoiseBytes, ctx.timers);
     resources.bind(Resource::AmbientOcclusion, out);
 }
 
@@ -107,14 +110,15 @@ void GtaoPass::search(const Texture& surface, const Texture& raw, double bytes, 
     dispatch(mMain, raw.extent(), Barrier::TextureFetch);
 }
 
-void GtaoPass::denoise(const Texture& surface, const Texture& raw, const Texture& out, double bytes,
-                       GpuTimers* timers) {
+void GtaoPass::denoise(const Texture& surface, const Texture& raw, const Texture& out, int scale,
+                       double bytes, GpuTimers* timers) {
     ScopedGpuTimer timer(timers, "gtao denoise", bytes);
-    mDenoise.use();
-    bind(mDenoiseSurface, surface);
-    bind(mDenoiseRaw, raw);
-    bind(mDenoiseOut, out, ImageAccess::Write);
-    dispatch(mDenoise, out.extent(), Barrier::None);
+    const DenoiseProgram& d = scale == 2 ? mDenoiseHalf : mDenoiseFull;
+    d.program.use();
+    bind(d.surface, surface);
+    bind(d.raw, raw);
+    bind(d.out, out, ImageAccess::Write);
+    dispatch(d.program, out.extent(), Barrier::None);
 }
 
 AoMultiplyPass::AoMultiplyPass()

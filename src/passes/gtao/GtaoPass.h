@@ -69,22 +69,30 @@ private:
     /// per AO texel), then the denoise into `out`.
     void prepare(FrameResources& resources, const Texture& surface, GpuTimers* timers);
     void search(const Texture& surface, const Texture& raw, double bytes, GpuTimers* timers);
-    void denoise(const Texture& surface, const Texture& raw, const Texture& out, double bytes,
+    void denoise(const Texture& surface, const Texture& raw, const Texture& out, int scale, double bytes,
                  GpuTimers* timers);
+
+    /// The denoiser for one resolution (GTAO_SCALE: full-resolution pixels per AO texel), and its slots.
+    struct DenoiseProgram {
+        explicit DenoiseProgram(Program p)
+            : program(std::move(p)) {}
+        Program program;
+        SamplerSlot surface = program.sampler("uSurface");
+        SamplerSlot raw = program.sampler("uRaw");
+        ImageSlot out = program.image("uVisibility");
+    };
 
     Stage mStage;
     Program mPrepare;
     Program mMain;
-    Program mDenoise;
+    DenoiseProgram mDenoiseFull;
+    DenoiseProgram mDenoiseHalf;
     ParameterBlock<GtaoParameters> mParameters;
     SamplerSlot mPrepareDepth = mPrepare.sampler("uLinearDepth");
     SamplerSlot mPrepareNormals = mPrepare.sampler("uNormals");
     ImageSlot mPrepareSurface = mPrepare.image("uSurfaceOut");
     SamplerSlot mMainSurface = mMain.sampler("uSurface");
     ImageSlot mMainRaw = mMain.image("uRaw");
-    SamplerSlot mDenoiseSurface = mDenoise.sampler("uSurface");
-    SamplerSlot mDenoiseRaw = mDenoise.sampler("uRaw");
-    ImageSlot mDenoiseOut = mDenoise.image("uVisibility");
 };
 
 /// ssao.apply = multiply: sceneColor *= visibility^power (before TAA and metering). It darkens direct light

@@ -36,9 +36,11 @@ vec3 viewPositionAtTexel(ivec2 texel, float z) {
 // alternates between neighbouring texels (x with the texel's row, y with its column), so every
 // full-resolution row and column is sampled by every second texel: a one-pixel contact strip (the ground
 // at the foot of a wall seen at a grazing angle) is not skipped whole when it falls on odd rows.
-ivec2 aoSourcePixel(ivec2 q, ivec2 full) {
-    ivec2 offset = uScale == 2 ? ivec2(q.y & 1, q.x & 1) : ivec2(0);
-    return min(q * uScale + offset, full - 1);
+ivec2 aoSourcePixelAt(ivec2 q, ivec2 full, int scale) {
+    ivec2 offset = scale == 2 ? ivec2(q.y & 1, q.x & 1) : ivec2(0);
+    return min(q * scale + offset, full - 1);
 }
+
+ivec2 aoSourcePixel(ivec2 q, ivec2 full) { return aoSourcePixelAt(q, full, uScale); }
 
 #endif

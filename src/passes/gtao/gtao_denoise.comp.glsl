@@ -7,6 +7,10 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
+// Full-resolution pixels per AO texel (1 or 2): a define, so that the taps' loops and their Gaussian weights
+// are constants (a program per resolution).
+const int kScale = GTAO_SCALE;
+
 layout(binding = 1) uniform usampler2D uRaw; // packAoTexel
 layout(binding = 0, r16f) uniform writeonly image2D uVisibility;
 
@@ -30,7 +34,7 @@ void main() {
     vec3 normal = normalize(surface.n);
     vec3 position = viewPositionAtTexel(p, z);
     ivec2 rawSize = textureSize(uRaw, 0);
-    ivec2 centre = p / uScale;
+    ivec2 centre = p / kScale;
     // Tolerance for the distance from the tangent plane: a few per cent of the depth.
     float invTolerance = 1.0 / (0.02 * z);
     float invReach = 1.0 / (kReach * uRadius);
@@ -39,12 +43,12 @@ void main() {
     // 3 x 3 texels at full resolution, 5 x 5 at half (where the upsampling needs texels 2 out). At full
     // resolution the ring 2 pixels out (weight under a third of the centre's) took 16 of the 25 taps and
     // bought no accuracy against either ray-traced truth, only a little steadiness under motion.
-    int reach = uScale == 1 ? 1 : 2;
+    const int reach = kScale == 1 ? 1 : 2;
     for (int dy = -reach; dy <= reach; ++dy) {
         for (int dx = -reach; dx <= reach; ++dx) {
             ivec2 q = centre + ivec2(dx, dy);
             bool inside = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, rawSize));
-            ivec2 source = aoSourcePixel(q, full);
+            ivec2 source = aoSourcePixelAt(q, full, kScale);
             AoTexel neighbour = unpackAoTexel(texelFetch(uRaw, clamp(q, ivec2(0), rawSize - 1), 0).xy);
             vec3 offset = viewPositionAtTexel(source, neighbour.z) - position;
             float plane = dot(offset, normal) * invTolerance;
