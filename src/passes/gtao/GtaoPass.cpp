@@ -7,7 +7,6 @@ namespace photopic {
 GtaoPass::GtaoPass(Stage stage)
     : mStage(stage)
     , mPrepare(makeComputeProgram("passes/gtao/gtao_prepare.comp.glsl", bindingDefines()))
-    , mMain(makeComputeProgram("passes/gtao/gtao_main.comp.glsl", bindingDefines()))
     , mDenoiseFull(
           makeComputeProgram("passes/gtao/gtao_denoise.comp.glsl", bindingDefines({{"GTAO_SCALE", "1"}})))
     , mDenoiseHalf(
@@ -87,7 +86,7 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
     mParameters.update(parameters);
     mParameters.bind(kBindingParameters);
     prepare(resources, surface, ctx.timers);
-    search(surface, raw, searchBytes, ctx.timers);
+    search(surface, raw, s.quality, scale, searchBytes, ctx.timers);
     denoise(surface, raw, out, scale, denoiseBytes, ctx.timers);
     resources.bind(Resource::AmbientOcclusion, out);
 }
@@ -102,12 +101,26 @@ void GtaoPass::prepare(FrameResources& resources, const Texture& surface, GpuTim
     dispatch(mPrepare, e, Barrier::TextureFetch);
 }
 
-void GtaoPass::search(const Texture& surface, const Texture& raw, double bytes, GpuTimers* timers) {
+const GtaoPass::SearchProgram& GtaoPass::searchProgram(GtaoQuality quality, int scale) {
+    std::optional<SearchProgram>& slot = mSearch[std::size_t(quality)][std::size_t(scale - 1)];
+    if (!slot) {
+        const glm::ivec2 tier = slicesAndSteps(quality);
+        slot.emplace(makeComputeProgram("passes/gtao/gtao_main.comp.glsl",
+                                        bindingDefines({{"GTAO_SLICES", std::to_string(tier.x)},
+                                                        {"GTAO_STEPS", std::to_string(tier.y)},
+                                                        {"GTAO_SCALE", std::to_string(scale)}})));
+    }
+    return *slot;
+}
+
+void GtaoPass::search(const Texture& surface, const Texture& raw, GtaoQuality quality, int scale,
+                      double bytes, GpuTimers* timers) {
     ScopedGpuTimer timer(timers, "gtao", bytes);
-    mMain.use();
-    bind(mMainSurface, surface);
-    bind(mMainRaw, raw, ImageAccess::Write);
-    dispatch(mMain, raw.extent(), Barrier::TextureFetch);
+    const SearchProgram& program = searchProgram(quality, scale);
+    program.program.use();
+    bind(program.surface, surface);
+    bind(program.raw, raw, ImageAccess::Write);
+    dispatch(program.program, raw.extent(), Barrier::TextureFetch);
 }
 
 void GtaoPass::denoise(const Texture& surface, const Texture& raw, const Texture& out, int scale,

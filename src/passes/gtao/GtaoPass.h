@@ -11,9 +11,11 @@
 
 #include "passes/FramePass.h"
 
+#include <array>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
+#include <optional>
 
 namespace photopic {
 
@@ -68,9 +70,21 @@ private:
     /// Depth and normal packed into `surface` (gtao_surface.h.glsl), the horizon search into `raw` (one texel
     /// per AO texel), then the denoise into `out`.
     void prepare(FrameResources& resources, const Texture& surface, GpuTimers* timers);
-    void search(const Texture& surface, const Texture& raw, double bytes, GpuTimers* timers);
+    void search(const Texture& surface, const Texture& raw, GtaoQuality quality, int scale, double bytes,
+                GpuTimers* timers);
     void denoise(const Texture& surface, const Texture& raw, const Texture& out, int scale, double bytes,
                  GpuTimers* timers);
+
+    /// The horizon search for one preset and resolution (GTAO_SLICES, GTAO_STEPS, GTAO_SCALE), and its slots.
+    struct SearchProgram {
+        explicit SearchProgram(Program p)
+            : program(std::move(p)) {}
+        Program program;
+        SamplerSlot surface = program.sampler("uSurface");
+        ImageSlot raw = program.image("uRaw");
+    };
+    /// The search program for `quality` at `scale` (1 or 2), built on first use.
+    const SearchProgram& searchProgram(GtaoQuality quality, int scale);
 
     /// The denoiser for one resolution (GTAO_SCALE: full-resolution pixels per AO texel), and its slots.
     struct DenoiseProgram {
@@ -84,15 +98,13 @@ private:
 
     Stage mStage;
     Program mPrepare;
-    Program mMain;
+    std::array<std::array<std::optional<SearchProgram>, 2>, 4> mSearch; ///< by GtaoQuality, then scale - 1
     DenoiseProgram mDenoiseFull;
     DenoiseProgram mDenoiseHalf;
     ParameterBlock<GtaoParameters> mParameters;
     SamplerSlot mPrepareDepth = mPrepare.sampler("uLinearDepth");
     SamplerSlot mPrepareNormals = mPrepare.sampler("uNormals");
     ImageSlot mPrepareSurface = mPrepare.image("uSurfaceOut");
-    SamplerSlot mMainSurface = mMain.sampler("uSurface");
-    ImageSlot mMainRaw = mMain.image("uRaw");
 };
 
 /// ssao.apply = multiply: sceneColor *= visibility^power (before TAA and metering). It darkens direct light

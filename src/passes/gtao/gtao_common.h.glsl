@@ -10,9 +10,9 @@ layout(std140, binding = BINDING_PARAMETERS) uniform GtaoParameters {
     vec2 uFullSize; // full-resolution extent, pixels
     float uRadius;  // world units
     float uBias;    // world units along the normal
-    int uSlices;
-    int uSteps; // per side
-    int uScale; // full-resolution pixels per AO texel
+    int uSlices; // the preset's, as the search was built for them (GTAO_SLICES, GTAO_STEPS, GTAO_SCALE)
+    int uSteps;  // per side
+    int uScale;  // full-resolution pixels per AO texel
     uint uFrame;
     int uOctahedral;
     vec2 uTexelScale; // viewPositionAtTexel's constants, from the projection and the extent
@@ -40,7 +40,5 @@ ivec2 aoSourcePixelAt(ivec2 q, ivec2 full, int scale) {
     ivec2 offset = scale == 2 ? ivec2(q.y & 1, q.x & 1) : ivec2(0);
     return min(q * scale + offset, full - 1);
 }
-
-ivec2 aoSourcePixel(ivec2 q, ivec2 full) { return aoSourcePixelAt(q, full, uScale); }
 
 #endif

@@ -7,6 +7,12 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
+// The preset's slices and steps a side and the resolution (full-resolution pixels per AO texel) are defines,
+// a program per preset and resolution, so that the loops unroll and their constants fold.
+const int kSlices = GTAO_SLICES;
+const int kSteps = GTAO_STEPS;
+const int kScale = GTAO_SCALE;
+
 layout(binding = 0, rg32ui) uniform writeonly uimage2D uRaw;
 
 const float kPi = 3.14159265358979;
@@ -82,8 +88,8 @@ float sideHorizon(vec2 centre, vec2 omega, float sign, vec3 origin, SliceFrame f
     float radius2 = uRadius * uRadius;
     float best = low;
     vec2 plane = vec2(0.0, -uRadius);
-    float stepScale = 1.0 / float(uSteps);
-    for (int s = 0; s < uSteps; ++s) {
+    const float stepScale = 1.0 / float(kSteps);
+    for (int s = 0; s < kSteps; ++s) {
         // Quadratic spacing: denser near the centre, where occluders subtend the largest angles.
         float t = (float(s) + jitter) * stepScale;
         float offset = mix(1.0, radiusPixels, t * t);
@@ -127,7 +133,7 @@ void main() {
     if (any(greaterThanEqual(q, size))) {
         return;
     }
-    ivec2 p = aoSourcePixel(q, ivec2(uFullSize));
+    ivec2 p = aoSourcePixelAt(q, ivec2(uFullSize), kScale);
     uvec2 centreTexel = texelFetch(uSurface, p, 0).xy;
     GtaoSurface surface = unpackSurface(centreTexel);
     if (!isSurface(surface.z)) {
@@ -152,8 +158,8 @@ void main() {
     float sliceNoise = interleavedGradientNoise(vec2(p), uFrame);
     float stepNoise = interleavedGradientNoise(vec2(p) + vec2(37.0, 11.0), uFrame + 17u);
     float visibility = 0.0;
-    for (int slice = 0; slice < uSlices; ++slice) {
-        float phi = (float(slice) + sliceNoise) * kPi / float(uSlices);
+    for (int slice = 0; slice < kSlices; ++slice) {
+        float phi = (float(slice) + sliceNoise) * kPi / float(kSlices);
         vec2 omega = vec2(cos(phi), sin(phi)); // screen direction, pixels (y up, as view space)
         vec3 direction = vec3(omega, 0.0);
         SliceFrame f = SliceFrame(normalize(direction - dot(direction, viewVec) * viewVec), viewVec);
@@ -172,6 +178,6 @@ void main() {
         float arcs = visibleArc(cos0, 1.0, cosN, sinN) + visibleArc(cos1, -1.0, cosN, sinN);
         visibility += projectedLength < 1e-4 ? 0.0 : projectedLength * arcs;
     }
-    visibility = clamp(visibility / float(uSlices), 0.0, 1.0);
+    visibility = clamp(visibility / float(kSlices), 0.0, 1.0);
     store(q, centreTexel, visibility);
 }
