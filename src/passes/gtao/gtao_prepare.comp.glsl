@@ -1,22 +1,13 @@
 // GTAO's surface texture (gtao_surface.h.glsl) from the linear depth and the host's normals: read once per
 // pixel here, then by every sample of the horizon search and every tap of the denoiser as one texel.
 #include "passes/gtao/gtao_common.h.glsl"
+#include "passes/gtao/gtao_normal.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uLinearDepth; // R32F, +inf: sky
 layout(binding = 1) uniform sampler2D uNormals;     // view space (or octahedral)
 layout(binding = 0, rg32ui) uniform writeonly uimage2D uSurfaceOut;
-
-// Unit vector -> octahedral [-1, 1]^2 (Cigolle et al. 2014), the inverse of octahedralDecode.
-vec2 octahedralEncode(vec3 n) {
-    n /= abs(n.x) + abs(n.y) + abs(n.z);
-    vec2 e = n.xy;
-    if (n.z < 0.0) {
-        e = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
-    }
-    return e;
-}
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -30,5 +21,5 @@ void main() {
     // A missing or broken normal: the surface faces the camera (the search then finds the horizons the
     // depths give, clamped to the hemisphere around the view vector).
     n = len2 > 1e-12 && !isinf(len2) ? n : vec3(0.0, 0.0, 1.0);
-    imageStore(uSurfaceOut, p, uvec4(floatBitsToUint(z), packSnorm2x16(octahedralEncode(n)), 0u, 0u));
+    imageStore(uSurfaceOut, p, uvec4(floatBitsToUint(z), packNormal10(n), 0u, 0u));
 }

@@ -1,14 +1,16 @@
 // GTAO's surface texture: one RG32UI texel per full-resolution pixel holding the linear view depth (x, its
-// float bits; +inf for the sky) and the view-space normal, octahedral-encoded as two snorm16 (y), so a
-// sample of the horizon search or the denoiser is one fetch, not a depth and a normal fetch.
+// float bits; +inf for the sky) and the view-space normal (y, packNormal10), so a sample of the horizon
+// search or the denoiser is one fetch, not a depth and a normal fetch.
 #ifndef PHOTOPIC_GTAO_SURFACE_H_GLSL
 #define PHOTOPIC_GTAO_SURFACE_H_GLSL
+
+#include "passes/gtao/gtao_normal.h.glsl"
 
 layout(binding = 0) uniform usampler2D uSurface;
 
 struct GtaoSurface {
     float z;   // linear view depth; +inf: sky
-    vec3 n;    // view-space normal, NOT normalized (length 1/sqrt(3) to 1): callers that need a unit
+    vec3 n;    // view-space normal, NOT normalized (its largest component +-511): callers that need a unit
                // normal normalize it; plane equations do not need to
 };
 
@@ -20,17 +22,15 @@ vec3 octahedralDirection(vec2 e) {
     return n;
 }
 
-GtaoSurface unpackSurface(uvec2 t) {
-    return GtaoSurface(uintBitsToFloat(t.x), octahedralDirection(unpackSnorm2x16(t.y)));
-}
+GtaoSurface unpackSurface(uvec2 t) { return GtaoSurface(uintBitsToFloat(t.x), unpackNormal10(t.y)); }
 
 GtaoSurface surfaceAt(ivec2 p) { return unpackSurface(texelFetch(uSurface, p, 0).xy); }
 
 // The horizon search's output texel (RG32UI): the surface it was computed at (the depth's bits, the normal's
 // octahedral pair as two snorm8, enough for the denoiser's weights) and the raw visibility as unorm16, so a
-// tap of the denoiser is one fetch. `octahedral` is the pair as the surface texture holds it (snorm16).
-uvec2 packAoTexel(uint depthBits, uint octahedral, float visibility) {
-    vec2 e = unpackSnorm2x16(octahedral);
+// tap of the denoiser is one fetch. `normal` as the surface texture holds it (packNormal10).
+uvec2 packAoTexel(uint depthBits, uint normalBits, float visibility) {
+    vec2 e = octahedralEncode(unpackNormal10(normalBits));
     uint normal = packSnorm4x8(vec4(e, 0.0, 0.0)) & 0xFFFFu;
     return uvec2(depthBits, normal | (packUnorm2x16(vec2(0.0, visibility)) & 0xFFFF0000u));
 }
