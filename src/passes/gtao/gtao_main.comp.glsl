@@ -70,13 +70,16 @@ vec2 planeHorizon(vec3 delta, vec3 sampleNormal, SliceFrame f, float sign) {
 // sphere's lower tangent plane, which rises in front of the sphere over the ground at its foot); the ground
 // continued to the foot of a wall passes (it lies on the ground the pixels there show).
 bool depthAgrees(vec3 point) {
-    vec4 clip = uProjection * vec4(point, 1.0);
+    // Clip x, y and w by the projection's rows, with the zeros viewPositionAtTexel's form assumes (no shear).
+    vec3 clip = vec3(uProjection[0][0] * point.x + uProjection[2][0] * point.z + uProjection[3][0],
+                     uProjection[1][1] * point.y + uProjection[2][1] * point.z + uProjection[3][1],
+                     uProjection[2][3] * point.z + uProjection[3][3]);
     ivec2 full = ivec2(uFullSize);
-    ivec2 texel = ivec2(floor((clip.xy / clip.w * 0.5 + 0.5) * uFullSize));
-    bool unknown = !(clip.w > 0.0) || any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, full));
+    ivec2 texel = ivec2(floor((clip.xy / clip.z * 0.5 + 0.5) * uFullSize));
+    bool unknown = !(clip.z > 0.0) || any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, full));
     GtaoSurface s = surfaceAt(clamp(texel, ivec2(0), full - 1));
     vec3 visible = viewPositionAtTexel(texel, s.z);
-    return unknown || (isSurface(s.z) && dot(point - visible, normalize(s.n)) <= 0.05 * uRadius);
+    return unknown || (isSurface(s.z) && dot(point - visible, s.n) <= 0.05 * uRadius * length(s.n));
 }
 
 // The highest horizon cosine on one side of a slice (sign +1: along +omega), starting from `low` (the

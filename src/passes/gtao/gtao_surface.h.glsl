@@ -14,9 +14,10 @@ struct GtaoSurface {
                // normal normalize it; plane equations do not need to
 };
 
-// Octahedral decode without the normalization (the branchless form of octahedralDecode's fold).
-vec3 octahedralDirection(vec2 e) {
-    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+// Octahedral decode without the normalization (the branchless form of octahedralDecode's fold), of a pair
+// scaled so that `one` stands for 1: the direction comes out `one` times longer.
+vec3 octahedralDirection(vec2 e, float one) {
+    vec3 n = vec3(e, one - abs(e.x) - abs(e.y));
     float t = max(-n.z, 0.0);
     n.xy += vec2(n.x >= 0.0 ? -t : t, n.y >= 0.0 ? -t : t);
     return n;
@@ -37,13 +38,15 @@ uvec2 packAoTexel(uint depthBits, uint normalBits, float visibility) {
 
 struct AoTexel {
     float z;          // +inf: sky
-    vec3 n;           // not normalized
+    vec3 n;           // not normalized (127 times the octahedral direction)
     float visibility; // raw, [0, 1]
 };
 
 AoTexel unpackAoTexel(uvec2 t) {
-    vec4 e = unpackSnorm4x8(t.y);
-    return AoTexel(uintBitsToFloat(t.x), octahedralDirection(e.xy), unpackUnorm2x16(t.y).y);
+    // The snorm8 pair as integers: the direction comes out 127 times longer, which the denoiser's weights
+    // (a cosine from a ratio of dot products) do not see.
+    vec2 e = vec2(ivec2(uvec2(t.y << 24, t.y << 16)) >> 24);
+    return AoTexel(uintBitsToFloat(t.x), octahedralDirection(e, 127.0), unpackUnorm2x16(t.y).y);
 }
 
 bool isSurface(float z) { return !isinf(z) && z > 0.0; }
