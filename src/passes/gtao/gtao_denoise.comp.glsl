@@ -60,7 +60,8 @@ void main() {
             float cosine2 = along * along / dot(neighbour.n, neighbour.n);
             // The Gaussian is in full-resolution pixels: at half resolution it spans the same area of the
             // image, not twice as much.
-            vec2 d = vec2(source - p);
+            // At full resolution an inside tap's source is q itself, (dx, dy) from p: a constant.
+            vec2 d = kScale == 1 ? vec2(dx, dy) : vec2(source - p);
             float w = exp(-0.5 * dot(d, d) / 2.25 - plane * plane - distance2) * (cosine2 * cosine2);
             w = inside && isSurface(neighbour.z) ? w : 0.0;
             sum += w * neighbour.visibility;
