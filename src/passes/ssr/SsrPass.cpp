@@ -104,8 +104,7 @@ void SsrHistoryPass::publishState(FrameResources& resources) const {
 }
 
 SsrPass::SsrPass()
-    : mResolve(makeComputeProgram("passes/ssr/ssr_resolve.comp.glsl", bindingDefines()))
-    , mParameters("ssr parameters") {}
+    : mParameters("ssr parameters") {}
 
 std::span<const ResourceUse> SsrPass::uses() const {
     static constexpr ResourceUse kUses[] = {
@@ -234,16 +233,29 @@ void SsrPass::resolve(const FrameContext& ctx, const FrameResources& resources, 
         ctx.timers, "ssr resolve",
         double(e.width) * e.height *
             (16.0 + 8.0 + (history ? 8.0 : 0.0) + (motion ? 4.0 : 0.0) + (material ? 8.0 : 0.0) + 16.0));
-    mResolve.use();
-    bind(mResolveDepth, depth);
-    bind(mResolveScene, scene);
-    bind(mResolveHistory, history ? *history : scene);
-    bind(mResolveHits, *t.hits);
-    bind(mResolveMotion, motion ? *motion : depth);
-    bind(mResolveMaterial, material ? *material : depth);
-    bind(mResolveOutScene, *t.sceneOut, ImageAccess::Write);
-    bind(mResolveOutReflections, *t.reflections, ImageAccess::Write);
-    dispatch(mResolve, e, Barrier::None);
+    const ResolveProgram& r = resolveProgram(motion != nullptr, history != nullptr, material != nullptr);
+    r.program.use();
+    bind(r.depth, depth);
+    bind(r.scene, scene);
+    bind(r.history, history ? *history : scene);
+    bind(r.hits, *t.hits);
+    bind(r.motion, motion ? *motion : depth);
+    bind(r.material, material ? *material : depth);
+    bind(r.outScene, *t.sceneOut, ImageAccess::Write);
+    bind(r.outReflections, *t.reflections, ImageAccess::Write);
+    dispatch(r.program, e, Barrier::None);
+}
+
+const SsrPass::ResolveProgram& SsrPass::resolveProgram(bool motion, bool history, bool material) {
+    std::optional<ResolveProgram>& slot =
+        mResolves[(motion ? 1u : 0u) | (history ? 2u : 0u) | (material ? 4u : 0u)];
+    if (!slot) {
+        slot.emplace(makeComputeProgram("passes/ssr/ssr_resolve.comp.glsl",
+                                        bindingDefines({{"SSR_MOTION", motion ? "1" : "0"},
+                                                        {"SSR_HISTORY", history ? "1" : "0"},
+                                                        {"SSR_MATERIAL", material ? "1" : "0"}})));
+    }
+    return *slot;
 }
 
 void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {

@@ -145,6 +145,22 @@ private:
                                            Extent traceExtent) const;
     /// Binds the inputs a trace program reads, and its output.
     static void bindTrace(const TraceProgram& trace, const FrameResources& resources, const Texture& hits);
+    /// The resolve program for the inputs present (SSR_MOTION, SSR_HISTORY, SSR_MATERIAL), and its slots.
+    struct ResolveProgram {
+        explicit ResolveProgram(Program p)
+            : program(std::move(p)) {}
+        Program program;
+        SamplerSlot depth = program.sampler("uLinearDepth");
+        SamplerSlot scene = program.sampler("uScene");
+        SamplerSlot history = program.sampler("uHistory");
+        SamplerSlot hits = program.sampler("uHits");
+        SamplerSlot motion = program.sampler("uMotion");
+        SamplerSlot material = program.sampler("uMaterial");
+        ImageSlot outScene = program.image("uOutScene");
+        ImageSlot outReflections = program.image("uOutReflections");
+    };
+    /// Built on first use.
+    const ResolveProgram& resolveProgram(bool motion, bool history, bool material);
     /// SsrParameters::normals of this frame.
     [[nodiscard]] static int normalsSource(const FrameContext& ctx, const FrameResources& resources);
     /// The trace program (REFINE or not) for the normals' source (SsrParameters::normals), built on first
@@ -158,15 +174,8 @@ private:
     /// By the normals' source (0: reconstructed, 1: view xyz, 2: octahedral); [1] the REFINE build (half
     /// resolution: each pixel's hit from the blocks' hits).
     std::array<std::array<std::optional<TraceProgram>, 3>, 2> mTraces;
-    Program mResolve;
-    SamplerSlot mResolveDepth = mResolve.sampler("uLinearDepth");
-    SamplerSlot mResolveScene = mResolve.sampler("uScene");
-    SamplerSlot mResolveHistory = mResolve.sampler("uHistory");
-    SamplerSlot mResolveHits = mResolve.sampler("uHits");
-    SamplerSlot mResolveMotion = mResolve.sampler("uMotion");
-    SamplerSlot mResolveMaterial = mResolve.sampler("uMaterial");
-    ImageSlot mResolveOutScene = mResolve.image("uOutScene");
-    ImageSlot mResolveOutReflections = mResolve.image("uOutReflections");
+    /// By the inputs present: bit 0 motion, bit 1 history, bit 2 material.
+    std::array<std::optional<ResolveProgram>, 8> mResolves;
     ParameterBlock<SsrParameters> mParameters;
 };
 

@@ -9,12 +9,18 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
+// Which inputs the frame has are defines, a program per combination: a SIMD implementation that runs both
+// sides of a branch does not pay for the reprojection when there is motion, or for a history it cannot use.
+const bool kHasMotion = SSR_MOTION != 0;
+const bool kHasHistory = SSR_HISTORY != 0;
+const bool kHasMaterial = SSR_MATERIAL != 0;
+
 layout(binding = 0) uniform sampler2D uLinearDepth;
 layout(binding = 1) uniform sampler2D uScene;    // this frame's scene colour, before reflections
-layout(binding = 2) uniform sampler2D uHistory;  // last frame's image (mip chain), when uHasHistory != 0
+layout(binding = 2) uniform sampler2D uHistory;  // last frame's image (mip chain), with SSR_HISTORY
 layout(binding = 3) uniform sampler2D uHits;     // ssr_trace's output
-layout(binding = 4) uniform sampler2D uMotion;   // when uHasMotion != 0
-layout(binding = 5) uniform sampler2D uMaterial; // when uHasMaterial != 0
+layout(binding = 4) uniform sampler2D uMotion;   // with SSR_MOTION
+layout(binding = 5) uniform sampler2D uMaterial; // with SSR_MATERIAL
 layout(binding = 0, rgba16f) uniform writeonly image2D uOutScene;
 layout(binding = 1, rgba16f) uniform writeonly image2D uOutReflections;
 
@@ -24,7 +30,7 @@ vec3 finiteColour(vec3 c) { return sanitize(c); }
 // Where the reflected point at window position `window` was last frame, in UV; < 0 when unknown.
 vec2 previousUv(vec2 window, ivec2 hitPixel) {
     vec2 uv = window / uFullSize;
-    if (uHasMotion != 0) {
+    if (kHasMotion) {
         vec2 m = texelFetch(uMotion, hitPixel, 0).rg;
         return all(lessThan(abs(m), vec2(1e4))) ? uv - m : vec2(-1.0); // NaN fails too
     }
@@ -41,7 +47,7 @@ vec3 reflectedRadiance(vec4 hit) {
     // ray's exact crossing would blend in the neighbours, across a silhouette or a texture edge).
     ivec2 hitPixel = clamp(ivec2(hit.xy), ivec2(0), ivec2(uFullSize) - 1);
     vec2 window = vec2(hitPixel) + 0.5;
-    if (uHasHistory != 0) {
+    if (kHasHistory) {
         vec2 uv = previousUv(window, hitPixel);
         if (all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)))) {
             // The cone's diameter in pixels picks the level whose texels cover it.
@@ -67,7 +73,7 @@ void main() {
         confidence = 0.0;
     }
     vec3 f0 = vec3(0.04);
-    if (uHasMaterial != 0) {
+    if (kHasMaterial) {
         f0 = clamp(sanitize(texelFetch(uMaterial, p, 0).rgb), 0.0, 1.0);
     }
     vec3 colour = finiteColour(scene + uIntensity * confidence * f0 * radiance);
