@@ -30,8 +30,10 @@ ContactShadowsPass::ContactShadowsPass()
     : mSurface(
           makeComputeProgram("passes/contactshadows/contact_shadows_surface.comp.glsl", bindingDefines()))
     , mMarch(makeComputeProgram("passes/contactshadows/contact_shadows_march.comp.glsl", bindingDefines()))
-    , mResolve(
-          makeComputeProgram("passes/contactshadows/contact_shadows_resolve.comp.glsl", bindingDefines()))
+    , mResolve{ResolveProgram(makeComputeProgram("passes/contactshadows/contact_shadows_resolve.comp.glsl",
+                                                 bindingDefines({{"CONTACT_SHADOWS_MOTION", "0"}}))),
+               ResolveProgram(makeComputeProgram("passes/contactshadows/contact_shadows_resolve.comp.glsl",
+                                                 bindingDefines({{"CONTACT_SHADOWS_MOTION", "1"}})))}
     , mParameters("contact shadow parameters")
     , mNoSteps({.extent = {1, 1}, .format = GL_R8, .debugName = "contact shadow steps (unused)"})
     , mNoObjectIds({.extent = {1, 1},
@@ -150,13 +152,14 @@ void ContactShadowsPass::resolve(const FrameContext& ctx, const FrameResources& 
     // output.
     ScopedGpuTimer timer(ctx.timers, "contact shadows resolve",
                          double(e.width) * e.height * (2.0 + 4.0 + 4.0 + 2.0 + 2.0));
-    mResolve.use();
-    bind(mResolveDepth, depth);
-    bind(mResolveRaw, *t.raw);
-    bind(mResolveHistory, mHistory.previous() ? *mHistory.previous() : *t.raw);
-    bind(mResolveMotion, motion ? *motion : depth);
-    bind(mResolveOut, mHistory.current(), ImageAccess::Write);
-    dispatch(mResolve, e, Barrier::None);
+    const ResolveProgram& r = mResolve[motion ? 1 : 0];
+    r.program.use();
+    bind(r.depth, depth);
+    bind(r.raw, *t.raw);
+    bind(r.history, mHistory.previous() ? *mHistory.previous() : *t.raw);
+    bind(r.motion, motion ? *motion : depth);
+    bind(r.out, mHistory.current(), ImageAccess::Write);
+    dispatch(r.program, e, Barrier::None);
 }
 
 void ContactShadowsPass::execute(FrameContext& ctx, FrameResources& resources) {

@@ -12,6 +12,7 @@
 #include "passes/FramePass.h"
 #include "passes/HistoryTexture.h"
 
+#include <array>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -89,7 +90,19 @@ private:
 
     Program mSurface;
     Program mMarch;
-    Program mResolve;
+    /// The resolve with motion vectors ([1], CONTACT_SHADOWS_MOTION) or the camera's reprojection ([0]): a
+    /// define, so a SIMD implementation does not run both.
+    struct ResolveProgram {
+        explicit ResolveProgram(Program p)
+            : program(std::move(p)) {}
+        Program program;
+        SamplerSlot depth = program.sampler("uLinearDepth");
+        SamplerSlot raw = program.sampler("uRaw");
+        SamplerSlot history = program.sampler("uHistory");
+        SamplerSlot motion = program.sampler("uMotion");
+        ImageSlot out = program.image("uOut");
+    };
+    std::array<ResolveProgram, 2> mResolve;
     SamplerSlot mSurfaceDepth = mSurface.sampler("uLinearDepth");
     SamplerSlot mSurfaceNormals = mSurface.sampler("uNormalTexture");
     SamplerSlot mSurfaceObjectId = mSurface.sampler("uObjectId");
@@ -98,11 +111,6 @@ private:
     SamplerSlot mMarchSurface = mMarch.sampler("uSurface");
     ImageSlot mMarchRaw = mMarch.image("uRaw");
     ImageSlot mMarchSteps = mMarch.image("uStepsTaken");
-    SamplerSlot mResolveDepth = mResolve.sampler("uLinearDepth");
-    SamplerSlot mResolveRaw = mResolve.sampler("uRaw");
-    SamplerSlot mResolveHistory = mResolve.sampler("uHistory");
-    SamplerSlot mResolveMotion = mResolve.sampler("uMotion");
-    ImageSlot mResolveOut = mResolve.image("uOut");
     ParameterBlock<ContactShadowParameters> mParameters;
     HistoryTexture mHistory;  ///< the accumulated visibility, also the stage's output
     Texture mNoSteps;         ///< bound to the steps image unit when no debug view asks for them

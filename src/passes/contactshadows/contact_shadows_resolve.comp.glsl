@@ -10,7 +10,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D uLinearDepth; // R32F, +inf: sky
 layout(binding = 3) uniform sampler2D uRaw;         // this frame's visibility
 layout(binding = 4) uniform sampler2D uHistory;     // last frame's accumulated visibility (bilinear)
-layout(binding = 5) uniform sampler2D uMotion;      // UV, current - previous, when uHasMotion != 0
+layout(binding = 5) uniform sampler2D uMotion;      // UV, current - previous (CONTACT_SHADOWS_MOTION)
 layout(binding = 0, r16f) uniform writeonly image2D uOut;
 
 bool finite2(vec2 v) { return !any(isnan(v)) && !any(isinf(v)); }
@@ -18,7 +18,7 @@ bool finite2(vec2 v) { return !any(isnan(v)) && !any(isinf(v)); }
 // Where this pixel's surface was in last frame's image (UV); false when that is unknown or off screen.
 bool previousUv(ivec2 p, out vec2 prevUv) {
     vec2 uv = (vec2(p) + 0.5) / uFullSize;
-    if (uHasMotion != 0) {
+    if (CONTACT_SHADOWS_MOTION != 0) { // a define: a program with motion vectors and one without
         vec2 motion = texelFetch(uMotion, p, 0).rg;
         if (!finite2(motion)) {
             return false;

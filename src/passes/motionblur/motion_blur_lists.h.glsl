@@ -19,9 +19,9 @@ layout(std430, binding = BINDING_TILE_LIST) MOTION_BLUR_LISTS_ACCESS buffer Moti
     uint listTiles[]; // [0, tiles): the moving tiles (y * tiles a row + x); [tiles, 2 tiles): the still ones
 };
 
-// A still tile's neighbourhood velocity is under this many pixels. Below the gather's half pixel by more than
-// the RG16F neighbour-max texture's rounding, so a tile listed still is one whose pixels the gather would copy;
-// the moving list's pixels still test the rounded value themselves.
+// A still tile's neighbourhood velocity is under this many pixels. Below the gather's half pixel by more
+// than the RG16F neighbour-max texture's rounding, so a tile listed still is one whose pixels the gather
+// would copy; the moving list's pixels still test the rounded value themselves.
 const float kStillBelow = 0.49;
 
 #endif
