@@ -13,8 +13,7 @@ constexpr float kStillPixels = 0.25f;
 } // namespace
 
 TaaPass::TaaPass()
-    : mProgram(makeComputeProgram("passes/taa/taa_resolve.comp.glsl", bindingDefines()))
-    , mParameters("taa parameters")
+    : mParameters("taa parameters")
     , mNoDebug({.extent = {1, 1}, .format = GL_RG8, .debugName = "taa debug (unused)"}) {}
 
 std::span<const ResourceUse> TaaPass::uses() const {
@@ -60,19 +59,33 @@ TaaParameters TaaPass::parameters(const FrameContext& ctx, const FrameResources&
             .padding = 0};
 }
 
-void TaaPass::bindInputs(const FrameResources& resources, const Texture* debugTarget) const {
+const TaaPass::ResolveProgram& TaaPass::resolveProgram(const TaaParameters& p) {
+    std::optional<ResolveProgram>& slot =
+        mPrograms[std::size_t(p.bilinearHistory != 0) | (std::size_t(p.hasDepth != 0) << 1) |
+                  (std::size_t(p.hasCamera != 0) << 2)];
+    if (!slot) {
+        slot.emplace(makeComputeProgram("passes/taa/taa_resolve.comp.glsl",
+                                        bindingDefines({{"TAA_BILINEAR", std::to_string(p.bilinearHistory)},
+                                                        {"TAA_DEPTH", std::to_string(p.hasDepth)},
+                                                        {"TAA_CAMERA", std::to_string(p.hasCamera)}})));
+    }
+    return *slot;
+}
+
+void TaaPass::bindInputs(const ResolveProgram& program, const FrameResources& resources,
+                         const Texture* debugTarget) const {
     const Texture* depth = resources.texture(Resource::LinearDepth);
     const Texture& motion = *resources.texture(Resource::Motion);
     bindExposureStateForReading(*resources.buffer(Resource::ExposureState));
-    bind(mCurrent, *resources.texture(Resource::SceneColor));
+    bind(program.current, *resources.texture(Resource::SceneColor));
     // Without a history the shader reads none; a bound texture keeps every sampler complete.
-    bind(mHistorySlot, mHistory.previous() ? *mHistory.previous() : mHistory.current());
-    bind(mMotion, motion);
-    bind(mDepth, depth ? *depth : motion);
-    bind(mHistoryAuxSlot, mHistoryAux.previous() ? *mHistoryAux.previous() : mHistoryAux.current());
-    bind(mOutputAux, mHistoryAux.current(), ImageAccess::Write);
-    bind(mOutput, mHistory.current(), ImageAccess::Write);
-    bind(mDebug, debugTarget ? *debugTarget : mNoDebug, ImageAccess::Write);
+    bind(program.history, mHistory.previous() ? *mHistory.previous() : mHistory.current());
+    bind(program.motion, motion);
+    bind(program.depth, depth ? *depth : motion);
+    bind(program.historyAux, mHistoryAux.previous() ? *mHistoryAux.previous() : mHistoryAux.current());
+    bind(program.outputAux, mHistoryAux.current(), ImageAccess::Write);
+    bind(program.output, mHistory.current(), ImageAccess::Write);
+    bind(program.debug, debugTarget ? *debugTarget : mNoDebug, ImageAccess::Write);
 }
 
 void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
@@ -87,11 +100,13 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
         double(e.width) * e.height *
         (8.0 /*current*/ + 12.0 /*history*/ + 4.0 /*motion*/ + (depth ? 4.0 : 0.0) + 12.0 /*output*/);
     ScopedGpuTimer timer(ctx.timers, "taa", bytes);
-    mParameters.update(parameters(ctx, resources, debug != nullptr));
+    const TaaParameters p = parameters(ctx, resources, debug != nullptr);
+    mParameters.update(p);
     mParameters.bind(kBindingParameters);
-    mProgram.use();
-    bindInputs(resources, debug);
-    dispatch(mProgram, e, Barrier::None);
+    const ResolveProgram& program = resolveProgram(p);
+    program.program.use();
+    bindInputs(program, resources, debug);
+    dispatch(program.program, e, Barrier::None);
     resources.bind(Resource::SceneColor, mHistory.current());
     if (debug) {
         resources.bind(Resource::TaaDebug, *debug);

@@ -7,8 +7,10 @@
 #include "passes/FramePass.h"
 #include "passes/HistoryTexture.h"
 
+#include <array>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
+#include <optional>
 
 namespace photopic {
 
@@ -53,17 +55,28 @@ private:
                                            bool debug) const;
     /// The debug target when a TAA debug view asks for one, else null.
     [[nodiscard]] static const Texture* debugTarget(const FrameContext& ctx, FrameResources& resources);
-    void bindInputs(const FrameResources& resources, const Texture* debugTarget) const;
+    /// The resolve for a history filter and the inputs present (TAA_BILINEAR, TAA_DEPTH, TAA_CAMERA), and
+    /// its slots.
+    struct ResolveProgram {
+        explicit ResolveProgram(Program p)
+            : program(std::move(p)) {}
+        Program program;
+        SamplerSlot current = program.sampler("uCurrent");
+        SamplerSlot history = program.sampler("uHistory");
+        SamplerSlot historyAux = program.sampler("uHistoryAux");
+        SamplerSlot motion = program.sampler("uMotion");
+        SamplerSlot depth = program.sampler("uDepth");
+        ImageSlot output = program.image("uOutput");
+        ImageSlot outputAux = program.image("uOutputAux");
+        ImageSlot debug = program.image("uDebug");
+    };
+    /// Built on first use.
+    const ResolveProgram& resolveProgram(const TaaParameters& p);
+    void bindInputs(const ResolveProgram& program, const FrameResources& resources,
+                    const Texture* debugTarget) const;
 
-    Program mProgram;
-    SamplerSlot mCurrent = mProgram.sampler("uCurrent");
-    SamplerSlot mHistorySlot = mProgram.sampler("uHistory");
-    SamplerSlot mHistoryAuxSlot = mProgram.sampler("uHistoryAux");
-    SamplerSlot mMotion = mProgram.sampler("uMotion");
-    SamplerSlot mDepth = mProgram.sampler("uDepth");
-    ImageSlot mOutput = mProgram.image("uOutput");
-    ImageSlot mOutputAux = mProgram.image("uOutputAux");
-    ImageSlot mDebug = mProgram.image("uDebug");
+    /// By bilinear history (bit 0), depth (bit 1) and camera (bit 2).
+    std::array<std::optional<ResolveProgram>, 8> mPrograms;
     ParameterBlock<TaaParameters> mParameters;
     HistoryTexture mHistory;    ///< the resolved colour
     HistoryTexture mHistoryAux; ///< per pixel: linear depth and stability (how long it has held still)

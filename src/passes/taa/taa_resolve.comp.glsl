@@ -14,19 +14,26 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
+// The history filter and whether the frame has depth and a camera are defines, a program per combination:
+// a SIMD implementation that runs every side of a branch does not pay for both filters or for tests it
+// cannot make.
+const bool kBilinearHistory = TAA_BILINEAR != 0;
+const bool kHasDepth = TAA_DEPTH != 0;
+const bool kHasCamera = TAA_CAMERA != 0;
+
 layout(binding = 0) uniform sampler2D uCurrent; // sceneColor: sanitised HDR, this frame's jittered samples
 layout(binding = 1) uniform sampler2D uHistory; // last frame's resolve
 // Last frame's per pixel: r = the farthest linear depth of its 3 x 3 neighbourhood, g = stability.
 layout(binding = 4) uniform sampler2D uHistoryAux;
 layout(binding = 2) uniform sampler2D uMotion;  // UV, current - previous
-layout(binding = 3) uniform sampler2D uDepth;   // linear view depth (when uHasDepth)
+layout(binding = 3) uniform sampler2D uDepth;   // linear view depth (with TAA_DEPTH)
 layout(binding = 0, rgba16f) writeonly uniform image2D uOutput;
 layout(binding = 2, rg16f) writeonly uniform image2D uOutputAux;
 layout(binding = 1, rg8) writeonly uniform image2D uDebug; // r: history weight, g: disoccluded
 
 // Mirrors photopic::TaaParameters (passes/taa/TaaPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform TaaParameters {
-    mat4 uInvProjection; // this frame's, unjittered (when uHasCamera)
+    mat4 uInvProjection; // this frame's, unjittered (with TAA_CAMERA)
     mat4 uInvView;
     mat4 uPrevViewProjection;
     float uBlend;
@@ -106,7 +113,7 @@ void main() {
     }
     float exposure = max(gExposure.exposure, 1e-8);
     vec3 current = texelFetch(uCurrent, p, 0).rgb;
-    float depth = uHasDepth != 0 ? texelFetch(uDepth, p, 0).r : 0.0;
+    float depth = kHasDepth ? texelFetch(uDepth, p, 0).r : 0.0;
 
     // Neighbourhood statistics in working YCoCg, and the closest surface for the motion of edges.
     vec3 m1 = vec3(0.0), m2 = vec3(0.0);
@@ -125,7 +132,7 @@ void main() {
             lo = min(lo, c);
             hi = max(hi, c);
             fastest = max(fastest, length(finiteMotion(texelFetch(uMotion, q, 0).rg) * vec2(size)));
-            if (uHasDepth != 0) {
+            if (kHasDepth) {
                 float d = texelFetch(uDepth, q, 0).r;
                 if (d < closestDepth) {
                     closestDepth = d;
@@ -149,7 +156,7 @@ void main() {
     // moved away. With depth and the camera, the point's depth last frame is predicted and compared with the
     // depth the history stored.
     bool disoccluded = false;
-    if (history && uHasDepth != 0 && uHasCamera != 0 && !isinf(depth)) {
+    if (history && kHasDepth && kHasCamera && !isinf(depth)) {
         vec4 near = uInvProjection * vec4(uv * 2.0 - 1.0, -1.0, 1.0);
         vec3 ray = near.xyz / near.w;
         vec4 world = uInvView * vec4(ray * (depth / -ray.z), 1.0);
@@ -171,7 +178,7 @@ void main() {
     if (!history || disoccluded) {
         result = vec4(current, 1.0); // exactly the current sample: a cut frame equals the no-history frame
     } else {
-        vec3 fetched = uBilinearHistory != 0 ? textureLod(uHistory, prevUv, 0.0).rgb
+        vec3 fetched = kBilinearHistory ? textureLod(uHistory, prevUv, 0.0).rgb
                                              : sampleHistoryCatmullRom(prevUv, vec2(size));
         vec3 h = rgbToYCoCg(toWorking(sanitize(fetched), exposure));
         vec3 c = rgbToYCoCg(toWorking(current, exposure));
@@ -188,7 +195,7 @@ void main() {
         ivec2 hp = clamp(ivec2(prevUv * vec2(size)), ivec2(0), size - 1);
         float previousStability = texelFetch(uHistoryAux, hp, 0).g;
         stability = fastest < uStillPixels ? min(previousStability + 1.0 / kStableFrames, 1.0) : 0.0;
-        float clipStrength = (uHasDepth != 0 && uHasCamera != 0) ? 1.0 - previousStability : 1.0;
+        float clipStrength = (kHasDepth && kHasCamera) ? 1.0 - previousStability : 1.0;
         h = mix(h, clipToBox(boxMin, boxMax, h), clipStrength);
         weight = uBlend;
         if (uAdaptive != 0) {
