@@ -8,9 +8,10 @@
 // tests/gl/test_bloom_roundness.cpp (the glow of a point in every mode and preset).
 
 #include "core/Bloom.h"
-#include "passes/bloom/BloomSettings.h"
 #include "gl/ShaderLibrary.h"
 #include "passes/FramePass.h"
+#include "passes/ProgramVariants.h"
+#include "passes/bloom/BloomSettings.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -81,10 +82,8 @@ private:
     void blurRows(const Inputs& in, int level);
     void upsample(const Inputs& in, int level);
     /// One program of the chain: it reads its source and writes its target (bloom_step.h.glsl's readers).
-    struct Step {
-        explicit Step(Program p)
-            : program(std::move(p)) {}
-        Program program;
+    struct Step : ProgramSlots {
+        using ProgramSlots::ProgramSlots;
         SamplerSlot source = program.sampler("uSource");
         ImageSlot target = program.image("uTarget");
     };

@@ -11,6 +11,7 @@
 
 #include "passes/FramePass.h"
 #include "passes/HistoryTexture.h"
+#include "passes/ProgramVariants.h"
 
 #include <array>
 #include <cstdint>
@@ -92,10 +93,8 @@ private:
     Program mMarch;
     /// The resolve with motion vectors ([1], CONTACT_SHADOWS_MOTION) or the camera's reprojection ([0]): a
     /// define, so a SIMD implementation does not run both.
-    struct ResolveProgram {
-        explicit ResolveProgram(Program p)
-            : program(std::move(p)) {}
-        Program program;
+    struct ResolveProgram : ProgramSlots {
+        using ProgramSlots::ProgramSlots;
         SamplerSlot depth = program.sampler("uLinearDepth");
         SamplerSlot raw = program.sampler("uRaw");
         SamplerSlot history = program.sampler("uHistory");

@@ -102,15 +102,11 @@ void GtaoPass::prepare(FrameResources& resources, const Texture& surface, GpuTim
 }
 
 const GtaoPass::SearchProgram& GtaoPass::searchProgram(GtaoQuality quality, int scale) {
-    std::optional<SearchProgram>& slot = mSearch[std::size_t(quality)][std::size_t(scale - 1)];
-    if (!slot) {
-        const glm::ivec2 tier = slicesAndSteps(quality);
-        slot.emplace(makeComputeProgram("passes/gtao/gtao_main.comp.glsl",
-                                        bindingDefines({{"GTAO_SLICES", std::to_string(tier.x)},
-                                                        {"GTAO_STEPS", std::to_string(tier.y)},
-                                                        {"GTAO_SCALE", std::to_string(scale)}})));
-    }
-    return *slot;
+    const glm::ivec2 tier = slicesAndSteps(quality);
+    return mSearch.get(std::size_t(quality) * 2 + std::size_t(scale - 1),
+                       {{"GTAO_SLICES", std::to_string(tier.x)},
+                        {"GTAO_STEPS", std::to_string(tier.y)},
+                        {"GTAO_SCALE", std::to_string(scale)}});
 }
 
 void GtaoPass::search(const Texture& surface, const Texture& raw, GtaoQuality quality, int scale,

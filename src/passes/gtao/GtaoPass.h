@@ -10,12 +10,11 @@
 // Tests: tests/gl/test_gtao.cpp, tests/e2e/blender.sh (against Cycles' AO).
 
 #include "passes/FramePass.h"
+#include "passes/ProgramVariants.h"
 
-#include <array>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
-#include <optional>
 
 namespace photopic {
 
@@ -76,10 +75,8 @@ private:
                  GpuTimers* timers);
 
     /// The horizon search for one preset and resolution (GTAO_SLICES, GTAO_STEPS, GTAO_SCALE), and its slots.
-    struct SearchProgram {
-        explicit SearchProgram(Program p)
-            : program(std::move(p)) {}
-        Program program;
+    struct SearchProgram : ProgramSlots {
+        using ProgramSlots::ProgramSlots;
         SamplerSlot surface = program.sampler("uSurface");
         ImageSlot raw = program.image("uRaw");
     };
@@ -87,10 +84,8 @@ private:
     const SearchProgram& searchProgram(GtaoQuality quality, int scale);
 
     /// The denoiser for one resolution (GTAO_SCALE: full-resolution pixels per AO texel), and its slots.
-    struct DenoiseProgram {
-        explicit DenoiseProgram(Program p)
-            : program(std::move(p)) {}
-        Program program;
+    struct DenoiseProgram : ProgramSlots {
+        using ProgramSlots::ProgramSlots;
         SamplerSlot surface = program.sampler("uSurface");
         SamplerSlot raw = program.sampler("uRaw");
         ImageSlot out = program.image("uVisibility");
@@ -98,7 +93,8 @@ private:
 
     Stage mStage;
     Program mPrepare;
-    std::array<std::array<std::optional<SearchProgram>, 2>, 4> mSearch; ///< by GtaoQuality, then scale - 1
+    ProgramVariants<SearchProgram, 8> mSearch{
+        "passes/gtao/gtao_main.comp.glsl"}; ///< by quality x 2 + scale - 1
     DenoiseProgram mDenoiseFull;
     DenoiseProgram mDenoiseHalf;
     ParameterBlock<GtaoParameters> mParameters;

@@ -10,6 +10,7 @@
 // Tests: tests/gl/test_motion_blur.cpp, tests/e2e/mblur.sh, tests/e2e/blender.sh.
 
 #include "passes/FramePass.h"
+#include "passes/ProgramVariants.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -87,10 +88,8 @@ private:
 
     /// A gather program (the gather, or with MOTION_BLUR_STILL the still tiles' copy and debug view) and its
     /// slots.
-    struct GatherProgram {
-        explicit GatherProgram(Program p)
-            : program(std::move(p)) {}
-        Program program;
+    struct GatherProgram : ProgramSlots {
+        using ProgramSlots::ProgramSlots;
         SamplerSlot scene = program.sampler("uScene");
         SamplerSlot velocity = program.sampler("uVelocity");
         SamplerSlot depth = program.sampler("uDepth");

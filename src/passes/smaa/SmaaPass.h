@@ -15,6 +15,7 @@
 
 #include "passes/DisplayProgram.h"
 #include "passes/FramePass.h"
+#include "passes/ProgramVariants.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -79,10 +80,8 @@ public:
 
 private:
     /// An edge detection program and its slots (uLinearDepth inactive without SMAA_DEPTH).
-    struct EdgesProgram {
-        explicit EdgesProgram(Program p)
-            : program(std::move(p)) {}
-        Program program;
+    struct EdgesProgram : ProgramSlots {
+        using ProgramSlots::ProgramSlots;
         SamplerSlot color = program.sampler("uColor");
         SamplerSlot depth = program.sampler("uLinearDepth");
         ImageSlot edges = program.image("uEdges");

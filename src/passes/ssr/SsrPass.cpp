@@ -174,15 +174,11 @@ SsrParameters SsrPass::parameters(const FrameContext& ctx, const FrameResources&
 }
 
 const SsrPass::TraceProgram& SsrPass::traceProgram(int normals, bool refine) {
-    std::optional<TraceProgram>& slot = mTraces[refine ? 1 : 0][std::size_t(normals)];
-    if (!slot) {
-        ShaderDefines defines{{"SSR_NORMALS", std::to_string(normals)}};
-        if (refine) {
-            defines.emplace_back("REFINE", "1");
-        }
-        slot.emplace(makeComputeProgram("passes/ssr/ssr_trace.comp.glsl", bindingDefines(defines)));
+    ShaderDefines defines{{"SSR_NORMALS", std::to_string(normals)}};
+    if (refine) {
+        defines.emplace_back("REFINE", "1");
     }
-    return *slot;
+    return mTraces.get(std::size_t(refine ? 3 : 0) + std::size_t(normals), defines);
 }
 
 void SsrPass::bindTrace(const TraceProgram& trace, const FrameResources& resources, const Texture& hits) {
@@ -247,15 +243,10 @@ void SsrPass::resolve(const FrameContext& ctx, const FrameResources& resources, 
 }
 
 const SsrPass::ResolveProgram& SsrPass::resolveProgram(bool motion, bool history, bool material) {
-    std::optional<ResolveProgram>& slot =
-        mResolves[(motion ? 1u : 0u) | (history ? 2u : 0u) | (material ? 4u : 0u)];
-    if (!slot) {
-        slot.emplace(makeComputeProgram("passes/ssr/ssr_resolve.comp.glsl",
-                                        bindingDefines({{"SSR_MOTION", motion ? "1" : "0"},
-                                                        {"SSR_HISTORY", history ? "1" : "0"},
-                                                        {"SSR_MATERIAL", material ? "1" : "0"}})));
-    }
-    return *slot;
+    return mResolves.get((motion ? 1u : 0u) | (history ? 2u : 0u) | (material ? 4u : 0u),
+                         {{"SSR_MOTION", motion ? "1" : "0"},
+                          {"SSR_HISTORY", history ? "1" : "0"},
+                          {"SSR_MATERIAL", material ? "1" : "0"}});
 }
 
 void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {

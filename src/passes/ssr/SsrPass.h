@@ -12,13 +12,12 @@
 // Tests: tests/gl/test_ssr.cpp, tests/e2e/ssr.sh.
 
 #include "passes/FramePass.h"
+#include "passes/ProgramVariants.h"
 
-#include <array>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
-#include <optional>
 
 namespace photopic {
 
@@ -120,10 +119,8 @@ public:
 
 private:
     /// A trace program (ssr_trace.comp.glsl, with or without REFINE) and its slots.
-    struct TraceProgram {
-        explicit TraceProgram(Program p)
-            : program(std::move(p)) {}
-        Program program;
+    struct TraceProgram : ProgramSlots {
+        using ProgramSlots::ProgramSlots;
         SamplerSlot depth = program.sampler("uLinearDepth");
         SamplerSlot normals = program.sampler("uNormalTexture");
         SamplerSlot material = program.sampler("uMaterial");
@@ -146,10 +143,8 @@ private:
     /// Binds the inputs a trace program reads, and its output.
     static void bindTrace(const TraceProgram& trace, const FrameResources& resources, const Texture& hits);
     /// The resolve program for the inputs present (SSR_MOTION, SSR_HISTORY, SSR_MATERIAL), and its slots.
-    struct ResolveProgram {
-        explicit ResolveProgram(Program p)
-            : program(std::move(p)) {}
-        Program program;
+    struct ResolveProgram : ProgramSlots {
+        using ProgramSlots::ProgramSlots;
         SamplerSlot depth = program.sampler("uLinearDepth");
         SamplerSlot scene = program.sampler("uScene");
         SamplerSlot history = program.sampler("uHistory");
@@ -173,9 +168,9 @@ private:
 
     /// By the normals' source (0: reconstructed, 1: view xyz, 2: octahedral); [1] the REFINE build (half
     /// resolution: each pixel's hit from the blocks' hits).
-    std::array<std::array<std::optional<TraceProgram>, 3>, 2> mTraces;
+    ProgramVariants<TraceProgram, 6> mTraces{"passes/ssr/ssr_trace.comp.glsl"};
     /// By the inputs present: bit 0 motion, bit 1 history, bit 2 material.
-    std::array<std::optional<ResolveProgram>, 8> mResolves;
+    ProgramVariants<ResolveProgram, 8> mResolves{"passes/ssr/ssr_resolve.comp.glsl"};
     ParameterBlock<SsrParameters> mParameters;
 };
 

@@ -60,16 +60,11 @@ TaaParameters TaaPass::parameters(const FrameContext& ctx, const FrameResources&
 }
 
 const TaaPass::ResolveProgram& TaaPass::resolveProgram(const TaaParameters& p) {
-    std::optional<ResolveProgram>& slot =
-        mPrograms[std::size_t(p.bilinearHistory != 0) | (std::size_t(p.hasDepth != 0) << 1) |
-                  (std::size_t(p.hasCamera != 0) << 2)];
-    if (!slot) {
-        slot.emplace(makeComputeProgram("passes/taa/taa_resolve.comp.glsl",
-                                        bindingDefines({{"TAA_BILINEAR", std::to_string(p.bilinearHistory)},
-                                                        {"TAA_DEPTH", std::to_string(p.hasDepth)},
-                                                        {"TAA_CAMERA", std::to_string(p.hasCamera)}})));
-    }
-    return *slot;
+    return mPrograms.get(std::size_t(p.bilinearHistory != 0) | (std::size_t(p.hasDepth != 0) << 1) |
+                             (std::size_t(p.hasCamera != 0) << 2),
+                         {{"TAA_BILINEAR", std::to_string(p.bilinearHistory)},
+                          {"TAA_DEPTH", std::to_string(p.hasDepth)},
+                          {"TAA_CAMERA", std::to_string(p.hasCamera)}});
 }
 
 void TaaPass::bindInputs(const ResolveProgram& program, const FrameResources& resources,

@@ -6,11 +6,10 @@
 
 #include "passes/FramePass.h"
 #include "passes/HistoryTexture.h"
+#include "passes/ProgramVariants.h"
 
-#include <array>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
-#include <optional>
 
 namespace photopic {
 
@@ -57,10 +56,8 @@ private:
     [[nodiscard]] static const Texture* debugTarget(const FrameContext& ctx, FrameResources& resources);
     /// The resolve for a history filter and the inputs present (TAA_BILINEAR, TAA_DEPTH, TAA_CAMERA), and
     /// its slots.
-    struct ResolveProgram {
-        explicit ResolveProgram(Program p)
-            : program(std::move(p)) {}
-        Program program;
+    struct ResolveProgram : ProgramSlots {
+        using ProgramSlots::ProgramSlots;
         SamplerSlot current = program.sampler("uCurrent");
         SamplerSlot history = program.sampler("uHistory");
         SamplerSlot historyAux = program.sampler("uHistoryAux");
@@ -76,7 +73,7 @@ private:
                     const Texture* debugTarget) const;
 
     /// By bilinear history (bit 0), depth (bit 1) and camera (bit 2).
-    std::array<std::optional<ResolveProgram>, 8> mPrograms;
+    ProgramVariants<ResolveProgram, 8> mPrograms{"passes/taa/taa_resolve.comp.glsl"};
     ParameterBlock<TaaParameters> mParameters;
     HistoryTexture mHistory;    ///< the resolved colour
     HistoryTexture mHistoryAux; ///< per pixel: linear depth and stability (how long it has held still)

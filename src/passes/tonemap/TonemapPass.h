@@ -4,6 +4,7 @@
 #include "core/Settings.h"
 #include "gl/ShaderLibrary.h"
 #include "passes/FramePass.h"
+#include "passes/ProgramVariants.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -85,10 +86,8 @@ public:
 
 private:
     /// One program of the pass and its samplers and image (uBloom inactive where BLOOM is not defined).
-    struct Variant {
-        explicit Variant(Program p)
-            : program(std::move(p)) {}
-        Program program;
+    struct Variant : ProgramSlots {
+        using ProgramSlots::ProgramSlots;
         SamplerSlot scene = program.sampler("uScene");
         SamplerSlot bloom = program.sampler("uBloom");
         ImageSlot output = program.image("uOutput");
