@@ -40,6 +40,7 @@ void main() {
     float invReach = 1.0 / (kReach * uRadius);
     float sum = 0.0;
     float weights = 0.0;
+    float centreVisibility = 1.0; // the centre tap's own, where no tap weighs anything
     // 3 x 3 texels at full resolution, 5 x 5 at half (where the upsampling needs texels 2 out). At full
     // resolution the ring 2 pixels out (weight under a third of the centre's) took 16 of the 25 taps and
     // bought no accuracy against either ray-traced truth, only a little steadiness under motion.
@@ -54,10 +55,10 @@ void main() {
             float plane = dot(offset, normal) * invTolerance;
             float distance2 = dot(offset, offset) * (invReach * invReach);
             // A crease (a wall meeting the ground) lies in both faces' tangent planes; the normals tell the
-            // faces apart, whose occlusion differs: the cosine between them to the fourth power, from the
-            // unnormalized neighbour normal as dot^2 / |n|^2 squared.
-            float along = max(dot(neighbour.n, normal), 0.0);
-            float cosine2 = along * along / dot(neighbour.n, neighbour.n);
+            // faces apart, whose occlusion differs: the cosine between them to the fourth power (the
+            // neighbour's normal is 127 times a unit vector).
+            float along = max(dot(neighbour.n, normal), 0.0) * (1.0 / 127.0);
+            float cosine2 = along * along;
             // The Gaussian is in full-resolution pixels: at half resolution it spans the same area of the
             // image, not twice as much.
             // At full resolution an inside tap's source is q itself, (dx, dy) from p: a constant.
@@ -65,11 +66,10 @@ void main() {
             float w = exp(-0.5 * dot(d, d) / 2.25 - plane * plane - distance2) * (cosine2 * cosine2);
             w = inside && isSurface(neighbour.z) ? w : 0.0;
             sum += w * neighbour.visibility;
+            centreVisibility = dx == 0 && dy == 0 ? neighbour.visibility : centreVisibility;
             weights += w;
         }
     }
-    float visibility = weights > 1e-6
-                           ? sum / weights
-                           : unpackAoTexel(texelFetch(uRaw, clamp(centre, ivec2(0), rawSize - 1), 0).xy).visibility;
+    float visibility = weights > 1e-6 ? sum / weights : centreVisibility;
     imageStore(uVisibility, p, vec4(clamp(visibility, 0.0, 1.0)));
 }

@@ -1,5 +1,4 @@
-// How GTAO's textures hold a normal: the surface texture's 30-bit form, and the octahedral pair the search's
-// output keeps for the denoiser.
+// How GTAO's surface texture holds a normal: three signed 10-bit fields.
 #ifndef PHOTOPIC_GTAO_NORMAL_H_GLSL
 #define PHOTOPIC_GTAO_NORMAL_H_GLSL
 
@@ -12,16 +11,5 @@ uint packNormal10(vec3 n) {
 }
 
 vec3 unpackNormal10(uint bits) { return vec3(ivec3(uvec3(bits << 22, bits << 12, bits << 2)) >> 22); }
-
-// Unit vector (or any non-zero one) -> octahedral [-1, 1]^2 (Cigolle et al. 2014), the inverse of
-// octahedralDecode.
-vec2 octahedralEncode(vec3 n) {
-    n /= abs(n.x) + abs(n.y) + abs(n.z);
-    vec2 e = n.xy;
-    if (n.z < 0.0) {
-        e = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
-    }
-    return e;
-}
 
 #endif

@@ -14,39 +14,31 @@ struct GtaoSurface {
                // normal normalize it; plane equations do not need to
 };
 
-// Octahedral decode without the normalization (the branchless form of octahedralDecode's fold), of a pair
-// scaled so that `one` stands for 1: the direction comes out `one` times longer.
-vec3 octahedralDirection(vec2 e, float one) {
-    vec3 n = vec3(e, one - abs(e.x) - abs(e.y));
-    float t = max(-n.z, 0.0);
-    n.xy += vec2(n.x >= 0.0 ? -t : t, n.y >= 0.0 ? -t : t);
-    return n;
-}
-
 GtaoSurface unpackSurface(uvec2 t) { return GtaoSurface(uintBitsToFloat(t.x), unpackNormal10(t.y)); }
 
 GtaoSurface surfaceAt(ivec2 p) { return unpackSurface(texelFetch(uSurface, p, 0).xy); }
 
-// The horizon search's output texel (RG32UI): the surface it was computed at (the depth's bits, the normal's
-// octahedral pair as two snorm8, enough for the denoiser's weights) and the raw visibility as unorm16, so a
-// tap of the denoiser is one fetch. `normal` as the surface texture holds it (packNormal10).
+// The horizon search's output texel (RG32UI): the surface it was computed at and the raw visibility, so a
+// tap of the denoiser is one fetch. x: the depth's float bits with the low 8 mantissa bits replaced by the
+// unit normal's z as snorm8 (the depth keeps 15 bits of mantissa, a relative error under 3e-5, far below the
+// denoiser's plane tolerance; +inf, the sky, stays +inf); y: the normal's x and y as snorm8, the visibility
+// as unorm16. The normal is unit length times 127, so the denoiser's cosine is a dot product and a constant
+// scale, with no decode beyond three shifts. `normal` as the surface texture holds it (packNormal10).
 uvec2 packAoTexel(uint depthBits, uint normalBits, float visibility) {
-    vec2 e = octahedralEncode(unpackNormal10(normalBits));
-    uint normal = packSnorm4x8(vec4(e, 0.0, 0.0)) & 0xFFFFu;
-    return uvec2(depthBits, normal | (packUnorm2x16(vec2(0.0, visibility)) & 0xFFFF0000u));
+    ivec3 n = ivec3(round(normalize(unpackNormal10(normalBits)) * 127.0)) & 0xFF;
+    return uvec2((depthBits & 0xFFFFFF00u) | uint(n.z),
+                 uint(n.x) | (uint(n.y) << 8) | (uint(round(clamp(visibility, 0.0, 1.0) * 65535.0)) << 16));
 }
 
 struct AoTexel {
     float z;          // +inf: sky
-    vec3 n;           // not normalized (127 times the octahedral direction)
+    vec3 n;           // 127 times the unit normal (to within rounding)
     float visibility; // raw, [0, 1]
 };
 
 AoTexel unpackAoTexel(uvec2 t) {
-    // The snorm8 pair as integers: the direction comes out 127 times longer, which the denoiser's weights
-    // (a cosine from a ratio of dot products) do not see.
-    vec2 e = vec2(ivec2(uvec2(t.y << 24, t.y << 16)) >> 24);
-    return AoTexel(uintBitsToFloat(t.x), octahedralDirection(e, 127.0), unpackUnorm2x16(t.y).y);
+    vec3 n = vec3(ivec3(uvec3(t.y << 24, t.y << 16, t.x << 24)) >> 24);
+    return AoTexel(uintBitsToFloat(t.x & 0xFFFFFF00u), n, float(t.y >> 16) * (1.0 / 65535.0));
 }
 
 bool isSurface(float z) { return !isinf(z) && z > 0.0; }
