@@ -157,4 +157,11 @@ void viewRays(const glm::mat4& projection, glm::vec4 (&nearRay)[3], glm::vec4 (&
     }
 }
 
+bool isPerspective(const glm::mat4& m) noexcept {
+    // Clip w = m[2][3] z (no x, y or constant term), clip x and y without a constant term, clip z from z
+    // alone.
+    return m[3][3] == 0.0f && m[2][3] != 0.0f && m[0][3] == 0.0f && m[1][3] == 0.0f && m[3][0] == 0.0f &&
+           m[3][1] == 0.0f && m[0][2] == 0.0f && m[1][2] == 0.0f;
+}
+
 } // namespace photopic

@@ -77,6 +77,10 @@ struct Camera {
 /// x = y = 0 ([0]) and its slopes in x ([1]) and y ([2]), w = 0. The projection's w row does not depend on x
 /// or y, so both points are affine in them: point(x, y) = ray[0] + x ray[1] + y ray[2].
 void viewRays(const glm::mat4& projection, glm::vec4 (&nearRay)[3], glm::vec4 (&farRay)[3]) noexcept;
+/// Whether `projection` is a perspective one whose view rays all start at the eye and whose NDC z depends
+/// on view z alone (glm::perspective and glm::frustum, jittered or not): then a view ray is (x, y, -1) times
+/// the depth, which the screen-space passes' perspective programs use.
+[[nodiscard]] bool isPerspective(const glm::mat4& projection) noexcept;
 
 /// Linear view depth (positive distance along -z, scene units) of a GL window depth in [0, 1] written with
 /// a standard perspective projection (glDepthRange(0, 1), NDC z in [-1, 1]). far may be +inf.

@@ -1,5 +1,6 @@
 #include "core/Camera.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -103,4 +104,29 @@ TEST(Camera, ViewRaysProjectBackToTheirNdcPoint) {
             }
         }
     }
+}
+
+// isPerspective: true for the projections whose view rays start at the eye with a near plane at constant z
+// (plain, off-centre, jittered, infinite far), false for orthographic ones and for a perspective whose NDC z
+// also depends on x (the screen-space passes then take their general programs). Where it is true, the near
+// points viewRays gives lie on one z, the property the perspective programs rely on.
+TEST(Camera, IsPerspectiveOnlyWhereViewRaysStartAtTheEye) {
+    const glm::mat4 plain = perspectiveProjection(1.0f, 16.0f / 9.0f, 0.1f, 100.0f);
+    const glm::mat4 infinite =
+        perspectiveProjection(1.0f, 1.0f, 0.1f, std::numeric_limits<float>::infinity());
+    const glm::mat4 offCentre = glm::frustum(-0.05f, 0.15f, -0.1f, 0.05f, 0.1f, 50.0f);
+    const glm::mat4 jittered = jitteredProjection(plain, glm::vec2(0.3f, -0.4f), 640, 360);
+    for (const glm::mat4& m : {plain, infinite, offCentre, jittered}) {
+        EXPECT_TRUE(isPerspective(m));
+        glm::vec4 nearRay[3], farRay[3];
+        viewRays(m, nearRay, farRay);
+        EXPECT_NEAR(nearRay[1].z, 0.0f, 1e-6f);
+        EXPECT_NEAR(nearRay[2].z, 0.0f, 1e-6f);
+    }
+    EXPECT_FALSE(isPerspective(glm::ortho(-2.0f, 2.0f, -1.0f, 1.0f, 0.1f, 100.0f)));
+    EXPECT_FALSE(isPerspective(jitteredProjection(glm::ortho(-2.0f, 2.0f, -1.0f, 1.0f, 0.1f, 100.0f),
+                                                  glm::vec2(0.3f, -0.4f), 640, 360)));
+    glm::mat4 tilted = plain;
+    tilted[0][2] = 0.01f; // NDC z depends on x: the near plane is not z = const
+    EXPECT_FALSE(isPerspective(tilted));
 }

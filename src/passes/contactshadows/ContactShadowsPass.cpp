@@ -3,6 +3,7 @@
 #include "passes/Bindings.h"
 
 #include <algorithm>
+#include <string>
 
 namespace photopic {
 
@@ -19,6 +20,12 @@ constexpr ResourceUse kMaskedUses[] = {
     {Resource::Normals, Access::ReadOptional}, {Resource::Motion, Access::ReadOptional},
     {Resource::ContactShadows, Access::Write}, {Resource::ContactShadowSteps, Access::Write}};
 
+/// Where the surfaces' normals come from: 0 reconstructed from depth, 1 the host's view xyz, 2 its
+/// octahedral pair.
+int normalsKind(const FrameContext& ctx, const Texture* normals) {
+    return normals == nullptr ? 0 : ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 2 : 1;
+}
+
 /// Edge fade width: 2% of the image height (at least 2 px), where an occluder may be partly off screen.
 float edgeFadePixels(Extent e) {
     return std::max(2.0f, 0.02f * float(e.height));
@@ -27,10 +34,7 @@ float edgeFadePixels(Extent e) {
 } // namespace
 
 ContactShadowsPass::ContactShadowsPass()
-    : mSurface(
-          makeComputeProgram("passes/contactshadows/contact_shadows_surface.comp.glsl", bindingDefines()))
-    , mMarch(makeComputeProgram("passes/contactshadows/contact_shadows_march.comp.glsl", bindingDefines()))
-    , mResolve{ResolveProgram(makeComputeProgram("passes/contactshadows/contact_shadows_resolve.comp.glsl",
+    : mResolve{ResolveProgram(makeComputeProgram("passes/contactshadows/contact_shadows_resolve.comp.glsl",
                                                  bindingDefines({{"CONTACT_SHADOWS_MOTION", "0"}}))),
                ResolveProgram(makeComputeProgram("passes/contactshadows/contact_shadows_resolve.comp.glsl",
                                                  bindingDefines({{"CONTACT_SHADOWS_MOTION", "1"}})))}
@@ -94,7 +98,6 @@ ContactShadowParameters ContactShadowsPass::parameters(const FrameContext& ctx,
     p.strength = s.strength;
     p.steps = s.steps;
     p.frame = std::uint32_t(ctx.time.frameIndex % 1024u);
-    p.normals = normals == nullptr ? 0 : ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 2 : 1;
     p.maskCount = objectId ? int(std::min(s.mask.size(), kMaxContactShadowMaskIds)) : 0;
     for (int i = 0; i < p.maskCount; ++i) {
         p.mask[i / 4][i % 4] = s.mask[std::size_t(i)];
@@ -113,35 +116,41 @@ void ContactShadowsPass::surfaces(const FrameContext& ctx, const FrameResources&
     const Texture& depth = *resources.texture(Resource::LinearDepth);
     const Texture* normals = resources.texture(Resource::Normals);
     const Texture* objectId = mMasked ? resources.texture(Resource::ObjectId) : nullptr;
-    bind(mSurfaceDepth, depth);
-    bind(mSurfaceNormals, normals ? *normals : depth);
-    bind(mSurfaceObjectId, objectId ? *objectId : mNoObjectIds);
-    bindSampler(mSurfaceObjectId, objectId ? &mObjectIdSampler : nullptr);
+    const int kind = normalsKind(ctx, normals);
+    const SurfaceProgram& s =
+        mSurface.get(std::size_t(kind), {{"CONTACT_SHADOWS_NORMALS", std::to_string(kind)}});
+    s.program.use();
+    bind(s.depth, depth);
+    bind(s.normals, normals ? *normals : depth);
+    bind(s.objectId, objectId ? *objectId : mNoObjectIds);
+    bindSampler(s.objectId, objectId ? &mObjectIdSampler : nullptr);
     {
         // Depth and the host's normal (or four more depths), the mask's id, one RGBA32F texel out.
         ScopedGpuTimer timer(ctx.timers, "contact shadow surfaces",
                              double(e.width) * e.height *
                                  (4.0 + (normals ? 8.0 : 16.0) + (objectId ? 4.0 : 0.0) + 16.0));
-        mSurface.use();
-        bind(mSurfaceOut, *t.surface, ImageAccess::Write);
-        dispatch(mSurface, e, Barrier::None);
+        bind(s.out, *t.surface, ImageAccess::Write);
+        dispatch(s.program, e, Barrier::None);
     }
     memoryBarrier(Barrier::TextureFetch);
-    bindSampler(mSurfaceObjectId, nullptr);
+    bindSampler(s.objectId, nullptr);
 }
 
 void ContactShadowsPass::march(const FrameContext& ctx, const FrameResources& resources, const Targets& t) {
     const Extent e = ctx.extent;
+    const bool perspective = isPerspective(ctx.inputs.camera->projection);
+    const MarchProgram& m =
+        mMarch.get(perspective ? 1u : 0u, {{"CONTACT_SHADOWS_PERSPECTIVE", perspective ? "1" : "0"}});
     // The surfaces read once from memory (a short march stays in the cache), the result written (and the
     // steps view).
     ScopedGpuTimer timer(ctx.timers, "contact shadows",
                          double(e.width) * e.height * (16.0 + 2.0 + (t.steps ? 1.0 : 0.0)));
-    mMarch.use();
-    bind(mMarchDepth, *resources.texture(Resource::LinearDepth));
-    bind(mMarchSurface, *t.surface);
-    bind(mMarchRaw, *t.raw, ImageAccess::Write);
-    bind(mMarchSteps, t.steps ? *t.steps : mNoSteps, ImageAccess::Write);
-    dispatch(mMarch, e, Barrier::None);
+    m.program.use();
+    bind(m.depth, *resources.texture(Resource::LinearDepth));
+    bind(m.surface, *t.surface);
+    bind(m.raw, *t.raw, ImageAccess::Write);
+    bind(m.steps, t.steps ? *t.steps : mNoSteps, ImageAccess::Write);
+    dispatch(m.program, e, Barrier::None);
 }
 
 void ContactShadowsPass::resolve(const FrameContext& ctx, const FrameResources& resources, const Targets& t) {

@@ -37,14 +37,13 @@ struct ContactShadowParameters {
     float strength = 1.1f;
     std::int32_t steps = 22;
     std::uint32_t frame = 0;     ///< moves the dithered start
-    std::int32_t normals = 0;    ///< 0: none (reconstructed from depth), 1: view xyz, 2: octahedral
     std::int32_t maskCount = 0;  ///< ids in `mask`; 0: every object
     std::int32_t writeSteps = 0; ///< the steps debug view is on: write steps taken
     std::int32_t hasHistory = 0;
     std::int32_t hasMotion = 0;
     float edgeFade = 2.0f;      ///< pixels: hits this close to the screen's edge fade out
     float historyWeight = 0.9f; ///< the clamped history's weight in the accumulation
-    float padding[2] = {};
+    float padding[3] = {};
     glm::uvec4 mask[4] = {}; ///< up to 16 object ids, four per element
 };
 static_assert(sizeof(ContactShadowParameters) == 368);
@@ -52,7 +51,7 @@ static_assert(offsetof(ContactShadowParameters, rayNear) == 128);
 static_assert(offsetof(ContactShadowParameters, sunView) == 224);
 static_assert(offsetof(ContactShadowParameters, fullSize) == 240);
 static_assert(offsetof(ContactShadowParameters, frame) == 264);
-static_assert(offsetof(ContactShadowParameters, historyWeight) == 292);
+static_assert(offsetof(ContactShadowParameters, historyWeight) == 288);
 static_assert(offsetof(ContactShadowParameters, mask) == 304);
 
 class ContactShadowsPass final : public FramePass {
@@ -89,8 +88,25 @@ private:
     void march(const FrameContext& ctx, const FrameResources& resources, const Targets& t);
     void resolve(const FrameContext& ctx, const FrameResources& resources, const Targets& t);
 
-    Program mSurface;
-    Program mMarch;
+    /// The surfaces from the host's normals or from depth (CONTACT_SHADOWS_NORMALS: 0 reconstructed, 1 view
+    /// xyz, 2 octahedral).
+    struct SurfaceProgram : ProgramSlots {
+        using ProgramSlots::ProgramSlots;
+        SamplerSlot depth = program.sampler("uLinearDepth");
+        SamplerSlot normals = program.sampler("uNormalTexture");
+        SamplerSlot objectId = program.sampler("uObjectId");
+        ImageSlot out = program.image("uSurface");
+    };
+    /// The march for a perspective projection ([1], CONTACT_SHADOWS_PERSPECTIVE) or any other ([0]).
+    struct MarchProgram : ProgramSlots {
+        using ProgramSlots::ProgramSlots;
+        SamplerSlot depth = program.sampler("uLinearDepth");
+        SamplerSlot surface = program.sampler("uSurface");
+        ImageSlot raw = program.image("uRaw");
+        ImageSlot steps = program.image("uStepsTaken");
+    };
+    ProgramVariants<SurfaceProgram, 3> mSurface{"passes/contactshadows/contact_shadows_surface.comp.glsl"};
+    ProgramVariants<MarchProgram, 2> mMarch{"passes/contactshadows/contact_shadows_march.comp.glsl"};
     /// The resolve with motion vectors ([1], CONTACT_SHADOWS_MOTION) or the camera's reprojection ([0]): a
     /// define, so a SIMD implementation does not run both.
     struct ResolveProgram : ProgramSlots {
@@ -102,14 +118,6 @@ private:
         ImageSlot out = program.image("uOut");
     };
     std::array<ResolveProgram, 2> mResolve;
-    SamplerSlot mSurfaceDepth = mSurface.sampler("uLinearDepth");
-    SamplerSlot mSurfaceNormals = mSurface.sampler("uNormalTexture");
-    SamplerSlot mSurfaceObjectId = mSurface.sampler("uObjectId");
-    ImageSlot mSurfaceOut = mSurface.image("uSurface");
-    SamplerSlot mMarchDepth = mMarch.sampler("uLinearDepth");
-    SamplerSlot mMarchSurface = mMarch.sampler("uSurface");
-    ImageSlot mMarchRaw = mMarch.image("uRaw");
-    ImageSlot mMarchSteps = mMarch.image("uStepsTaken");
     ParameterBlock<ContactShadowParameters> mParameters;
     HistoryTexture mHistory;  ///< the accumulated visibility, also the stage's output
     Texture mNoSteps;         ///< bound to the steps image unit when no debug view asks for them

@@ -17,14 +17,13 @@ layout(std140, binding = BINDING_PARAMETERS) uniform ContactShadowParameters {
     float uStrength;
     int uSteps;
     uint uFrame;
-    int uNormals; // 0: reconstruct from depth, 1: view xyz, 2: octahedral
     int uMaskCount;
     int uWriteSteps;
     int uHasHistory;
     int uHasMotion;
     float uEdgeFade; // pixels
     float uHistoryWeight;
-    vec2 uPadding;
+    float uPadding0, uPadding1, uPadding2;
     uvec4 uMask[4];
 };
 

@@ -16,6 +16,11 @@ layout(binding = 3) uniform sampler2D uSurface;     // RGBA32F: view normal, pla
 layout(binding = 0, r16f) uniform writeonly image2D uRaw;
 layout(binding = 1, r8) uniform writeonly image2D uStepsTaken;
 
+// A perspective projection (its view rays meet at the eye and its near plane is z = const): a define, a
+// program per kind. There a sample plane's depth along a view ray r = (x, y, -1) is c / dot(n, r), a third of
+// the arithmetic of the general line-plane intersection the orthographic program keeps.
+const bool kPerspective = CONTACT_SHADOWS_PERSPECTIVE != 0;
+
 // The last quarter of the ray fades out, so the shadow does not end in a hard line where the march stops.
 const float kFadeFraction = 0.25;
 // A depth sample's plane is trusted only when the view ray meets it at more than this cosine; flatter, the
@@ -44,6 +49,19 @@ float surfaceDepthAt(vec3 a, vec3 d, vec4 plane) {
     return denom * denom <= kGrazingCos * kGrazingCos * dot(d, d) ? -1.0 : depth;
 }
 
+// surfaceDepthAt for a perspective projection: the view ray through the eye along r (r.z = -1, so the
+// parameter along r is the depth), rr = dot(r, r).
+float surfaceDepthAlong(vec3 r, float rr, vec4 plane) {
+    float denom = dot(r, plane.xyz);
+    return denom * denom <= kGrazingCos * kGrazingCos * rr ? -1.0 : plane.w / denom;
+}
+
+// The perspective view ray (r.z = -1) through NDC (x, y): the near plane's point scaled to depth 1.
+vec3 perspectiveRay(vec2 ndc) {
+    vec2 xy = uRayNear[0].xy + ndc.x * uRayNear[1].xy + ndc.y * uRayNear[2].xy;
+    return vec3(xy * (1.0 / -uRayNear[0].z), -1.0);
+}
+
 float fade(float t, vec2 window) {
     float along = clamp((uDistance - t) / (kFadeFraction * uDistance), 0.0, 1.0);
     vec2 edge = min(window, uFullSize - window);
@@ -66,6 +84,8 @@ float march(ivec2 p, vec3 origin, out float taken) {
     vec3 originA, originB;
     viewRay(vec2(p) + 0.5, originA, originB);
     vec3 originD = originB - originA;
+    vec3 originR = perspectiveRay((vec2(p) + 0.5) / uFullSize * 2.0 - 1.0);
+    float originRR = dot(originR, originR);
     float originDepth = -origin.z;
     // The view ray through NDC (x, y) is a = near[0] + x near[1] + y near[2] on, along d = d0 + x d1 + y d2.
     vec3 d0 = uRayFar[0].xyz - uRayNear[0].xyz;
@@ -85,9 +105,16 @@ float march(ivec2 p, vec3 origin, out float taken) {
             clip.w > 0.0 && all(greaterThanEqual(window, vec2(0.0))) && all(lessThan(window, uFullSize));
         done = done || !onScreen;
         vec4 plane = texelFetch(uSurface, clamp(ivec2(window), ivec2(0), ivec2(uFullSize) - 1), 0);
-        vec3 a = uRayNear[0].xyz + ndc.x * uRayNear[1].xyz + ndc.y * uRayNear[2].xyz;
-        float here = surfaceDepthAt(a, d0 + ndc.x * d1 + ndc.y * d2, plane);
-        float atStart = surfaceDepthAt(originA, originD, plane);
+        float here, atStart;
+        if (kPerspective) {
+            vec3 r = perspectiveRay(ndc);
+            here = surfaceDepthAlong(r, dot(r, r), plane);
+            atStart = surfaceDepthAlong(originR, originRR, plane);
+        } else {
+            vec3 a = uRayNear[0].xyz + ndc.x * uRayNear[1].xyz + ndc.y * uRayNear[2].xyz;
+            here = surfaceDepthAt(a, d0 + ndc.x * d1 + ndc.y * d2, plane);
+            atStart = surfaceDepthAt(originA, originD, plane);
+        }
         float behind = -(origin.z + t * sun.z) - here;
         float behindAtStart = originDepth - atStart;
         bool hit = hasSurface(plane) && here > 0.0 && atStart > 0.0 && behind > kDepthEpsilon * here &&

@@ -1,15 +1,21 @@
 // The surface the contact-shadow march tests against, one texel per pixel: the plane through the pixel's
 // view-space point with its normal, as the unit normal (xyz, facing the camera) and the plane's constant
 // dot(normal, point) (w), so that each step of the march reads one texel and needs no reconstruction. The
-// host's normals when it gives them, else reconstructed from the depths around the pixel. All zero where
+// host's normals when it gives them (a broken one, NaN or zero, faces the camera), else reconstructed from
+// the depths around the pixel. All zero where
 // there is no surface the march may use: the sky, a broken depth, or an object contactShadows.mask leaves out
 // (which then neither receives nor casts).
 #include "passes/contactshadows/contact_shadows_common.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
+// Where the normals come from (0: reconstructed from depth, 1: the host's view xyz, 2: its octahedral
+// pair): a define, a program per source, so that a frame with normals does not pay for the reconstruction
+// a SIMD implementation would run beside the host's normal.
+const int kNormals = CONTACT_SHADOWS_NORMALS;
+
 layout(binding = 0) uniform sampler2D uLinearDepth;    // R32F, +inf: sky
-layout(binding = 1) uniform sampler2D uNormalTexture;  // view space (or octahedral), when uNormals != 0
+layout(binding = 1) uniform sampler2D uNormalTexture;  // view space (or octahedral), when kNormals != 0
 layout(binding = 2) uniform usampler2D uObjectId;      // when uMaskCount > 0
 layout(binding = 0, rgba32f) uniform writeonly image2D uSurface;
 
@@ -45,23 +51,22 @@ vec3 neighbourStep(ivec2 p, ivec2 o, vec3 centre, float z) {
     return viewPositionAt(vec2(p + o) + 0.5, z) - centre;
 }
 
-// The host's normal when it gives one (and it is finite), else the normal of the depths around the pixel.
+// The host's normal when it gives one (facing the camera where it is broken), else the normal of the depths
+// around the pixel.
 vec3 normalAt(ivec2 p, float z) {
     vec3 centre = viewPositionAt(vec2(p) + 0.5, z);
-    vec3 n = vec3(0.0);
-    if (uNormals != 0) {
+    vec3 n;
+    if (kNormals != 0) {
         vec4 t = texelFetch(uNormalTexture, p, 0);
-        n = uNormals == 2 ? octahedralDecode(t.rg) : t.xyz;
-    }
-    float len2 = dot(n, n);
-    if (!(len2 > 1e-8) || isinf(len2)) {
+        n = kNormals == 2 ? octahedralDecode(t.rg) : t.xyz;
+        float len2 = dot(n, n);
+        n = len2 > 1e-8 && !isinf(len2) ? n : -centre;
+    } else {
         n = cross(neighbourStep(p, ivec2(1, 0), centre, z), neighbourStep(p, ivec2(0, 1), centre, z));
-        len2 = dot(n, n);
-        if (!(len2 > 1e-20) || isinf(len2)) {
-            return normalize(-centre);
-        }
+        float len2 = dot(n, n);
+        n = len2 > 1e-20 && !isinf(len2) ? n : -centre;
     }
-    n *= inversesqrt(len2);
+    n = normalize(n);
     return dot(n, centre) > 0.0 ? -n : n; // a visible surface faces the camera
 }
 
