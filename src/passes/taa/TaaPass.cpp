@@ -43,8 +43,8 @@ TaaParameters TaaPass::parameters(const FrameContext& ctx, const FrameResources&
     // null when validation dropped it
     const Camera* camera = resources.has(Resource::Camera) ? ctx.inputs.camera : nullptr;
     return {.invProjection = camera ? glm::inverse(camera->projection) : glm::mat4(1.0f),
-            .invView = camera ? glm::inverse(camera->view) : glm::mat4(1.0f),
-            .prevViewProjection = camera ? camera->prevViewProjection : glm::mat4(1.0f),
+            .viewToPreviousClip =
+                camera ? camera->prevViewProjection * glm::inverse(camera->view) : glm::mat4(1.0f),
             .blend = s.blendFactor,
             .gamma = s.varianceGamma,
             .feedbackMin = s.feedbackMin,

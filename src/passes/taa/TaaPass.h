@@ -16,8 +16,7 @@ namespace photopic {
 /// std140 mirror of taa_resolve.comp.glsl's parameter block.
 struct TaaParameters {
     glm::mat4 invProjection{1.0f};
-    glm::mat4 invView{1.0f};
-    glm::mat4 prevViewProjection{1.0f};
+    glm::mat4 viewToPreviousClip{1.0f}; ///< this frame's view space -> last frame's clip space
     float blend = 0.9f;
     float gamma = 1.0f;
     float feedbackMin = 0.88f;
@@ -31,10 +30,10 @@ struct TaaParameters {
     std::int32_t bilinearHistory = 0;
     std::int32_t padding = 0;
 };
-static_assert(sizeof(TaaParameters) == 240);
-static_assert(offsetof(TaaParameters, blend) == 192);
-static_assert(offsetof(TaaParameters, hasHistory) == 212);
-static_assert(offsetof(TaaParameters, bilinearHistory) == 232);
+static_assert(sizeof(TaaParameters) == 176);
+static_assert(offsetof(TaaParameters, blend) == 128);
+static_assert(offsetof(TaaParameters, hasHistory) == 148);
+static_assert(offsetof(TaaParameters, bilinearHistory) == 168);
 
 class TaaPass final : public FramePass {
 public:

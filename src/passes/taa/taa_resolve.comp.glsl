@@ -33,9 +33,8 @@ layout(binding = 1, rg8) writeonly uniform image2D uDebug; // r: history weight,
 
 // Mirrors photopic::TaaParameters (passes/taa/TaaPass.h), std140.
 layout(std140, binding = BINDING_PARAMETERS) uniform TaaParameters {
-    mat4 uInvProjection; // this frame's, unjittered (with TAA_CAMERA)
-    mat4 uInvView;
-    mat4 uPrevViewProjection;
+    mat4 uInvProjection;      // this frame's, unjittered (with TAA_CAMERA)
+    mat4 uViewToPreviousClip; // this frame's view space -> last frame's clip space
     float uBlend;
     float uGamma;
     float uFeedbackMin;
@@ -122,7 +121,7 @@ void main() {
     float closestDepth = depth;
     float farthestDepth = depth; // for next frame's disocclusion test; NaN counts as the sky
     const float kInfinity = uintBitsToFloat(0x7f800000u);
-    float fastest = 0.0; // the longest motion of the 3x3, in pixels
+    float fastest2 = 0.0; // the longest motion of the 3x3, in pixels, squared
     for (int y = -1; y <= 1; ++y) {
         for (int x = -1; x <= 1; ++x) {
             ivec2 q = clamp(p + ivec2(x, y), ivec2(0), size - 1);
@@ -131,7 +130,8 @@ void main() {
             m2 += c * c;
             lo = min(lo, c);
             hi = max(hi, c);
-            fastest = max(fastest, length(finiteMotion(texelFetch(uMotion, q, 0).rg) * vec2(size)));
+            vec2 m = finiteMotion(texelFetch(uMotion, q, 0).rg) * vec2(size);
+            fastest2 = max(fastest2, dot(m, m));
             if (kHasDepth) {
                 float d = texelFetch(uDepth, q, 0).r;
                 if (d < closestDepth) {
@@ -142,6 +142,7 @@ void main() {
             }
         }
     }
+    float fastest = sqrt(fastest2);
     vec3 mean = m1 / 9.0;
     vec3 sigma = sqrt(max(m2 / 9.0 - mean * mean, vec3(0.0)));
     vec3 boxMin = max(lo, mean - uGamma * sigma);
@@ -159,8 +160,7 @@ void main() {
     if (history && kHasDepth && kHasCamera && !isinf(depth)) {
         vec4 near = uInvProjection * vec4(uv * 2.0 - 1.0, -1.0, 1.0);
         vec3 ray = near.xyz / near.w;
-        vec4 world = uInvView * vec4(ray * (depth / -ray.z), 1.0);
-        float predicted = (uPrevViewProjection * world).w;
+        float predicted = (uViewToPreviousClip * vec4(ray * (depth / -ray.z), 1.0)).w;
         // Disoccluded means hidden last frame: every depth around the point last frame was nearer than the
         // point was. Those depths come from jittered samples (at an edge, or on a wire thinner than a pixel,
         // a pixel holds either surface from frame to frame), hence the 3x3 neighbourhood, whose farthest
