@@ -116,7 +116,7 @@ std::span<const ResourceUse> SsrPass::uses() const {
     return kUses;
 }
 
-SsrPass::Targets SsrPass::acquireTargets(Extent e, bool half, FrameResources& resources) {
+SsrPass::Targets SsrPass::acquireTargets(Extent e, bool half, bool reflections, FrameResources& resources) {
     TexturePool& pool = resources.pool();
     const auto hitTexture = [&](Extent extent, const char* name) {
         return &pool.acquireNearest(extent, GL_RGBA32F, name);
@@ -128,8 +128,10 @@ SsrPass::Targets SsrPass::acquireTargets(Extent e, bool half, FrameResources& re
     t.sceneOut =
         &pool.acquire({.extent = e, .format = GL_RGBA16F, .debugName = "scene colour with reflections"})
              .texture();
-    t.reflections =
-        &pool.acquire({.extent = e, .format = GL_RGBA16F, .debugName = "ssr reflections"}).texture();
+    if (reflections) {
+        t.reflections =
+            &pool.acquire({.extent = e, .format = GL_RGBA16F, .debugName = "ssr reflections"}).texture();
+    }
     return t;
 }
 
@@ -224,12 +226,14 @@ void SsrPass::resolve(const FrameContext& ctx, const FrameResources& resources, 
     const Texture* material = resources.texture(Resource::Material);
     const Texture& depth = *resources.texture(Resource::LinearDepth);
     const Texture& scene = *resources.texture(Resource::SceneColor);
-    // The hits, the scene colour, the history, motion and material where present, each once; two outputs.
-    ScopedGpuTimer timer(
-        ctx.timers, "ssr resolve",
-        double(e.width) * e.height *
-            (16.0 + 8.0 + (history ? 8.0 : 0.0) + (motion ? 4.0 : 0.0) + (material ? 8.0 : 0.0) + 16.0));
-    const ResolveProgram& r = resolveProgram(motion != nullptr, history != nullptr, material != nullptr);
+    // The hits, the scene colour, the history, motion and material where present, each once; the scene
+    // colour out, and the reflections for the debug view.
+    ScopedGpuTimer timer(ctx.timers, "ssr resolve",
+                         double(e.width) * e.height *
+                             (16.0 + 8.0 + (history ? 8.0 : 0.0) + (motion ? 4.0 : 0.0) +
+                              (material ? 8.0 : 0.0) + 8.0 + (t.reflections ? 8.0 : 0.0)));
+    const ResolveProgram& r =
+        resolveProgram(motion != nullptr, history != nullptr, material != nullptr, t.reflections != nullptr);
     r.program.use();
     bind(r.depth, depth);
     bind(r.scene, scene);
@@ -238,29 +242,36 @@ void SsrPass::resolve(const FrameContext& ctx, const FrameResources& resources, 
     bind(r.motion, motion ? *motion : depth);
     bind(r.material, material ? *material : depth);
     bind(r.outScene, *t.sceneOut, ImageAccess::Write);
-    bind(r.outReflections, *t.reflections, ImageAccess::Write);
+    if (t.reflections != nullptr) {
+        bind(r.outReflections, *t.reflections, ImageAccess::Write);
+    }
     dispatch(r.program, e, Barrier::None);
 }
 
-const SsrPass::ResolveProgram& SsrPass::resolveProgram(bool motion, bool history, bool material) {
-    return mResolves.get((motion ? 1u : 0u) | (history ? 2u : 0u) | (material ? 4u : 0u),
+const SsrPass::ResolveProgram& SsrPass::resolveProgram(bool motion, bool history, bool material,
+                                                       bool reflections) {
+    return mResolves.get((motion ? 1u : 0u) | (history ? 2u : 0u) | (material ? 4u : 0u) |
+                             (reflections ? 8u : 0u),
                          {{"SSR_MOTION", motion ? "1" : "0"},
                           {"SSR_HISTORY", history ? "1" : "0"},
-                          {"SSR_MATERIAL", material ? "1" : "0"}});
+                          {"SSR_MATERIAL", material ? "1" : "0"},
+                          {"SSR_REFLECTIONS", reflections ? "1" : "0"}});
 }
 
 void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Extent e = ctx.extent;
     const bool half = ctx.settings.ssr.resolution == SsrResolution::Half;
     const Extent traceExtent = half ? Extent{(e.width + 1) / 2, (e.height + 1) / 2} : e;
-    const Targets t = acquireTargets(e, half, resources);
+    const Targets t = acquireTargets(e, half, ctx.settings.debug.view == DebugView::Ssr, resources);
     mParameters.update(parameters(ctx, resources, traceExtent));
     mParameters.bind(kBindingParameters);
     trace(ctx, resources, t, traceExtent);
     memoryBarrier(Barrier::TextureFetch);
     resolve(ctx, resources, t);
     resources.bind(Resource::SceneColor, *t.sceneOut);
-    resources.bind(Resource::Reflections, *t.reflections);
+    if (t.reflections != nullptr) {
+        resources.bind(Resource::Reflections, *t.reflections);
+    }
 }
 
 } // namespace photopic

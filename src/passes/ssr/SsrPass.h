@@ -135,7 +135,9 @@ private:
         const Texture* sceneOut = nullptr;
         const Texture* reflections = nullptr;
     };
-    [[nodiscard]] static Targets acquireTargets(Extent e, bool half, FrameResources& resources);
+    /// `reflections`: the SSR debug view shows them this frame (else no reflections image).
+    [[nodiscard]] static Targets acquireTargets(Extent e, bool half, bool reflections,
+                                                FrameResources& resources);
     /// Last frame's image when this frame can reuse it, else nullptr.
     [[nodiscard]] static const Texture* history(const FrameContext& ctx, const FrameResources& resources);
     [[nodiscard]] SsrParameters parameters(const FrameContext& ctx, const FrameResources& resources,
@@ -155,7 +157,7 @@ private:
         ImageSlot outReflections = program.image("uOutReflections");
     };
     /// Built on first use.
-    const ResolveProgram& resolveProgram(bool motion, bool history, bool material);
+    const ResolveProgram& resolveProgram(bool motion, bool history, bool material, bool reflections);
     /// SsrParameters::normals of this frame.
     [[nodiscard]] static int normalsSource(const FrameContext& ctx, const FrameResources& resources);
     /// The trace program (REFINE or not) for the normals' source (SsrParameters::normals), built on first
@@ -169,8 +171,9 @@ private:
     /// By the normals' source (0: reconstructed, 1: view xyz, 2: octahedral); [1] the REFINE build (half
     /// resolution: each pixel's hit from the blocks' hits).
     ProgramVariants<TraceProgram, 6> mTraces{"passes/ssr/ssr_trace.comp.glsl"};
-    /// By the inputs present: bit 0 motion, bit 1 history, bit 2 material.
-    ProgramVariants<ResolveProgram, 8> mResolves{"passes/ssr/ssr_resolve.comp.glsl"};
+    /// By the inputs present (bit 0 motion, bit 1 history, bit 2 material) and the outputs (bit 3: the
+    /// reflections for the debug view).
+    ProgramVariants<ResolveProgram, 16> mResolves{"passes/ssr/ssr_resolve.comp.glsl"};
     ParameterBlock<SsrParameters> mParameters;
 };
 

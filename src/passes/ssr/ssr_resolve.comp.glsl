@@ -3,7 +3,7 @@
 // depth), at the mip level the glossy cone covers; without a usable history, this frame's image at the hit.
 // The reflection, weighted by the material's specular weight F0, the confidence and ssr.intensity, is added
 // to the scene colour (the host's colour holds no reflection of its own there). Out: the new scene colour
-// and the reflections (radiance, confidence) for the debug view.
+// and, with SSR_REFLECTIONS (the debug view shows them), the reflections (radiance, confidence).
 #include "passes/common/sanitize.h.glsl"
 #include "passes/ssr/ssr_common.h.glsl"
 
@@ -14,6 +14,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 const bool kHasMotion = SSR_MOTION != 0;
 const bool kHasHistory = SSR_HISTORY != 0;
 const bool kHasMaterial = SSR_MATERIAL != 0;
+const bool kWriteReflections = SSR_REFLECTIONS != 0;
 
 layout(binding = 0) uniform sampler2D uLinearDepth;
 layout(binding = 1) uniform sampler2D uScene;    // this frame's scene colour, before reflections
@@ -78,5 +79,7 @@ void main() {
     }
     vec3 colour = finiteColour(scene + uIntensity * confidence * f0 * radiance);
     imageStore(uOutScene, p, vec4(colour, 1.0));
-    imageStore(uOutReflections, p, vec4(radiance, confidence));
+    if (kWriteReflections) {
+        imageStore(uOutReflections, p, vec4(radiance, confidence));
+    }
 }
