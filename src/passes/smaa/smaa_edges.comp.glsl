@@ -48,8 +48,11 @@ float lumaAt(ivec2 p) {
 #endif
 }
 
-// The lumas of the work group's pixels and the border the neighbourhood reaches (two texels on the -x and
-// -y sides, one on the +x and +y sides), each computed once.
+#ifdef SMAA_HDR
+// The HDR luma (a fetch, the exposure curve and a square root) is computed once per texel: the work group's
+// pixels and the border the neighbourhood reaches (two texels on the -x and -y sides, one on the +x and +y
+// sides) in shared memory. The display luma is one dot product, cheaper than the tile's upkeep on a CPU
+// renderer, and is read per tap.
 shared float sLuma[11][11];
 
 void loadLumas() {
@@ -60,7 +63,13 @@ void loadLumas() {
     barrier();
 }
 
-float tileLuma(ivec2 local, ivec2 o) { return sLuma[local.y + o.y][local.x + o.x]; }
+// The luma of pixel p + o (local: p's place in the tile).
+float lumaNear(ivec2 p, ivec2 local, ivec2 o) { return sLuma[local.y + o.y][local.x + o.x]; }
+#else
+void loadLumas() {}
+
+float lumaNear(ivec2 p, ivec2 local, ivec2 o) { return lumaAt(p + o); }
+#endif
 
 void main() {
     loadLumas();
@@ -69,9 +78,9 @@ void main() {
         return;
     }
     ivec2 local = ivec2(gl_LocalInvocationID.xy) + 2;
-    float l = tileLuma(local, ivec2(0));
-    float lx = tileLuma(local, -ivec2(1, 0));
-    float ly = tileLuma(local, -ivec2(0, 1));
+    float l = lumaNear(p, local, ivec2(0));
+    float lx = lumaNear(p, local, -ivec2(1, 0));
+    float ly = lumaNear(p, local, -ivec2(0, 1));
     vec2 delta = abs(vec2(l) - vec2(lx, ly));
     vec2 edges = step(vec2(uThreshold), delta);
     if (edges.x + edges.y == 0.0) {
@@ -86,15 +95,15 @@ void main() {
     // edge, cuts the silhouette's long run in two and turns one gentle staircase into two short, steep
     // shapes that blend too much. With the full neighbourhood the testbed's edge error falls from 71% to
     // 69.5% of no AA's at the high preset, and the ultra preset's lower threshold no longer costs (72%).
-    float plusX = abs(l - tileLuma(local, ivec2(1, 0)));
-    float plusY = abs(l - tileLuma(local, ivec2(0, 1)));
-    float lxy = tileLuma(local, -ivec2(1, 1));
+    float plusX = abs(l - lumaNear(p, local, ivec2(1, 0)));
+    float plusY = abs(l - lumaNear(p, local, ivec2(0, 1)));
+    float lxy = lumaNear(p, local, -ivec2(1, 1));
     float aroundX = max(max(delta.y, plusX), plusY);
-    aroundX = max(aroundX, abs(lx - tileLuma(local, -ivec2(2, 0))));
-    aroundX = max(aroundX, max(abs(lx - lxy), abs(lx - tileLuma(local, ivec2(-1, 1)))));
+    aroundX = max(aroundX, abs(lx - lumaNear(p, local, -ivec2(2, 0))));
+    aroundX = max(aroundX, max(abs(lx - lxy), abs(lx - lumaNear(p, local, ivec2(-1, 1)))));
     float aroundY = max(max(delta.x, plusX), plusY);
-    aroundY = max(aroundY, abs(ly - tileLuma(local, -ivec2(0, 2))));
-    aroundY = max(aroundY, max(abs(ly - lxy), abs(ly - tileLuma(local, ivec2(1, -1)))));
+    aroundY = max(aroundY, abs(ly - lumaNear(p, local, -ivec2(0, 2))));
+    aroundY = max(aroundY, max(abs(ly - lxy), abs(ly - lumaNear(p, local, ivec2(1, -1)))));
     vec2 kept = step(vec2(aroundX, aroundY), uContrastFactor * delta);
 #ifdef SMAA_DEPTH
     float z = depthAt(p);
