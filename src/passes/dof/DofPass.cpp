@@ -43,7 +43,10 @@ DofPass::DofPass()
     , mDilate(makeComputeProgram("passes/dof/dof_tiles.comp.glsl", bindingDefines({{"DILATE", "1"}})))
     , mFar(makeComputeProgram("passes/dof/dof_gather.comp.glsl", bindingDefines()))
     , mNear(makeComputeProgram("passes/dof/dof_gather.comp.glsl", bindingDefines({{"NEAR", "1"}})))
-    , mComposite(makeComputeProgram("passes/dof/dof_composite.comp.glsl", bindingDefines()))
+    , mComposite{CompositeProgram(makeComputeProgram("passes/dof/dof_composite.comp.glsl", bindingDefines())),
+                 CompositeProgram(makeComputeProgram("passes/dof/dof_composite.comp.glsl",
+                                                     bindingDefines({{"DOF_LISTED", "1"}})))}
+    , mChanged(makeComputeProgram("passes/dof/dof_changed_tiles.comp.glsl", bindingDefines()))
     , mParameters("depth of field parameters") {}
 
 std::span<const ResourceUse> DofPass::uses() const {
@@ -169,16 +172,65 @@ void DofPass::gather(const FrameContext& ctx, const Targets& t) {
     memoryBarrier(Barrier::TextureFetch);
 }
 
+void DofPass::listChangedTiles(const FrameContext& ctx, const Targets& t, Extent tiles) {
+    const std::size_t count = std::size_t(tiles.width) * std::size_t(tiles.height);
+    const std::size_t bytes = sizeof(GpuDofTileList) + count * sizeof(std::uint32_t);
+    if (mList.size() < bytes) {
+        mList = Buffer({.size = bytes, .flags = 0, .debugName = "dof composite tiles"});
+    }
+    const Groups full = pixelGroups(t.full);
+    const std::uint32_t header[8] = {1, 1, 0, 0, full.x, full.y, 0, 0}; // GpuDofTileList
+    static_assert(sizeof(header) == sizeof(GpuDofTileList));
+    glClearNamedBufferSubData(mList.id(), GL_RGBA32UI, 0, 16, GL_RGBA_INTEGER, GL_UNSIGNED_INT, header);
+    glClearNamedBufferSubData(mList.id(), GL_RGBA32UI, 16, 16, GL_RGBA_INTEGER, GL_UNSIGNED_INT, header + 4);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingTileList, mList.id());
+    // Per tile its 64 CoCs and up to 36 near-field texels (mostly cache hits: counted once), an index out.
+    ScopedGpuTimer timer(ctx.timers, "dof composite tiles",
+                         double(t.full.width) * t.full.height * 2.0 +
+                             double(t.half.width) * t.half.height * 8.0);
+    mChanged.use();
+    bind(mChangedCoc, *t.coc);
+    bind(mChangedNear, *t.nearBlur);
+    dispatch(mChanged, tiles, Barrier::IndirectDispatch);
+}
+
+void DofPass::useComposite(const CompositeProgram& c, const FrameResources& resources, const Targets& t) {
+    c.program.use();
+    bind(c.color, *resources.texture(Resource::SceneColor));
+    bind(c.coc, *t.coc);
+    bind(c.far, *t.farBlur);
+    bind(c.near, *t.nearBlur);
+    bind(c.out, *t.out, ImageAccess::Write);
+}
+
 void DofPass::composite(const FrameContext& ctx, const FrameResources& resources, const Targets& t) {
+    const Texture& scene = *resources.texture(Resource::SceneColor);
+    // The tiles the composite leaves sharp are an image copy of the scene colour (at the memory's speed);
+    // the composite runs over the others. Where the scene colour is not the output's format (a host's
+    // colour standing in for it) it runs over every pixel, which converts.
+    const bool listed = scene.format() == t.out->format();
+    if (listed) {
+        listChangedTiles(ctx, t, {(t.full.width + 7) / 8, (t.full.height + 7) / 8});
+    }
+    // Counted as if every tile changed (the list's length stays on the GPU).
     ScopedGpuTimer timer(ctx.timers, "dof composite",
                          double(t.full.width) * t.full.height * (8.0 + 2.0 + 8.0 + 8.0));
-    mComposite.use();
-    bind(mCompositeColor, *resources.texture(Resource::SceneColor));
-    bind(mCompositeCoc, *t.coc);
-    bind(mCompositeFar, *t.farBlur);
-    bind(mCompositeNear, *t.nearBlur);
-    bind(mCompositeOut, *t.out, ImageAccess::Write);
-    dispatch(mComposite, t.full, Barrier::None);
+    if (!listed) {
+        useComposite(mComposite[0], resources, t);
+        dispatch(mComposite[0].program, t.full, Barrier::None);
+        return;
+    }
+    memoryBarrier(Barrier::TextureFetchAndCopy);
+    glCopyImageSubData(scene.id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.out->id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       t.full.width, t.full.height, 1);
+    useComposite(mComposite[1], resources, t);
+    dispatchIndirect(mComposite[1].program, mList.id(), GLintptr(offsetof(GpuDofTileList, changedArgs)),
+                     Barrier::None);
+    // Where most tiles change, the classification handed the frame to the composite over every pixel (its
+    // dispatch has no work groups otherwise).
+    useComposite(mComposite[0], resources, t);
+    dispatchIndirect(mComposite[0].program, mList.id(), GLintptr(offsetof(GpuDofTileList, fullArgs)),
+                     Barrier::None);
 }
 
 void DofPass::execute(FrameContext& ctx, FrameResources& resources) {

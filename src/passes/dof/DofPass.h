@@ -9,7 +9,9 @@
 // Tests: tests/gl/test_dof.cpp, tests/core/test_dof_settings.cpp, tests/e2e/dof.sh, tests/e2e/blender.sh.
 
 #include "passes/FramePass.h"
+#include "passes/ProgramVariants.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec2.hpp>
@@ -41,6 +43,17 @@ static_assert(offsetof(DofParameters, cocScale) == 16);
 static_assert(offsetof(DofParameters, artistic) == 40);
 static_assert(offsetof(DofParameters, tileCount) == 56);
 static_assert(offsetof(DofParameters, dilation) == 64);
+
+/// The header of the composite's tile list (dof_changed_tiles.h.glsl): the listed composite's indirect
+/// arguments (one work group a tile), the tiles classified, the full composite's arguments (z 0 unless
+/// most tiles change), then the tiles.
+struct GpuDofTileList {
+    std::uint32_t changedArgs[3] = {1, 1, 0};
+    std::uint32_t tilesDone = 0;
+    std::uint32_t fullArgs[3] = {1, 1, 0};
+    std::uint32_t pad = 0;
+};
+static_assert(sizeof(GpuDofTileList) == 32 && offsetof(GpuDofTileList, fullArgs) == 16);
 
 class DofPass final : public FramePass {
 public:
@@ -81,6 +94,8 @@ private:
     void nearTiles(const FrameContext& ctx, const Targets& t);
     void gather(const FrameContext& ctx, const Targets& t);
     void composite(const FrameContext& ctx, const FrameResources& resources, const Targets& t);
+    /// The tiles the composite changes, listed in mList (after resetting it for `tiles`).
+    void listChangedTiles(const FrameContext& ctx, const Targets& t, Extent tiles);
 
     Program mCoc;
     Program mPrepare;
@@ -88,7 +103,19 @@ private:
     Program mDilate;
     Program mFar;
     Program mNear;
-    Program mComposite;
+    /// The composite over every pixel ([0]) or over the listed tiles ([1], DOF_LISTED).
+    struct CompositeProgram : ProgramSlots {
+        using ProgramSlots::ProgramSlots;
+        SamplerSlot color = program.sampler("uColor");
+        SamplerSlot coc = program.sampler("uCoc");
+        SamplerSlot far = program.sampler("uFar");
+        SamplerSlot near = program.sampler("uNear");
+        ImageSlot out = program.image("uOut");
+    };
+    std::array<CompositeProgram, 2> mComposite;
+    /// Uses `c` with the frame's textures bound.
+    static void useComposite(const CompositeProgram& c, const FrameResources& resources, const Targets& t);
+    Program mChanged;
     SamplerSlot mCocDepth = mCoc.sampler("uLinearDepth");
     ImageSlot mCocOut = mCoc.image("uCoc");
     SamplerSlot mPrepareColor = mPrepare.sampler("uColor");
@@ -105,12 +132,10 @@ private:
     SamplerSlot mNearField = mNear.sampler("uField");
     SamplerSlot mNearTiles = mNear.sampler("uTiles");
     ImageSlot mNearOut = mNear.image("uOut");
-    SamplerSlot mCompositeColor = mComposite.sampler("uColor");
-    SamplerSlot mCompositeCoc = mComposite.sampler("uCoc");
-    SamplerSlot mCompositeFar = mComposite.sampler("uFar");
-    SamplerSlot mCompositeNear = mComposite.sampler("uNear");
-    ImageSlot mCompositeOut = mComposite.image("uOut");
+    SamplerSlot mChangedCoc = mChanged.sampler("uCoc");
+    SamplerSlot mChangedNear = mChanged.sampler("uNear");
     ParameterBlock<DofParameters> mParameters;
+    Buffer mList; ///< GpuDofTileList and the tiles; grown to the largest tile count seen
 };
 
 } // namespace photopic

@@ -1,8 +1,12 @@
 // Depth of field, step 5: the full-resolution composite. The far field replaces the sharp pixel as its own
 // CoC grows past half a pixel (fully at 1.5 px), so pixels in focus keep their sharp value exactly; the near
 // field then goes over the result with its coverage, which reaches past the foreground's silhouette onto
-// sharp background.
+// sharp background. Built with DOF_LISTED it runs over the tiles dof_changed_tiles.comp.glsl listed (one work
+// group a tile), the rest of the image an image copy of the sharp colour; without, over every pixel.
 #include "passes/dof/dof_common.h.glsl"
+#ifdef DOF_LISTED
+#include "passes/dof/dof_changed_tiles.h.glsl"
+#endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -33,7 +37,14 @@ vec4 farUpsample(vec2 uv) {
 }
 
 void main() {
+#ifdef DOF_LISTED
+    uint tile = changedTiles[gl_WorkGroupID.z];
+    ivec2 p = ivec2(int(tile % uint(compositeTileCount().x)), int(tile / uint(compositeTileCount().x))) *
+                  kCompositeTile +
+              ivec2(gl_LocalInvocationID.xy);
+#else
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+#endif
     if (any(greaterThanEqual(p, ivec2(uFullSize)))) {
         return;
     }
