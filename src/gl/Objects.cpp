@@ -90,6 +90,11 @@ void Texture::uploadRgba32f(const float* rgba) const {
     glTextureSubImage2D(id(), 0, 0, 0, mExtent.width, mExtent.height, GL_RGBA, GL_FLOAT, flipped.data());
 }
 
+void Texture::copyLevel0From(const Texture& source, Extent extent) const {
+    glCopyImageSubData(source.id(), GL_TEXTURE_2D, 0, 0, 0, 0, id(), GL_TEXTURE_2D, 0, 0, 0, 0, extent.width,
+                       extent.height, 1);
+}
+
 Buffer::Buffer(const BufferCreateInfo& info)
     : mSize(info.size) {
     GLuint id = 0;
@@ -102,6 +107,14 @@ Buffer::Buffer(const BufferCreateInfo& info)
 
 void Buffer::update(const void* data, std::size_t bytes, std::size_t offset) const {
     glNamedBufferSubData(id(), GLintptr(offset), GLsizeiptr(bytes), data);
+}
+
+void Buffer::clearWords(std::size_t offset, const std::uint32_t* words, std::size_t count) const {
+    // glClearNamedBufferSubData fills a range with one RGBA32UI value: one clear per four words.
+    for (std::size_t i = 0; i < count; i += 4) {
+        glClearNamedBufferSubData(id(), GL_RGBA32UI, GLintptr(offset + i * sizeof(std::uint32_t)), 16,
+                                  GL_RGBA_INTEGER, GL_UNSIGNED_INT, words + i);
+    }
 }
 
 std::byte* Buffer::mapPersistently(GLbitfield access, std::string_view what) const {

@@ -111,6 +111,9 @@ public:
     /// Uploads RGBA float pixels (rows top to bottom) into level 0; GL's origin is bottom-left, so rows are
     /// flipped to keep texel (x, y) == image pixel (x, y) with v = 0 at the bottom of the texture.
     void uploadRgba32f(const float* rgba) const;
+    /// Copies `extent` of `source`'s level 0 (the same format) into this texture's level 0 at the origin: a
+    /// copy at the memory's speed, for a pass that writes only part of an image over its input.
+    void copyLevel0From(const Texture& source, Extent extent) const;
 
 private:
     GlObject<detail::TextureDeleter> mObject;
@@ -134,6 +137,10 @@ public:
     [[nodiscard]] std::size_t size() const { return mSize; }
     [[nodiscard]] bool valid() const { return mObject.valid(); }
     void update(const void* data, std::size_t bytes, std::size_t offset = 0) const;
+    /// Sets `count` (a multiple of four) uints from `words` at `offset` (a multiple of 16 bytes) as a
+    /// GPU-side clear, in order with the commands around it: a tile list's dispatch arguments, reset each
+    /// frame without waiting for the GPU to release the buffer.
+    void clearWords(std::size_t offset, const std::uint32_t* words, std::size_t count) const;
     /// Maps all of it with `access` for as long as it lives (made with GL_MAP_PERSISTENT_BIT and those access
     /// bits). Throws GlError "cannot map `what` (N bytes)" when the driver refuses.
     [[nodiscard]] std::byte* mapPersistently(GLbitfield access, std::string_view what) const;

@@ -51,6 +51,13 @@ void FrameResources::clear() noexcept {
     mPresent.fill(false);
 }
 
+int normalsSource(const FrameContext& ctx, const FrameResources& resources) noexcept {
+    if (resources.texture(Resource::Normals) == nullptr) {
+        return 0;
+    }
+    return ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 2 : 1;
+}
+
 QualityTier effectiveTier(const Capabilities& caps, Quality quality) noexcept {
     QualityTier tier = qualityTier(quality);
     if (caps.path == ColorPath::Ldr) {

@@ -148,6 +148,10 @@ struct FrameContext {
     const ExposureTelemetry* exposureTelemetry = nullptr;
 };
 
+/// How this frame's normals come (the normal-reading passes build a program per kind): 0 none (a pass
+/// reconstructs them from depth or goes without), 1 the host's view-space xyz, 2 its octahedral pair.
+[[nodiscard]] int normalsSource(const FrameContext& ctx, const FrameResources& resources) noexcept;
+
 class FramePass {
 public:
     FramePass() = default;

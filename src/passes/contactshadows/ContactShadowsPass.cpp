@@ -20,12 +20,6 @@ constexpr ResourceUse kMaskedUses[] = {
     {Resource::Normals, Access::ReadOptional}, {Resource::Motion, Access::ReadOptional},
     {Resource::ContactShadows, Access::Write}, {Resource::ContactShadowSteps, Access::Write}};
 
-/// Where the surfaces' normals come from: 0 reconstructed from depth, 1 the host's view xyz, 2 its
-/// octahedral pair.
-int normalsKind(const FrameContext& ctx, const Texture* normals) {
-    return normals == nullptr ? 0 : ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 2 : 1;
-}
-
 /// Edge fade width: 2% of the image height (at least 2 px), where an occluder may be partly off screen.
 float edgeFadePixels(Extent e) {
     return std::max(2.0f, 0.02f * float(e.height));
@@ -84,7 +78,6 @@ ContactShadowParameters ContactShadowsPass::parameters(const FrameContext& ctx,
     const ContactShadowsSettings& s = ctx.settings.contactShadows;
     const Camera& camera = *ctx.inputs.camera;
     const Extent e = ctx.extent;
-    const Texture* normals = resources.texture(Resource::Normals);
     const Texture* objectId = mMasked ? resources.texture(Resource::ObjectId) : nullptr;
     ContactShadowParameters p{};
     p.projection = camera.projection;
@@ -116,7 +109,7 @@ void ContactShadowsPass::surfaces(const FrameContext& ctx, const FrameResources&
     const Texture& depth = *resources.texture(Resource::LinearDepth);
     const Texture* normals = resources.texture(Resource::Normals);
     const Texture* objectId = mMasked ? resources.texture(Resource::ObjectId) : nullptr;
-    const int kind = normalsKind(ctx, normals);
+    const int kind = normalsSource(ctx, resources);
     const SurfaceProgram& s =
         mSurface.get(std::size_t(kind), {{"CONTACT_SHADOWS_NORMALS", std::to_string(kind)}});
     s.program.use();

@@ -181,8 +181,7 @@ void DofPass::listChangedTiles(const FrameContext& ctx, const Targets& t, Extent
     const Groups full = pixelGroups(t.full);
     const std::uint32_t header[8] = {1, 1, 0, 0, full.x, full.y, 0, 0}; // GpuDofTileList
     static_assert(sizeof(header) == sizeof(GpuDofTileList));
-    glClearNamedBufferSubData(mList.id(), GL_RGBA32UI, 0, 16, GL_RGBA_INTEGER, GL_UNSIGNED_INT, header);
-    glClearNamedBufferSubData(mList.id(), GL_RGBA32UI, 16, 16, GL_RGBA_INTEGER, GL_UNSIGNED_INT, header + 4);
+    mList.clearWords(0, header, 8);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingTileList, mList.id());
     // Per tile its 64 CoCs and up to 36 near-field texels (mostly cache hits: counted once), an index out.
     ScopedGpuTimer timer(ctx.timers, "dof composite tiles",
@@ -210,7 +209,9 @@ void DofPass::composite(const FrameContext& ctx, const FrameResources& resources
     // colour standing in for it) it runs over every pixel, which converts.
     const bool listed = scene.format() == t.out->format();
     if (listed) {
-        listChangedTiles(ctx, t, {(t.full.width + 7) / 8, (t.full.height + 7) / 8});
+        listChangedTiles(ctx, t,
+                         {(t.full.width + kCompositeTileSize - 1) / kCompositeTileSize,
+                          (t.full.height + kCompositeTileSize - 1) / kCompositeTileSize});
     }
     // Counted as if every tile changed (the list's length stays on the GPU).
     ScopedGpuTimer timer(ctx.timers, "dof composite",
@@ -221,8 +222,7 @@ void DofPass::composite(const FrameContext& ctx, const FrameResources& resources
         return;
     }
     memoryBarrier(Barrier::TextureFetchAndCopy);
-    glCopyImageSubData(scene.id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.out->id(), GL_TEXTURE_2D, 0, 0, 0, 0,
-                       t.full.width, t.full.height, 1);
+    t.out->copyLevel0From(scene, t.full);
     useComposite(mComposite[1], resources, t);
     dispatchIndirect(mComposite[1].program, mList.id(), GLintptr(offsetof(GpuDofTileList, changedArgs)),
                      Barrier::None);

@@ -68,6 +68,8 @@ public:
 
     /// Half-resolution pixels per side of a near-field tile.
     static constexpr int kTileSize = 8;
+    /// Full-resolution pixels per side of a composite tile (dof_changed_tiles.h.glsl's kCompositeTile).
+    static constexpr int kCompositeTileSize = 8;
 
 private:
     /// The frame's sizes, intermediate textures and output.

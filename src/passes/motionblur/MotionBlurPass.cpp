@@ -36,7 +36,7 @@ MotionBlurPass::MotionBlurPass(MotionBlurPlacement placement)
     , mNeighbours(makeComputeProgram("passes/motionblur/motion_blur_neighbours.comp.glsl", bindingDefines()))
     , mGather(makeComputeProgram("passes/motionblur/motion_blur_gather.comp.glsl", bindingDefines()))
     , mStill(makeComputeProgram("passes/motionblur/motion_blur_gather.comp.glsl",
-                               bindingDefines({{"MOTION_BLUR_STILL", "1"}})))
+                                bindingDefines({{"MOTION_BLUR_STILL", "1"}})))
     , mParameters("motion blur parameters")
     , mNoTiles({.extent = {1, 1}, .format = GL_RGBA16F, .debugName = "velocity tiles (unused)"}) {}
 
@@ -117,8 +117,7 @@ void MotionBlurPass::resetLists(Extent tiles, int tileSize) {
     const auto side = std::uint32_t((tileSize + 7) / 8);
     const std::uint32_t header[8] = {side, side, 0, side, side, 0, 0, 0};
     static_assert(sizeof(header) == sizeof(GpuMotionTileLists));
-    glClearNamedBufferSubData(mLists.id(), GL_RGBA32UI, 0, 16, GL_RGBA_INTEGER, GL_UNSIGNED_INT, header);
-    glClearNamedBufferSubData(mLists.id(), GL_RGBA32UI, 16, 16, GL_RGBA_INTEGER, GL_UNSIGNED_INT, header + 4);
+    mLists.clearWords(0, header, 8);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingTileList, mLists.id());
 }
 
@@ -141,13 +140,12 @@ void MotionBlurPass::gather(const FrameContext& ctx, const FrameResources& resou
     ScopedGpuTimer timer(ctx.timers, "motion blur gather",
                          double(e.width) * e.height * (8.0 + 4.0 + 4.0 + 8.0 + (t.tilesView ? 8.0 : 0.0)));
     // The still tiles are the scene colour unchanged: a copy of the whole image, over which the gather writes
-    // the moving tiles (a copy runs at the memory's speed, a dispatch over the still tiles did not). Where the
-    // scene colour is not RGBA16F (a host's colour standing in for it) the still tiles' program converts.
+    // the moving tiles (a copy runs at the memory's speed, a dispatch over the still tiles did not). Where
+    // the scene colour is not RGBA16F (a host's colour standing in for it) the still tiles' program converts.
     const Texture& scene = *resources.texture(Resource::SceneColor);
     const bool copied = scene.format() == t.out->format();
     if (copied) {
-        glCopyImageSubData(scene.id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.out->id(), GL_TEXTURE_2D, 0, 0, 0, 0,
-                           e.width, e.height, 1);
+        t.out->copyLevel0From(scene, e);
     }
     runGather(mGather, resources, t, GLintptr(offsetof(GpuMotionTileLists, movingArgs)));
     if (!copied || t.tilesView) {

@@ -33,9 +33,7 @@ void OutlinePass::execute(FrameContext& ctx, FrameResources& resources) {
                         .depthThreshold = s.depthThreshold,
                         .normalThreshold = s.normalThreshold,
                         .width = s.width,
-                        .normals = normals == nullptr                                        ? 0
-                                   : ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 2
-                                                                                             : 1});
+                        .normals = normalsSource(ctx, resources)});
     mParameters.bind(kBindingParameters);
     mProgram.use();
     bind(mScene, *resources.texture(Resource::SceneColor));

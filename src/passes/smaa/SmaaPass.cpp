@@ -100,8 +100,7 @@ void SmaaPass::resetTiles(Extent e) {
     const std::uint32_t dispatchNone[4] = {0, 1, 1, 0};
     for (const std::size_t offset :
          {offsetof(GpuSmaaTiles, weightGroups), offsetof(GpuSmaaTiles, blendGroups)}) {
-        glClearNamedBufferSubData(mTiles.id(), GL_RGBA32UI, GLintptr(offset), sizeof(dispatchNone),
-                                  GL_RGBA_INTEGER, GL_UNSIGNED_INT, dispatchNone);
+        mTiles.clearWords(offset, dispatchNone, 4);
     }
     glClearNamedBufferSubData(
         mTiles.id(), GL_R32UI, GLintptr(sizeof(GpuSmaaTiles) + 2 * tiles * sizeof(std::uint32_t)),
@@ -188,8 +187,7 @@ void SmaaPass::blend(const FrameContext& ctx, const Texture& color, const Target
     }
     // Pixels no weight or edge reaches keep their colour: the whole image copied, then the listed tiles
     // blended over it.
-    glCopyImageSubData(color.id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.out->id(), GL_TEXTURE_2D, 0, 0, 0, 0, e.width,
-                       e.height, 1);
+    t.out->copyLevel0From(color, e);
     dispatchIndirect(program, mTiles.id(), GLintptr(offsetof(GpuSmaaTiles, blendGroups)), Barrier::None);
 }
 

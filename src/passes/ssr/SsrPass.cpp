@@ -140,13 +140,6 @@ const Texture* SsrPass::history(const FrameContext& ctx, const FrameResources& r
     return history != nullptr && history->extent() == ctx.extent ? history : nullptr;
 }
 
-int SsrPass::normalsSource(const FrameContext& ctx, const FrameResources& resources) {
-    if (resources.texture(Resource::Normals) == nullptr) {
-        return 0;
-    }
-    return ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 2 : 1;
-}
-
 SsrParameters SsrPass::parameters(const FrameContext& ctx, const FrameResources& resources,
                                   Extent traceExtent) const {
     const SsrSettings& s = ctx.settings.ssr;

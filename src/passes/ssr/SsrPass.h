@@ -158,8 +158,6 @@ private:
     };
     /// Built on first use.
     const ResolveProgram& resolveProgram(bool motion, bool history, bool material, bool reflections);
-    /// SsrParameters::normals of this frame.
-    [[nodiscard]] static int normalsSource(const FrameContext& ctx, const FrameResources& resources);
     /// The trace program (REFINE or not) for the normals' source (SsrParameters::normals), built on first
     /// use.
     const TraceProgram& traceProgram(int normals, bool refine);
