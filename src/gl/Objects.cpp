@@ -356,4 +356,60 @@ std::string_view formatName(GLenum format) {
     }
 }
 
+namespace {
+struct ImageFormat {
+    GLenum format;
+    std::string_view qualifier;
+};
+constexpr ImageFormat kImageFormats[] = {
+    {GL_RGBA32F, "rgba32f"},
+    {GL_RGBA16F, "rgba16f"},
+    {GL_RG32F, "rg32f"},
+    {GL_RG16F, "rg16f"},
+    {GL_R11F_G11F_B10F, "r11f_g11f_b10f"},
+    {GL_R32F, "r32f"},
+    {GL_R16F, "r16f"},
+    {GL_RGBA32UI, "rgba32ui"},
+    {GL_RGBA16UI, "rgba16ui"},
+    {GL_RGBA8UI, "rgba8ui"},
+    {GL_RG32UI, "rg32ui"},
+    {GL_RG16UI, "rg16ui"},
+    {GL_RG8UI, "rg8ui"},
+    {GL_R32UI, "r32ui"},
+    {GL_R16UI, "r16ui"},
+    {GL_R8UI, "r8ui"},
+    {GL_RGBA16, "rgba16"},
+    {GL_RGB10_A2, "rgb10_a2"},
+    {GL_RGBA8, "rgba8"},
+    {GL_RG16, "rg16"},
+    {GL_RG8, "rg8"},
+    {GL_R16, "r16"},
+    {GL_R8, "r8"},
+    {GL_RGBA16_SNORM, "rgba16_snorm"},
+    {GL_RGBA8_SNORM, "rgba8_snorm"},
+    {GL_RG16_SNORM, "rg16_snorm"},
+    {GL_RG8_SNORM, "rg8_snorm"},
+    {GL_R16_SNORM, "r16_snorm"},
+    {GL_R8_SNORM, "r8_snorm"},
+};
+} // namespace
+
+std::string_view imageFormatQualifier(GLenum format) {
+    for (const ImageFormat& f : kImageFormats) {
+        if (f.format == format) {
+            return f.qualifier;
+        }
+    }
+    return {};
+}
+
+GLenum imageFormatFromQualifier(std::string_view qualifier) {
+    for (const ImageFormat& f : kImageFormats) {
+        if (f.qualifier == qualifier) {
+            return f.format;
+        }
+    }
+    return 0;
+}
+
 } // namespace photopic

@@ -218,9 +218,14 @@ struct SamplerSlot {
     GLint unit = -1;
     [[nodiscard]] bool active() const { return unit >= 0; }
 };
-/// An image a program declares (`layout(binding = N, rgba16f) uniform image2D uName;`), from Program::image.
+/// An image a program declares (`layout(binding = N, rgba16f) uniform image2D uName;`), from Program::image,
+/// with the format its qualifier names (GL reflects none: read from the program's source, 0 where none was
+/// found): a texture bound through it in another format would load and store undefined values.
 struct ImageSlot {
     GLint unit = -1;
+    GLenum format = 0;
+    std::string_view label; ///< the program's and the image's names, for the format check's report (they
+    std::string_view name;  ///< live in the program's reflection, as long as the program)
     [[nodiscard]] bool active() const { return unit >= 0; }
 };
 enum class ImageAccess : GLenum { Read = GL_READ_ONLY, Write = GL_WRITE_ONLY, ReadWrite = GL_READ_WRITE };
@@ -232,6 +237,7 @@ struct ProgramInterface {
         std::string name;
         GLint unit = -1;
         bool image = false;
+        GLenum format = 0; ///< an image's declared format (declaredImageFormat), 0 for samplers
     };
     std::string label;
     std::string source; ///< the preprocessed sources: tells a name optimised away from a misspelt one
@@ -307,9 +313,9 @@ void bind(SamplerSlot slot, const Texture& texture, const Sampler& sampler) noex
 void unbind(SamplerSlot slot) noexcept;
 /// Puts `sampler` (null: none, the texture's own filtering again) on the unit of `slot`.
 void bindSampler(SamplerSlot slot, const Sampler* sampler) noexcept;
-/// Binds `level` of `texture` to the image unit of `slot` with `access`, in the texture's format (GL does not
-/// reflect an image's format qualifier: the shader's must be the texture's).
-void bind(ImageSlot slot, const Texture& texture, ImageAccess access, int level = 0) noexcept;
+/// Binds `level` of `texture` to the image unit of `slot` with `access`, in the texture's format, which must
+/// be the one the shader declares: a texture of another format is reported to the binding-problem handler.
+void bind(ImageSlot slot, const Texture& texture, ImageAccess access, int level = 0);
 
 /// The binding check at a dispatch: true when every sampler and image `program` declares was bound through a
 /// slot since the program's last check (its last dispatch): what a pass binds before its dispatches, each
@@ -317,11 +323,12 @@ void bind(ImageSlot slot, const Texture& texture, ImageAccess access, int level 
 /// its unit in between. Reports each stale one to the handler (tests). A compare per declared uniform (units
 /// 0-63; from 64 on, units are not tracked).
 bool checkBindings(const Program& program);
-/// Tests: called with one line per declared sampler or image that a dispatch found unbound (naming the
-/// shader, the uniform and its unit). Empty: no handler (the check still runs, and reports nothing).
-using UnboundSlotHandler = std::function<void(const std::string& problem)>;
+/// Tests: called with one line per binding problem: a declared sampler or image that a dispatch found unbound
+/// (naming the shader, the uniform and its unit), or a texture bound to an image slot whose shader declares
+/// another format. Empty: no handler (the checks still run, and report nothing).
+using BindingProblemHandler = std::function<void(const std::string& problem)>;
 /// Installs `handler`, returning the one it replaces.
-UnboundSlotHandler setUnboundSlotHandler(UnboundSlotHandler handler);
+BindingProblemHandler setBindingProblemHandler(BindingProblemHandler handler);
 
 class Query {
 public:
@@ -379,5 +386,10 @@ struct GlObjectCounts {
 int bytesPerTexel(GLenum format);
 /// Human name of a sized internal format ("RGBA16F").
 std::string_view formatName(GLenum format);
+/// The GLSL image format qualifier of a sized internal format ("rgba16f"); empty for a format no image can
+/// take (three channels, sRGB, depth).
+std::string_view imageFormatQualifier(GLenum format);
+/// The sized internal format an image format qualifier names; 0 for none.
+GLenum imageFormatFromQualifier(std::string_view qualifier);
 
 } // namespace photopic

@@ -17,7 +17,7 @@ namespace {
 std::array<std::uint64_t, 64> gSamplerBound{};
 std::array<std::uint64_t, 64> gImageBound{};
 std::uint64_t gBinds = 0;
-UnboundSlotHandler gUnboundSlotHandler;
+BindingProblemHandler gBindingProblemHandler;
 
 void stamp(std::array<std::uint64_t, 64>& bound, GLint unit) noexcept {
     if (unit < 64) {
@@ -74,7 +74,7 @@ SamplerSlot Program::sampler(std::string_view name) const {
 
 ImageSlot Program::image(std::string_view name) const {
     const ProgramInterface::Uniform* u = lookUp(mInterface.get(), name, true);
-    return ImageSlot{u ? u->unit : -1};
+    return u ? ImageSlot{u->unit, u->format, mInterface->label, u->name} : ImageSlot{};
 }
 
 void bind(SamplerSlot slot, const Texture& texture) noexcept {
@@ -104,8 +104,13 @@ void bindSampler(SamplerSlot slot, const Sampler* sampler) noexcept {
     }
 }
 
-void bind(ImageSlot slot, const Texture& texture, ImageAccess access, int level) noexcept {
+void bind(ImageSlot slot, const Texture& texture, ImageAccess access, int level) {
     if (slot.active()) {
+        if (slot.format != 0 && slot.format != texture.format() && gBindingProblemHandler) {
+            gBindingProblemHandler(fmt::format(
+                "{}: image {} (unit {}) is declared {}, bound to a {} texture", slot.label, slot.name,
+                slot.unit, imageFormatQualifier(slot.format), formatName(texture.format())));
+        }
         glBindImageTexture(GLuint(slot.unit), texture.id(), level, GL_FALSE, 0, GLenum(access),
                            texture.format());
         stamp(gImageBound, slot.unit);
@@ -124,8 +129,8 @@ bool checkBindings(const Program& program) {
             continue;
         }
         bound = false;
-        if (gUnboundSlotHandler) {
-            gUnboundSlotHandler(
+        if (gBindingProblemHandler) {
+            gBindingProblemHandler(
                 fmt::format("{}: {} {} (unit {}) was not bound since the program's last dispatch",
                             interface->label, u.image ? "image" : "sampler", u.name, u.unit));
         }
@@ -134,8 +139,8 @@ bool checkBindings(const Program& program) {
     return bound;
 }
 
-UnboundSlotHandler setUnboundSlotHandler(UnboundSlotHandler handler) {
-    return std::exchange(gUnboundSlotHandler, std::move(handler));
+BindingProblemHandler setBindingProblemHandler(BindingProblemHandler handler) {
+    return std::exchange(gBindingProblemHandler, std::move(handler));
 }
 
 } // namespace photopic

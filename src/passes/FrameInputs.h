@@ -14,6 +14,10 @@
 
 namespace photopic {
 
+/// The formats a motion input may have (the pipeline refuses others). A pass that loads motion as an image
+/// builds a program per format: an image is declared in its texture's format.
+inline constexpr GLenum kMotionFormats[] = {GL_RG16F, GL_RG32F, GL_RGBA16F, GL_RGBA32F};
+
 /// How a depth input encodes distance (docs/architecture.md, "Inputs").
 enum class DepthKind {
     Standard,   ///< window depth in [0, 1] of a GL perspective projection: near -> 0, far -> 1

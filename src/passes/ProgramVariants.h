@@ -7,9 +7,11 @@
 #include "gl/ShaderLibrary.h"
 #include "passes/Bindings.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -47,5 +49,16 @@ private:
     std::string mShader;
     std::array<std::optional<Slots>, N> mVariants;
 };
+
+/// The position of `format` in `formats` (a program per format of an input loaded as an image, which its
+/// shader declares in the texture's format); formats.size() when absent.
+inline std::size_t formatIndex(GLenum format, std::span<const GLenum> formats) noexcept {
+    return std::size_t(std::find(formats.begin(), formats.end(), format) - formats.begin());
+}
+
+/// The define that names an image's format qualifier, `name` = "rg16f" for an RG16F texture.
+inline std::pair<std::string, std::string> imageFormatDefine(std::string name, GLenum format) {
+    return {std::move(name), std::string(imageFormatQualifier(format))};
+}
 
 } // namespace photopic

@@ -57,13 +57,13 @@ void checkSettings(const Settings& settings) {
     }
 }
 
-bool oneOf(GLenum format, std::initializer_list<GLenum> formats) {
+bool oneOf(GLenum format, std::span<const GLenum> formats) {
     return std::find(formats.begin(), formats.end(), format) != formats.end();
 }
 
 /// Why an optional texture input cannot be used this frame, or an empty string.
 std::string textureProblem(const char* name, const Texture& t, Extent extent,
-                           std::initializer_list<GLenum> formats) {
+                           std::span<const GLenum> formats) {
     if (!t.valid()) {
         return fmt::format("{}: not a texture (id 0)", name);
     }
@@ -84,8 +84,10 @@ std::string sunShadowProblem(const SunShadowMap& shadow) {
     if (!t.valid() || t.extent().empty()) {
         return "sunShadow.depth: not a texture (id 0) or empty";
     }
-    if (!oneOf(t.format(), {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
-                            GL_DEPTH_COMPONENT32F, GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8})) {
+    static constexpr GLenum kDepthFormats[] = {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24,
+                                               GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT32F,
+                                               GL_DEPTH24_STENCIL8,  GL_DEPTH32F_STENCIL8};
+    if (!oneOf(t.format(), kDepthFormats)) {
         return fmt::format("sunShadow.depth: format {} is not a depth format", formatName(t.format()));
     }
     const glm::mat4& m = shadow.worldToClip;
@@ -200,6 +202,11 @@ bool Pipeline::bindInputs(const FrameInputs& in) {
 
 void Pipeline::bindOptional(Resource r, const char* name, const Texture* t, Extent extent,
                             std::initializer_list<GLenum> formats) {
+    bindOptional(r, name, t, extent, std::span<const GLenum>(formats.begin(), formats.size()));
+}
+
+void Pipeline::bindOptional(Resource r, const char* name, const Texture* t, Extent extent,
+                            std::span<const GLenum> formats) {
     if (t == nullptr) {
         return;
     }
@@ -227,7 +234,7 @@ void Pipeline::bindGeometry(const FrameInputs& in, Extent extent) {
             Resource::Normals, "normals", in.normals, extent,
             {GL_RGB16F, GL_RGBA16F, GL_RGB32F, GL_RGBA32F, GL_RGB10_A2, GL_RGBA16_SNORM, GL_RGBA8_SNORM});
     }
-    bindOptional(Resource::Motion, "motion", in.motion, extent, {GL_RG16F, GL_RG32F, GL_RGBA16F, GL_RGBA32F});
+    bindOptional(Resource::Motion, "motion", in.motion, extent, kMotionFormats);
 }
 
 void Pipeline::bindCamera(const FrameInputs& in) {

@@ -199,6 +199,8 @@ private:
     /// problem becomes an input error and the resource stays absent), then the inputs by kind.
     void bindOptional(Resource r, const char* name, const Texture* t, Extent extent,
                       std::initializer_list<GLenum> formats);
+    void bindOptional(Resource r, const char* name, const Texture* t, Extent extent,
+                      std::span<const GLenum> formats);
     void bindGeometry(const FrameInputs& in, Extent extent);
     void bindCamera(const FrameInputs& in);
     void bindSun(const FrameInputs& in);

@@ -268,11 +268,11 @@ GlCallAudit::GlCallAudit() {
     PHOTOPIC_AUDITED(PHOTOPIC_INSTALL)
 #undef PHOTOPIC_INSTALL
     mOuterHandler =
-        setUnboundSlotHandler([this](const std::string& problem) { mProblems.push_back(problem); });
+        setBindingProblemHandler([this](const std::string& problem) { mProblems.push_back(problem); });
 }
 
 GlCallAudit::~GlCallAudit() {
-    setUnboundSlotHandler(std::move(mOuterHandler));
+    setBindingProblemHandler(std::move(mOuterHandler));
 #define PHOTOPIC_REMOVE(name) epoxy_##name = gSaved_##name;
     PHOTOPIC_AUDITED(PHOTOPIC_REMOVE)
 #undef PHOTOPIC_REMOVE

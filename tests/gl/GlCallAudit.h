@@ -72,7 +72,7 @@ private:
     std::vector<std::string> mProblems;
     std::map<std::string, std::set<std::string>> mFetchStates;
     std::set<GLuint> mDrawn;
-    UnboundSlotHandler mOuterHandler; ///< the unbound-slot handler before this audit's
+    BindingProblemHandler mOuterHandler; ///< the binding-problem handler before this audit's
 };
 
 } // namespace photopic::test

@@ -29,15 +29,16 @@ protected:
             GTEST_SKIP() << "no OpenGL 4.5 context: " << glUnavailableReason();
         }
         resetGlDebugErrorCount();
-        mUnboundSlots.clear();
-        mOuterSlotHandler =
-            setUnboundSlotHandler([this](const std::string& problem) { mUnboundSlots.push_back(problem); });
+        mBindingProblems.clear();
+        mOuterBindingHandler = setBindingProblemHandler(
+            [this](const std::string& problem) { mBindingProblems.push_back(problem); });
     }
     void TearDown() override {
         if (glContext()) {
-            setUnboundSlotHandler(std::move(mOuterSlotHandler));
-            EXPECT_TRUE(mUnboundSlots.empty())
-                << "a dispatch found a declared sampler or image unbound: " << mUnboundSlots.front();
+            setBindingProblemHandler(std::move(mOuterBindingHandler));
+            EXPECT_TRUE(mBindingProblems.empty())
+                << "a binding problem (a declared sampler or image unbound, or an image in another format): "
+                << mBindingProblems.front();
             EXPECT_EQ(glDebugErrorCount(), 0u) << "GL debug errors were raised during the test (see log)";
             EXPECT_EQ(glDebugUndefinedBehaviourCount(), 0u)
                 << "the driver reported undefined behaviour during the test (see log)";
@@ -49,8 +50,8 @@ protected:
     }
 
 private:
-    std::vector<std::string> mUnboundSlots;
-    UnboundSlotHandler mOuterSlotHandler;
+    std::vector<std::string> mBindingProblems;
+    BindingProblemHandler mOuterBindingHandler;
 };
 
 } // namespace photopic::test

@@ -1,5 +1,6 @@
 // A program's samplers and images by name (Program::sampler/image, the units its GLSL's layout(binding = N)
-// gave), and the audit's check that a dispatch found every one of them bound (GlCallAudit.h).
+// gave), the audit's check that a dispatch found every one of them bound (GlCallAudit.h), and the check that
+// a texture bound to an image slot has the format the image's declaration names.
 
 #include "GlCallAudit.h"
 #include "GlTest.h"
@@ -48,7 +49,62 @@ struct Fixture {
     Texture target{{.extent = {1, 1}, .format = GL_RGBA8, .debugName = "slots probe target"}};
 };
 
+// Images declared with a format qualifier, with a define's value, and in two branches of the preprocessor.
+constexpr const char* kImages = R"(#version 450 core
+#define MOTION_FORMAT rg32f
+#ifdef NEVER
+#define OUT_FORMAT rgba16
+#else
+#define OUT_FORMAT rgba8
+#endif
+layout(local_size_x = 1) in;
+layout(binding = 1, rgba16f) uniform readonly image2D uColour;
+layout(binding = 2, MOTION_FORMAT) uniform readonly image2D uMotion;
+layout(binding = 3, r8ui) uniform readonly uimage2D uIds;
+#ifdef NEVER
+layout(binding = 0, rgba32f) uniform writeonly image2D uOut;
+#else
+layout(binding = 0, OUT_FORMAT) uniform writeonly image2D uOut;
+#endif
+void main() {
+    imageStore(uOut, ivec2(0), imageLoad(uColour, ivec2(0)) + vec4(imageLoad(uMotion, ivec2(0)).rg,
+                                                                   float(imageLoad(uIds, ivec2(0)).r), 0.0));
+}
+)";
+
 } // namespace
+
+TEST_F(GlTest, ImageSlotsCarryTheFormatTheirDeclarationNames) {
+    const Program program = makeComputeProgramFromSource(kImages, "image formats probe");
+    EXPECT_EQ(program.image("uColour").format, GLenum(GL_RGBA16F));
+    EXPECT_EQ(program.image("uMotion").format, GLenum(GL_RG32F)) << "the define's value";
+    EXPECT_EQ(program.image("uIds").format, GLenum(GL_R8UI));
+    EXPECT_EQ(program.image("uOut").format, 0u) << "branches that declare different formats: not checked";
+}
+
+TEST_F(GlTest, GlCallAuditReportsAnImageBoundInAnotherFormatThanDeclared) {
+    const Program program = makeComputeProgramFromSource(kImages, "image formats probe");
+    const ImageSlot colour = program.image("uColour");
+    const ImageSlot motion = program.image("uMotion");
+    const Texture half{{.extent = {1, 1}, .format = GL_RGBA16F, .debugName = "formats probe rgba16f"}};
+    const Texture bytes{{.extent = {1, 1}, .format = GL_RGBA8, .debugName = "formats probe rgba8"}};
+    const Texture motion32{{.extent = {1, 1}, .format = GL_RG32F, .debugName = "formats probe rg32f"}};
+    GlCallAudit audit;
+    bind(colour, half, ImageAccess::Read);
+    bind(motion, motion32, ImageAccess::Read);
+    EXPECT_TRUE(audit.problems().empty()) << listed(audit.problems());
+    bind(colour, bytes, ImageAccess::Read);
+    EXPECT_TRUE(mentions(audit.problems(), "image formats probe",
+                         "image uColour (unit 1) is declared rgba16f, "
+                         "bound to a RGBA8 texture"))
+        << listed(audit.problems());
+    bind(motion, half, ImageAccess::Read);
+    EXPECT_TRUE(mentions(audit.problems(), "", "image uMotion (unit 2) is declared rg32f"))
+        << listed(audit.problems());
+    EXPECT_EQ(audit.problems().size(), 2u) << listed(audit.problems());
+    glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
+    glBindImageTexture(2, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
+}
 
 TEST_F(GlTest, ProgramSlotsCarryTheUnitsTheGlslNames) {
     const Fixture f;
