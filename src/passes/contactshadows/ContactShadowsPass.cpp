@@ -125,7 +125,7 @@ void ContactShadowsPass::surfaces(const FrameContext& ctx, const FrameResources&
         bind(s.out, *t.surface, ImageAccess::Write);
         dispatch(s.program, e, Barrier::None);
     }
-    memoryBarrier(Barrier::TextureFetch);
+    memoryBarrier(Barrier::ComputeRead);
     bindSampler(s.objectId, nullptr);
 }
 
@@ -139,8 +139,8 @@ void ContactShadowsPass::march(const FrameContext& ctx, const FrameResources& re
     ScopedGpuTimer timer(ctx.timers, "contact shadows",
                          double(e.width) * e.height * (16.0 + 2.0 + (t.steps ? 1.0 : 0.0)));
     m.program.use();
-    bind(m.depth, *resources.texture(Resource::LinearDepth));
-    bind(m.surface, *t.surface);
+    bind(m.depth, *resources.texture(Resource::LinearDepth), ImageAccess::Read);
+    bind(m.surface, *t.surface, ImageAccess::Read);
     bind(m.raw, *t.raw, ImageAccess::Write);
     bind(m.steps, t.steps ? *t.steps : mNoSteps, ImageAccess::Write);
     dispatch(m.program, e, Barrier::None);
@@ -156,8 +156,8 @@ void ContactShadowsPass::resolve(const FrameContext& ctx, const FrameResources& 
                          double(e.width) * e.height * (2.0 + 4.0 + 4.0 + 2.0 + 2.0));
     const ResolveProgram& r = mResolve[motion ? 1 : 0];
     r.program.use();
-    bind(r.depth, depth);
-    bind(r.raw, *t.raw);
+    bind(r.depth, depth, ImageAccess::Read);
+    bind(r.raw, *t.raw, ImageAccess::Read);
     bind(r.history, mHistory.previous() ? *mHistory.previous() : *t.raw);
     bind(r.motion, motion ? *motion : depth);
     bind(r.out, mHistory.current(), ImageAccess::Write);
@@ -173,7 +173,7 @@ void ContactShadowsPass::execute(FrameContext& ctx, FrameResources& resources) {
     mParameters.bind(kBindingParameters);
     surfaces(ctx, resources, t);
     march(ctx, resources, t);
-    memoryBarrier(Barrier::TextureFetch);
+    memoryBarrier(Barrier::ComputeRead);
     resolve(ctx, resources, t);
     resources.bind(Resource::ContactShadows, mHistory.current());
     if (t.steps) {

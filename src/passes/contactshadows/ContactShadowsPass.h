@@ -100,8 +100,8 @@ private:
     /// The march for a perspective projection ([1], CONTACT_SHADOWS_PERSPECTIVE) or any other ([0]).
     struct MarchProgram : ProgramSlots {
         using ProgramSlots::ProgramSlots;
-        SamplerSlot depth = program.sampler("uLinearDepth");
-        SamplerSlot surface = program.sampler("uSurface");
+        ImageSlot depth = program.image("uLinearDepth");
+        ImageSlot surface = program.image("uSurface");
         ImageSlot raw = program.image("uRaw");
         ImageSlot steps = program.image("uStepsTaken");
     };
@@ -111,8 +111,8 @@ private:
     /// define, so a SIMD implementation does not run both.
     struct ResolveProgram : ProgramSlots {
         using ProgramSlots::ProgramSlots;
-        SamplerSlot depth = program.sampler("uLinearDepth");
-        SamplerSlot raw = program.sampler("uRaw");
+        ImageSlot depth = program.image("uLinearDepth");
+        ImageSlot raw = program.image("uRaw");
         SamplerSlot history = program.sampler("uHistory");
         SamplerSlot motion = program.sampler("uMotion");
         ImageSlot out = program.image("uOut");

@@ -11,8 +11,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uLinearDepth; // R32F, +inf: sky
-layout(binding = 3) uniform sampler2D uSurface;     // RGBA32F: view normal, plane constant (0: no surface)
+layout(binding = 2, r32f) uniform readonly image2D uLinearDepth; // +inf: sky
+layout(binding = 3, rgba32f) uniform readonly image2D uSurface; // view normal, plane constant (0: no surface)
 layout(binding = 0, r16f) uniform writeonly image2D uRaw;
 layout(binding = 1, r8) uniform writeonly image2D uStepsTaken;
 
@@ -104,7 +104,7 @@ float march(ivec2 p, vec3 origin, out float taken) {
         bool onScreen =
             clip.w > 0.0 && all(greaterThanEqual(window, vec2(0.0))) && all(lessThan(window, uFullSize));
         done = done || !onScreen;
-        vec4 plane = texelFetch(uSurface, clamp(ivec2(window), ivec2(0), ivec2(uFullSize) - 1), 0);
+        vec4 plane = imageLoad(uSurface, clamp(ivec2(window), ivec2(0), ivec2(uFullSize) - 1));
         float here, atStart;
         if (kPerspective) {
             vec3 r = perspectiveRay(ndc);
@@ -135,12 +135,12 @@ void main() {
     }
     float visibility = 1.0;
     float taken = 0.0;
-    vec4 plane = texelFetch(uSurface, p, 0);
+    vec4 plane = imageLoad(uSurface, p);
     if (hasSurface(plane)) {
         if (dot(plane.xyz, uSunView.xyz) <= 0.0) {
             visibility = 0.0; // the surface itself hides the sun
         } else {
-            vec3 origin = viewPositionAt(vec2(p) + 0.5, texelFetch(uLinearDepth, p, 0).r);
+            vec3 origin = viewPositionAt(vec2(p) + 0.5, imageLoad(uLinearDepth, p).r);
             float occlusion = march(p, origin, taken);
             // Strength scales the occlusion, then clamps: above 1 a hit stays black further into the fade.
             visibility = 1.0 - clamp(uStrength * occlusion, 0.0, 1.0);

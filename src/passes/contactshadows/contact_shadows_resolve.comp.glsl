@@ -7,8 +7,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uLinearDepth; // R32F, +inf: sky
-layout(binding = 3) uniform sampler2D uRaw;         // this frame's visibility
+layout(binding = 1, r32f) uniform readonly image2D uLinearDepth; // R32F, +inf: sky
+layout(binding = 2, r16f) uniform readonly image2D uRaw;         // this frame's visibility
 layout(binding = 4) uniform sampler2D uHistory;     // last frame's accumulated visibility (bilinear)
 layout(binding = 5) uniform sampler2D uMotion;      // UV, current - previous (CONTACT_SHADOWS_MOTION)
 layout(binding = 0, r16f) uniform writeonly image2D uOut;
@@ -25,7 +25,7 @@ bool previousUv(ivec2 p, out vec2 prevUv) {
         }
         prevUv = uv - motion;
     } else {
-        float z = texelFetch(uLinearDepth, p, 0).r;
+        float z = imageLoad(uLinearDepth, p).r;
         if (!validDepth(z)) {
             prevUv = uv; // the sky: visibility 1 wherever it was
         } else {
@@ -46,7 +46,7 @@ void loadTile(ivec2 size) {
     ivec2 origin = ivec2(gl_WorkGroupID.xy) * 8 - 1;
     for (uint i = gl_LocalInvocationIndex; i < 100u; i += 64u) {
         ivec2 q = clamp(origin + ivec2(int(i % 10u), int(i / 10u)), ivec2(0), size - 1);
-        sRaw[i / 10u][i % 10u] = texelFetch(uRaw, q, 0).r;
+        sRaw[i / 10u][i % 10u] = imageLoad(uRaw, q).r;
     }
     barrier();
 }

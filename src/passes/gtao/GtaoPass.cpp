@@ -98,7 +98,7 @@ void GtaoPass::prepare(FrameResources& resources, const Texture& surface, GpuTim
     bind(mPrepareDepth, *resources.texture(Resource::LinearDepth));
     bind(mPrepareNormals, *resources.texture(Resource::Normals));
     bind(mPrepareSurface, surface, ImageAccess::Write);
-    dispatch(mPrepare, e, Barrier::TextureFetch);
+    dispatch(mPrepare, e, Barrier::ComputeRead);
 }
 
 const GtaoPass::SearchProgram& GtaoPass::searchProgram(GtaoQuality quality, int scale) {
@@ -114,9 +114,9 @@ void GtaoPass::search(const Texture& surface, const Texture& raw, GtaoQuality qu
     ScopedGpuTimer timer(timers, "gtao", bytes);
     const SearchProgram& program = searchProgram(quality, scale);
     program.program.use();
-    bind(program.surface, surface);
+    bind(program.surface, surface, ImageAccess::Read);
     bind(program.raw, raw, ImageAccess::Write);
-    dispatch(program.program, raw.extent(), Barrier::TextureFetch);
+    dispatch(program.program, raw.extent(), Barrier::ImageAccess);
 }
 
 void GtaoPass::denoise(const Texture& surface, const Texture& raw, const Texture& out, int scale,
@@ -124,8 +124,8 @@ void GtaoPass::denoise(const Texture& surface, const Texture& raw, const Texture
     ScopedGpuTimer timer(timers, "gtao denoise", bytes);
     const DenoiseProgram& d = scale == 2 ? mDenoiseHalf : mDenoiseFull;
     d.program.use();
-    bind(d.surface, surface);
-    bind(d.raw, raw);
+    bind(d.surface, surface, ImageAccess::Read);
+    bind(d.raw, raw, ImageAccess::Read);
     bind(d.out, out, ImageAccess::Write);
     dispatch(d.program, out.extent(), Barrier::None);
 }

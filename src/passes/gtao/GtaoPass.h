@@ -77,7 +77,7 @@ private:
     /// The horizon search for one preset and resolution (GTAO_SLICES, GTAO_STEPS, GTAO_SCALE), and its slots.
     struct SearchProgram : ProgramSlots {
         using ProgramSlots::ProgramSlots;
-        SamplerSlot surface = program.sampler("uSurface");
+        ImageSlot surface = program.image("uSurface");
         ImageSlot raw = program.image("uRaw");
     };
     /// The search program for `quality` at `scale` (1 or 2), built on first use.
@@ -86,8 +86,8 @@ private:
     /// The denoiser for one resolution (GTAO_SCALE: full-resolution pixels per AO texel), and its slots.
     struct DenoiseProgram : ProgramSlots {
         using ProgramSlots::ProgramSlots;
-        SamplerSlot surface = program.sampler("uSurface");
-        SamplerSlot raw = program.sampler("uRaw");
+        ImageSlot surface = program.image("uSurface");
+        ImageSlot raw = program.image("uRaw");
         ImageSlot out = program.image("uVisibility");
     };
 

@@ -11,7 +11,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 // are constants (a program per resolution).
 const int kScale = GTAO_SCALE;
 
-layout(binding = 1) uniform usampler2D uRaw; // packAoTexel
+layout(binding = 2, rg32ui) uniform readonly uimage2D uRaw; // packAoTexel
 layout(binding = 0, r16f) uniform writeonly image2D uVisibility;
 
 // Neighbours farther from the centre point than this fraction of the radius weigh exp(-1) less, and so on:
@@ -33,7 +33,7 @@ void main() {
     }
     vec3 normal = normalize(surface.n);
     vec3 position = viewPositionAtTexel(p, z);
-    ivec2 rawSize = textureSize(uRaw, 0);
+    ivec2 rawSize = imageSize(uRaw);
     ivec2 centre = p / kScale;
     // Tolerance for the distance from the tangent plane: a few per cent of the depth.
     float invTolerance = 1.0 / (0.02 * z);
@@ -50,7 +50,7 @@ void main() {
             ivec2 q = centre + ivec2(dx, dy);
             bool inside = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, rawSize));
             ivec2 source = aoSourcePixelAt(q, full, kScale);
-            AoTexel neighbour = unpackAoTexel(texelFetch(uRaw, clamp(q, ivec2(0), rawSize - 1), 0).xy);
+            AoTexel neighbour = unpackAoTexel(imageLoad(uRaw, clamp(q, ivec2(0), rawSize - 1)).xy);
             vec3 offset = viewPositionAtTexel(source, neighbour.z) - position;
             float plane = dot(offset, normal) * invTolerance;
             float distance2 = dot(offset, offset) * (invReach * invReach);

@@ -137,7 +137,7 @@ void main() {
         return;
     }
     ivec2 p = aoSourcePixelAt(q, ivec2(uFullSize), kScale);
-    uvec2 centreTexel = texelFetch(uSurface, p, 0).xy;
+    uvec2 centreTexel = imageLoad(uSurface, p).xy;
     GtaoSurface surface = unpackSurface(centreTexel);
     if (!isSurface(surface.z)) {
         store(q, centreTexel, 1.0);

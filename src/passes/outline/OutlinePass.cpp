@@ -36,8 +36,8 @@ void OutlinePass::execute(FrameContext& ctx, FrameResources& resources) {
                         .normals = normalsSource(ctx, resources)});
     mParameters.bind(kBindingParameters);
     mProgram.use();
-    bind(mScene, *resources.texture(Resource::SceneColor));
-    bind(mDepth, depth);
+    bind(mScene, *resources.texture(Resource::SceneColor), ImageAccess::Read);
+    bind(mDepth, depth, ImageAccess::Read);
     bind(mNormals, normals ? *normals : depth);
     bind(mOut, out, ImageAccess::Write);
     dispatch(mProgram, e, Barrier::None);

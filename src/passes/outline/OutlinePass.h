@@ -36,8 +36,8 @@ public:
 
 private:
     Program mProgram;
-    SamplerSlot mScene = mProgram.sampler("uScene");
-    SamplerSlot mDepth = mProgram.sampler("uDepth");
+    ImageSlot mScene = mProgram.image("uScene");
+    ImageSlot mDepth = mProgram.image("uDepth");
     SamplerSlot mNormals = mProgram.sampler("uNormals");
     ImageSlot mOut = mProgram.image("uOut");
     ParameterBlock<OutlineParameters> mParameters;

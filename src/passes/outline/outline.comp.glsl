@@ -10,8 +10,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uScene;
-layout(binding = 1) uniform sampler2D uDepth;
+layout(binding = 1, rgba16f) uniform readonly image2D uScene;
+layout(binding = 2, r32f) uniform readonly image2D uDepth;
 layout(binding = 2) uniform sampler2D uNormals;
 layout(binding = 0, rgba16f) uniform writeonly image2D uOut;
 
@@ -26,7 +26,7 @@ layout(std140, binding = BINDING_PARAMETERS) uniform OutlineParameters {
 
 // 1/z: 0 for the sky, +inf, zero, negative and NaN depths.
 float inverseDepth(ivec2 q, ivec2 size) {
-    float z = texelFetch(uDepth, clamp(q, ivec2(0), size - 1), 0).r;
+    float z = imageLoad(uDepth, clamp(q, ivec2(0), size - 1)).r;
     return (z > 0.0 && !isinf(z)) ? 1.0 / z : 0.0;
 }
 
@@ -52,7 +52,7 @@ void main() {
     if (any(greaterThanEqual(p, size))) {
         return;
     }
-    vec4 c = texelFetch(uScene, p, 0);
+    vec4 c = imageLoad(uScene, p);
     float w0 = inverseDepth(p, size);
     bool edge = false;
     if (w0 > 0.0) {

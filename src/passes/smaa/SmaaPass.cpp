@@ -146,7 +146,7 @@ void SmaaPass::detectEdges(const FrameContext& ctx, const FrameResources& resour
     program.program.use();
     bind(program.color, color);
     if (depth) {
-        bind(program.depth, *depth);
+        bind(program.depth, *depth, ImageAccess::Read);
     }
     bind(program.edges, *t.edges, ImageAccess::Write);
     dispatch(program.program, e, Barrier::IndirectDispatch);
@@ -160,9 +160,9 @@ void SmaaPass::blendingWeights(const FrameContext& ctx, const Targets& t, const 
     glClearTexImage(t.weights->id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     mWeights.use();
     bind(mWeightsEdges, *t.edges);
-    bind(mWeightsAreaOrtho, mAreaOrtho);
-    bind(mWeightsAreaDiag, mAreaDiag);
-    bind(mWeightsSearch, mSearch);
+    bind(mWeightsAreaOrtho, mAreaOrtho, ImageAccess::Read);
+    bind(mWeightsAreaDiag, mAreaDiag, ImageAccess::Read);
+    bind(mWeightsSearch, mSearch, ImageAccess::Read);
     bind(mWeightsOut, *t.weights, ImageAccess::Write);
     dispatchIndirect(mWeights, mTiles.id(), GLintptr(offsetof(GpuSmaaTiles, weightGroups)),
                      Barrier::IndirectDispatch);
@@ -178,8 +178,8 @@ void SmaaPass::blend(const FrameContext& ctx, const Texture& color, const Target
     const Program& program = mBlend.at(bitDepth);
     program.use();
     bind(mBlendColor, color);
-    bind(mBlendWeights, *t.weights);
-    bind(mBlendEdges, *t.edges);
+    bind(mBlendWeights, *t.weights, ImageAccess::Read);
+    bind(mBlendEdges, *t.edges, ImageAccess::Read);
     bind(mBlendOutput, *t.out, ImageAccess::Write);
     if (blendsAll(color, t)) {
         dispatch(program, e, Barrier::None);
@@ -210,10 +210,8 @@ void SmaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     detectEdges(ctx, resources, color, t, prefix);
     blendingWeights(ctx, t, prefix);
     blend(ctx, color, t, bitDepth, prefix);
-    // The weights step reads on units 0-3, the most of the three: none stays bound.
-    for (const SamplerSlot slot : {mWeightsEdges, mWeightsAreaOrtho, mWeightsAreaDiag, mWeightsSearch}) {
-        unbind(slot);
-    }
+    // The weights step samples the edges on unit 0, the most of the three: none stays bound.
+    unbind(mWeightsEdges);
     resources.bind(colorResource, *t.out);
 }
 

@@ -83,7 +83,7 @@ private:
     struct EdgesProgram : ProgramSlots {
         using ProgramSlots::ProgramSlots;
         SamplerSlot color = program.sampler("uColor");
-        SamplerSlot depth = program.sampler("uLinearDepth");
+        ImageSlot depth = program.image("uLinearDepth");
         ImageSlot edges = program.image("uEdges");
     };
     /// The frame's intermediate textures and output.
@@ -112,14 +112,14 @@ private:
     std::optional<EdgesProgram> mEdgesDepth;
     Program mWeights;
     SamplerSlot mWeightsEdges = mWeights.sampler("uEdges");
-    SamplerSlot mWeightsAreaOrtho = mWeights.sampler("uAreaOrtho");
-    SamplerSlot mWeightsAreaDiag = mWeights.sampler("uAreaDiag");
-    SamplerSlot mWeightsSearch = mWeights.sampler("uSearch");
+    ImageSlot mWeightsAreaOrtho = mWeights.image("uAreaOrtho");
+    ImageSlot mWeightsAreaDiag = mWeights.image("uAreaDiag");
+    ImageSlot mWeightsSearch = mWeights.image("uSearch");
     ImageSlot mWeightsOut = mWeights.image("uWeights");
     DisplayProgram mBlend; ///< the HDR domain only ever uses its 8-bit build (which stores RGBA16F)
     SamplerSlot mBlendColor = mBlend.sampler("uColor");
-    SamplerSlot mBlendWeights = mBlend.sampler("uWeights");
-    SamplerSlot mBlendEdges = mBlend.sampler("uEdges");
+    ImageSlot mBlendWeights = mBlend.image("uWeights");
+    ImageSlot mBlendEdges = mBlend.image("uEdges");
     ImageSlot mBlendOutput = mBlend.image("uOutput");
     Texture mAreaOrtho;
     Texture mAreaDiag;

@@ -19,8 +19,8 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uColor;
-layout(binding = 1) uniform sampler2D uWeights;
-layout(binding = 2) uniform sampler2D uEdges; // RG8: r, an edge with the -x neighbour; g, with the -y one
+layout(binding = 1, rgba8) uniform readonly image2D uWeights;
+layout(binding = 2, rg8) uniform readonly image2D uEdges; // r, an edge with the -x neighbour; g, with the -y one
 #ifdef SMAA_HDR
 layout(binding = 0, rgba16f) uniform writeonly image2D uOutput;
 vec3 toLinear(vec3 c) { return c; }
@@ -35,7 +35,7 @@ vec3 fromLinear(vec3 c) { return srgbEncode(c); }
 #include "passes/smaa/smaa_tiles.h.glsl"
 
 vec4 weightsAt(ivec2 p, ivec2 size) {
-    return any(greaterThanEqual(p, size)) ? vec4(0.0) : texelFetch(uWeights, p, 0);
+    return any(greaterThanEqual(p, size)) ? vec4(0.0) : imageLoad(uWeights, p);
 }
 
 vec3 linearAt(ivec2 p, ivec2 size) {
@@ -43,7 +43,7 @@ vec3 linearAt(ivec2 p, ivec2 size) {
 }
 
 vec2 edgesAt(ivec2 p, ivec2 size) {
-    return any(greaterThanEqual(p, size)) ? vec2(0.0) : texelFetch(uEdges, p, 0).rg;
+    return any(greaterThanEqual(p, size)) ? vec2(0.0) : imageLoad(uEdges, p).rg;
 }
 
 // The ridge filter above for the unblended pixel p of colour `centre` (as stored); false where p is no ridge.
@@ -85,7 +85,7 @@ void main() {
         return;
     }
     vec4 centre = texelFetch(uColor, p, 0);
-    vec4 own = texelFetch(uWeights, p, 0);
+    vec4 own = imageLoad(uWeights, p);
     vec4 w = vec4(own.r, weightsAt(p + ivec2(0, 1), size).g, own.b, weightsAt(p + ivec2(1, 0), size).a);
     if (max(max(w.x, w.y), max(w.z, w.w)) == 0.0) {
         vec3 filtered;

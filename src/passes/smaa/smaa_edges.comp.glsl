@@ -21,10 +21,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D uColor;
 layout(binding = 0, rg8) uniform writeonly image2D uEdges;
 #ifdef SMAA_DEPTH
-layout(binding = 1) uniform sampler2D uLinearDepth; // R32F view depth, +inf: sky
+layout(binding = 1, r32f) uniform readonly image2D uLinearDepth; // view depth, +inf: sky
 
 float depthAt(ivec2 p) {
-    return texelFetch(uLinearDepth, clamp(p, ivec2(0), textureSize(uLinearDepth, 0) - 1), 0).r;
+    return imageLoad(uLinearDepth, clamp(p, ivec2(0), imageSize(uLinearDepth) - 1)).r;
 }
 
 // 1 where the two depths differ by more than a tenth of the nearer (a silhouette), else 0.

@@ -17,9 +17,10 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D uEdges;     // linear filtering: the searches fetch two pixels at once
-layout(binding = 1) uniform sampler2D uAreaOrtho; // RG8, texel fetches
-layout(binding = 2) uniform sampler2D uAreaDiag;  // RG8, texel fetches
-layout(binding = 3) uniform usampler2D uSearch;   // R8UI, texel fetches
+// The tables, read texel by texel as images (a load skips the sampler's level and filtering logic).
+layout(binding = 1, rg8) uniform readonly image2D uAreaOrtho;
+layout(binding = 2, rg8) uniform readonly image2D uAreaDiag;
+layout(binding = 3, r8ui) uniform readonly uimage2D uSearch;
 layout(binding = 0, rgba8) uniform writeonly image2D uWeights;
 
 #include "passes/smaa/smaa_parameters.h.glsl"
@@ -72,7 +73,7 @@ int searchBackward(bool vertical, int along, int across) {
         ivec2 e = fetchPair(vertical, float(a) + 0.25, float(across) + 0.375);
         last = a;
         if (e.x < 28 || e.y != 0) {
-            value = int(texelFetch(uSearch, ivec2(e.x, e.y), 0).r);
+            value = int(imageLoad(uSearch, ivec2(e.x, e.y)).r);
             break;
         }
         a -= 2;
@@ -89,7 +90,7 @@ int searchForward(bool vertical, int along, int across, int limit) {
         ivec2 e = fetchPair(vertical, float(b) + 0.75, float(across) + 0.375);
         last = b;
         if (e.x < 28 || e.y != 0) {
-            value = int(texelFetch(uSearch, ivec2(kLevels + e.x, e.y), 0).r);
+            value = int(imageLoad(uSearch, ivec2(kLevels + e.x, e.y)).r);
             break;
         }
         b += 2;
@@ -114,7 +115,7 @@ vec2 orthogonalWeights(ivec2 p, bool vertical) {
     int e2 = crossingBits(vertical, last + 1, across);
     ivec2 texel =
         ivec2(kOrthoMax * e2 + min(right, kOrthoMax - 1), kOrthoMax * e1 + min(left, kOrthoMax - 1));
-    vec2 area = texelFetch(uAreaOrtho, texel, 0).rg;
+    vec2 area = imageLoad(uAreaOrtho, texel).rg;
     if (uCornerRounding < 1.0 && area.x + area.y > 0.0) {
         vec2 nearer = vec2(left <= right ? 1.0 : 0.0, right <= left ? 1.0 : 0.0);
         vec2 rounding = (1.0 - uCornerRounding) * nearer / (nearer.x + nearer.y);
@@ -187,7 +188,7 @@ vec2 diagonalWeights(ivec2 q, bool mirror) {
                      : int(diagEdgeG(q, last + ivec2(1, 0), mirror)) |
                            (int(diagEdgeR(q, last + ivec2(1, -1), mirror)) << 1);
     ivec2 texel = ivec2(kDiagMax * e2 + min(fwd, kDiagMax - 1), kDiagMax * e1 + min(back, kDiagMax - 1));
-    return texelFetch(uAreaDiag, texel, 0).gr;
+    return imageLoad(uAreaDiag, texel).gr;
 }
 
 // One work group per listed tile (an indirect dispatch over the tile list); the weights of every other

@@ -89,7 +89,7 @@ void SsrHistoryPass::execute(FrameContext& ctx, FrameResources& resources) {
         ScopedGpuTimer timer(ctx.timers, "ssr history",
                              double(e.width) * e.height * (8.0 + 8.0 + 16.0 / 3.0));
         mProgram.use();
-        bind(mScene, *resources.texture(Resource::SceneColor));
+        bind(mScene, *resources.texture(Resource::SceneColor), ImageAccess::Read);
         bind(mHistorySlot, mHistory, ImageAccess::Write); // level 0
         dispatch(mProgram, e, Barrier::TextureFetchAndCopy);
         glGenerateTextureMipmap(mHistory.id());
@@ -184,7 +184,7 @@ void SsrPass::bindTrace(const TraceProgram& trace, const FrameResources& resourc
     bind(trace.depth, depth);
     bind(trace.normals, normals ? *normals : depth);
     bind(trace.material, material ? *material : depth);
-    bind(trace.pyramid, *resources.texture(Resource::DepthPyramid));
+    bind(trace.pyramid, *resources.texture(Resource::DepthPyramid), ImageAccess::Read);
     bind(trace.hits, hits, ImageAccess::Write);
 }
 
@@ -203,11 +203,11 @@ void SsrPass::trace(const FrameContext& ctx, const FrameResources& resources, co
     const int normals = normalsSource(ctx, resources);
     const TraceProgram& march = traceProgram(normals, false);
     bindTrace(march, resources, half ? *t.blockHits : *t.hits);
-    dispatch(march.program, traceExtent, half ? Barrier::TextureFetch : Barrier::None);
+    dispatch(march.program, traceExtent, half ? Barrier::ImageAccess : Barrier::None);
     if (half) {
         const TraceProgram& refine = traceProgram(normals, true);
         bindTrace(refine, resources, *t.hits);
-        bind(refine.blockHits, *t.blockHits);
+        bind(refine.blockHits, *t.blockHits, ImageAccess::Read);
         dispatch(refine.program, e, Barrier::None);
     }
 }
@@ -228,10 +228,10 @@ void SsrPass::resolve(const FrameContext& ctx, const FrameResources& resources, 
     const ResolveProgram& r =
         resolveProgram(motion != nullptr, history != nullptr, material != nullptr, t.reflections != nullptr);
     r.program.use();
-    bind(r.depth, depth);
-    bind(r.scene, scene);
+    bind(r.depth, depth, ImageAccess::Read);
+    bind(r.scene, scene, ImageAccess::Read);
     bind(r.history, history ? *history : scene);
-    bind(r.hits, *t.hits);
+    bind(r.hits, *t.hits, ImageAccess::Read);
     bind(r.motion, motion ? *motion : depth);
     bind(r.material, material ? *material : depth);
     bind(r.outScene, *t.sceneOut, ImageAccess::Write);
@@ -259,7 +259,7 @@ void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
     mParameters.update(parameters(ctx, resources, traceExtent));
     mParameters.bind(kBindingParameters);
     trace(ctx, resources, t, traceExtent);
-    memoryBarrier(Barrier::TextureFetch);
+    memoryBarrier(Barrier::ImageAccess);
     resolve(ctx, resources, t);
     resources.bind(Resource::SceneColor, *t.sceneOut);
     if (t.reflections != nullptr) {

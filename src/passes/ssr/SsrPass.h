@@ -99,7 +99,7 @@ public:
 
 private:
     Program mProgram;
-    SamplerSlot mScene = mProgram.sampler("uScene");
+    ImageSlot mScene = mProgram.image("uScene");
     ImageSlot mHistorySlot = mProgram.image("uHistory");
     Texture mHistory;
     bool mValid = false;
@@ -124,8 +124,8 @@ private:
         SamplerSlot depth = program.sampler("uLinearDepth");
         SamplerSlot normals = program.sampler("uNormalTexture");
         SamplerSlot material = program.sampler("uMaterial");
-        SamplerSlot pyramid = program.sampler("uPyramid");
-        SamplerSlot blockHits = program.sampler("uBlockHits"); ///< REFINE only
+        ImageSlot pyramid = program.image("uPyramid");
+        ImageSlot blockHits = program.image("uBlockHits"); ///< REFINE only
         ImageSlot hits = program.image("uHits");
     };
     /// The frame's intermediate textures and outputs.
@@ -147,10 +147,10 @@ private:
     /// The resolve program for the inputs present (SSR_MOTION, SSR_HISTORY, SSR_MATERIAL), and its slots.
     struct ResolveProgram : ProgramSlots {
         using ProgramSlots::ProgramSlots;
-        SamplerSlot depth = program.sampler("uLinearDepth");
-        SamplerSlot scene = program.sampler("uScene");
+        ImageSlot depth = program.image("uLinearDepth");
+        ImageSlot scene = program.image("uScene");
         SamplerSlot history = program.sampler("uHistory");
-        SamplerSlot hits = program.sampler("uHits");
+        ImageSlot hits = program.image("uHits");
         SamplerSlot motion = program.sampler("uMotion");
         SamplerSlot material = program.sampler("uMaterial");
         ImageSlot outScene = program.image("uOutScene");

@@ -4,7 +4,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uScene;
+layout(binding = 1, rgba16f) uniform readonly image2D uScene;
 layout(binding = 0, rgba16f) uniform writeonly image2D uHistory;
 
 void main() {
@@ -12,5 +12,5 @@ void main() {
     if (any(greaterThanEqual(p, imageSize(uHistory)))) {
         return;
     }
-    imageStore(uHistory, p, vec4(sanitize(texelFetch(uScene, p, 0).rgb), 1.0));
+    imageStore(uHistory, p, vec4(sanitize(imageLoad(uScene, p).rgb), 1.0));
 }

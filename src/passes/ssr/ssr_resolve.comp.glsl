@@ -16,10 +16,10 @@ const bool kHasHistory = SSR_HISTORY != 0;
 const bool kHasMaterial = SSR_MATERIAL != 0;
 const bool kWriteReflections = SSR_REFLECTIONS != 0;
 
-layout(binding = 0) uniform sampler2D uLinearDepth;
-layout(binding = 1) uniform sampler2D uScene;    // this frame's scene colour, before reflections
+layout(binding = 2, r32f) uniform readonly image2D uLinearDepth;
+layout(binding = 3, rgba16f) uniform readonly image2D uScene;    // this frame's scene colour, before reflections
 layout(binding = 2) uniform sampler2D uHistory;  // last frame's image (mip chain), with SSR_HISTORY
-layout(binding = 3) uniform sampler2D uHits;     // ssr_trace's output
+layout(binding = 4, rgba32f) uniform readonly image2D uHits;     // ssr_trace's output
 layout(binding = 4) uniform sampler2D uMotion;   // with SSR_MOTION
 layout(binding = 5) uniform sampler2D uMaterial; // with SSR_MATERIAL
 layout(binding = 0, rgba16f) uniform writeonly image2D uOutScene;
@@ -35,7 +35,7 @@ vec2 previousUv(vec2 window, ivec2 hitPixel) {
         vec2 m = texelFetch(uMotion, hitPixel, 0).rg;
         return all(lessThan(abs(m), vec2(1e4))) ? uv - m : vec2(-1.0); // NaN fails too
     }
-    float z = texelFetch(uLinearDepth, hitPixel, 0).r;
+    float z = imageLoad(uLinearDepth, hitPixel).r;
     if (!validDepth(z)) {
         return vec2(-1.0);
     }
@@ -56,7 +56,7 @@ vec3 reflectedRadiance(vec4 hit) {
             return textureLod(uHistory, uv, lod).rgb;
         }
     }
-    return texelFetch(uScene, hitPixel, 0).rgb;
+    return imageLoad(uScene, hitPixel).rgb;
 }
 
 void main() {
@@ -64,8 +64,8 @@ void main() {
     if (any(greaterThanEqual(p, ivec2(uFullSize)))) {
         return;
     }
-    vec3 scene = texelFetch(uScene, p, 0).rgb;
-    vec4 hit = texelFetch(uHits, p, 0);
+    vec3 scene = imageLoad(uScene, p).rgb;
+    vec4 hit = imageLoad(uHits, p);
     float confidence = hit.z;
     vec3 radiance = vec3(0.0);
     if (confidence > 0.0 && all(lessThanEqual(abs(hit), vec4(1e6)))) {

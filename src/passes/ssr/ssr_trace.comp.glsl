@@ -27,8 +27,9 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D uLinearDepth; // R32F, +inf: sky
 layout(binding = 1) uniform sampler2D uNormalTexture;
 layout(binding = 2) uniform sampler2D uMaterial; // RGB F0, A roughness, when uHasMaterial != 0
-layout(binding = 3) uniform sampler2D uPyramid;  // R32F min depth, every level in one (ssr_pyramid.h.glsl)
-layout(binding = 4) uniform sampler2D uBlockHits; // REFINE: the blocks' hits (the half-resolution trace)
+// Read texel by texel as images (a load skips the sampler's level and filtering logic).
+layout(binding = 1, r32f) uniform readonly image2D uPyramid; // min depth, every level in one (ssr_pyramid.h.glsl)
+layout(binding = 2, rgba32f) uniform readonly image2D uBlockHits; // REFINE: the blocks' hits (half resolution)
 layout(binding = 0, rgba32f) uniform writeonly image2D uHits;
 
 // The ray, in window space: s(t) = s0 + t d; linear depth(t) = (q0 + t dq) / (k0 + t dk).
@@ -212,7 +213,7 @@ bool nextCandidate(Mirror m, inout Walk w, float tStop, int maxLevel) {
         // An exit a rounding error behind t (a cell the ray only grazes) is taken as t: never backwards,
         // and t <= tExit for the clamps (GLSL leaves clamp undefined for min > max).
         w.tExit = min(max(cellExit(ray, w.cell, float(1 << w.level), w.sides), w.t), tStop);
-        w.zCell = texelFetch(uPyramid, pyramidLevelOrigin(uPyramidSize, w.level) + w.cell, 0).r;
+        w.zCell = imageLoad(uPyramid, pyramidLevelOrigin(uPyramidSize, w.level) + w.cell).r;
         float zA = depthAt(ray, w.t);
         float zB = depthAt(ray, w.tExit);
         if (max(zA, zB) < w.zCell) { // in front of every surface in the cell (+inf, the sky, included)
@@ -311,12 +312,12 @@ void main() {
     ivec2 block = q / 2;
     vec4 hit = vec4(0.0);
     if (all(equal(q, blockPixel(block)))) {
-        hit = texelFetch(uBlockHits, block, 0);
+        hit = imageLoad(uBlockHits, block);
     } else {
         vec4 seeds[4];
         bool seeded = false;
         for (int k = 0; k < 4; ++k) {
-            seeds[k] = texelFetch(uBlockHits, min(block + ivec2(k & 1, k >> 1), ivec2(uTraceSize) - 1), 0);
+            seeds[k] = imageLoad(uBlockHits, min(block + ivec2(k & 1, k >> 1), ivec2(uTraceSize) - 1));
             seeded = seeded || seeds[k].z > 0.0;
         }
         // Where every block around missed, so does the pixel.

@@ -59,12 +59,14 @@ TaaParameters TaaPass::parameters(const FrameContext& ctx, const FrameResources&
             .padding = 0};
 }
 
-const TaaPass::ResolveProgram& TaaPass::resolveProgram(const TaaParameters& p) {
+const TaaPass::ResolveProgram& TaaPass::resolveProgram(const TaaParameters& p, GLenum motionFormat) {
     return mPrograms.get(std::size_t(p.bilinearHistory != 0) | (std::size_t(p.hasDepth != 0) << 1) |
-                             (std::size_t(p.hasCamera != 0) << 2),
+                             (std::size_t(p.hasCamera != 0) << 2) |
+                             (formatIndex(motionFormat, kMotionFormats) << 3),
                          {{"TAA_BILINEAR", std::to_string(p.bilinearHistory)},
                           {"TAA_DEPTH", std::to_string(p.hasDepth)},
-                          {"TAA_CAMERA", std::to_string(p.hasCamera)}});
+                          {"TAA_CAMERA", std::to_string(p.hasCamera)},
+                          imageFormatDefine("TAA_MOTION_FORMAT", motionFormat)});
 }
 
 void TaaPass::bindInputs(const ResolveProgram& program, const FrameResources& resources,
@@ -72,12 +74,16 @@ void TaaPass::bindInputs(const ResolveProgram& program, const FrameResources& re
     const Texture* depth = resources.texture(Resource::LinearDepth);
     const Texture& motion = *resources.texture(Resource::Motion);
     bindExposureStateForReading(*resources.buffer(Resource::ExposureState));
-    bind(program.current, *resources.texture(Resource::SceneColor));
+    // The scene colour is the sanitised copy (or a 3D pass's output over it), RGBA16F like them all.
+    bind(program.current, *resources.texture(Resource::SceneColor), ImageAccess::Read);
     // Without a history the shader reads none; a bound texture keeps every sampler complete.
     bind(program.history, mHistory.previous() ? *mHistory.previous() : mHistory.current());
-    bind(program.motion, motion);
-    bind(program.depth, depth ? *depth : motion);
-    bind(program.historyAux, mHistoryAux.previous() ? *mHistoryAux.previous() : mHistoryAux.current());
+    bind(program.motion, motion, ImageAccess::Read);
+    if (depth) {
+        bind(program.depth, *depth, ImageAccess::Read); // without depth the program declares none
+    }
+    bind(program.historyAux, mHistoryAux.previous() ? *mHistoryAux.previous() : mHistoryAux.current(),
+         ImageAccess::Read);
     bind(program.outputAux, mHistoryAux.current(), ImageAccess::Write);
     bind(program.output, mHistory.current(), ImageAccess::Write);
     bind(program.debug, debugTarget ? *debugTarget : mNoDebug, ImageAccess::Write);
@@ -98,7 +104,7 @@ void TaaPass::execute(FrameContext& ctx, FrameResources& resources) {
     const TaaParameters p = parameters(ctx, resources, debug != nullptr);
     mParameters.update(p);
     mParameters.bind(kBindingParameters);
-    const ResolveProgram& program = resolveProgram(p);
+    const ResolveProgram& program = resolveProgram(p, resources.texture(Resource::Motion)->format());
     program.program.use();
     bindInputs(program, resources, debug);
     dispatch(program.program, e, Barrier::None);

@@ -53,26 +53,26 @@ private:
                                            bool debug) const;
     /// The debug target when a TAA debug view asks for one, else null.
     [[nodiscard]] static const Texture* debugTarget(const FrameContext& ctx, FrameResources& resources);
-    /// The resolve for a history filter and the inputs present (TAA_BILINEAR, TAA_DEPTH, TAA_CAMERA), and
-    /// its slots.
+    /// The resolve for a history filter, the inputs present (TAA_BILINEAR, TAA_DEPTH, TAA_CAMERA) and the
+    /// motion input's format (TAA_MOTION_FORMAT), and its slots.
     struct ResolveProgram : ProgramSlots {
         using ProgramSlots::ProgramSlots;
-        SamplerSlot current = program.sampler("uCurrent");
+        ImageSlot current = program.image("uCurrent");
         SamplerSlot history = program.sampler("uHistory");
-        SamplerSlot historyAux = program.sampler("uHistoryAux");
-        SamplerSlot motion = program.sampler("uMotion");
-        SamplerSlot depth = program.sampler("uDepth");
+        ImageSlot historyAux = program.image("uHistoryAux");
+        ImageSlot motion = program.image("uMotion");
+        ImageSlot depth = program.image("uDepth");
         ImageSlot output = program.image("uOutput");
         ImageSlot outputAux = program.image("uOutputAux");
         ImageSlot debug = program.image("uDebug");
     };
     /// Built on first use.
-    const ResolveProgram& resolveProgram(const TaaParameters& p);
+    const ResolveProgram& resolveProgram(const TaaParameters& p, GLenum motionFormat);
     void bindInputs(const ResolveProgram& program, const FrameResources& resources,
                     const Texture* debugTarget) const;
 
-    /// By bilinear history (bit 0), depth (bit 1) and camera (bit 2).
-    ProgramVariants<ResolveProgram, 8> mPrograms{"passes/taa/taa_resolve.comp.glsl"};
+    /// By bilinear history (bit 0), depth (bit 1), camera (bit 2) and motion format (bits 3-4).
+    ProgramVariants<ResolveProgram, 32> mPrograms{"passes/taa/taa_resolve.comp.glsl"};
     ParameterBlock<TaaParameters> mParameters;
     HistoryTexture mHistory;    ///< the resolved colour
     HistoryTexture mHistoryAux; ///< per pixel: linear depth and stability (how long it has held still)

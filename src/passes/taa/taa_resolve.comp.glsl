@@ -21,12 +21,14 @@ const bool kBilinearHistory = TAA_BILINEAR != 0;
 const bool kHasDepth = TAA_DEPTH != 0;
 const bool kHasCamera = TAA_CAMERA != 0;
 
-layout(binding = 0) uniform sampler2D uCurrent; // sceneColor: sanitised HDR, this frame's jittered samples
-layout(binding = 1) uniform sampler2D uHistory; // last frame's resolve
+// The inputs read texel by texel are images: a load skips the sampler's level and filtering logic. The
+// motion input is the host's, declared in its texture's format (TAA_MOTION_FORMAT, a program per format).
+layout(binding = 3, rgba16f) uniform readonly image2D uCurrent; // sceneColor: sanitised HDR, jittered samples
+layout(binding = 1) uniform sampler2D uHistory; // last frame's resolve (filtered reads)
 // Last frame's per pixel: r = the farthest linear depth of its 3 x 3 neighbourhood, g = stability.
-layout(binding = 4) uniform sampler2D uHistoryAux;
-layout(binding = 2) uniform sampler2D uMotion;  // UV, current - previous
-layout(binding = 3) uniform sampler2D uDepth;   // linear view depth (with TAA_DEPTH)
+layout(binding = 4, rg16f) uniform readonly image2D uHistoryAux;
+layout(binding = 5, TAA_MOTION_FORMAT) uniform readonly image2D uMotion; // UV, current - previous
+layout(binding = 6, r32f) uniform readonly image2D uDepth; // linear view depth (with TAA_DEPTH)
 layout(binding = 0, rgba16f) writeonly uniform image2D uOutput;
 layout(binding = 2, rg16f) writeonly uniform image2D uOutputAux;
 layout(binding = 1, rg8) writeonly uniform image2D uDebug; // r: history weight, g: disoccluded
@@ -111,8 +113,8 @@ void main() {
         return;
     }
     float exposure = max(gExposure.exposure, 1e-8);
-    vec3 current = texelFetch(uCurrent, p, 0).rgb;
-    float depth = kHasDepth ? texelFetch(uDepth, p, 0).r : 0.0;
+    vec3 current = imageLoad(uCurrent, p).rgb;
+    float depth = kHasDepth ? imageLoad(uDepth, p).r : 0.0;
 
     // Neighbourhood statistics in working YCoCg, and the closest surface for the motion of edges.
     vec3 m1 = vec3(0.0), m2 = vec3(0.0);
@@ -125,15 +127,15 @@ void main() {
     for (int y = -1; y <= 1; ++y) {
         for (int x = -1; x <= 1; ++x) {
             ivec2 q = clamp(p + ivec2(x, y), ivec2(0), size - 1);
-            vec3 c = rgbToYCoCg(toWorking(texelFetch(uCurrent, q, 0).rgb, exposure));
+            vec3 c = rgbToYCoCg(toWorking(imageLoad(uCurrent, q).rgb, exposure));
             m1 += c;
             m2 += c * c;
             lo = min(lo, c);
             hi = max(hi, c);
-            vec2 m = finiteMotion(texelFetch(uMotion, q, 0).rg) * vec2(size);
+            vec2 m = finiteMotion(imageLoad(uMotion, q).rg) * vec2(size);
             fastest2 = max(fastest2, dot(m, m));
             if (kHasDepth) {
-                float d = texelFetch(uDepth, q, 0).r;
+                float d = imageLoad(uDepth, q).r;
                 if (d < closestDepth) {
                     closestDepth = d;
                     closest = q;
@@ -148,7 +150,7 @@ void main() {
     vec3 boxMin = max(lo, mean - uGamma * sigma);
     vec3 boxMax = min(hi, mean + uGamma * sigma);
 
-    vec2 motion = finiteMotion(texelFetch(uMotion, closest, 0).rg);
+    vec2 motion = finiteMotion(imageLoad(uMotion, closest).rg);
     vec2 uv = (vec2(p) + 0.5) / vec2(size);
     vec2 prevUv = uv - motion;
     bool history = uHasHistory != 0 && all(greaterThanEqual(prevUv, vec2(0.0))) && all(lessThanEqual(prevUv, vec2(1.0)));
@@ -167,7 +169,7 @@ void main() {
         // depth the history keeps (one fetch here); a history that is farther than the point (a thin feature
         // this frame's sample hit) is not disocclusion.
         ivec2 hp = clamp(ivec2(prevUv * vec2(size)), ivec2(0), size - 1);
-        disoccluded = texelFetch(uHistoryAux, hp, 0).r < 0.9 * predicted;
+        disoccluded = imageLoad(uHistoryAux, hp).r < 0.9 * predicted;
     }
 
     vec4 result;
@@ -193,7 +195,7 @@ void main() {
         // kStableFrames, so a ghost left in the history is clipped away first. Without depth there is no
         // disocclusion test to fall back on, so the clip stays full everywhere.
         ivec2 hp = clamp(ivec2(prevUv * vec2(size)), ivec2(0), size - 1);
-        float previousStability = texelFetch(uHistoryAux, hp, 0).g;
+        float previousStability = imageLoad(uHistoryAux, hp).g;
         stability = fastest < uStillPixels ? min(previousStability + 1.0 / kStableFrames, 1.0) : 0.0;
         float clipStrength = (kHasDepth && kHasCamera) ? 1.0 - previousStability : 1.0;
         h = mix(h, clipToBox(boxMin, boxMax, h), clipStrength);

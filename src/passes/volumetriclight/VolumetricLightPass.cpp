@@ -158,7 +158,7 @@ void VolumetricLightPass::shadowMarch(const FrameContext& ctx, const FrameResour
     ScopedGpuTimer timer(ctx.timers, "volumetric light march (shadow map)",
                          double(low.width) * low.height * (4.0 + samples * 16.0 + 8.0 + 4.0));
     mShadowMarch.use();
-    bind(mMarchDepth, *resources.texture(Resource::LinearDepth));
+    bind(mMarchDepth, *resources.texture(Resource::LinearDepth), ImageAccess::Read);
     bind(mMarchShadowMap, shadowMap, mShadowSampler);
     bind(mMarchOut, raw, ImageAccess::Write);
     bind(mMarchLowDepth, mShadowDepth.current(), ImageAccess::Write);
@@ -173,10 +173,11 @@ void VolumetricLightPass::shadowResolve(const FrameContext& ctx, const Texture& 
                          double(low.width) * low.height * (8.0 + 4.0 + 4 * (8.0 + 4.0) + 8.0));
     mShadowResolve.use();
     const Texture& current = mShadowDepth.current();
-    bind(mShadowResolveRaw, raw);
-    bind(mShadowResolveHistory, mShadowLight.previous() ? *mShadowLight.previous() : raw);
-    bind(mShadowResolveLowDepth, current);
-    bind(mShadowResolvePrevLowDepth, mShadowDepth.previous() ? *mShadowDepth.previous() : current);
+    bind(mShadowResolveRaw, raw, ImageAccess::Read);
+    bind(mShadowResolveHistory, mShadowLight.previous() ? *mShadowLight.previous() : raw, ImageAccess::Read);
+    bind(mShadowResolveLowDepth, current, ImageAccess::Read);
+    bind(mShadowResolvePrevLowDepth, mShadowDepth.previous() ? *mShadowDepth.previous() : current,
+         ImageAccess::Read);
     bind(mShadowResolveOut, mShadowLight.current(), ImageAccess::Write);
     dispatch(mShadowResolve, low, Barrier::None);
 }
@@ -189,10 +190,10 @@ void VolumetricLightPass::shadowComposite(const FrameContext& ctx, const FrameRe
                          double(e.width) * e.height * (8.0 + 4.0 + 8.0 + (view ? 8.0 : 0.0)) +
                              double(low.width) * low.height * 12.0);
     mShadowComposite.use();
-    bind(mShadowCompositeScene, *resources.texture(Resource::SceneColor));
-    bind(mShadowCompositeDepth, *resources.texture(Resource::LinearDepth));
-    bind(mShadowCompositeLowDepth, mShadowDepth.current());
-    bind(mShadowCompositeAccumulated, mShadowLight.current());
+    bind(mShadowCompositeScene, *resources.texture(Resource::SceneColor), ImageAccess::Read);
+    bind(mShadowCompositeDepth, *resources.texture(Resource::LinearDepth), ImageAccess::Read);
+    bind(mShadowCompositeLowDepth, mShadowDepth.current(), ImageAccess::Read);
+    bind(mShadowCompositeAccumulated, mShadowLight.current(), ImageAccess::Read);
     bind(mShadowCompositeOut, out, ImageAccess::Write);
     bind(mShadowCompositeView, view ? *view : mNoView, ImageAccess::Write);
     dispatch(mShadowComposite, e, Barrier::None);
@@ -213,9 +214,9 @@ void VolumetricLightPass::executeShadowMap(FrameContext& ctx, FrameResources& re
     mShadowParameters.update(shadowParametersFor(ctx, low, factor, hasHistory, targets.view != nullptr));
     mShadowParameters.bind(kBindingParameters);
     shadowMarch(ctx, resources, shadowMap, raw, low);
-    memoryBarrier(Barrier::TextureFetch);
+    memoryBarrier(Barrier::ImageAccess);
     shadowResolve(ctx, raw, low);
-    memoryBarrier(Barrier::TextureFetch);
+    memoryBarrier(Barrier::ImageAccess);
     shadowComposite(ctx, resources, targets.out, targets.view, low);
     mShadowLight.advance();
     mShadowDepth.advance();

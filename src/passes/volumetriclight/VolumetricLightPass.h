@@ -10,7 +10,8 @@
 // its temporal accumulation reprojected by the camera's motion from depth, and a depth-aware upsample added
 // to the image at the same place in the frame.
 // docs/architecture.md ("Volumetric light") has the settings, the measured figures and the limits.
-// Tests: tests/gl/test_volumetric_light.cpp, tests/gl/test_volumetric_shadow.cpp, tests/e2e/volumetric_light.sh.
+// Tests: tests/gl/test_volumetric_light.cpp, tests/gl/test_volumetric_shadow.cpp,
+// tests/e2e/volumetric_light.sh.
 
 #include "passes/FramePass.h"
 #include "passes/HistoryTexture.h"
@@ -138,19 +139,19 @@ private:
     Program mShadowMarch;
     Program mShadowResolve;
     Program mShadowComposite;
-    SamplerSlot mMarchDepth = mShadowMarch.sampler("uDepth");
+    ImageSlot mMarchDepth = mShadowMarch.image("uDepth");
     SamplerSlot mMarchShadowMap = mShadowMarch.sampler("uShadowMap");
     ImageSlot mMarchOut = mShadowMarch.image("uOut");
     ImageSlot mMarchLowDepth = mShadowMarch.image("uLowDepth");
-    SamplerSlot mShadowResolveRaw = mShadowResolve.sampler("uRaw");
-    SamplerSlot mShadowResolveHistory = mShadowResolve.sampler("uHistory");
-    SamplerSlot mShadowResolveLowDepth = mShadowResolve.sampler("uLowDepth");
-    SamplerSlot mShadowResolvePrevLowDepth = mShadowResolve.sampler("uPrevLowDepth");
+    ImageSlot mShadowResolveRaw = mShadowResolve.image("uRaw");
+    ImageSlot mShadowResolveHistory = mShadowResolve.image("uHistory");
+    ImageSlot mShadowResolveLowDepth = mShadowResolve.image("uLowDepth");
+    ImageSlot mShadowResolvePrevLowDepth = mShadowResolve.image("uPrevLowDepth");
     ImageSlot mShadowResolveOut = mShadowResolve.image("uOut");
-    SamplerSlot mShadowCompositeScene = mShadowComposite.sampler("uScene");
-    SamplerSlot mShadowCompositeDepth = mShadowComposite.sampler("uDepth");
-    SamplerSlot mShadowCompositeLowDepth = mShadowComposite.sampler("uLowDepth");
-    SamplerSlot mShadowCompositeAccumulated = mShadowComposite.sampler("uAccumulated");
+    ImageSlot mShadowCompositeScene = mShadowComposite.image("uScene");
+    ImageSlot mShadowCompositeDepth = mShadowComposite.image("uDepth");
+    ImageSlot mShadowCompositeLowDepth = mShadowComposite.image("uLowDepth");
+    ImageSlot mShadowCompositeAccumulated = mShadowComposite.image("uAccumulated");
     ImageSlot mShadowCompositeOut = mShadowComposite.image("uOut");
     ImageSlot mShadowCompositeView = mShadowComposite.image("uView");
     ParameterBlock<VolumetricShadowParameters> mShadowParameters;

@@ -7,10 +7,10 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uScene;
-layout(binding = 1) uniform sampler2D uDepth;    // full resolution linear depth
-layout(binding = 5) uniform sampler2D uLowDepth; // the march's depths
-layout(binding = 6) uniform sampler2D uAccumulated; // the accumulated light
+layout(binding = 2, rgba16f) uniform readonly image2D uScene;
+layout(binding = 3, r32f) uniform readonly image2D uDepth;    // full resolution linear depth
+layout(binding = 4, r32f) uniform readonly image2D uLowDepth; // the march's depths
+layout(binding = 5, rgba16f) uniform readonly image2D uAccumulated; // the accumulated light
 layout(binding = 0, rgba16f) uniform writeonly image2D uOut;
 layout(binding = 1, rgba16f) uniform writeonly image2D uView;
 
@@ -29,8 +29,8 @@ void main() {
     if (any(greaterThanEqual(p, size))) {
         return;
     }
-    vec4 c = texelFetch(uScene, p, 0);
-    float z = texelFetch(uDepth, p, 0).r;
+    vec4 c = imageLoad(uScene, p);
+    float z = imageLoad(uDepth, p).r;
     ivec2 lowSize = ivec2(uLowSize);
     vec2 f = (vec2(p) + 0.5) / float(uFactor) - 0.5;
     ivec2 base = ivec2(floor(f));
@@ -43,8 +43,8 @@ void main() {
         ivec2 o = ivec2(i & 1, i >> 1);
         ivec2 tap = clamp(base + o, ivec2(0), lowSize - 1);
         float w = (o.x == 1 ? t.x : 1.0 - t.x) * (o.y == 1 ? t.y : 1.0 - t.y);
-        vec3 light = texelFetch(uAccumulated, tap, 0).rgb;
-        float gap = depthGap(texelFetch(uLowDepth, tap, 0).r, z);
+        vec3 light = imageLoad(uAccumulated, tap).rgb;
+        float gap = depthGap(imageLoad(uLowDepth, tap).r, z);
         blended += w * light;
         all4 = all4 && gap <= 0.05;
         if (gap < nearestGap) {

@@ -13,7 +13,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 1) uniform sampler2D uDepth;             // R32F linear depth, full resolution, +inf: sky
+layout(binding = 2, r32f) uniform readonly image2D uDepth;             // R32F linear depth, full resolution, +inf: sky
 layout(binding = 7) uniform sampler2DShadow uShadowMap;   // the host's depth, compared LEQUAL
 layout(binding = 0, rgba16f) uniform writeonly image2D uOut;
 layout(binding = 1, r32f) uniform writeonly image2D uLowDepth;
@@ -88,7 +88,7 @@ void main() {
     }
     vec2 uv = (vec2(q) + 0.5) / uLowSize;
     ivec2 p = clamp(ivec2(uv * uFullSize), ivec2(0), ivec2(uFullSize) - 1);
-    float z = texelFetch(uDepth, p, 0).r;
+    float z = imageLoad(uDepth, p).r;
     if (!validDepth(z)) {
         z = 0.0; // a broken depth: no march, and no surface the reprojection could match
     }

@@ -11,10 +11,10 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 3) uniform sampler2D uRaw;          // this frame's march
-layout(binding = 4) uniform sampler2D uHistory;      // last frame's accumulated light
-layout(binding = 5) uniform sampler2D uLowDepth;     // this frame's march depths
-layout(binding = 6) uniform sampler2D uPrevLowDepth; // last frame's march depths
+layout(binding = 1, rgba16f) uniform readonly image2D uRaw;          // this frame's march
+layout(binding = 2, rgba16f) uniform readonly image2D uHistory;      // last frame's accumulated light
+layout(binding = 3, r32f) uniform readonly image2D uLowDepth;     // this frame's march depths
+layout(binding = 4, r32f) uniform readonly image2D uPrevLowDepth; // last frame's march depths
 layout(binding = 0, rgba16f) uniform writeonly image2D uOut;
 
 shared vec3 sRaw[10][10];
@@ -24,8 +24,8 @@ void loadTile(ivec2 size) {
     ivec2 origin = ivec2(gl_WorkGroupID.xy) * 8 - 1;
     for (uint i = gl_LocalInvocationIndex; i < 100u; i += 64u) {
         ivec2 q = clamp(origin + ivec2(int(i % 10u), int(i / 10u)), ivec2(0), size - 1);
-        sRaw[i / 10u][i % 10u] = texelFetch(uRaw, q, 0).rgb;
-        sDepth[i / 10u][i % 10u] = texelFetch(uLowDepth, q, 0).r;
+        sRaw[i / 10u][i % 10u] = imageLoad(uRaw, q).rgb;
+        sDepth[i / 10u][i % 10u] = imageLoad(uLowDepth, q).r;
     }
     barrier();
 }
@@ -65,9 +65,9 @@ bool reprojectedHistory(ivec2 q, float z, out vec3 history) {
         ivec2 o = ivec2(i & 1, i >> 1);
         ivec2 tap = clamp(base + o, ivec2(0), size - 1);
         float w = (o.x == 1 ? t.x : 1.0 - t.x) * (o.y == 1 ? t.y : 1.0 - t.y);
-        float d = texelFetch(uPrevLowDepth, tap, 0).r;
+        float d = imageLoad(uPrevLowDepth, tap).r;
         if (w > 0.0 && validDepth(d) && sameSurface(d, expected)) {
-            history += w * texelFetch(uHistory, tap, 0).rgb;
+            history += w * imageLoad(uHistory, tap).rgb;
             total += w;
         }
     }
