@@ -113,7 +113,7 @@ void ContactShadowsPass::surfaces(const FrameContext& ctx, const FrameResources&
     const SurfaceProgram& s =
         mSurface.get(std::size_t(kind), {{"CONTACT_SHADOWS_NORMALS", std::to_string(kind)}});
     s.program.use();
-    bind(s.depth, depth);
+    bind(s.depth, depth, ImageAccess::Read);
     bind(s.normals, normals ? *normals : depth);
     bind(s.objectId, objectId ? *objectId : mNoObjectIds);
     bindSampler(s.objectId, objectId ? &mObjectIdSampler : nullptr);

@@ -92,7 +92,7 @@ private:
     /// xyz, 2 octahedral).
     struct SurfaceProgram : ProgramSlots {
         using ProgramSlots::ProgramSlots;
-        SamplerSlot depth = program.sampler("uLinearDepth");
+        ImageSlot depth = program.image("uLinearDepth");
         SamplerSlot normals = program.sampler("uNormalTexture");
         SamplerSlot objectId = program.sampler("uObjectId");
         ImageSlot out = program.image("uSurface");

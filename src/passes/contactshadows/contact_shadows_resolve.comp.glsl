@@ -7,7 +7,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 1, r32f) uniform readonly image2D uLinearDepth; // R32F, +inf: sky
+layout(binding = 1, r32f) uniform readonly image2D uLinearDepth; // +inf: sky
 layout(binding = 2, r16f) uniform readonly image2D uRaw;         // this frame's visibility
 layout(binding = 4) uniform sampler2D uHistory;     // last frame's accumulated visibility (bilinear)
 layout(binding = 5) uniform sampler2D uMotion;      // UV, current - previous (CONTACT_SHADOWS_MOTION)

@@ -14,7 +14,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 // a SIMD implementation would run beside the host's normal.
 const int kNormals = CONTACT_SHADOWS_NORMALS;
 
-layout(binding = 0) uniform sampler2D uLinearDepth;    // R32F, +inf: sky
+layout(binding = 1, r32f) uniform readonly image2D uLinearDepth; // +inf: sky
 layout(binding = 1) uniform sampler2D uNormalTexture;  // view space (or octahedral), when kNormals != 0
 layout(binding = 2) uniform usampler2D uObjectId;      // when uMaskCount > 0
 layout(binding = 0, rgba32f) uniform writeonly image2D uSurface;
@@ -38,8 +38,8 @@ vec3 neighbourStep(ivec2 p, ivec2 o, vec3 centre, float z) {
     ivec2 size = ivec2(uFullSize);
     ivec2 a = clamp(p + o, ivec2(0), size - 1);
     ivec2 b = clamp(p - o, ivec2(0), size - 1);
-    float za = texelFetch(uLinearDepth, a, 0).r;
-    float zb = texelFetch(uLinearDepth, b, 0).r;
+    float za = imageLoad(uLinearDepth, a).r;
+    float zb = imageLoad(uLinearDepth, b).r;
     bool useA = validDepth(za) && a != p && (!validDepth(zb) || b == p || abs(za - z) <= abs(zb - z));
     bool useB = !useA && validDepth(zb) && b != p;
     if (useA) {
@@ -75,7 +75,7 @@ void main() {
     if (any(greaterThanEqual(p, ivec2(uFullSize)))) {
         return;
     }
-    float z = texelFetch(uLinearDepth, p, 0).r;
+    float z = imageLoad(uLinearDepth, p).r;
     vec4 surface = vec4(0.0);
     if (validDepth(z) && listed(p)) {
         vec3 n = normalAt(p, z);

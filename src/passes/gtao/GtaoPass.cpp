@@ -95,7 +95,7 @@ void GtaoPass::prepare(FrameResources& resources, const Texture& surface, GpuTim
     const Extent e = surface.extent();
     ScopedGpuTimer timer(timers, "gtao surface", double(e.width) * e.height * (4 + 8 + 8));
     mPrepare.use();
-    bind(mPrepareDepth, *resources.texture(Resource::LinearDepth));
+    bind(mPrepareDepth, *resources.texture(Resource::LinearDepth), ImageAccess::Read);
     bind(mPrepareNormals, *resources.texture(Resource::Normals));
     bind(mPrepareSurface, surface, ImageAccess::Write);
     dispatch(mPrepare, e, Barrier::ComputeRead);

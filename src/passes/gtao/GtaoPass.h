@@ -98,7 +98,7 @@ private:
     DenoiseProgram mDenoiseFull;
     DenoiseProgram mDenoiseHalf;
     ParameterBlock<GtaoParameters> mParameters;
-    SamplerSlot mPrepareDepth = mPrepare.sampler("uLinearDepth");
+    ImageSlot mPrepareDepth = mPrepare.image("uLinearDepth");
     SamplerSlot mPrepareNormals = mPrepare.sampler("uNormals");
     ImageSlot mPrepareSurface = mPrepare.image("uSurfaceOut");
 };

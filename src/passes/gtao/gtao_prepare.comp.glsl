@@ -5,7 +5,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uLinearDepth; // R32F, +inf: sky
+layout(binding = 1, r32f) uniform readonly image2D uLinearDepth; // +inf: sky
 layout(binding = 1) uniform sampler2D uNormals;     // view space (or octahedral)
 layout(binding = 0, rg32ui) uniform writeonly uimage2D uSurfaceOut;
 
@@ -14,7 +14,7 @@ void main() {
     if (any(greaterThanEqual(p, ivec2(uFullSize)))) {
         return;
     }
-    float z = texelFetch(uLinearDepth, p, 0).r;
+    float z = imageLoad(uLinearDepth, p).r;
     vec4 t = texelFetch(uNormals, p, 0);
     vec3 n = uOctahedral != 0 ? octahedralDecode(t.rg) : t.xyz;
     float len2 = dot(n, n);

@@ -13,7 +13,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 2, r32f) uniform readonly image2D uDepth;             // R32F linear depth, full resolution, +inf: sky
+layout(binding = 2, r32f) uniform readonly image2D uDepth; // linear depth, full resolution, +inf: sky
 layout(binding = 7) uniform sampler2DShadow uShadowMap;   // the host's depth, compared LEQUAL
 layout(binding = 0, rgba16f) uniform writeonly image2D uOut;
 layout(binding = 1, r32f) uniform writeonly image2D uLowDepth;
