@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <vector>
 
 namespace photopic::test {
 
@@ -139,6 +140,47 @@ TEST_F(GlTest, TaaOutputStaysFiniteWithBrokenInputs) {
     const Image8 weight = readTexture8(
         pipeline.execute({.color = &colorTexture, .motion = &motionTexture}, {.dt = kDt, .frameIndex = 4}));
     EXPECT_NEAR(weight.at(16, 9)[0], 0.9 * 255, 1.0); // blendFactor on a pixel with history
+}
+
+// TAA loads the motion input as an image declared in the texture's format (a program per format the pipeline
+// accepts): every format gives the same frames for the same vectors (values a half float holds exactly).
+TEST_F(GlTest, TaaReadsEveryMotionFormatAlike) {
+    ImageF color(32, 18, 0.0f);
+    ImageF motion(32, 18, 0.0f);
+    for (int y = 0; y < 18; ++y) {
+        for (int x = 0; x < 32; ++x) {
+            const std::size_t i = std::size_t(y * 32 + x) * 4;
+            color.rgba[i] = float((x * 7 + y * 3) % 11) * 0.25f;
+            color.rgba[i + 1] = float(x % 4) * 0.5f;
+            color.rgba[i + 2] = 1.0f;
+            motion.rgba[i] = x < 16 ? 1.0f / 64.0f : 0.0f;
+            motion.rgba[i + 1] = y < 9 ? -1.0f / 128.0f : 0.0f;
+        }
+    }
+    const Texture colorTexture = makeTexture(color, "color");
+    std::vector<std::vector<float>> results;
+    for (const GLenum format : kMotionFormats) {
+        const Texture motionTexture = makeTexture(motion, "motion", format);
+        Pipeline pipeline({.settings = aaMeasuringSettings(AntiAliasing::Taa)});
+        for (std::uint64_t f = 0; f < 3; ++f) {
+            pipeline.beginFrame({.frameIndex = f});
+            pipeline.execute({.color = &colorTexture, .motion = &motionTexture},
+                             {.dt = kDt, .frameIndex = f});
+        }
+        EXPECT_TRUE(pipeline.status().skipped.empty()) << formatName(format);
+        results.push_back(readTextureF(pipeline.sceneReferred()).rgba);
+    }
+    for (std::size_t k = 1; k < results.size(); ++k) {
+        EXPECT_EQ(results[k], results[0]) << formatName(kMotionFormats[k]) << " against RG16F";
+    }
+    // The vectors matter: the same frames with no motion differ.
+    const Texture still = makeTexture(ImageF(32, 18, 0.0f), "still", GL_RG16F);
+    Pipeline pipeline({.settings = aaMeasuringSettings(AntiAliasing::Taa)});
+    for (std::uint64_t f = 0; f < 3; ++f) {
+        pipeline.beginFrame({.frameIndex = f});
+        pipeline.execute({.color = &colorTexture, .motion = &still}, {.dt = kDt, .frameIndex = f});
+    }
+    EXPECT_NE(readTextureF(pipeline.sceneReferred()).rgba, results[0]);
 }
 
 TEST_F(GlTest, TaaWithoutMotionOrDepthIsSkippedAndReported) {
