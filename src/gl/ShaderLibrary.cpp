@@ -369,7 +369,8 @@ void memoryBarrier(Barrier barrier) noexcept {
         bits = GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
         break;
     case Barrier::IndirectDispatch:
-        bits = GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT;
+        bits = GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+               GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
         break;
     }
     glMemoryBarrier(bits);

@@ -76,8 +76,8 @@ enum class Barrier {
     Storage,             ///< the next pass reads a storage buffer this one wrote (SHADER_STORAGE)
     StorageReadback,     ///< ... or copies or reads it back (SHADER_STORAGE | BUFFER_UPDATE)
     StorageAsUniform,    ///< ... also as a uniform block (SHADER_STORAGE | UNIFORM | BUFFER_UPDATE)
-    /// the next pass is dispatched with arguments this one wrote, reads its storage buffer and samples what
-    /// it stored (COMMAND | SHADER_STORAGE | TEXTURE_FETCH)
+    /// the next pass is dispatched with arguments this one wrote, reads its storage buffer and samples or
+    /// loads what it stored (COMMAND | SHADER_STORAGE | TEXTURE_FETCH | SHADER_IMAGE_ACCESS)
     IndirectDispatch,
 };
 void memoryBarrier(Barrier barrier) noexcept;

@@ -113,11 +113,11 @@ void DofPass::circlesOfConfusion(const FrameContext& ctx, const FrameResources& 
     {
         ScopedGpuTimer timer(ctx.timers, "dof coc", double(t.full.width) * t.full.height * (4.0 + 2.0));
         mCoc.use();
-        bind(mCocDepth, *resources.texture(Resource::LinearDepth));
+        bind(mCocDepth, *resources.texture(Resource::LinearDepth), ImageAccess::Read);
         bind(mCocOut, *t.coc, ImageAccess::Write);
         dispatch(mCoc, t.full, Barrier::None);
     }
-    memoryBarrier(Barrier::TextureFetch);
+    memoryBarrier(Barrier::ComputeRead);
 }
 
 void DofPass::prepareFields(const FrameContext& ctx, const FrameResources& resources, const Targets& t) {
@@ -126,13 +126,13 @@ void DofPass::prepareFields(const FrameContext& ctx, const FrameResources& resou
                              double(t.full.width) * t.full.height * (8.0 + 2.0) +
                                  double(t.half.width) * t.half.height * 16.0);
         mPrepare.use();
-        bind(mPrepareColor, *resources.texture(Resource::SceneColor));
-        bind(mPrepareCoc, *t.coc);
+        bind(mPrepareColor, *resources.texture(Resource::SceneColor), ImageAccess::Read);
+        bind(mPrepareCoc, *t.coc, ImageAccess::Read);
         bind(mPrepareFar, *t.farField, ImageAccess::Write);
         bind(mPrepareNear, *t.nearField, ImageAccess::Write);
         dispatch(mPrepare, t.half, Barrier::None);
     }
-    memoryBarrier(Barrier::TextureFetch);
+    memoryBarrier(Barrier::ComputeRead);
 }
 
 void DofPass::nearTiles(const FrameContext& ctx, const Targets& t) {
@@ -147,7 +147,7 @@ void DofPass::nearTiles(const FrameContext& ctx, const Targets& t) {
         bind(mDilateOut, *t.tileReach, ImageAccess::Write);
         dispatch(mDilate, t.tiles, Barrier::None);
     }
-    memoryBarrier(Barrier::TextureFetch);
+    memoryBarrier(Barrier::ComputeRead);
 }
 
 void DofPass::gather(const FrameContext& ctx, const Targets& t) {
@@ -156,20 +156,20 @@ void DofPass::gather(const FrameContext& ctx, const Targets& t) {
         // The half-resolution field read once from memory (the disc's taps hit the cache), the blur written.
         ScopedGpuTimer timer(ctx.timers, "dof far", halfTexels * (8.0 + 8.0));
         mFar.use();
-        bind(mFarField, *t.farField);
-        bind(mFarTiles, *t.tileReach);
+        bind(mFarField, *t.farField, ImageAccess::Read);
+        bind(mFarTiles, *t.tileReach, ImageAccess::Read);
         bind(mFarOut, *t.farBlur, ImageAccess::Write);
         dispatch(mFar, t.half, Barrier::None);
     }
     {
         ScopedGpuTimer timer(ctx.timers, "dof near", halfTexels * (8.0 + 8.0));
         mNear.use();
-        bind(mNearField, *t.nearField);
-        bind(mNearTiles, *t.tileReach);
+        bind(mNearField, *t.nearField, ImageAccess::Read);
+        bind(mNearTiles, *t.tileReach, ImageAccess::Read);
         bind(mNearOut, *t.nearBlur, ImageAccess::Write);
         dispatch(mNear, t.half, Barrier::None);
     }
-    memoryBarrier(Barrier::TextureFetch);
+    memoryBarrier(Barrier::ComputeRead);
 }
 
 void DofPass::listChangedTiles(const FrameContext& ctx, const Targets& t, Extent tiles) {
@@ -188,16 +188,16 @@ void DofPass::listChangedTiles(const FrameContext& ctx, const Targets& t, Extent
                          double(t.full.width) * t.full.height * 2.0 +
                              double(t.half.width) * t.half.height * 8.0);
     mChanged.use();
-    bind(mChangedCoc, *t.coc);
-    bind(mChangedNear, *t.nearBlur);
+    bind(mChangedCoc, *t.coc, ImageAccess::Read);
+    bind(mChangedNear, *t.nearBlur, ImageAccess::Read);
     dispatch(mChanged, tiles, Barrier::IndirectDispatch);
 }
 
 void DofPass::useComposite(const CompositeProgram& c, const FrameResources& resources, const Targets& t) {
     c.program.use();
-    bind(c.color, *resources.texture(Resource::SceneColor));
-    bind(c.coc, *t.coc);
-    bind(c.far, *t.farBlur);
+    bind(c.color, *resources.texture(Resource::SceneColor), ImageAccess::Read);
+    bind(c.coc, *t.coc, ImageAccess::Read);
+    bind(c.far, *t.farBlur, ImageAccess::Read);
     bind(c.near, *t.nearBlur);
     bind(c.out, *t.out, ImageAccess::Write);
 }

@@ -108,9 +108,9 @@ private:
     /// The composite over every pixel ([0]) or over the listed tiles ([1], DOF_LISTED).
     struct CompositeProgram : ProgramSlots {
         using ProgramSlots::ProgramSlots;
-        SamplerSlot color = program.sampler("uColor");
-        SamplerSlot coc = program.sampler("uCoc");
-        SamplerSlot far = program.sampler("uFar");
+        ImageSlot color = program.image("uColor");
+        ImageSlot coc = program.image("uCoc");
+        ImageSlot far = program.image("uFar");
         SamplerSlot near = program.sampler("uNear");
         ImageSlot out = program.image("uOut");
     };
@@ -118,24 +118,24 @@ private:
     /// Uses `c` with the frame's textures bound.
     static void useComposite(const CompositeProgram& c, const FrameResources& resources, const Targets& t);
     Program mChanged;
-    SamplerSlot mCocDepth = mCoc.sampler("uLinearDepth");
+    ImageSlot mCocDepth = mCoc.image("uLinearDepth");
     ImageSlot mCocOut = mCoc.image("uCoc");
-    SamplerSlot mPrepareColor = mPrepare.sampler("uColor");
-    SamplerSlot mPrepareCoc = mPrepare.sampler("uCoc");
+    ImageSlot mPrepareColor = mPrepare.image("uColor");
+    ImageSlot mPrepareCoc = mPrepare.image("uCoc");
     ImageSlot mPrepareFar = mPrepare.image("uFar");
     ImageSlot mPrepareNear = mPrepare.image("uNear");
     SamplerSlot mTilesSource = mTiles.sampler("uSource");
     ImageSlot mTilesOut = mTiles.image("uTiles");
     SamplerSlot mDilateSource = mDilate.sampler("uSource");
     ImageSlot mDilateOut = mDilate.image("uTiles");
-    SamplerSlot mFarField = mFar.sampler("uField");
-    SamplerSlot mFarTiles = mFar.sampler("uTiles"); ///< read by the near gather only: inactive here
+    ImageSlot mFarField = mFar.image("uField");
+    ImageSlot mFarTiles = mFar.image("uTiles"); ///< read by the near gather only: inactive here
     ImageSlot mFarOut = mFar.image("uOut");
-    SamplerSlot mNearField = mNear.sampler("uField");
-    SamplerSlot mNearTiles = mNear.sampler("uTiles");
+    ImageSlot mNearField = mNear.image("uField");
+    ImageSlot mNearTiles = mNear.image("uTiles");
     ImageSlot mNearOut = mNear.image("uOut");
-    SamplerSlot mChangedCoc = mChanged.sampler("uCoc");
-    SamplerSlot mChangedNear = mChanged.sampler("uNear");
+    ImageSlot mChangedCoc = mChanged.image("uCoc");
+    ImageSlot mChangedNear = mChanged.image("uNear");
     ParameterBlock<DofParameters> mParameters;
     Buffer mList; ///< GpuDofTileList and the tiles; grown to the largest tile count seen
 };

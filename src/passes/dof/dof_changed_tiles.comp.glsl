@@ -11,8 +11,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 1) uniform sampler2D uCoc;  // signed, full-resolution pixels
-layout(binding = 3) uniform sampler2D uNear; // half resolution, rgb + coverage (the near gather's output)
+layout(binding = 1, r16f) uniform readonly image2D uCoc;  // signed, full-resolution pixels
+layout(binding = 2, rgba16f) uniform readonly image2D uNear; // half resolution, rgb + coverage (the near gather's output)
 
 void main() {
     ivec2 tile = ivec2(gl_GlobalInvocationID.xy);
@@ -25,7 +25,7 @@ void main() {
     bool changed = false;
     for (int y = 0; y < kCompositeTile; ++y) {
         for (int x = 0; x < kCompositeTile; ++x) {
-            changed = changed || !(texelFetch(uCoc, min(first + ivec2(x, y), last), 0).r <= 0.5);
+            changed = changed || !(imageLoad(uCoc, min(first + ivec2(x, y), last)).r <= 0.5);
         }
     }
     // The half-resolution texels the tile's bilinear lookups read (the composite's coordinates: uv x size -
@@ -37,7 +37,7 @@ void main() {
     ivec2 to = clamp(ivec2(floor(high)) + 1, ivec2(0), lastTexel);
     for (int y = 0; y < 6; ++y) {
         for (int x = 0; x < 6; ++x) {
-            changed = changed || !(texelFetch(uNear, min(from + ivec2(x, y), to), 0).a <= 0.0);
+            changed = changed || !(imageLoad(uNear, min(from + ivec2(x, y), to)).a <= 0.0);
         }
     }
     if (changed) {

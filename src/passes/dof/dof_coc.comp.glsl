@@ -5,7 +5,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uLinearDepth; // R32F, +inf: sky
+layout(binding = 1, r32f) uniform readonly image2D uLinearDepth; // R32F, +inf: sky
 layout(binding = 0, r16f) uniform writeonly image2D uCoc;
 
 void main() {
@@ -13,5 +13,5 @@ void main() {
     if (any(greaterThanEqual(p, ivec2(uFullSize)))) {
         return;
     }
-    imageStore(uCoc, p, vec4(cocRadius(texelFetch(uLinearDepth, p, 0).r)));
+    imageStore(uCoc, p, vec4(cocRadius(imageLoad(uLinearDepth, p).r)));
 }

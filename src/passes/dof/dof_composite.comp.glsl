@@ -10,9 +10,9 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uColor; // sceneColor
-layout(binding = 1) uniform sampler2D uCoc;   // signed, full-resolution pixels
-layout(binding = 2) uniform sampler2D uFar;   // half resolution, rgb + far CoC
+layout(binding = 1, rgba16f) uniform readonly image2D uColor; // sceneColor
+layout(binding = 2, r16f) uniform readonly image2D uCoc;   // signed, full-resolution pixels
+layout(binding = 3, rgba16f) uniform readonly image2D uFar;   // half resolution, rgb + far CoC
 layout(binding = 3) uniform sampler2D uNear;  // half resolution, rgb + coverage
 layout(binding = 0, rgba16f) uniform writeonly image2D uOut;
 
@@ -27,7 +27,7 @@ vec4 farUpsample(vec2 uv) {
     float weights = 0.0;
     for (int i = 0; i < 4; ++i) {
         ivec2 o = ivec2(i & 1, i >> 1);
-        vec4 s = texelFetch(uFar, clamp(base + o, ivec2(0), last), 0);
+        vec4 s = imageLoad(uFar, clamp(base + o, ivec2(0), last));
         float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
         w *= s.a >= 0.25 ? 1.0 : 1e-4;
         sum += w * s;
@@ -48,8 +48,8 @@ void main() {
     if (any(greaterThanEqual(p, ivec2(uFullSize)))) {
         return;
     }
-    vec4 sharp = texelFetch(uColor, p, 0);
-    float coc = texelFetch(uCoc, p, 0).r;
+    vec4 sharp = imageLoad(uColor, p);
+    float coc = imageLoad(uCoc, p).r;
     vec2 uv = (vec2(p) + 0.5) / uFullSize;
     vec4 result = sharp;
     float t = clamp(coc - 0.5, 0.0, 1.0);

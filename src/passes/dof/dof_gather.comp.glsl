@@ -15,8 +15,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uField; // rgb, a: CoC (half-resolution pixels)
-layout(binding = 1) uniform sampler2D uTiles; // NEAR: dilated tile maxima
+layout(binding = 1, rgba16f) uniform readonly image2D uField; // rgb, a: CoC (half-resolution pixels)
+layout(binding = 2, r16f) uniform readonly image2D uTiles; // NEAR: dilated tile maxima
 layout(binding = 0, rgba16f) uniform writeonly image2D uOut;
 
 /// Below this (half-resolution pixels, half a full-resolution pixel) a field is not blurred.
@@ -33,9 +33,9 @@ void main() {
         return;
     }
     vec2 centre = vec2(h) + 0.5;
-    vec4 own = texelFetch(uField, h, 0);
+    vec4 own = imageLoad(uField, h);
 #ifdef NEAR
-    float reach = texelFetch(uTiles, h / uTileSize, 0).r;
+    float reach = imageLoad(uTiles, h / uTileSize).r;
 #else
     float reach = gatherRadius(own.a);
 #endif
@@ -58,7 +58,7 @@ void main() {
             float d = fraction * reach;
             // Nearest texels: a bilinear fetch would mix a sharp texel's colour into a blurred one's CoC.
             ivec2 q = clamp(ivec2(floor(centre + offset * reach)), ivec2(0), ivec2(uHalfSize) - 1);
-            vec4 s = texelFetch(uField, q, 0);
+            vec4 s = imageLoad(uField, q);
             float r = s.a;
 #ifdef NEAR
             float cover = r >= kMinCoc ? clamp(r - d + 0.5, 0.0, 1.0) : 0.0;

@@ -8,8 +8,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uColor; // sceneColor
-layout(binding = 1) uniform sampler2D uCoc;   // signed, full-resolution pixels
+layout(binding = 2, rgba16f) uniform readonly image2D uColor; // sceneColor
+layout(binding = 3, r16f) uniform readonly image2D uCoc;   // signed, full-resolution pixels
 layout(binding = 0, rgba16f) uniform writeonly image2D uFar;  // rgb, a: far CoC
 layout(binding = 1, rgba16f) uniform writeonly image2D uNear; // rgb, a: near CoC (positive)
 
@@ -23,9 +23,9 @@ void main() {
     float farCount = 0.0, nearCount = 0.0, farCoc = 0.0, nearCoc = 0.0;
     for (int i = 0; i < 4; ++i) {
         ivec2 q = min(2 * h + ivec2(i & 1, i >> 1), last);
-        vec4 c = texelFetch(uColor, q, 0);
+        vec4 c = imageLoad(uColor, q);
         c.rgb = finite4(c) ? max(c.rgb, vec3(0.0)) : vec3(0.0);
-        float r = 0.5 * texelFetch(uCoc, q, 0).r;
+        float r = 0.5 * imageLoad(uCoc, q).r;
         all += c.rgb;
         if (r >= 0.0) {
             far += c.rgb;

@@ -88,20 +88,20 @@ void MotionBlurPass::tileVelocities(const FrameContext& ctx, const FrameResource
         mPrepare.use();
         bind(mPrepareMotion, *resources.texture(Resource::Motion));
         bind(mPrepareVelocity, *t.velocity, ImageAccess::Write);
-        dispatch(mPrepare, e, Barrier::TextureFetch);
+        dispatch(mPrepare, e, Barrier::ComputeRead);
     }
     {
         ScopedGpuTimer timer(ctx.timers, "motion blur tile max", texels * 4.0);
         mTiles.use();
-        bind(mTilesVelocity, *t.velocity);
+        bind(mTilesVelocity, *t.velocity, ImageAccess::Read);
         bind(mTilesTileMax, *t.tileMax, ImageAccess::Write);
-        dispatch(mTiles, tiles, Barrier::TextureFetch);
+        dispatch(mTiles, tiles, Barrier::ComputeRead);
     }
     {
         ScopedGpuTimer timer(ctx.timers, "motion blur neighbour max",
                              double(tiles.width) * tiles.height * 40.0);
         mNeighbours.use();
-        bind(mNeighboursTileMax, *t.tileMax);
+        bind(mNeighboursTileMax, *t.tileMax, ImageAccess::Read);
         bind(mNeighboursNeighbourMax, *t.neighbourMax, ImageAccess::Write);
         dispatch(mNeighbours, tiles, Barrier::IndirectDispatch);
     }
@@ -124,10 +124,10 @@ void MotionBlurPass::resetLists(Extent tiles, int tileSize) {
 void MotionBlurPass::runGather(const GatherProgram& program, const FrameResources& resources,
                                const Targets& t, GLintptr arguments) {
     program.program.use();
-    bind(program.scene, *resources.texture(Resource::SceneColor));
-    bind(program.velocity, *t.velocity);
-    bind(program.depth, *resources.texture(Resource::LinearDepth));
-    bind(program.neighbourMax, *t.neighbourMax);
+    bind(program.scene, *resources.texture(Resource::SceneColor), ImageAccess::Read);
+    bind(program.velocity, *t.velocity, ImageAccess::Read);
+    bind(program.depth, *resources.texture(Resource::LinearDepth), ImageAccess::Read);
+    bind(program.neighbourMax, *t.neighbourMax, ImageAccess::Read);
     bind(program.out, *t.out, ImageAccess::Write);
     bind(program.tiles, t.tilesView ? *t.tilesView : mNoTiles, ImageAccess::Write);
     dispatchIndirect(program.program, mLists.id(), arguments, Barrier::None);

@@ -90,10 +90,10 @@ private:
     /// slots.
     struct GatherProgram : ProgramSlots {
         using ProgramSlots::ProgramSlots;
-        SamplerSlot scene = program.sampler("uScene");
-        SamplerSlot velocity = program.sampler("uVelocity");
-        SamplerSlot depth = program.sampler("uDepth");
-        SamplerSlot neighbourMax = program.sampler("uNeighbourMax");
+        ImageSlot scene = program.image("uScene");
+        ImageSlot velocity = program.image("uVelocity");
+        ImageSlot depth = program.image("uDepth");
+        ImageSlot neighbourMax = program.image("uNeighbourMax");
         ImageSlot out = program.image("uOut");
         ImageSlot tiles = program.image("uTiles");
     };
@@ -108,9 +108,9 @@ private:
     GatherProgram mStill; ///< the still tiles, for the velocity-tiles view
     SamplerSlot mPrepareMotion = mPrepare.sampler("uMotion");
     ImageSlot mPrepareVelocity = mPrepare.image("uVelocity");
-    SamplerSlot mTilesVelocity = mTiles.sampler("uVelocity");
+    ImageSlot mTilesVelocity = mTiles.image("uVelocity");
     ImageSlot mTilesTileMax = mTiles.image("uTileMax");
-    SamplerSlot mNeighboursTileMax = mNeighbours.sampler("uTileMax");
+    ImageSlot mNeighboursTileMax = mNeighbours.image("uTileMax");
     ImageSlot mNeighboursNeighbourMax = mNeighbours.image("uNeighbourMax");
     ParameterBlock<MotionBlurParameters> mParameters;
     Texture mNoTiles; ///< bound to the debug image unit when no debug view asks for the tiles

@@ -25,10 +25,10 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uScene;
-layout(binding = 1) uniform sampler2D uVelocity;
-layout(binding = 2) uniform sampler2D uDepth;
-layout(binding = 3) uniform sampler2D uNeighbourMax;
+layout(binding = 2, rgba16f) uniform readonly image2D uScene;
+layout(binding = 3, rg16f) uniform readonly image2D uVelocity;
+layout(binding = 4, r32f) uniform readonly image2D uDepth;
+layout(binding = 5, rg16f) uniform readonly image2D uNeighbourMax;
 layout(binding = 0, rgba16f) uniform writeonly image2D uOut;
 layout(binding = 1, rgba16f) uniform writeonly image2D uTiles;
 
@@ -37,7 +37,7 @@ const float kSameSurface = 0.01; // relative depth difference within which two s
 const float kDepthRamp = 0.02;   // ... over which "the same" turns into "in front" (a soft compare)
 
 float depthAt(ivec2 p) {
-    float z = texelFetch(uDepth, p, 0).r;
+    float z = imageLoad(uDepth, p).r;
     return (z > 0.0 && z < kSkyDepth) ? z : kSkyDepth;
 }
 
@@ -60,8 +60,8 @@ void main() {
     if (any(greaterThanEqual(inTile, ivec2(uTileSize))) || any(greaterThanEqual(p, size))) {
         return;
     }
-    vec4 c0 = texelFetch(uScene, p, 0);
-    vec2 vmax = texelFetch(uNeighbourMax, p / uTileSize, 0).rg;
+    vec4 c0 = imageLoad(uScene, p);
+    vec2 vmax = imageLoad(uNeighbourMax, p / uTileSize).rg;
     float lenMax = length(vmax);
     if (uWriteTiles != 0) {
         imageStore(uTiles, p, vec4(vmax, lenMax, 1.0));
@@ -74,7 +74,7 @@ void main() {
         imageStore(uOut, p, c0);
         return;
     }
-    float rX = length(texelFetch(uVelocity, p, 0).rg);
+    float rX = length(imageLoad(uVelocity, p).rg);
     bool movingX = rX >= 0.5;
     float zX = depthAt(p);
     vec2 centre = vec2(p) + 0.5;
@@ -94,9 +94,9 @@ void main() {
         // The sample's distance along the streak: the point it stands for, not its pixel's centre (the
         // pixel lookup already gives the streak's end pixels their partial share).
         float d = abs(t) * lenMax;
-        float rY = length(texelFetch(uVelocity, q, 0).rg);
+        float rY = length(imageLoad(uVelocity, q).rg);
         float zY = depthAt(q);
-        vec3 cY = texelFetch(uScene, q, 0).rgb;
+        vec3 cY = imageLoad(uScene, q).rgb;
         float f = inFront(zY, zX);
         float b = inFront(zX, zY);
         // Y's streak reaches X (anti-aliased over a pixel at its end: the rasterised edge is only known to

@@ -7,7 +7,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uTileMax;
+layout(binding = 1, rg16f) uniform readonly image2D uTileMax;
 layout(binding = 0, rg16f) uniform writeonly image2D uNeighbourMax;
 
 void main() {
@@ -15,14 +15,14 @@ void main() {
     if (any(greaterThanEqual(tile, uTileCount))) {
         return;
     }
-    vec2 m = texelFetch(uTileMax, tile, 0).rg;
+    vec2 m = imageLoad(uTileMax, tile).rg;
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
             ivec2 q = tile + ivec2(dx, dy);
             if ((dx == 0 && dy == 0) || any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, uTileCount))) {
                 continue;
             }
-            m = longer(m, texelFetch(uTileMax, q, 0).rg);
+            m = longer(m, imageLoad(uTileMax, q).rg);
         }
     }
     imageStore(uNeighbourMax, tile, vec4(m, 0.0, 0.0));

@@ -4,7 +4,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uVelocity;
+layout(binding = 1, rg16f) uniform readonly image2D uVelocity;
 layout(binding = 0, rg16f) uniform writeonly image2D uTileMax;
 
 void main() {
@@ -18,7 +18,7 @@ void main() {
     vec2 m = vec2(0.0);
     for (int y = first.y; y < last.y; ++y) {
         for (int x = first.x; x < last.x; ++x) {
-            m = longer(m, texelFetch(uVelocity, ivec2(x, y), 0).rg);
+            m = longer(m, imageLoad(uVelocity, ivec2(x, y)).rg);
         }
     }
     imageStore(uTileMax, tile, vec4(m, 0.0, 0.0));
