@@ -3,6 +3,10 @@
 #include "core/Log.h"
 #include "passes/Bindings.h"
 
+#include <fmt/format.h>
+
+#include <iterator>
+
 namespace photopic {
 
 namespace {
@@ -60,9 +64,13 @@ TaaParameters TaaPass::parameters(const FrameContext& ctx, const FrameResources&
 }
 
 const TaaPass::ResolveProgram& TaaPass::resolveProgram(const TaaParameters& p, GLenum motionFormat) {
+    const std::size_t format = formatIndex(motionFormat, kMotionFormats);
+    if (format == std::size(kMotionFormats)) { // the pipeline's input validation refuses any other
+        throw GlError(
+            fmt::format("taa: motion in {}, not a format the pipeline accepts", formatName(motionFormat)));
+    }
     return mPrograms.get(std::size_t(p.bilinearHistory != 0) | (std::size_t(p.hasDepth != 0) << 1) |
-                             (std::size_t(p.hasCamera != 0) << 2) |
-                             (formatIndex(motionFormat, kMotionFormats) << 3),
+                             (std::size_t(p.hasCamera != 0) << 2) | (format << 3),
                          {{"TAA_BILINEAR", std::to_string(p.bilinearHistory)},
                           {"TAA_DEPTH", std::to_string(p.hasDepth)},
                           {"TAA_CAMERA", std::to_string(p.hasCamera)},
