@@ -245,6 +245,13 @@ struct ProgramInterface {
     mutable std::uint64_t checked = 0; ///< the bind count at its last binding check (checkBindings)
 };
 
+/// The format the image uniform `name` is declared with in a program's `source` (`layout(binding = N,
+/// rgba16f) uniform readonly image2D name;`): the layout entry that is no assignment, as a qualifier or as a
+/// define whose every definition names the same one. 0 when no declaration names one, or when declarations in
+/// branches of the preprocessor name different ones (GL reflects no format qualifier). A scan of the text:
+/// every program made pays for it.
+GLenum declaredImageFormat(std::string_view source, std::string_view name);
+
 class Program {
 public:
     Program() = default;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <string_view>
 
 namespace photopic {
 
@@ -29,17 +30,57 @@ bool isIdentifierChar(char c) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
 }
 
-/// Whether `source` names `name` as a whole identifier.
-bool names(std::string_view source, std::string_view name) {
+/// The position of each whole-identifier occurrence of `name` in `source`, in order, to `visit` until it
+/// returns true; whether one did.
+template <class Visit>
+bool findIdentifier(std::string_view source, std::string_view name, Visit visit) {
     for (auto at = source.find(name); at != std::string_view::npos; at = source.find(name, at + 1)) {
         const bool startsWord = at == 0 || !isIdentifierChar(source[at - 1]);
         const std::size_t end = at + name.size();
         const bool endsWord = end == source.size() || !isIdentifierChar(source[end]);
-        if (startsWord && endsWord) {
+        if (startsWord && endsWord && visit(at)) {
             return true;
         }
     }
     return false;
+}
+
+/// Whether `source` names `name` as a whole identifier.
+bool names(std::string_view source, std::string_view name) {
+    return findIdentifier(source, name, [](std::size_t) { return true; });
+}
+
+std::string_view trimmed(std::string_view s) {
+    const auto first = s.find_first_not_of(" \t\r\n");
+    if (first == std::string_view::npos) {
+        return {};
+    }
+    return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
+}
+
+/// The format a format-qualifier word names: the qualifier itself (`rgba16f`), or the value of the define it
+/// names when every definition (in whichever branch of the preprocessor) names the same format. 0 for a word
+/// that names none, or a define whose branches name different ones.
+GLenum formatOfWord(std::string_view source, std::string_view word) {
+    if (const GLenum format = imageFormatFromQualifier(word)) {
+        return format;
+    }
+    GLenum defined = 0;
+    bool ambiguous = false;
+    findIdentifier(source, word, [&](std::size_t at) {
+        const std::string_view before = source.substr(0, at);
+        const auto hash = before.rfind('#');
+        if (hash == std::string_view::npos || trimmed(before.substr(hash + 1)) != "define") {
+            return false;
+        }
+        std::string_view value = source.substr(at + word.size());
+        value = trimmed(value.substr(0, value.find('\n')));
+        const GLenum format = imageFormatFromQualifier(value);
+        ambiguous = ambiguous || format == 0 || (defined != 0 && format != defined);
+        defined = format;
+        return false;
+    });
+    return ambiguous ? 0 : defined;
 }
 
 /// The uniform `name` of kind `image`; nullptr when the program has none active (optimised away, when its
@@ -66,6 +107,42 @@ const ProgramInterface::Uniform* lookUp(const ProgramInterface* interface, std::
 }
 
 } // namespace
+
+GLenum declaredImageFormat(std::string_view source, std::string_view name) {
+    GLenum found = 0;
+    bool ambiguous = false;
+    findIdentifier(source, name, [&](std::size_t at) {
+        // The statement up to the name: `layout(...) <qualifiers> <image type>`, the name then ending it.
+        const std::string_view before = source.substr(0, at);
+        const std::string_view statement = before.substr(before.find_last_of(";{}") + 1);
+        const auto next = source.find_first_not_of(" \t\r\n", at + name.size());
+        const auto layout = statement.rfind("layout");
+        const auto open =
+            layout == std::string_view::npos ? layout : statement.find_first_not_of(" \t", layout + 6);
+        const auto close = open == std::string_view::npos || statement[open] != '('
+                               ? std::string_view::npos
+                               : statement.find(')', open);
+        if (next == std::string_view::npos || source[next] != ';' || close == std::string_view::npos ||
+            statement.find_first_of("()", close + 1) != std::string_view::npos ||
+            statement.find("image", close) == std::string_view::npos) {
+            return false; // a use, or a declaration of something else
+        }
+        GLenum format = 0;
+        std::string_view entries = statement.substr(open + 1, close - open - 1);
+        while (!entries.empty() && format == 0) {
+            const auto comma = entries.find(',');
+            const std::string_view entry = trimmed(entries.substr(0, comma));
+            entries = comma == std::string_view::npos ? std::string_view{} : entries.substr(comma + 1);
+            if (entry.find('=') == std::string_view::npos) {
+                format = formatOfWord(source, entry);
+            }
+        }
+        ambiguous = ambiguous || format == 0 || (found != 0 && format != found);
+        found = format;
+        return false;
+    });
+    return ambiguous ? 0 : found;
+}
 
 SamplerSlot Program::sampler(std::string_view name) const {
     const ProgramInterface::Uniform* u = lookUp(mInterface.get(), name, false);

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <array>
 #include <memory>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -142,53 +141,6 @@ bool isImageType(GLenum type) {
     default:
         return false;
     }
-}
-
-/// The format qualifier an image's declaration names (`rgba16f` in `layout(binding = N, rgba16f)`), or the
-/// value of the define the qualifier names; 0 for none, or for a define that branches of the preprocessor
-/// give different values.
-GLenum qualifiedFormat(const std::string& source, const std::string& qualifiers) {
-    static const std::regex word("[A-Za-z_]\\w*");
-    for (auto it = std::sregex_iterator(qualifiers.begin(), qualifiers.end(), word);
-         it != std::sregex_iterator(); ++it) {
-        const std::string w = it->str();
-        if (const GLenum format = imageFormatFromQualifier(w)) {
-            return format;
-        }
-        if (w == "binding") {
-            continue;
-        }
-        // A define: its value, when every definition (in whichever branch) gives the same one.
-        const std::regex definition("#define\\s+" + w + "\\s+(\\w+)");
-        GLenum defined = 0;
-        for (auto d = std::sregex_iterator(source.begin(), source.end(), definition);
-             d != std::sregex_iterator(); ++d) {
-            const GLenum value = imageFormatFromQualifier((*d)[1].str());
-            if (value == 0 || (defined != 0 && value != defined)) {
-                return 0;
-            }
-            defined = value;
-        }
-        return defined;
-    }
-    return 0;
-}
-
-/// The format the image uniform `name` is declared with in `source` (`layout(binding = N, rgba16f) uniform
-/// readonly image2D name;`); 0 when no declaration names one, or when declarations in branches of the
-/// preprocessor name different ones.
-GLenum declaredImageFormat(const std::string& source, const std::string& name) {
-    const std::regex declaration("layout\\s*\\(([^)]*)\\)[^;{}()]*\\b[iu]?image\\w*\\s+" + name + "\\s*;");
-    GLenum found = 0;
-    for (auto it = std::sregex_iterator(source.begin(), source.end(), declaration);
-         it != std::sregex_iterator(); ++it) {
-        const GLenum format = qualifiedFormat(source, (*it)[1].str());
-        if (format == 0 || (found != 0 && format != found)) {
-            return 0;
-        }
-        found = format;
-    }
-    return found;
 }
 
 /// The samplers and images `program` declares, with the units their layout(binding = N) gave.

@@ -49,9 +49,11 @@ struct Fixture {
     Texture target{{.extent = {1, 1}, .format = GL_RGBA8, .debugName = "slots probe target"}};
 };
 
-// Images declared with a format qualifier, with a define's value, and in two branches of the preprocessor.
+// Images declared with a format qualifier, with a define's value, with a define for the unit, and in two
+// branches of the preprocessor.
 constexpr const char* kImages = R"(#version 450 core
 #define MOTION_FORMAT rg32f
+#define IDS_UNIT 3
 #ifdef NEVER
 #define OUT_FORMAT rgba16
 #else
@@ -60,7 +62,7 @@ constexpr const char* kImages = R"(#version 450 core
 layout(local_size_x = 1) in;
 layout(binding = 1, rgba16f) uniform readonly image2D uColour;
 layout(binding = 2, MOTION_FORMAT) uniform readonly image2D uMotion;
-layout(binding = 3, r8ui) uniform readonly uimage2D uIds;
+layout(binding = IDS_UNIT, r8ui) uniform readonly uimage2D uIds;
 #ifdef NEVER
 layout(binding = 0, rgba32f) uniform writeonly image2D uOut;
 #else
@@ -78,7 +80,8 @@ TEST_F(GlTest, ImageSlotsCarryTheFormatTheirDeclarationNames) {
     const Program program = makeComputeProgramFromSource(kImages, "image formats probe");
     EXPECT_EQ(program.image("uColour").format, GLenum(GL_RGBA16F));
     EXPECT_EQ(program.image("uMotion").format, GLenum(GL_RG32F)) << "the define's value";
-    EXPECT_EQ(program.image("uIds").format, GLenum(GL_R8UI));
+    EXPECT_EQ(program.image("uIds").format, GLenum(GL_R8UI)) << "the unit a define, the format a qualifier";
+    EXPECT_EQ(program.image("uIds").unit, 3);
     EXPECT_EQ(program.image("uOut").format, 0u) << "branches that declare different formats: not checked";
 }
 
