@@ -19,6 +19,8 @@ layout(binding = 1) uniform sampler2D uNormalTexture;  // view space (or octahed
 layout(binding = 2) uniform usampler2D uObjectId;      // when uMaskCount > 0
 layout(binding = 0, rgba32f) uniform writeonly image2D uSurface;
 
+#include "passes/common/depth_neighbours.h.glsl"
+
 bool listed(ivec2 p) {
     if (uMaskCount == 0) {
         return true;
@@ -35,20 +37,9 @@ bool listed(ivec2 p) {
 // p's neighbour along +o or -o whose depth is closer to z (the same surface, most likely), as the view-space
 // step from the centre towards +o; without a valid neighbour, a step in the plane facing the camera.
 vec3 neighbourStep(ivec2 p, ivec2 o, vec3 centre, float z) {
-    ivec2 size = ivec2(uFullSize);
-    ivec2 a = clamp(p + o, ivec2(0), size - 1);
-    ivec2 b = clamp(p - o, ivec2(0), size - 1);
-    float za = imageLoad(uLinearDepth, a).r;
-    float zb = imageLoad(uLinearDepth, b).r;
-    bool useA = validDepth(za) && a != p && (!validDepth(zb) || b == p || abs(za - z) <= abs(zb - z));
-    bool useB = !useA && validDepth(zb) && b != p;
-    if (useA) {
-        return viewPositionAt(vec2(a) + 0.5, za) - centre;
-    }
-    if (useB) {
-        return centre - viewPositionAt(vec2(b) + 0.5, zb);
-    }
-    return viewPositionAt(vec2(p + o) + 0.5, z) - centre;
+    vec3 towards;
+    bool found = nearerNeighbourStep(p, o, centre, z, towards);
+    return found ? towards : viewPositionAt(vec2(p + o) + 0.5, z) - centre;
 }
 
 // The host's normal when it gives one (facing the camera where it is broken), else the normal of the depths

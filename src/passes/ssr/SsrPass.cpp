@@ -181,7 +181,7 @@ void SsrPass::bindTrace(const TraceProgram& trace, const FrameResources& resourc
     const Texture* normals = resources.texture(Resource::Normals);
     const Texture* material = resources.texture(Resource::Material);
     trace.program.use();
-    bind(trace.depth, depth);
+    bind(trace.depth, depth, ImageAccess::Read);
     bind(trace.normals, normals ? *normals : depth);
     bind(trace.material, material ? *material : depth);
     bind(trace.pyramid, *resources.texture(Resource::DepthPyramid), ImageAccess::Read);

@@ -121,7 +121,7 @@ private:
     /// A trace program (ssr_trace.comp.glsl, with or without REFINE) and its slots.
     struct TraceProgram : ProgramSlots {
         using ProgramSlots::ProgramSlots;
-        SamplerSlot depth = program.sampler("uLinearDepth");
+        ImageSlot depth = program.image("uLinearDepth");
         SamplerSlot normals = program.sampler("uNormalTexture");
         SamplerSlot material = program.sampler("uMaterial");
         ImageSlot pyramid = program.image("uPyramid");

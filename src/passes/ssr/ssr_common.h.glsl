@@ -1,5 +1,5 @@
-// Shared by the screen-space reflection passes: the parameter block, view-space reconstruction from linear
-// depth, the surface normal (the host's, or from the depths around the pixel).
+// Shared by the screen-space reflection passes: the parameter block and view-space reconstruction from
+// linear depth.
 #ifndef PHOTOPIC_SSR_COMMON_H_GLSL
 #define PHOTOPIC_SSR_COMMON_H_GLSL
 
@@ -54,47 +54,6 @@ vec3 viewDirectionAt(vec2 window) {
     vec3 a = uRayNear[0].xyz + ndc.x * uRayNear[1].xyz + ndc.y * uRayNear[2].xyz;
     vec3 b = uRayFar[0].xyz + ndc.x * uRayFar[1].xyz + ndc.y * uRayFar[2].xyz;
     return normalize(b - a);
-}
-
-// The view-space step from p's point to its neighbour along +o or -o, whichever depth is closer (most likely
-// the same surface); zero when neither is valid.
-vec3 neighbourStep(sampler2D depth, ivec2 p, ivec2 o, vec3 centre, float z) {
-    ivec2 size = ivec2(uFullSize);
-    ivec2 a = clamp(p + o, ivec2(0), size - 1);
-    ivec2 b = clamp(p - o, ivec2(0), size - 1);
-    float za = texelFetch(depth, a, 0).r;
-    float zb = texelFetch(depth, b, 0).r;
-    bool useA = validDepth(za) && a != p && (!validDepth(zb) || b == p || abs(za - z) <= abs(zb - z));
-    if (useA) {
-        return viewPositionAt(vec2(a) + 0.5, za) - centre;
-    }
-    if (validDepth(zb) && b != p) {
-        return centre - viewPositionAt(vec2(b) + 0.5, zb);
-    }
-    return vec3(0.0);
-}
-
-// The unit view-space normal at pixel p (facing the camera), or zero when there is none to trust. Where
-// the normals come from is the define SSR_NORMALS (uNormals' values), not the uniform: the program is
-// built once per source, so a SIMD implementation that runs every side of a branch under a mask does not
-// pay for the depth reconstruction when the host gives normals.
-vec3 surfaceNormal(sampler2D depth, sampler2D normals, ivec2 p, vec3 centre, float z) {
-#if SSR_NORMALS == 1
-    vec3 n = texelFetch(normals, p, 0).xyz;
-#elif SSR_NORMALS == 2
-    vec3 n = octahedralDecode(texelFetch(normals, p, 0).rg);
-#else
-    vec3 dx = neighbourStep(depth, p, ivec2(1, 0), centre, z);
-    vec3 dy = neighbourStep(depth, p, ivec2(0, 1), centre, z);
-    vec3 n = cross(dx, dy);
-#endif
-    float len2 = dot(n, n);
-    if (!finitePositive(len2) || len2 <= 1e-12) { // NaN, zero, tiny or infinite
-        return vec3(0.0);
-    }
-    n *= inversesqrt(len2);
-    // Facing the camera: a reconstructed normal's sign is arbitrary; a host's may be flipped.
-    return dot(n, centre) > 0.0 ? -n : n;
 }
 
 #endif

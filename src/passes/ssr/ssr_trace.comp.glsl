@@ -24,21 +24,51 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform sampler2D uLinearDepth; // R32F, +inf: sky
 layout(binding = 1) uniform sampler2D uNormalTexture;
 layout(binding = 2) uniform sampler2D uMaterial; // RGB F0, A roughness, when uHasMaterial != 0
 // Read texel by texel as images (a load skips the sampler's level and filtering logic).
+layout(binding = 3, r32f) uniform readonly image2D uLinearDepth; // +inf: sky
 layout(binding = 1, r32f) uniform readonly image2D uPyramid; // min depth, every level in one (ssr_pyramid.h.glsl)
 layout(binding = 2, rgba32f) uniform readonly image2D uBlockHits; // REFINE: the blocks' hits (half resolution)
 layout(binding = 0, rgba32f) uniform writeonly image2D uHits;
 
-// The ray, in window space: s(t) = s0 + t d; linear depth(t) = (q0 + t dq) / (k0 + t dk).
+#include "passes/common/depth_neighbours.h.glsl"
+
+// The unit view-space normal at pixel p (facing the camera), or zero when there is none to trust. Where
+// the normals come from is the define SSR_NORMALS (uNormals' values), not the uniform: the program is
+// built once per source, so a SIMD implementation that runs every side of a branch under a mask does not
+// pay for the depth reconstruction when the host gives normals.
+vec3 surfaceNormal(sampler2D normals, ivec2 p, vec3 centre, float z) {
+#if SSR_NORMALS == 1
+    vec3 n = texelFetch(normals, p, 0).xyz;
+#elif SSR_NORMALS == 2
+    vec3 n = octahedralDecode(texelFetch(normals, p, 0).rg);
+#else
+    vec3 dx, dy; // zero where there is no neighbouring depth to step to: no normal
+    nearerNeighbourStep(p, ivec2(1, 0), centre, z, dx);
+    nearerNeighbourStep(p, ivec2(0, 1), centre, z, dy);
+    vec3 n = cross(dx, dy);
+#endif
+    float len2 = dot(n, n);
+    if (!finitePositive(len2) || len2 <= 1e-12) { // NaN, zero, tiny or infinite
+        return vec3(0.0);
+    }
+    n *= inversesqrt(len2);
+    // Facing the camera: a reconstructed normal's sign is arbitrary; a host's may be flipped.
+    return dot(n, centre) > 0.0 ? -n : n;
+}
+
+// The ray, in window space: s(t) = s0 + t d; linear depth(t) = (q0 + t dq) / (k0 + t dk), where k, 1/w,
+// is positive over the whole segment (it ends in front of the near plane).
 struct Ray {
     vec2 s0, d;
     float q0, dq, k0, dk;
 };
 
-float depthAt(Ray r, float t) { return (r.q0 + t * r.dq) / (r.k0 + t * r.dk); }
+// Whether the ray at t lies in front of linear depth z (+inf included), and whether it lies at most at z:
+// depth(t) < z and depth(t) <= z without the division, since k(t) > 0.
+bool inFront(Ray r, float t, float z) { return r.q0 + t * r.dq < z * (r.k0 + t * r.dk); }
+bool reaches(Ray r, float t, float z) { return r.q0 + t * r.dq <= z * (r.k0 + t * r.dk); }
 
 // Where the ray reaches linear depth z (finite; t may lie outside [0, 1]), or 1e30 where its depth does not
 // change: never a division by zero (an infinity, or with 0 / 0 a NaN, which GLSL's min, max and clamp are
@@ -98,11 +128,11 @@ bool continuesInto(ivec2 c, ivec2 o, float zc) {
     if (any(lessThan(n, ivec2(0))) || any(greaterThanEqual(n, size))) {
         return true;
     }
-    float zn = texelFetch(uLinearDepth, n, 0).r;
+    float zn = imageLoad(uLinearDepth, n).r;
     if (!validDepth(zn)) {
         return false;
     }
-    float zm = texelFetch(uLinearDepth, clamp(c - o, ivec2(0), size - 1), 0).r;
+    float zm = imageLoad(uLinearDepth, clamp(c - o, ivec2(0), size - 1)).r;
     float ic = 1.0 / zc;
     float tolerance = kContinuity * ic;
     return abs(1.0 / zn - ic) <= tolerance ||
@@ -139,7 +169,7 @@ struct Mirror {
 // Sets up pixel p's mirror ray; false where p reflects nothing: the sky, a surface too rough, no normal,
 // facing away, or a ray along the view axis (under a pixel on screen).
 bool mirrorRay(ivec2 p, out Mirror m) {
-    float z = texelFetch(uLinearDepth, p, 0).r;
+    float z = imageLoad(uLinearDepth, p).r;
     if (!validDepth(z)) {
         return false;
     }
@@ -151,7 +181,7 @@ bool mirrorRay(ivec2 p, out Mirror m) {
     }
     m.roughnessFade = uRoughnessCutoff >= 1.0 ? 1.0 : clamp((uRoughnessCutoff - m.roughness) / 0.1, 0.0, 1.0);
     vec3 origin = viewPositionAt(vec2(p) + 0.5, z);
-    vec3 n = surfaceNormal(uLinearDepth, uNormalTexture, p, origin, z);
+    vec3 n = surfaceNormal(uNormalTexture, p, origin, z);
     vec3 v = viewDirectionAt(vec2(p) + 0.5);
     if (m.roughnessFade <= 0.0 || dot(n, n) == 0.0 || dot(n, v) >= 0.0) {
         return false;
@@ -214,9 +244,8 @@ bool nextCandidate(Mirror m, inout Walk w, float tStop, int maxLevel) {
         // and t <= tExit for the clamps (GLSL leaves clamp undefined for min > max).
         w.tExit = min(max(cellExit(ray, w.cell, float(1 << w.level), w.sides), w.t), tStop);
         w.zCell = imageLoad(uPyramid, pyramidLevelOrigin(uPyramidSize, w.level) + w.cell).r;
-        float zA = depthAt(ray, w.t);
-        float zB = depthAt(ray, w.tExit);
-        if (max(zA, zB) < w.zCell) { // in front of every surface in the cell (+inf, the sky, included)
+        bool frontA = inFront(ray, w.t, w.zCell);
+        if (frontA && inFront(ray, w.tExit, w.zCell)) { // in front of every surface in the cell (the sky too)
             w.t = w.tExit;
             w.cell += ivec2(w.sides) * m.towards;
             if (w.level < maxLevel) {
@@ -226,7 +255,7 @@ bool nextCandidate(Mirror m, inout Walk w, float tStop, int maxLevel) {
             continue;
         }
         if (w.level > 0) {
-            if (zA < w.zCell) { // it reaches the cell's nearest depth inside the cell
+            if (frontA) { // it reaches the cell's nearest depth inside the cell
                 w.t = clamp(tAtDepth(ray, w.zCell), w.t, w.tExit);
             }
             --w.level;
@@ -240,7 +269,9 @@ bool nextCandidate(Mirror m, inout Walk w, float tStop, int maxLevel) {
             continue;
         }
         // Level 0: a pixel of the image (the padding is sky, passed above).
-        if (min(zA, zB) <= w.zCell + uThickness && all(lessThan(w.cell, ivec2(uFullSize)))) {
+        float zBack = w.zCell + uThickness;
+        bool within = reaches(ray, w.t, zBack) || reaches(ray, w.tExit, zBack);
+        if (within && all(lessThan(w.cell, ivec2(uFullSize)))) {
             ++w.steps;
             return true;
         }
@@ -254,7 +285,7 @@ bool nextCandidate(Mirror m, inout Walk w, float tStop, int maxLevel) {
 // (withinSurface). `hit`: its window position, confidence and cone radius.
 bool isHit(Mirror m, Walk w, out vec4 hit) {
     vec3 hitPoint = viewPositionAt(vec2(w.cell) + 0.5, w.zCell);
-    vec3 hitNormal = surfaceNormal(uLinearDepth, uNormalTexture, w.cell, hitPoint, w.zCell);
+    vec3 hitNormal = surfaceNormal(uNormalTexture, w.cell, hitPoint, w.zCell);
     // Where the ray meets the surface's depth in the pixel, or enters the pixel behind it.
     float tHit = clamp(tAtDepth(m.ray, w.zCell), w.t, w.tExit);
     vec2 window = clamp(m.ray.s0 + tHit * m.ray.d, vec2(0.0), uFullSize);
