@@ -13,8 +13,11 @@
 #include "GlTest.h"
 #include "OctahedralNormals.h"
 
+#include "core/Quality.h"
+#include "gl/Capabilities.h"
 #include "gl/Objects.h"
 #include "gl/TextureIo.h"
+#include "passes/ssr/SsrPass.h"
 #include "scenes/testbed/TestbedRaytracer.h"
 #include "scenes/testbed/TestbedRenderer.h"
 #include "scenes/testbed/TestbedScene.h"
@@ -368,6 +371,76 @@ TEST_F(GlTest, SsrStaysFiniteWithNonFiniteInputs) {
             }
         }
         EXPECT_EQ(nonFinite, 0);
+    }
+}
+
+// The history the glossy cones read next frame: level 0 the sanitised scene colour, each further level the
+// box mean of the level below (so of level 0's 2^L x 2^L block), as many levels as the smaller side allows up
+// to six, on a size no tile divides (83 x 45: the tiles' overhang, odd rows and columns each level leaves
+// out) and with values the sanitising must clean (NaN, infinities, negatives, past half float's range).
+TEST_F(GlTest, SsrHistoryIsTheSanitisedSceneAndItsBoxMeans) {
+    const int w = 83, h = 45;
+    ImageF scene(w, h);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            float* c = scene.at(x, y);
+            c[0] = float((x * 7 + y * 13) % 31) * 0.37f;
+            c[1] = float((x * x + 3 * y) % 17) * 2.5f;
+            c[2] = 0.01f * float(x + y);
+            c[3] = 1.0f;
+        }
+    }
+    scene.at(3, 4)[0] = std::numeric_limits<float>::quiet_NaN();
+    scene.at(40, 20)[1] = std::numeric_limits<float>::infinity();
+    scene.at(41, 20)[2] = -5.0f;
+    scene.at(80, 44)[0] = 1e9f; // RGBA16F: +inf after the upload's rounding
+    const Texture input = makeTexture(scene, "ssr history scene", GL_RGBA16F);
+    const ImageF stored = readTextureF(input); // the half floats the pass reads, rows top to bottom
+    auto clean = [](float v) { return std::isfinite(v) ? std::clamp(v, 0.0f, 65000.0f) : 0.0f; };
+
+    Settings settings;
+    settings.ssr.enabled = true;
+    const QualityTier tier = qualityTier(settings.quality);
+    const Capabilities caps = detectCapabilities();
+    const FrameInputs in;
+    const FrameTime time;
+    FrameContext ctx{settings, tier, caps, in, time, Extent{w, h}};
+    FrameResources resources;
+    resources.bind(Resource::SceneColor, input);
+    SsrHistoryPass pass;
+    pass.execute(ctx, resources);
+    ASSERT_NE(pass.previous(), nullptr);
+    const Texture& history = *pass.previous();
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+    GLint levels = 0;
+    glGetTextureParameteriv(history.id(), GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+    ASSERT_EQ(levels, 6);
+    for (int level = 0; level < levels; ++level) {
+        const int lw = std::max(1, w >> level), lh = std::max(1, h >> level);
+        std::vector<float> texels(std::size_t(lw) * lh * 4);
+        glGetTextureImage(history.id(), level, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)),
+                          texels.data());
+        double worst = 0.0;
+        for (int ty = 0; ty < lh; ++ty) {
+            for (int tx = 0; tx < lw; ++tx) {
+                const int block = 1 << level;
+                for (int c = 0; c < 3; ++c) {
+                    double sum = 0.0;
+                    for (int by = 0; by < block; ++by) {
+                        for (int bx = 0; bx < block; ++bx) {
+                            // Texel (x, y) of GL's level 0 is the image's row h - 1 - y.
+                            sum += clean(stored.at(tx * block + bx, h - 1 - (ty * block + by))[c]);
+                        }
+                    }
+                    const double expected = sum / double(block * block);
+                    const double got = texels[(std::size_t(ty) * lw + tx) * 4 + c];
+                    // Half float's rounding of the result (and of each level's mean it was made from).
+                    worst = std::max(worst, std::abs(got - expected) / std::max(std::abs(expected), 1e-2));
+                }
+                EXPECT_EQ(texels[(std::size_t(ty) * lw + tx) * 4 + 3], 1.0f);
+            }
+        }
+        EXPECT_LE(worst, 2e-3) << "level " << level << " (" << lw << " x " << lh << ")";
     }
 }
 

@@ -11,7 +11,7 @@ namespace {
 
 constexpr int kMaxPyramidLevels = 7;
 /// Mip levels of the history the glossy cones read.
-constexpr int kHistoryLevels = 6;
+constexpr int kHistoryLevels = 6; // as many as ssr_history.comp.glsl writes
 
 int mipLevels(Extent e, int most) {
     const auto smaller = unsigned(std::max(1, std::min(e.width, e.height)));
@@ -85,14 +85,19 @@ void SsrHistoryPass::execute(FrameContext& ctx, FrameResources& resources) {
         mValid = false;
     }
     {
-        // One colour read and written, and the mips (a third more).
-        ScopedGpuTimer timer(ctx.timers, "ssr history",
-                             double(e.width) * e.height * (8.0 + 8.0 + 16.0 / 3.0));
+        // One colour read, and written with its mips (a third more).
+        ScopedGpuTimer timer(ctx.timers, "ssr history", double(e.width) * e.height * (8.0 + 8.0 * 4.0 / 3.0));
         mProgram.use();
+        glProgramUniform1i(mProgram.id(), 0, levels);
         bind(mScene, *resources.texture(Resource::SceneColor), ImageAccess::Read);
-        bind(mHistorySlot, mHistory, ImageAccess::Write); // level 0
-        dispatch(mProgram, e, Barrier::TextureFetchAndCopy);
-        glGenerateTextureMipmap(mHistory.id());
+        for (int level = 0; level < int(mLevelSlots.size()); ++level) {
+            // A level the texture does not have: its slot holds level 0, which the shader does not write
+            // there.
+            bind(mLevelSlots[std::size_t(level)], mHistory, ImageAccess::Write, level < levels ? level : 0);
+        }
+        // A work group per 32 x 32 tile of level 0; the next frame's resolve samples the chain.
+        dispatch(mProgram, Groups{GLuint((e.width + 31) / 32), GLuint((e.height + 31) / 32), 1},
+                 Barrier::TextureFetch);
     }
     mValid = true;
 }

@@ -14,6 +14,7 @@
 #include "passes/FramePass.h"
 #include "passes/ProgramVariants.h"
 
+#include <array>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -100,7 +101,9 @@ public:
 private:
     Program mProgram;
     ImageSlot mScene = mProgram.image("uScene");
-    ImageSlot mHistorySlot = mProgram.image("uHistory");
+    std::array<ImageSlot, 6> mLevelSlots{mProgram.image("uLevel0"), mProgram.image("uLevel1"),
+                                         mProgram.image("uLevel2"), mProgram.image("uLevel3"),
+                                         mProgram.image("uLevel4"), mProgram.image("uLevel5")};
     Texture mHistory;
     bool mValid = false;
 };
