@@ -251,6 +251,22 @@ void print(const char* label, const Figures& f) {
                 f.excluded);
 }
 
+/// A frame context of extent `e` with SSR on, for running one of SSR's passes alone.
+struct LoneFrame {
+    explicit LoneFrame(Extent e)
+        : ctx{settings, tier, caps, in, time, e} {}
+    Settings settings = [] {
+        Settings s;
+        s.ssr.enabled = true;
+        return s;
+    }();
+    QualityTier tier = qualityTier(settings.quality);
+    Capabilities caps = detectCapabilities();
+    FrameInputs in;
+    FrameTime time;
+    FrameContext ctx; ///< last: it refers to the members above
+};
+
 } // namespace
 
 TEST_F(GlTest, SsrMatchesTheRayTracedMirrorReflectionOnTheStrip) {
@@ -398,17 +414,11 @@ TEST_F(GlTest, SsrHistoryIsTheSanitisedSceneAndItsBoxMeans) {
     const ImageF stored = readTextureF(input); // the half floats the pass reads, rows top to bottom
     auto clean = [](float v) { return std::isfinite(v) ? std::clamp(v, 0.0f, 65000.0f) : 0.0f; };
 
-    Settings settings;
-    settings.ssr.enabled = true;
-    const QualityTier tier = qualityTier(settings.quality);
-    const Capabilities caps = detectCapabilities();
-    const FrameInputs in;
-    const FrameTime time;
-    FrameContext ctx{settings, tier, caps, in, time, Extent{w, h}};
+    LoneFrame frame(Extent{w, h});
     FrameResources resources;
     resources.bind(Resource::SceneColor, input);
     SsrHistoryPass pass;
-    pass.execute(ctx, resources);
+    pass.execute(frame.ctx, resources);
     ASSERT_NE(pass.previous(), nullptr);
     const Texture& history = *pass.previous();
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
@@ -441,6 +451,91 @@ TEST_F(GlTest, SsrHistoryIsTheSanitisedSceneAndItsBoxMeans) {
             }
         }
         EXPECT_LE(worst, 2e-3) << "level " << level << " (" << lw << " x " << lh << ")";
+    }
+}
+
+// The depth pyramid the march climbs: level 0 the linear depth with broken depths (NaN, zero, negative,
+// infinite) and the padding as the sky, each further level the nearest of the 2 x 2 cells below, every level
+// at its place in the atlas; on sizes whose tiles overhang the image and the pyramid (150 x 70: seven
+// levels; 20 x 9: four, a 64 x 64 tile over a 24 x 16 level 0) and on one pixel.
+TEST_F(GlTest, SsrDepthPyramidIsTheNearestDepthOfEachCell) {
+    const Extent sizes[] = {{150, 70}, {20, 9}, {1, 1}};
+    const float inf = std::numeric_limits<float>::infinity();
+    for (const Extent e : sizes) {
+        ImageF depth(e.width, e.height);
+        for (int y = 0; y < e.height; ++y) {
+            for (int x = 0; x < e.width; ++x) {
+                depth.at(x, y)[0] = 0.5f + float((x * 37 + y * 11) % 101) * 0.25f;
+            }
+        }
+        if (e.width > 10) {
+            depth.at(3, 2)[0] = std::numeric_limits<float>::quiet_NaN();
+            depth.at(4, 2)[0] = 0.0f;
+            depth.at(5, 2)[0] = -1.0f;
+            depth.at(6, 2)[0] = inf;
+            depth.at(7, 2)[0] = 0.01f; // the nearest of the image: every level's cell over it keeps it
+        }
+        const Texture linear = makeTexture(depth, "pyramid test depth", GL_R32F);
+        const ImageF stored = readTextureF(linear); // rows top to bottom
+
+        LoneFrame frame(e);
+        FrameResources resources;
+        resources.bind(Resource::LinearDepth, linear);
+        DepthPyramidPass pass;
+        pass.execute(frame.ctx, resources);
+        const Texture* pyramid = resources.texture(Resource::DepthPyramid);
+        ASSERT_NE(pyramid, nullptr);
+        glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+        const ImageF atlas = readTextureF(*pyramid);
+        const int levels = depthPyramidLevels(e);
+        const Extent size0 = depthPyramidExtent(e);
+        ASSERT_EQ(pyramid->extent(), depthPyramidAtlasExtent(e));
+        auto atlasAt = [&](int x, int y) { return atlas.at(x, atlas.height - 1 - y)[0]; }; // GL texel (x, y)
+
+        // Level by level, in GL's texel order (row 0 at the bottom).
+        std::vector<float> level(std::size_t(size0.width) * size0.height);
+        for (int y = 0; y < size0.height; ++y) {
+            for (int x = 0; x < size0.width; ++x) {
+                const float z = x < e.width && y < e.height ? stored.at(x, e.height - 1 - y)[0] : inf;
+                level[std::size_t(y) * size0.width + x] = std::isfinite(z) && z > 0.0f ? z : inf;
+            }
+        }
+        int mismatches = 0;
+        for (int l = 0; l < levels; ++l) {
+            const int lw = size0.width >> l, lh = size0.height >> l;
+            const int ox = l == 0 ? 0 : size0.width,
+                      oy = l == 0 ? 0 : size0.height - (size0.height >> (l - 1));
+            if (l > 0) {
+                std::vector<float> next(std::size_t(lw) * lh);
+                const int pw = size0.width >> (l - 1);
+                for (int y = 0; y < lh; ++y) {
+                    for (int x = 0; x < lw; ++x) {
+                        auto below = [&](int dx, int dy) {
+                            return level[std::size_t(2 * y + dy) * pw + std::size_t(2 * x + dx)];
+                        };
+                        next[std::size_t(y) * lw + x] =
+                            std::min(std::min(below(0, 0), below(1, 0)), std::min(below(0, 1), below(1, 1)));
+                    }
+                }
+                level = std::move(next);
+            }
+            for (int y = 0; y < lh; ++y) {
+                for (int x = 0; x < lw; ++x) {
+                    const float expected = level[std::size_t(y) * lw + x];
+                    const float got = atlasAt(ox + x, oy + y);
+                    if (got != expected && mismatches++ < 5) {
+                        ADD_FAILURE() << e.width << " x " << e.height << " level " << l << " cell (" << x
+                                      << ", " << y << "): " << got << ", expected " << expected;
+                    }
+                }
+            }
+        }
+        EXPECT_EQ(mismatches, 0) << e.width << " x " << e.height << ", " << levels << " levels";
+        if (e.width > 10) {
+            // Image pixel (7, 2) is GL texel (7, height - 3); level 1 sits at x = size0.width, y = 0.
+            EXPECT_EQ(atlasAt(size0.width + 3, (e.height - 3) / 2), 0.01f)
+                << "level 1 keeps the nearest depth";
+        }
     }
 }
 

@@ -9,7 +9,7 @@ namespace photopic {
 
 namespace {
 
-constexpr int kMaxPyramidLevels = 7;
+constexpr int kMaxPyramidLevels = 7; // as many as ssr_pyramid.comp.glsl writes
 /// Mip levels of the history the glossy cones read.
 constexpr int kHistoryLevels = 6; // as many as ssr_history.comp.glsl writes
 
@@ -46,21 +46,20 @@ std::span<const ResourceUse> DepthPyramidPass::uses() const {
 void DepthPyramidPass::execute(FrameContext& ctx, FrameResources& resources) {
     const int levels = depthPyramidLevels(ctx.extent);
     const Extent size0 = depthPyramidExtent(ctx.extent);
-    // One level holding them all (ssr_pyramid.h.glsl): every read of it is a texelFetch at lod 0.
+    // One level holding them all (ssr_pyramid.h.glsl): every read of it is an image load at level 0.
     const Texture& pyramid =
         resources.pool().acquireNearest(depthPyramidAtlasExtent(ctx.extent), GL_R32F, "ssr depth pyramid");
     // Level 0 reads a depth and writes one; the rest of the chain is a third of that again.
     ScopedGpuTimer timer(ctx.timers, "ssr depth pyramid",
                          double(size0.width) * size0.height * (8.0 + 8.0 / 3.0));
     mProgram.use();
+    glProgramUniform1i(mProgram.id(), 0, levels);
     glProgramUniform2i(mProgram.id(), 1, size0.width, size0.height);
-    for (int level = 0; level < levels; ++level) {
-        bind(mLinearDepth, *resources.texture(Resource::LinearDepth));
-        bind(mPyramid, pyramid, ImageAccess::ReadWrite);
-        glProgramUniform1i(mProgram.id(), 0, level);
-        // The next level reads what this one wrote.
-        dispatch(mProgram, Extent{size0.width >> level, size0.height >> level}, Barrier::ImageAccess);
-    }
+    bind(mLinearDepth, *resources.texture(Resource::LinearDepth), ImageAccess::Read);
+    bind(mPyramid, pyramid, ImageAccess::Write);
+    // Every level in one dispatch, a work group per 64 x 64 tile of level 0; the trace loads them.
+    dispatch(mProgram, Groups{GLuint((size0.width + 63) / 64), GLuint((size0.height + 63) / 64), 1},
+             Barrier::ImageAccess);
     resources.bind(Resource::DepthPyramid, pyramid);
 }
 

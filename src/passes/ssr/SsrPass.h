@@ -75,7 +75,7 @@ public:
 
 private:
     Program mProgram;
-    SamplerSlot mLinearDepth = mProgram.sampler("uLinearDepth");
+    ImageSlot mLinearDepth = mProgram.image("uLinearDepth");
     ImageSlot mPyramid = mProgram.image("uPyramid");
 };
 
