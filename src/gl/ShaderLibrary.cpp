@@ -253,7 +253,16 @@ void dispatchPixels(Extent extent) noexcept {
 
 namespace {
 std::optional<PixelGroup> gForcedPixelGroup;
+std::optional<bool> gForcedSharedNeighbourhoods;
 } // namespace
+
+bool sharedNeighbourhoods() {
+    return gForcedSharedNeighbourhoods.value_or(!isSoftwareRenderer());
+}
+
+void forceSharedNeighbourhoods(std::optional<bool> shared) {
+    gForcedSharedNeighbourhoods = shared;
+}
 
 PixelGroup pixelGroup() {
     if (gForcedPixelGroup) {

@@ -51,6 +51,14 @@ inline constexpr PixelGroup kPixelGroupRow{64, 1};
 PixelGroup pixelGroup();
 /// Tests: the shape pixelGroup() gives from now on; nullopt: by the renderer again.
 void forcePixelGroup(std::optional<PixelGroup> group);
+/// Whether a pass that reads a neighbourhood around each pixel gathers it through its work group's shared
+/// tile (each texel loaded and prepared once, then a barrier) rather than loading it at every pixel: on a
+/// GPU, where the tile saves the repeated loads; not on a software renderer, which runs the barrier slower
+/// than the loads (docs/architecture.md). Results do not depend on it. By the current context's renderer,
+/// unless a test forced it.
+bool sharedNeighbourhoods();
+/// Tests: what sharedNeighbourhoods() gives from now on; nullopt: by the renderer again.
+void forceSharedNeighbourhoods(std::optional<bool> shared);
 /// `defines` with those that select `group` in passes/common/pixel_group.h.glsl (8x8 or 64x1).
 ShaderDefines withPixelGroup(ShaderDefines defines, PixelGroup group);
 /// Groups of `group` covering `extent`, one invocation per element.

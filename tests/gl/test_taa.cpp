@@ -5,6 +5,7 @@
 #include "EdgeError.h"
 #include "GlTest.h"
 
+#include "gl/ShaderLibrary.h"
 #include "gl/TextureIo.h"
 #include "scenes/testbed/TestbedRaytracer.h"
 #include "scenes/testbed/TestbedScene.h"
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace photopic::test {
@@ -313,6 +315,58 @@ TEST_F(GlTest, TaaLeavesNoTrailBehindAMovingObjectWithMotionVectors) {
 // A slow pan across the poles and the fence: frame-to-frame change of display luma on edge pixels with TAA is
 // at most 30% of no-AA's (aliasing crawls and flickers without it). The single-frame filters are reported
 // beside it, and SMAA's sub-pixel ridge step must calm the thin features' crawl, not add to it: SMAA flickers
+// TAA's 3x3 neighbourhood comes from a shared tile the work group loads once on a GPU and from direct loads
+// on a software renderer (sharedNeighbourhoods()): both give the same bits, on the moving testbed with its
+// motion vectors, with camera motion reconstructed from depth, at a size whose work groups overhang the
+// image on both axes, and without depth.
+TEST_F(GlTest, TaaGathersTheSameNeighbourhoodFromASharedTile) {
+    struct Restore {
+        ~Restore() { forceSharedNeighbourhoods(std::nullopt); }
+    } restore;
+    const Settings settings = aaMeasuringSettings(AntiAliasing::Taa);
+    auto render = [&](bool shared, Extent size, bool withMotion) {
+        forceSharedNeighbourhoods(shared);
+        auto scene = sceneWith({"cameraSpeed=1", "objectStart=4"});
+        scene->resize(size);
+        Pipeline pipeline({.settings = settings});
+        return runHdr(*scene, pipeline, 0, 4, withMotion).rgba;
+    };
+    for (const Extent size : {Extent{kW, kH}, Extent{83, 45}}) {
+        for (const bool withMotion : {true, false}) {
+            const std::vector<float> direct = render(false, size, withMotion);
+            EXPECT_EQ(render(true, size, withMotion), direct)
+                << size.width << " x " << size.height
+                << (withMotion ? ", motion vectors" : ", camera motion");
+        }
+    }
+    // No depth: colour and motion alone.
+    ImageF color(37, 21, 0.0f);
+    ImageF motion(37, 21, 0.0f);
+    for (int y = 0; y < 21; ++y) {
+        for (int x = 0; x < 37; ++x) {
+            color.at(x, y)[0] = float((x * 7 + y * 3) % 11) * 0.25f;
+            color.at(x, y)[1] = float(x % 4) * 0.5f;
+            color.at(x, y)[2] = 1.0f;
+            motion.at(x, y)[0] = x < 16 ? 1.0f / 64.0f : 0.0f;
+            motion.at(x, y)[1] = y < 9 ? -1.0f / 128.0f : 0.0f;
+        }
+    }
+    const Texture colorTexture = makeTexture(color, "color");
+    const Texture motionTexture = makeTexture(motion, "motion", GL_RG16F);
+    std::vector<float> results[2];
+    for (const bool shared : {false, true}) {
+        forceSharedNeighbourhoods(shared);
+        Pipeline pipeline({.settings = settings});
+        for (std::uint64_t f = 0; f < 3; ++f) {
+            pipeline.beginFrame({.frameIndex = f});
+            pipeline.execute({.color = &colorTexture, .motion = &motionTexture},
+                             {.dt = kDt, .frameIndex = f});
+        }
+        results[shared ? 1 : 0] = exposedScene(pipeline).rgba;
+    }
+    EXPECT_EQ(results[1], results[0]) << "without depth";
+}
+
 // less than the reference SMAA 1x (smaa.subpixel 0). Measured: FXAA 43%, SMAA 49%, the reference 57%.
 TEST_F(GlTest, TaaCalmsFlickerOnASlowPan) {
     auto scene = sceneWith({"cameraSpeed=0.1", "cameraStart=0.1", "objectSpeed=0"});

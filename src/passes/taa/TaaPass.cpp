@@ -74,6 +74,7 @@ const TaaPass::ResolveProgram& TaaPass::resolveProgram(const TaaParameters& p, G
                          {{"TAA_BILINEAR", std::to_string(p.bilinearHistory)},
                           {"TAA_DEPTH", std::to_string(p.hasDepth)},
                           {"TAA_CAMERA", std::to_string(p.hasCamera)},
+                          {"TAA_SHARED_TILE", mSharedTile ? "1" : "0"},
                           imageFormatDefine("TAA_MOTION_FORMAT", motionFormat)});
 }
 

@@ -20,6 +20,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 const bool kBilinearHistory = TAA_BILINEAR != 0;
 const bool kHasDepth = TAA_DEPTH != 0;
 const bool kHasCamera = TAA_CAMERA != 0;
+// The 3x3 neighbourhood from a shared 10 x 10 tile that the work group loads and converts once (each texel
+// loaded and converted by one invocation instead of by nine), or with TAA_SHARED_TILE 0 from direct loads: a
+// software renderer runs the barrier slower than the loads. Both give the same bits.
+const bool kSharedTile = TAA_SHARED_TILE != 0;
 
 // The inputs read texel by texel are images: a load skips the sampler's level and filtering logic. The
 // motion input is the host's, declared in its texture's format (TAA_MOTION_FORMAT, a program per format).
@@ -106,39 +110,78 @@ vec3 clipToBox(vec3 boxMin, vec3 boxMax, vec3 h) {
     return m > 1.0 ? centre + v / m : h;
 }
 
+// A texel of the neighbourhood: colour in working YCoCg, motion (UV, finite) and linear depth.
+struct Neighbour {
+    vec3 colour;
+    vec2 motion;
+    float depth;
+};
+
+Neighbour loadNeighbour(ivec2 q, float exposure) {
+    return Neighbour(rgbToYCoCg(toWorking(imageLoad(uCurrent, q).rgb, exposure)),
+                     finiteMotion(imageLoad(uMotion, q).rg), kHasDepth ? imageLoad(uDepth, q).r : 0.0);
+}
+
+// The work group's 8 x 8 pixels and a one-pixel border, each at its image-clamped position.
+const int kTile = 10;
+shared vec3 sColour[kTile * kTile];
+shared vec2 sMotion[kTile * kTile];
+shared float sDepth[kTile * kTile];
+
+// Pixel p's neighbour p + o, clamped to the image, from the tile or loaded.
+Neighbour neighbour(ivec2 p, ivec2 o, ivec2 size, float exposure) {
+    if (kSharedTile) {
+        ivec2 t = ivec2(gl_LocalInvocationID.xy) + 1 + o;
+        int i = t.y * kTile + t.x;
+        return Neighbour(sColour[i], sMotion[i], sDepth[i]);
+    }
+    return loadNeighbour(clamp(p + o, ivec2(0), size - 1), exposure);
+}
+
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = imageSize(uOutput);
+    float exposure = max(gExposure.exposure, 1e-8);
+    if (kSharedTile) { // every invocation, inside the image or not, before the barrier
+        ivec2 origin = ivec2(gl_WorkGroupID.xy) * 8 - 1;
+        for (int i = int(gl_LocalInvocationIndex); i < kTile * kTile; i += 64) {
+            ivec2 q = clamp(origin + ivec2(i % kTile, i / kTile), ivec2(0), size - 1);
+            Neighbour n = loadNeighbour(q, exposure);
+            sColour[i] = n.colour;
+            sMotion[i] = n.motion;
+            sDepth[i] = n.depth;
+        }
+        barrier();
+    }
     if (any(greaterThanEqual(p, size))) {
         return;
     }
-    float exposure = max(gExposure.exposure, 1e-8);
     vec3 current = imageLoad(uCurrent, p).rgb;
     float depth = kHasDepth ? imageLoad(uDepth, p).r : 0.0;
 
     // Neighbourhood statistics in working YCoCg, and the closest surface for the motion of edges.
     vec3 m1 = vec3(0.0), m2 = vec3(0.0);
     vec3 lo = vec3(1e9), hi = vec3(-1e9);
-    ivec2 closest = p;
     float closestDepth = depth;
+    vec2 closestMotion = finiteMotion(imageLoad(uMotion, p).rg);
     float farthestDepth = depth; // for next frame's disocclusion test; NaN counts as the sky
     const float kInfinity = uintBitsToFloat(0x7f800000u);
     float fastest2 = 0.0; // the longest motion of the 3x3, in pixels, squared
     for (int y = -1; y <= 1; ++y) {
         for (int x = -1; x <= 1; ++x) {
-            ivec2 q = clamp(p + ivec2(x, y), ivec2(0), size - 1);
-            vec3 c = rgbToYCoCg(toWorking(imageLoad(uCurrent, q).rgb, exposure));
+            Neighbour n = neighbour(p, ivec2(x, y), size, exposure);
+            vec3 c = n.colour;
             m1 += c;
             m2 += c * c;
             lo = min(lo, c);
             hi = max(hi, c);
-            vec2 m = finiteMotion(imageLoad(uMotion, q).rg) * vec2(size);
+            vec2 m = n.motion * vec2(size);
             fastest2 = max(fastest2, dot(m, m));
             if (kHasDepth) {
-                float d = imageLoad(uDepth, q).r;
+                float d = n.depth;
                 if (d < closestDepth) {
                     closestDepth = d;
-                    closest = q;
+                    closestMotion = n.motion;
                 }
                 farthestDepth = max(farthestDepth, isnan(d) ? kInfinity : d);
             }
@@ -150,7 +193,7 @@ void main() {
     vec3 boxMin = max(lo, mean - uGamma * sigma);
     vec3 boxMax = min(hi, mean + uGamma * sigma);
 
-    vec2 motion = finiteMotion(imageLoad(uMotion, closest).rg);
+    vec2 motion = closestMotion;
     vec2 uv = (vec2(p) + 0.5) / vec2(size);
     vec2 prevUv = uv - motion;
     bool history = uHasHistory != 0 && all(greaterThanEqual(prevUv, vec2(0.0))) && all(lessThanEqual(prevUv, vec2(1.0)));
