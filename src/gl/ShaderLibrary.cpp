@@ -253,15 +253,15 @@ void dispatchPixels(Extent extent) noexcept {
 
 namespace {
 std::optional<PixelGroup> gForcedPixelGroup;
-std::optional<bool> gForcedSharedNeighbourhoods;
+std::optional<bool> gForcedSharedMemoryTiles;
 } // namespace
 
-bool sharedNeighbourhoods() {
-    return gForcedSharedNeighbourhoods.value_or(!isSoftwareRenderer());
+bool sharedMemoryTiles() {
+    return gForcedSharedMemoryTiles.value_or(!isSoftwareRenderer());
 }
 
-void forceSharedNeighbourhoods(std::optional<bool> shared) {
-    gForcedSharedNeighbourhoods = shared;
+void forceSharedMemoryTiles(std::optional<bool> shared) {
+    gForcedSharedMemoryTiles = shared;
 }
 
 PixelGroup pixelGroup() {

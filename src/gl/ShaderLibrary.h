@@ -51,14 +51,16 @@ inline constexpr PixelGroup kPixelGroupRow{64, 1};
 PixelGroup pixelGroup();
 /// Tests: the shape pixelGroup() gives from now on; nullopt: by the renderer again.
 void forcePixelGroup(std::optional<PixelGroup> group);
-/// Whether a pass that reads a neighbourhood around each pixel gathers it through its work group's shared
-/// tile (each texel loaded and prepared once, then a barrier) rather than loading it at every pixel: on a
-/// GPU, where the tile saves the repeated loads; not on a software renderer, which runs the barrier slower
-/// than the loads (docs/architecture.md). Results do not depend on it. By the current context's renderer,
-/// unless a test forced it.
-bool sharedNeighbourhoods();
-/// Tests: what sharedNeighbourhoods() gives from now on; nullopt: by the renderer again.
-void forceSharedNeighbourhoods(std::optional<bool> shared);
+/// Whether a pass works through its work group's shared memory: gathers a neighbourhood from a shared tile
+/// (each texel loaded and prepared once, then a barrier) rather than loading it at every pixel, and builds a
+/// chain of reductions (mips, a depth pyramid) in one dispatch rather than a dispatch a level. On a GPU, where
+/// the tile saves repeated loads and the single dispatch the waits between levels; not on a software
+/// renderer, which runs barriers and the strided accesses of a tile slower than the loads and dispatches they
+/// replace (docs/architecture.md). Results do not depend on it. By the current context's renderer, unless a
+/// test forced it.
+bool sharedMemoryTiles();
+/// Tests: what sharedMemoryTiles() gives from now on; nullopt: by the renderer again.
+void forceSharedMemoryTiles(std::optional<bool> shared);
 /// `defines` with those that select `group` in passes/common/pixel_group.h.glsl (8x8 or 64x1).
 ShaderDefines withPixelGroup(ShaderDefines defines, PixelGroup group);
 /// Groups of `group` covering `extent`, one invocation per element.

@@ -16,6 +16,7 @@
 #include "core/Quality.h"
 #include "gl/Capabilities.h"
 #include "gl/Objects.h"
+#include "gl/ShaderLibrary.h"
 #include "gl/TextureIo.h"
 #include "passes/ssr/SsrPass.h"
 #include "scenes/testbed/TestbedRaytracer.h"
@@ -27,6 +28,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -393,7 +395,8 @@ TEST_F(GlTest, SsrStaysFiniteWithNonFiniteInputs) {
 // The history the glossy cones read next frame: level 0 the sanitised scene colour, each further level the
 // box mean of the level below (so of level 0's 2^L x 2^L block), as many levels as the smaller side allows up
 // to six, on a size no tile divides (83 x 45: the tiles' overhang, odd rows and columns each level leaves
-// out) and with values the sanitising must clean (NaN, infinities, negatives, past half float's range).
+// out) and with values the sanitising must clean (NaN, infinities, negatives, past half float's range); the
+// one-dispatch build (a GPU's) and the dispatch-a-level build (a software renderer's) alike.
 TEST_F(GlTest, SsrHistoryIsTheSanitisedSceneAndItsBoxMeans) {
     const int w = 83, h = 45;
     ImageF scene(w, h);
@@ -414,22 +417,39 @@ TEST_F(GlTest, SsrHistoryIsTheSanitisedSceneAndItsBoxMeans) {
     const ImageF stored = readTextureF(input); // the half floats the pass reads, rows top to bottom
     auto clean = [](float v) { return std::isfinite(v) ? std::clamp(v, 0.0f, 65000.0f) : 0.0f; };
 
-    LoneFrame frame(Extent{w, h});
-    FrameResources resources;
-    resources.bind(Resource::SceneColor, input);
-    SsrHistoryPass pass;
-    pass.execute(frame.ctx, resources);
-    ASSERT_NE(pass.previous(), nullptr);
-    const Texture& history = *pass.previous();
-    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-    GLint levels = 0;
-    glGetTextureParameteriv(history.id(), GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
-    ASSERT_EQ(levels, 6);
-    for (int level = 0; level < levels; ++level) {
+    // Both builds: one dispatch through shared memory (a GPU's) and a dispatch a level (a software
+    // renderer's), each level read back.
+    struct Restore {
+        ~Restore() { forceSharedMemoryTiles(std::nullopt); }
+    } restore;
+    std::vector<std::vector<float>> chains[2];
+    for (const bool shared : {false, true}) {
+        forceSharedMemoryTiles(shared);
+        LoneFrame frame(Extent{w, h});
+        FrameResources resources;
+        resources.bind(Resource::SceneColor, input);
+        SsrHistoryPass pass;
+        pass.execute(frame.ctx, resources);
+        ASSERT_NE(pass.previous(), nullptr);
+        const Texture& history = *pass.previous();
+        glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+        GLint levels = 0;
+        glGetTextureParameteriv(history.id(), GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+        ASSERT_EQ(levels, 6);
+        for (int level = 0; level < levels; ++level) {
+            const int lw = std::max(1, w >> level), lh = std::max(1, h >> level);
+            std::vector<float> texels(std::size_t(lw) * lh * 4);
+            glGetTextureImage(history.id(), level, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)),
+                              texels.data());
+            chains[shared ? 1 : 0].push_back(texels);
+        }
+    }
+    ASSERT_EQ(chains[0].size(), chains[1].size());
+    for (std::size_t k = 0; k < 2 * chains[0].size(); ++k) {
+        const int level = int(k % chains[0].size());
+        const std::vector<float>& texels = chains[k / chains[0].size()][std::size_t(level)];
+        // Each checked against the CPU below (a GPU may round a half float either way when it stores one).
         const int lw = std::max(1, w >> level), lh = std::max(1, h >> level);
-        std::vector<float> texels(std::size_t(lw) * lh * 4);
-        glGetTextureImage(history.id(), level, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)),
-                          texels.data());
         double worst = 0.0;
         for (int ty = 0; ty < lh; ++ty) {
             for (int tx = 0; tx < lw; ++tx) {
@@ -450,15 +470,20 @@ TEST_F(GlTest, SsrHistoryIsTheSanitisedSceneAndItsBoxMeans) {
                 EXPECT_EQ(texels[(std::size_t(ty) * lw + tx) * 4 + 3], 1.0f);
             }
         }
-        EXPECT_LE(worst, 2e-3) << "level " << level << " (" << lw << " x " << lh << ")";
+        EXPECT_LE(worst, 2e-3) << "level " << level << " (" << lw << " x " << lh << "), "
+                               << (k < chains[0].size() ? "a dispatch a level" : "one dispatch");
     }
 }
 
 // The depth pyramid the march climbs: level 0 the linear depth with broken depths (NaN, zero, negative,
 // infinite) and the padding as the sky, each further level the nearest of the 2 x 2 cells below, every level
 // at its place in the atlas; on sizes whose tiles overhang the image and the pyramid (150 x 70: seven
-// levels; 20 x 9: four, a 64 x 64 tile over a 24 x 16 level 0) and on one pixel.
+// levels; 20 x 9: four, a 64 x 64 tile over a 24 x 16 level 0) and on one pixel, built in one dispatch
+// through shared memory (a GPU's build) and a dispatch a level (a software renderer's).
 TEST_F(GlTest, SsrDepthPyramidIsTheNearestDepthOfEachCell) {
+    struct Restore {
+        ~Restore() { forceSharedMemoryTiles(std::nullopt); }
+    } restore;
     const Extent sizes[] = {{150, 70}, {20, 9}, {1, 1}};
     const float inf = std::numeric_limits<float>::infinity();
     for (const Extent e : sizes) {
@@ -478,63 +503,74 @@ TEST_F(GlTest, SsrDepthPyramidIsTheNearestDepthOfEachCell) {
         const Texture linear = makeTexture(depth, "pyramid test depth", GL_R32F);
         const ImageF stored = readTextureF(linear); // rows top to bottom
 
-        LoneFrame frame(e);
-        FrameResources resources;
-        resources.bind(Resource::LinearDepth, linear);
-        DepthPyramidPass pass;
-        pass.execute(frame.ctx, resources);
-        const Texture* pyramid = resources.texture(Resource::DepthPyramid);
-        ASSERT_NE(pyramid, nullptr);
-        glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-        const ImageF atlas = readTextureF(*pyramid);
-        const int levels = depthPyramidLevels(e);
-        const Extent size0 = depthPyramidExtent(e);
-        ASSERT_EQ(pyramid->extent(), depthPyramidAtlasExtent(e));
-        auto atlasAt = [&](int x, int y) { return atlas.at(x, atlas.height - 1 - y)[0]; }; // GL texel (x, y)
-
-        // Level by level, in GL's texel order (row 0 at the bottom).
-        std::vector<float> level(std::size_t(size0.width) * size0.height);
-        for (int y = 0; y < size0.height; ++y) {
-            for (int x = 0; x < size0.width; ++x) {
-                const float z = x < e.width && y < e.height ? stored.at(x, e.height - 1 - y)[0] : inf;
-                level[std::size_t(y) * size0.width + x] = std::isfinite(z) && z > 0.0f ? z : inf;
-            }
+        // Both builds: one dispatch through shared memory (a GPU's) and a dispatch a level (a software
+        // renderer's); each is checked below.
+        ImageF atlases[2];
+        for (const bool shared : {false, true}) {
+            forceSharedMemoryTiles(shared);
+            LoneFrame frame(e);
+            FrameResources resources;
+            resources.bind(Resource::LinearDepth, linear);
+            DepthPyramidPass pass;
+            pass.execute(frame.ctx, resources);
+            const Texture* pyramid = resources.texture(Resource::DepthPyramid);
+            ASSERT_NE(pyramid, nullptr);
+            ASSERT_EQ(pyramid->extent(), depthPyramidAtlasExtent(e));
+            glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+            atlases[shared ? 1 : 0] = readTextureF(*pyramid);
         }
-        int mismatches = 0;
-        for (int l = 0; l < levels; ++l) {
-            const int lw = size0.width >> l, lh = size0.height >> l;
-            const int ox = l == 0 ? 0 : size0.width,
-                      oy = l == 0 ? 0 : size0.height - (size0.height >> (l - 1));
-            if (l > 0) {
-                std::vector<float> next(std::size_t(lw) * lh);
-                const int pw = size0.width >> (l - 1);
+        for (const ImageF& atlas : atlases) {
+            const int levels = depthPyramidLevels(e);
+            const Extent size0 = depthPyramidExtent(e);
+            auto atlasAt = [&](int x, int y) {
+                return atlas.at(x, atlas.height - 1 - y)[0];
+            }; // GL texel (x, y)
+
+            // Level by level, in GL's texel order (row 0 at the bottom).
+            std::vector<float> level(std::size_t(size0.width) * size0.height);
+            for (int y = 0; y < size0.height; ++y) {
+                for (int x = 0; x < size0.width; ++x) {
+                    const float z = x < e.width && y < e.height ? stored.at(x, e.height - 1 - y)[0] : inf;
+                    level[std::size_t(y) * size0.width + x] = std::isfinite(z) && z > 0.0f ? z : inf;
+                }
+            }
+            int mismatches = 0;
+            for (int l = 0; l < levels; ++l) {
+                const int lw = size0.width >> l, lh = size0.height >> l;
+                const int ox = l == 0 ? 0 : size0.width,
+                          oy = l == 0 ? 0 : size0.height - (size0.height >> (l - 1));
+                if (l > 0) {
+                    std::vector<float> next(std::size_t(lw) * lh);
+                    const int pw = size0.width >> (l - 1);
+                    for (int y = 0; y < lh; ++y) {
+                        for (int x = 0; x < lw; ++x) {
+                            auto below = [&](int dx, int dy) {
+                                return level[std::size_t(2 * y + dy) * pw + std::size_t(2 * x + dx)];
+                            };
+                            next[std::size_t(y) * lw + x] = std::min(std::min(below(0, 0), below(1, 0)),
+                                                                     std::min(below(0, 1), below(1, 1)));
+                        }
+                    }
+                    level = std::move(next);
+                }
                 for (int y = 0; y < lh; ++y) {
                     for (int x = 0; x < lw; ++x) {
-                        auto below = [&](int dx, int dy) {
-                            return level[std::size_t(2 * y + dy) * pw + std::size_t(2 * x + dx)];
-                        };
-                        next[std::size_t(y) * lw + x] =
-                            std::min(std::min(below(0, 0), below(1, 0)), std::min(below(0, 1), below(1, 1)));
-                    }
-                }
-                level = std::move(next);
-            }
-            for (int y = 0; y < lh; ++y) {
-                for (int x = 0; x < lw; ++x) {
-                    const float expected = level[std::size_t(y) * lw + x];
-                    const float got = atlasAt(ox + x, oy + y);
-                    if (got != expected && mismatches++ < 5) {
-                        ADD_FAILURE() << e.width << " x " << e.height << " level " << l << " cell (" << x
-                                      << ", " << y << "): " << got << ", expected " << expected;
+                        const float expected = level[std::size_t(y) * lw + x];
+                        const float got = atlasAt(ox + x, oy + y);
+                        if (got != expected && mismatches++ < 5) {
+                            ADD_FAILURE() << e.width << " x " << e.height << " level " << l << " cell (" << x
+                                          << ", " << y << "): " << got << ", expected " << expected;
+                        }
                     }
                 }
             }
-        }
-        EXPECT_EQ(mismatches, 0) << e.width << " x " << e.height << ", " << levels << " levels";
-        if (e.width > 10) {
-            // Image pixel (7, 2) is GL texel (7, height - 3); level 1 sits at x = size0.width, y = 0.
-            EXPECT_EQ(atlasAt(size0.width + 3, (e.height - 3) / 2), 0.01f)
-                << "level 1 keeps the nearest depth";
+            EXPECT_EQ(mismatches, 0) << e.width << " x " << e.height << ", " << levels << " levels, "
+                                     << (&atlas == &atlases[0] ? "a dispatch a level" : "one dispatch");
+            if (e.width > 10) {
+                // Image pixel (7, 2) is GL texel (7, height - 3); level 1 sits at x = size0.width, y = 0.
+                EXPECT_EQ(atlasAt(size0.width + 3, (e.height - 3) / 2), 0.01f)
+                    << "level 1 keeps the nearest depth";
+            }
         }
     }
 }

@@ -316,16 +316,16 @@ TEST_F(GlTest, TaaLeavesNoTrailBehindAMovingObjectWithMotionVectors) {
 // at most 30% of no-AA's (aliasing crawls and flickers without it). The single-frame filters are reported
 // beside it, and SMAA's sub-pixel ridge step must calm the thin features' crawl, not add to it: SMAA flickers
 // TAA's 3x3 neighbourhood comes from a shared tile the work group loads once on a GPU and from direct loads
-// on a software renderer (sharedNeighbourhoods()): both give the same bits, on the moving testbed with its
+// on a software renderer (sharedMemoryTiles()): both give the same bits, on the moving testbed with its
 // motion vectors, with camera motion reconstructed from depth, at a size whose work groups overhang the
 // image on both axes, and without depth.
 TEST_F(GlTest, TaaGathersTheSameNeighbourhoodFromASharedTile) {
     struct Restore {
-        ~Restore() { forceSharedNeighbourhoods(std::nullopt); }
+        ~Restore() { forceSharedMemoryTiles(std::nullopt); }
     } restore;
     const Settings settings = aaMeasuringSettings(AntiAliasing::Taa);
     auto render = [&](bool shared, Extent size, bool withMotion) {
-        forceSharedNeighbourhoods(shared);
+        forceSharedMemoryTiles(shared);
         auto scene = sceneWith({"cameraSpeed=1", "objectStart=4"});
         scene->resize(size);
         Pipeline pipeline({.settings = settings});
@@ -355,7 +355,7 @@ TEST_F(GlTest, TaaGathersTheSameNeighbourhoodFromASharedTile) {
     const Texture motionTexture = makeTexture(motion, "motion", GL_RG16F);
     std::vector<float> results[2];
     for (const bool shared : {false, true}) {
-        forceSharedNeighbourhoods(shared);
+        forceSharedMemoryTiles(shared);
         Pipeline pipeline({.settings = settings});
         for (std::uint64_t f = 0; f < 3; ++f) {
             pipeline.beginFrame({.frameIndex = f});

@@ -35,7 +35,8 @@ Extent depthPyramidAtlasExtent(Extent e) noexcept {
 }
 
 DepthPyramidPass::DepthPyramidPass()
-    : mProgram(makeComputeProgram("passes/ssr/ssr_pyramid.comp.glsl", bindingDefines())) {}
+    : mProgram(makeComputeProgram("passes/ssr/ssr_pyramid.comp.glsl",
+                                  bindingDefines({{"PYRAMID_ONE_DISPATCH", mOneDispatch ? "1" : "0"}}))) {}
 
 std::span<const ResourceUse> DepthPyramidPass::uses() const {
     static constexpr ResourceUse kUses[] = {{Resource::LinearDepth, Access::Read},
@@ -53,18 +54,29 @@ void DepthPyramidPass::execute(FrameContext& ctx, FrameResources& resources) {
     ScopedGpuTimer timer(ctx.timers, "ssr depth pyramid",
                          double(size0.width) * size0.height * (8.0 + 8.0 / 3.0));
     mProgram.use();
-    glProgramUniform1i(mProgram.id(), 0, levels);
     glProgramUniform2i(mProgram.id(), 1, size0.width, size0.height);
-    bind(mLinearDepth, *resources.texture(Resource::LinearDepth), ImageAccess::Read);
-    bind(mPyramid, pyramid, ImageAccess::Write);
-    // Every level in one dispatch, a work group per 64 x 64 tile of level 0; the trace loads them.
-    dispatch(mProgram, Groups{GLuint((size0.width + 63) / 64), GLuint((size0.height + 63) / 64), 1},
-             Barrier::ImageAccess);
+    if (mOneDispatch) {
+        glProgramUniform1i(mProgram.id(), 0, levels);
+        bind(mLinearDepth, *resources.texture(Resource::LinearDepth), ImageAccess::Read);
+        bind(mPyramid, pyramid, ImageAccess::Write);
+        // A work group per 64 x 64 tile of level 0; the trace loads the levels.
+        dispatch(mProgram, Groups{GLuint((size0.width + 63) / 64), GLuint((size0.height + 63) / 64), 1},
+                 Barrier::ImageAccess);
+    } else {
+        for (int level = 0; level < levels; ++level) {
+            bind(mLinearDepth, *resources.texture(Resource::LinearDepth), ImageAccess::Read);
+            bind(mPyramid, pyramid, ImageAccess::ReadWrite);
+            glProgramUniform1i(mProgram.id(), 0, level);
+            // The next level reads what this one wrote.
+            dispatch(mProgram, Extent{size0.width >> level, size0.height >> level}, Barrier::ImageAccess);
+        }
+    }
     resources.bind(Resource::DepthPyramid, pyramid);
 }
 
 SsrHistoryPass::SsrHistoryPass()
-    : mProgram(makeComputeProgram("passes/ssr/ssr_history.comp.glsl", bindingDefines())) {}
+    : mProgram(makeComputeProgram("passes/ssr/ssr_history.comp.glsl",
+                                  bindingDefines({{"HISTORY_ONE_DISPATCH", mOneDispatch ? "1" : "0"}}))) {}
 
 std::span<const ResourceUse> SsrHistoryPass::uses() const {
     static constexpr ResourceUse kUses[] = {{Resource::SceneColor, Access::Read}};
@@ -87,16 +99,30 @@ void SsrHistoryPass::execute(FrameContext& ctx, FrameResources& resources) {
         // One colour read, and written with its mips (a third more).
         ScopedGpuTimer timer(ctx.timers, "ssr history", double(e.width) * e.height * (8.0 + 8.0 * 4.0 / 3.0));
         mProgram.use();
-        glProgramUniform1i(mProgram.id(), 0, levels);
-        bind(mScene, *resources.texture(Resource::SceneColor), ImageAccess::Read);
-        for (int level = 0; level < int(mLevelSlots.size()); ++level) {
-            // A level the texture does not have: its slot holds level 0, which the shader does not write
-            // there.
-            bind(mLevelSlots[std::size_t(level)], mHistory, ImageAccess::Write, level < levels ? level : 0);
+        const Texture& scene = *resources.texture(Resource::SceneColor);
+        if (mOneDispatch) {
+            glProgramUniform1i(mProgram.id(), 0, levels);
+            bind(mScene, scene, ImageAccess::Read);
+            for (int level = 0; level < int(mLevelSlots.size()); ++level) {
+                // A level the texture does not have: its slot holds level 0, which the shader does not
+                // write there.
+                bind(mLevelSlots[std::size_t(level)], mHistory, ImageAccess::Write,
+                     level < levels ? level : 0);
+            }
+            // A work group per 32 x 32 tile of level 0; the next frame's resolve samples the chain.
+            dispatch(mProgram, Groups{GLuint((e.width + 31) / 32), GLuint((e.height + 31) / 32), 1},
+                     Barrier::TextureFetch);
+        } else {
+            for (int level = 0; level < levels; ++level) {
+                glProgramUniform1i(mProgram.id(), 0, level);
+                bind(mScene, scene, ImageAccess::Read);
+                bind(mBelow, mHistory, ImageAccess::Read, std::max(level - 1, 0)); // unread at level 0
+                bind(mTarget, mHistory, ImageAccess::Write, level);
+                // The next level loads this one; after the last, the next frame's resolve samples them.
+                dispatch(mProgram, Extent{std::max(e.width >> level, 1), std::max(e.height >> level, 1)},
+                         level + 1 < levels ? Barrier::ImageAccess : Barrier::TextureFetch);
+            }
         }
-        // A work group per 32 x 32 tile of level 0; the next frame's resolve samples the chain.
-        dispatch(mProgram, Groups{GLuint((e.width + 31) / 32), GLuint((e.height + 31) / 32), 1},
-                 Barrier::TextureFetch);
     }
     mValid = true;
 }

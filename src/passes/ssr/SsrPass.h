@@ -11,6 +11,7 @@
 //     `ssrHistory` for the next frame's resolve.
 // Tests: tests/gl/test_ssr.cpp, tests/e2e/ssr.sh.
 
+#include "gl/ShaderLibrary.h"
 #include "passes/FramePass.h"
 #include "passes/ProgramVariants.h"
 
@@ -74,6 +75,9 @@ public:
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
 private:
+    /// Every level in one dispatch through shared memory (sharedMemoryTiles(): a GPU), else a dispatch a
+    /// level; for the pass's life.
+    bool mOneDispatch = sharedMemoryTiles();
     Program mProgram;
     ImageSlot mLinearDepth = mProgram.image("uLinearDepth");
     ImageSlot mPyramid = mProgram.image("uPyramid");
@@ -99,11 +103,18 @@ public:
     void publishState(FrameResources& resources) const override;
 
 private:
+    /// Every level in one dispatch through shared memory (sharedMemoryTiles(): a GPU), else a dispatch a
+    /// level; for the pass's life.
+    bool mOneDispatch = sharedMemoryTiles();
     Program mProgram;
     ImageSlot mScene = mProgram.image("uScene");
+    /// One dispatch: the levels.
     std::array<ImageSlot, 6> mLevelSlots{mProgram.image("uLevel0"), mProgram.image("uLevel1"),
                                          mProgram.image("uLevel2"), mProgram.image("uLevel3"),
                                          mProgram.image("uLevel4"), mProgram.image("uLevel5")};
+    /// A dispatch a level: the level below and the level written.
+    ImageSlot mBelow = mProgram.image("uBelow");
+    ImageSlot mTarget = mProgram.image("uTarget");
     Texture mHistory;
     bool mValid = false;
 };
