@@ -2,6 +2,7 @@
 
 #include "GlTest.h"
 
+#include "gl/ShaderLibrary.h"
 #include "gl/TextureIo.h"
 #include "scenes/testbed/TestbedRaytracer.h"
 #include "scenes/testbed/TestbedScene.h"
@@ -12,6 +13,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -29,6 +31,26 @@ Settings blurSettings(bool enabled) {
     s.output.dither = false;
     s.motionBlur.enabled = enabled;
     return s;
+}
+
+/// One frame of colour, linear depth and motion (UV, in `motionFormat`) through `settings`, with a default
+/// camera; the exposed scene-referred image.
+ImageF blurFrame(const Settings& settings, const ImageF& color, const ImageF& depth, const ImageF& motion,
+                 GLenum motionFormat = GL_RGBA32F) {
+    // Half float, as a renderer's colour target: the comparisons with the blur off are to the bit, and a
+    // frame without a 3D pass reads a 32-bit colour at its own precision, not rounded to half as a 3D pass
+    // sees it.
+    const Texture c = makeTexture(color, "color", GL_RGBA16F);
+    const Texture d = makeTexture(depth, "depth");
+    const Texture m = makeTexture(motion, "motion", motionFormat);
+    const Camera camera;
+    Pipeline pipeline({.settings = settings});
+    pipeline.beginFrame({.dt = kDt, .frameIndex = 1});
+    pipeline.execute(
+        {.color = &c, .depth = &d, .depthKind = DepthKind::LinearView, .motion = &m, .camera = &camera},
+        {.dt = kDt, .frameIndex = 1});
+    EXPECT_TRUE(pipeline.status().skipped.empty());
+    return readTextureF(pipeline.sceneReferred());
 }
 
 /// A uniform pan by `pixelsPerFrame` in x over a black image with one bright column (1 at x = w / 2):
@@ -51,20 +73,7 @@ ImageF blurColumn(const Settings& settings, float pixelsPerFrame, int w = 160, i
             motion.at(x, y)[0] = x < movingColumns ? pixelsPerFrame / float(w) : 0.0f;
         }
     }
-    // Half float, as a renderer's colour target: the comparisons with the blur off are to the bit, and a
-    // frame without a 3D pass reads a 32-bit colour at its own precision, not rounded to half as a 3D pass
-    // sees it.
-    const Texture c = makeTexture(color, "color", GL_RGBA16F);
-    const Texture d = makeTexture(depth, "depth");
-    const Texture m = makeTexture(motion, "motion");
-    const Camera camera;
-    Pipeline pipeline({.settings = settings});
-    pipeline.beginFrame({.dt = kDt, .frameIndex = 1});
-    pipeline.execute(
-        {.color = &c, .depth = &d, .depthKind = DepthKind::LinearView, .motion = &m, .camera = &camera},
-        {.dt = kDt, .frameIndex = 1});
-    EXPECT_TRUE(pipeline.status().skipped.empty());
-    return readTextureF(pipeline.sceneReferred());
+    return blurFrame(settings, color, depth, motion);
 }
 
 /// The streak's length from its spread: a box of length L, integrated over pixels, has variance
@@ -182,6 +191,51 @@ TEST_F(GlTest, MotionBlurLengthFollowsTheShutter) {
     }
     EXPECT_EQ(changed, 0);
     EXPECT_GT(blurredLeft, 1000); // the moving part did change (the gradient's ends are not linear)
+}
+
+// The velocity tiles' maximum comes from a work group per tile through shared memory on a GPU and from an
+// invocation per tile on a software renderer (sharedMemoryTiles()): both pick the same velocity, the first in
+// row order among equally long ones, so the blurred frames are the same bits. A field of equally long
+// velocities in eight directions (ties in every tile), on sizes whose tiles overhang the image, at two tile
+// sizes; and the moving testbed.
+TEST_F(GlTest, MotionBlurTileMaximumIsTheSameFromASharedReduction) {
+    struct Restore {
+        ~Restore() { forceSharedMemoryTiles(std::nullopt); }
+    } restore;
+    const int w = 61, h = 37;
+    ImageF color(w, h, 0.0f);
+    ImageF motion(w, h, 0.0f);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                color.at(x, y)[c] = float((x * 5 + y * 3 + c * 7) % 13) * 0.2f;
+            }
+            // Eight directions of one length (6 px a frame), and a longer one in a few pixels.
+            const float angle = float((x * 3 + y * 5) % 8) * 0.78539816f;
+            const float length = (x * y) % 29 == 7 ? 9.0f : 6.0f;
+            motion.at(x, y)[0] = length * std::cos(angle) / float(w);
+            motion.at(x, y)[1] = length * std::sin(angle) / float(h);
+        }
+    }
+    auto blurred = [&](bool shared, int tileSize) {
+        forceSharedMemoryTiles(shared);
+        Settings settings = blurSettings(true);
+        settings.motionBlur.tileSize = tileSize;
+        settings.motionBlur.maxBlur = std::min(settings.motionBlur.maxBlur, float(tileSize));
+        return blurFrame(settings, color, ImageF(w, h, 10.0f), motion, GL_RG16F).rgba;
+    };
+    for (const int tileSize : {8, 20}) {
+        const std::vector<float> single = blurred(false, tileSize);
+        EXPECT_EQ(blurred(true, tileSize), single) << "tiles of " << tileSize << " px";
+        EXPECT_NE(single, blurFrame(blurSettings(false), color, ImageF(w, h, 10.0f), motion).rgba)
+            << "the frame is blurred";
+    }
+    auto testbed = [&](bool shared) {
+        forceSharedMemoryTiles(shared);
+        auto scene = sceneWith({"cameraSpeed=1", "objectStart=4"}, 83, 45);
+        return runScene(*scene, blurSettings(true), 3).rgba;
+    };
+    EXPECT_EQ(testbed(true), testbed(false)) << "the moving testbed";
 }
 
 // The velocity-tiles view holds each pixel's neighbourhood maximum blur radius: a 16 px/frame pan at 180

@@ -32,7 +32,8 @@ float shutterFraction(const MotionBlurSettings& settings, const Camera* camera, 
 MotionBlurPass::MotionBlurPass(MotionBlurPlacement placement)
     : mPlacement(placement)
     , mPrepare(makeComputeProgram("passes/motionblur/motion_blur_prepare.comp.glsl", bindingDefines()))
-    , mTiles(makeComputeProgram("passes/motionblur/motion_blur_tiles.comp.glsl", bindingDefines()))
+    , mTiles(makeComputeProgram("passes/motionblur/motion_blur_tiles.comp.glsl",
+                                bindingDefines({{"TILES_SHARED", mSharedTiles ? "1" : "0"}})))
     , mNeighbours(makeComputeProgram("passes/motionblur/motion_blur_neighbours.comp.glsl", bindingDefines()))
     , mGather(makeComputeProgram("passes/motionblur/motion_blur_gather.comp.glsl", bindingDefines()))
     , mStill(makeComputeProgram("passes/motionblur/motion_blur_gather.comp.glsl",
@@ -95,7 +96,11 @@ void MotionBlurPass::tileVelocities(const FrameContext& ctx, const FrameResource
         mTiles.use();
         bind(mTilesVelocity, *t.velocity, ImageAccess::Read);
         bind(mTilesTileMax, *t.tileMax, ImageAccess::Write);
-        dispatch(mTiles, tiles, Barrier::ComputeRead);
+        if (mSharedTiles) {
+            dispatch(mTiles, Groups{GLuint(tiles.width), GLuint(tiles.height), 1}, Barrier::ComputeRead);
+        } else {
+            dispatch(mTiles, tiles, Barrier::ComputeRead);
+        }
     }
     {
         ScopedGpuTimer timer(ctx.timers, "motion blur neighbour max",

@@ -9,6 +9,7 @@
 // behind it, and its own colour where a still nearer surface hides where it comes from).
 // Tests: tests/gl/test_motion_blur.cpp, tests/e2e/mblur.sh, tests/e2e/blender.sh.
 
+#include "gl/ShaderLibrary.h"
 #include "passes/FramePass.h"
 #include "passes/ProgramVariants.h"
 
@@ -101,6 +102,9 @@ private:
                    GLintptr arguments);
 
     MotionBlurPlacement mPlacement;
+    /// The tile maximum from a work group per tile through shared memory (sharedMemoryTiles(): a GPU), else
+    /// an invocation per tile; for the pass's life.
+    bool mSharedTiles = sharedMemoryTiles();
     Program mPrepare;
     Program mTiles;
     Program mNeighbours;
