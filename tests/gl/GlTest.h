@@ -10,9 +10,11 @@
 #include "gl/Context.h"
 #include "gl/Debug.h"
 #include "gl/Objects.h"
+#include "gl/ShaderLibrary.h"
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +36,10 @@ protected:
             [this](const std::string& problem) { mBindingProblems.push_back(problem); });
     }
     void TearDown() override {
+        // A test that forces the renderer's choices (a pass's invocation shape, its shared-memory build) to
+        // compare them leaves the next test the renderer's own, even after a failed assertion.
+        forcePixelGroup(std::nullopt);
+        forceSharedMemoryTiles(std::nullopt);
         if (glContext()) {
             setBindingProblemHandler(std::move(mOuterBindingHandler));
             EXPECT_TRUE(mBindingProblems.empty())

@@ -340,9 +340,6 @@ TEST_F(GlTest, BloomStepsMatchTheirCpuTwins) {
 // every bloom level and the display image, dithered, are the same to the bit, on a size whose levels halve
 // exactly and on an odd one.
 TEST_F(GlTest, PixelGroupShapesGiveTheSameBloomAndDisplay) {
-    struct ByRendererAgain { // the tests after this one get the renderer's shape, even after a failure here
-        ~ByRendererAgain() { forcePixelGroup(std::nullopt); }
-    } restore;
     for (const Extent size : {Extent{128, 64}, Extent{97, 61}}) {
         const ImageF image = fireflyField(size.width, size.height);
         const Texture input = makeTexture(image, "pixel group input");

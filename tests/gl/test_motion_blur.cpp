@@ -13,7 +13,6 @@
 #include <limits>
 #include <map>
 #include <memory>
-#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -199,9 +198,6 @@ TEST_F(GlTest, MotionBlurLengthFollowsTheShutter) {
 // velocities in eight directions (ties in every tile), on sizes whose tiles overhang the image, at two tile
 // sizes; and the moving testbed.
 TEST_F(GlTest, MotionBlurTileMaximumIsTheSameFromASharedReduction) {
-    struct Restore {
-        ~Restore() { forceSharedMemoryTiles(std::nullopt); }
-    } restore;
     const int w = 61, h = 37;
     ImageF color(w, h, 0.0f);
     ImageF motion(w, h, 0.0f);

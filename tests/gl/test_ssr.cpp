@@ -28,7 +28,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -419,9 +418,6 @@ TEST_F(GlTest, SsrHistoryIsTheSanitisedSceneAndItsBoxMeans) {
 
     // Both builds: one dispatch through shared memory (a GPU's) and a dispatch a level (a software
     // renderer's), each level read back.
-    struct Restore {
-        ~Restore() { forceSharedMemoryTiles(std::nullopt); }
-    } restore;
     std::vector<std::vector<float>> chains[2];
     for (const bool shared : {false, true}) {
         forceSharedMemoryTiles(shared);
@@ -481,9 +477,6 @@ TEST_F(GlTest, SsrHistoryIsTheSanitisedSceneAndItsBoxMeans) {
 // levels; 20 x 9: four, a 64 x 64 tile over a 24 x 16 level 0) and on one pixel, built in one dispatch
 // through shared memory (a GPU's build) and a dispatch a level (a software renderer's).
 TEST_F(GlTest, SsrDepthPyramidIsTheNearestDepthOfEachCell) {
-    struct Restore {
-        ~Restore() { forceSharedMemoryTiles(std::nullopt); }
-    } restore;
     const Extent sizes[] = {{150, 70}, {20, 9}, {1, 1}};
     const float inf = std::numeric_limits<float>::infinity();
     for (const Extent e : sizes) {

@@ -14,7 +14,6 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
-#include <optional>
 #include <vector>
 
 namespace photopic::test {
@@ -320,9 +319,6 @@ TEST_F(GlTest, TaaLeavesNoTrailBehindAMovingObjectWithMotionVectors) {
 // motion vectors, with camera motion reconstructed from depth, at a size whose work groups overhang the
 // image on both axes, and without depth.
 TEST_F(GlTest, TaaGathersTheSameNeighbourhoodFromASharedTile) {
-    struct Restore {
-        ~Restore() { forceSharedMemoryTiles(std::nullopt); }
-    } restore;
     const Settings settings = aaMeasuringSettings(AntiAliasing::Taa);
     auto render = [&](bool shared, Extent size, bool withMotion) {
         forceSharedMemoryTiles(shared);

@@ -72,9 +72,9 @@ private:
     void bindInputs(const ResolveProgram& program, const FrameResources& resources,
                     const Texture* debugTarget) const;
 
-    /// By bilinear history (bit 0), depth (bit 1), camera (bit 2) and motion format (bits 3-4).
     /// The 3x3 neighbourhood from a shared tile (sharedMemoryTiles(): a GPU), for the pass's life.
     bool mSharedTile = sharedMemoryTiles();
+    /// By bilinear history (bit 0), depth (bit 1), camera (bit 2) and motion format (bits 3-4).
     ProgramVariants<ResolveProgram, 32> mPrograms{"passes/taa/taa_resolve.comp.glsl"};
     ParameterBlock<TaaParameters> mParameters;
     HistoryTexture mHistory;    ///< the resolved colour
