@@ -14,6 +14,7 @@
 #   3d-all-SIZE.*                 queued, every 3D effect at once (TAA + SMAA, GTAO, contact shadows, SSR, DoF,
 #                                 motion blur, outline, volumetric light): the 3D chain's per-pass times
 #   gtao-PRESET-SIZE.*            queued, GTAO alone at each preset (low, medium, high, ultra)
+#   gtao-PRESET-mips-SIZE.*       the same with ssao.sampleMips (far steps from the surface pyramid)
 #   3d-EFFECT-SIZE.*              queued, each other 3D effect alone (contact shadows, SSR, volumetric light,
 #                                 DoF, motion blur, outline)
 #   cli.txt                       `photopic image` over a 1080p EXR sequence (AE + bloom + ACES): wall time and,
@@ -87,6 +88,8 @@ for size in "${sizes[@]}"; do
     bench "3d-all-$size" --size "$size" --queue-ahead "${all3d[@]}"
     for preset in low medium high ultra; do
         bench "gtao-$preset-$size" --size "$size" --queue-ahead --set ssao.enabled=true --set ssao.quality="$preset"
+        bench "gtao-$preset-mips-$size" --size "$size" --queue-ahead --set ssao.enabled=true \
+            --set ssao.quality="$preset" --set ssao.sampleMips=true
     done
     for effect in contactShadows ssr volumetricLight dof motionBlur outline; do
         bench "3d-$effect-$size" --size "$size" --queue-ahead --set "$effect.enabled=true"

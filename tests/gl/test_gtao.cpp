@@ -4,14 +4,21 @@
 #include "GlTest.h"
 #include "OctahedralNormals.h"
 
+#include "core/Quality.h"
+#include "gl/Capabilities.h"
 #include "gl/TextureIo.h"
+#include "passes/gtao/GtaoPass.h"
 #include "scenes/testbed/TestbedRaytracer.h"
 #include "scenes/testbed/TestbedScene.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <limits>
 #include <memory>
+#include <vector>
 
 namespace photopic::test {
 
@@ -31,8 +38,9 @@ std::unique_ptr<TestbedScene> stillScene(float cameraTime) {
     return scene;
 }
 
-Settings aoSettings(GtaoResolution resolution) {
+Settings aoSettings(GtaoResolution resolution, bool sampleMips = false) {
     Settings s;
+    s.gtao.sampleMips = sampleMips;
     s.autoExposure.enabled = false;
     s.gtao.enabled = true;
     s.gtao.radius = 1.0f; // the testbed's aoRadius default: the reference's
@@ -142,6 +150,11 @@ TEST_F(GlTest, GtaoMatchesTheRayTracedAmbientOcclusion) {
     std::printf("gtao half (high, radius 1): MAE %.4f, bias %+.4f; halo band mean %.4f\n", h.mae, h.bias,
                 h.halo);
 
+    Pipeline mips({.settings = aoSettings(GtaoResolution::Full, true)});
+    const AoFigures m = measure(gtaoVisibility(*scene, mips, 0), truth, depth, options.aoRadius);
+    std::printf("gtao full from the surface pyramid: MAE %.4f, bias %+.4f; clear band mean %.4f\n", m.mae,
+                m.bias, m.clearHalo);
+
     EXPECT_GT(f.occluded, 100);
     EXPECT_GT(f.band, 20);
     EXPECT_GT(f.clearBand, 500);
@@ -149,39 +162,187 @@ TEST_F(GlTest, GtaoMatchesTheRayTracedAmbientOcclusion) {
     EXPECT_LE(std::abs(f.bias), 0.03);
     EXPECT_GE(f.clearHalo, 0.97);
     EXPECT_LE(std::abs(h.mae - f.mae), 0.02);
+    EXPECT_LE(m.mae, 0.08);
+    EXPECT_LE(std::abs(m.bias), 0.03);
+    EXPECT_GE(m.clearHalo, 0.97);
+
+    // At radius 1 the far steps span up to about 15 px here, so the pyramid's levels 1-2 take few of them;
+    // at radius 3 they reach levels 2-3 (cells of 4 and 8 px), as a 1080p frame's do at radius 1.
+    testbed::TruthOptions wide = options;
+    wide.aoRadius = 3.0f;
+    const ImageF wideTruth = testbed::renderTruth(testbed::TruthKind::Ao, wide);
+    AoFigures wideFigures[2];
+    for (const bool sampleMips : {false, true}) {
+        Settings settings = aoSettings(GtaoResolution::Full, sampleMips);
+        settings.gtao.radius = wide.aoRadius;
+        Pipeline pipeline({.settings = settings});
+        const AoFigures w = measure(gtaoVisibility(*scene, pipeline, 0), wideTruth, depth, wide.aoRadius);
+        std::printf(
+            "gtao full (high, radius 3)%s: MAE %.4f, bias %+.4f over %ld occluded px; clear band %.4f\n",
+            sampleMips ? " from the surface pyramid" : "", w.mae, w.bias, w.occluded, w.clearHalo);
+        wideFigures[sampleMips ? 1 : 0] = w;
+    }
+    EXPECT_LE(wideFigures[1].mae - wideFigures[0].mae, 0.01);
 }
 
 // A slow orbit (the camera path at a tenth of its speed): the mean per-pixel change of visibility between
 // consecutive frames, over occluded pixels, stays <= 0.02 although the noise pattern moves every frame.
 TEST_F(GlTest, GtaoIsStableUnderASlowOrbit) {
-    auto scene = std::make_unique<TestbedScene>();
-    for (const char* a : {"cameraSpeed=0.1", "objectSpeed=0", "cameraStart=0.3"}) {
-        EXPECT_TRUE(scene->applyOverride(a).empty()) << a;
-    }
-    scene->resize({kW, kH});
-    Pipeline pipeline({.settings = aoSettings(GtaoResolution::Full)});
-    ImageF previous;
-    double change = 0.0;
-    long count = 0;
-    for (std::uint64_t frame = 0; frame < 12; ++frame) {
-        ImageF current = gtaoVisibility(*scene, pipeline, frame);
-        if (frame >= 4) {
-            for (int y = 0; y < kH; ++y) {
-                for (int x = 0; x < kW; ++x) {
-                    const float a = current.at(x, y)[0], b = previous.at(x, y)[0];
-                    if (a < 1.0f || b < 1.0f) {
-                        change += std::abs(double(a) - b);
-                        ++count;
+    for (const bool mips : {false, true}) {
+        auto scene = std::make_unique<TestbedScene>();
+        for (const char* a : {"cameraSpeed=0.1", "objectSpeed=0", "cameraStart=0.3"}) {
+            EXPECT_TRUE(scene->applyOverride(a).empty()) << a;
+        }
+        scene->resize({kW, kH});
+        Pipeline pipeline({.settings = aoSettings(GtaoResolution::Full, mips)});
+        ImageF previous;
+        double change = 0.0;
+        long count = 0;
+        for (std::uint64_t frame = 0; frame < 12; ++frame) {
+            ImageF current = gtaoVisibility(*scene, pipeline, frame);
+            if (frame >= 4) {
+                for (int y = 0; y < kH; ++y) {
+                    for (int x = 0; x < kW; ++x) {
+                        const float a = current.at(x, y)[0], b = previous.at(x, y)[0];
+                        if (a < 1.0f || b < 1.0f) {
+                            change += std::abs(double(a) - b);
+                            ++count;
+                        }
                     }
                 }
             }
+            previous = std::move(current);
         }
-        previous = std::move(current);
+        const double mean = count ? change / double(count) : 0.0;
+        std::printf("gtao slow orbit%s: mean frame-to-frame change %.4f over %ld px\n",
+                    mips ? " (surface pyramid)" : "", mean, count);
+        EXPECT_GT(count, 1000);
+        EXPECT_LE(mean, 0.02);
     }
-    const double mean = count ? change / double(count) : 0.0;
-    std::printf("gtao slow orbit: mean frame-to-frame change %.4f over %ld px\n", mean, count);
-    EXPECT_GT(count, 1000);
-    EXPECT_LE(mean, 0.02);
+}
+
+namespace {
+
+/// GL's texels of an RG32UI texture, row 0 at the bottom, two words each.
+std::vector<std::uint32_t> readSurfaceTexels(const Texture& texture) {
+    const Extent e = texture.extent();
+    std::vector<std::uint32_t> words(std::size_t(e.width) * e.height * 2);
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(texture.id(), 0, GL_RG_INTEGER, GL_UNSIGNED_INT, GLsizei(words.size() * 4),
+                      words.data());
+    return words;
+}
+
+} // namespace
+
+// The surface pyramid ssao.sampleMips reads: level 0 is the packing without it, bit for bit; each coarse
+// level's texel is the level-0 texel of a pixel of its 2^L block (within the image where the block overhangs
+// it), the pixel's place in the block in the depth's low 8 bits (the sky's bits unchanged), its normal's
+// bits unchanged; and the places spread over the block (no fixed corner). On a size whose blocks overhang
+// the image at every level (150 x 70), one that is smaller than a level-4 block (13 x 5), and one pixel.
+TEST_F(GlTest, GtaoSurfacePyramidKeepsARealPixelOfEachBlock) {
+    const float inf = std::numeric_limits<float>::infinity();
+    for (const Extent e : {Extent{150, 70}, Extent{13, 5}, Extent{1, 1}}) {
+        ImageF depth(e.width, e.height), normals(e.width, e.height);
+        for (int y = 0; y < e.height; ++y) {
+            for (int x = 0; x < e.width; ++x) {
+                depth.at(x, y)[0] = (x * 7 + y * 3) % 23 == 0 ? inf : 0.5f + float((x * 37 + y * 11) % 101);
+                const float a = float(x) * 0.3f, b = float(y) * 0.2f;
+                float* n = normals.at(x, y);
+                n[0] = std::cos(a) * std::sin(b);
+                n[1] = std::sin(a) * std::sin(b);
+                n[2] = std::cos(b);
+            }
+        }
+        const Texture linear = makeTexture(depth, "pyramid test depth", GL_R32F);
+        const Texture normalTexture = makeTexture(normals, "pyramid test normals", GL_RGBA16F);
+        const Camera camera{.projection =
+                                perspectiveProjection(1.0f, float(e.width) / float(e.height), 0.1f, 100.0f)};
+        std::vector<std::uint32_t> plain, pyramid;
+        Extent pyramidExtent{};
+        for (const bool mips : {false, true}) {
+            Settings settings;
+            settings.gtao.enabled = true;
+            settings.gtao.sampleMips = mips;
+            const QualityTier tier = qualityTier(settings.quality);
+            const Capabilities caps = detectCapabilities();
+            FrameInputs in;
+            in.camera = &camera;
+            const FrameTime time;
+            FrameContext ctx{settings, tier, caps, in, time, e};
+            FrameResources resources;
+            resources.bind(Resource::LinearDepth, linear);
+            resources.bind(Resource::Normals, normalTexture);
+            GtaoPass pass(GtaoPass::Stage::Lighting);
+            const Texture& surface = pass.packSurface(ctx, resources);
+            ASSERT_EQ(surface.extent(), mips ? GtaoPass::surfacePyramidExtent(e) : e);
+            (mips ? pyramid : plain) = readSurfaceTexels(surface);
+            pyramidExtent = surface.extent();
+        }
+        const int w = pyramidExtent.width;
+        auto word = [&](const std::vector<std::uint32_t>& t, int stride, int x, int y, int k) {
+            return t[(std::size_t(y) * stride + x) * 2 + k];
+        };
+        for (int y = 0; y < e.height; ++y) {
+            for (int x = 0; x < e.width; ++x) {
+                for (int k = 0; k < 2; ++k) {
+                    ASSERT_EQ(word(pyramid, w, x, y, k), word(plain, e.width, x, y, k)) << x << ", " << y;
+                }
+            }
+        }
+        const int band = (e.height + 15) & ~15;
+        for (int level = 1; level <= GtaoPass::kSurfaceLevels; ++level) {
+            const int lw = ((e.width - 1) >> level) + 1, lh = ((e.height - 1) >> level) + 1;
+            const int ox = e.width, oy = band - (band >> (level - 1));
+            ASSERT_LE(ox + lw, pyramidExtent.width);
+            ASSERT_LE(oy + lh, pyramidExtent.height);
+            std::vector<int> places(std::size_t(1) << (2 * level), 0);
+            int cells = 0, interior = 0;
+            for (int cy = 0; cy < lh; ++cy) {
+                for (int cx = 0; cx < lw; ++cx) {
+                    const std::uint32_t zBits = word(pyramid, w, ox + cx, oy + cy, 0);
+                    const std::uint32_t nBits = word(pyramid, w, ox + cx, oy + cy, 1);
+                    float z = 0.0f;
+                    std::memcpy(&z, &zBits, 4);
+                    const bool sky = std::isinf(z);
+                    // The pixel the texel names (a sky texel names none: its bits are level 0's at some
+                    // pixel of the block, found by search).
+                    int px = -1, py = -1;
+                    for (int by = 0; by < (1 << level) && px < 0; ++by) {
+                        for (int bx = 0; bx < (1 << level) && px < 0; ++bx) {
+                            const int x = (cx << level) + bx, y = (cy << level) + by;
+                            if (x >= e.width || y >= e.height) {
+                                continue;
+                            }
+                            const std::uint32_t z0 = word(plain, e.width, x, y, 0);
+                            const bool named = sky ? z0 == zBits
+                                                   : (z0 & 0xFFFFFF00u) == (zBits & 0xFFFFFF00u) &&
+                                                         int(zBits & 15u) == bx &&
+                                                         int((zBits >> 4) & 15u) == by;
+                            if (named && word(plain, e.width, x, y, 1) == nBits) {
+                                px = x;
+                                py = y;
+                            }
+                        }
+                    }
+                    ASSERT_GE(px, 0) << "level " << level << " cell " << cx << ", " << cy << " of " << e.width
+                                     << " x " << e.height << " holds no pixel of its block";
+                    ++cells;
+                    if (!sky && (cx + 1) << level <= e.width && (cy + 1) << level <= e.height) {
+                        ++interior;
+                        ++places[std::size_t((py - (cy << level)) * (1 << level) + (px - (cx << level)))];
+                    }
+                }
+            }
+            EXPECT_EQ(cells, lw * lh);
+            // Spread: with 20 or more whole blocks, no place of the block takes more than half of them.
+            if (interior >= 20) {
+                const int most = *std::max_element(places.begin(), places.end());
+                EXPECT_LE(most, interior / 2) << "level " << level << " of " << e.width << " x " << e.height;
+            }
+        }
+    }
 }
 
 // ssao off: the lighting stage hands no texture. apply = multiply: the lighting stage hands none either (the

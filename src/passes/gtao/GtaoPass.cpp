@@ -2,11 +2,12 @@
 
 #include "passes/Bindings.h"
 
+#include <algorithm>
+
 namespace photopic {
 
 GtaoPass::GtaoPass(Stage stage)
     : mStage(stage)
-    , mPrepare(makeComputeProgram("passes/gtao/gtao_prepare.comp.glsl", bindingDefines()))
     , mDenoiseFull(
           makeComputeProgram("passes/gtao/gtao_denoise.comp.glsl", bindingDefines({{"GTAO_SCALE", "1"}})))
     , mDenoiseHalf(
@@ -56,12 +57,11 @@ void GtaoPass::texelToView(GtaoParameters& p) noexcept {
 
 void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
     const GtaoSettings& s = ctx.settings.gtao;
-    const Camera& camera = *ctx.inputs.camera;
     const Extent e = ctx.extent;
     const int scale = s.resolution == GtaoResolution::Half ? 2 : 1;
     const Extent rawExtent{(e.width + scale - 1) / scale, (e.height + scale - 1) / scale};
+    const Texture& surface = packSurface(ctx, resources);
     TexturePool& pool = resources.pool();
-    const Texture& surface = pool.acquireNearest(e, GL_RG32UI, "gtao surface");
     const Texture& raw = pool.acquireNearest(rawExtent, GL_RG32UI, "gtao raw");
     const Texture& out = pool.acquireNearest(e, GL_R16F, "ambient occlusion");
     const glm::ivec2 tier = slicesAndSteps(s.quality);
@@ -73,46 +73,63 @@ void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
     // cost differently with the preset and the resolution.
     const double searchBytes = rawTexels * (8.0 * 2.0 * tier.x * (tier.y + 1) + 8.0 + 8.0);
     const double denoiseBytes = fullTexels * (8 + 8 + 2);
-    GtaoParameters parameters{.projection = camera.projection,
+    search(surface, raw, s.quality, scale, s.sampleMips, searchBytes, ctx.timers);
+    denoise(surface, raw, out, scale, denoiseBytes, ctx.timers);
+    resources.bind(Resource::AmbientOcclusion, out);
+}
+
+const Texture& GtaoPass::packSurface(FrameContext& ctx, FrameResources& resources) {
+    const GtaoSettings& s = ctx.settings.gtao;
+    const Extent e = ctx.extent;
+    const glm::ivec2 tier = slicesAndSteps(s.quality);
+    GtaoParameters parameters{.projection = ctx.inputs.camera->projection,
                               .fullSize = glm::vec2(float(e.width), float(e.height)),
                               .radius = s.radius,
                               .bias = s.bias,
                               .slices = tier.x,
                               .steps = tier.y,
-                              .scale = scale,
+                              .scale = s.resolution == GtaoResolution::Half ? 2 : 1,
                               .frame = std::uint32_t(ctx.time.frameIndex % 1024u),
                               .octahedral = ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 1 : 0};
     texelToView(parameters);
     mParameters.update(parameters);
     mParameters.bind(kBindingParameters);
-    prepare(resources, surface, ctx.timers);
-    search(surface, raw, s.quality, scale, searchBytes, ctx.timers);
-    denoise(surface, raw, out, scale, denoiseBytes, ctx.timers);
-    resources.bind(Resource::AmbientOcclusion, out);
+
+    const bool mips = s.sampleMips;
+    const Texture& surface =
+        resources.pool().acquireNearest(mips ? surfacePyramidExtent(e) : e, GL_RG32UI, "gtao surface");
+    // With the coarse levels, their texels (under a third of level 0's) are written besides.
+    ScopedGpuTimer timer(ctx.timers, "gtao surface",
+                         double(e.width) * e.height * (4 + 8 + 8 + (mips ? 8.0 / 3.0 : 0.0)));
+    const PrepareProgram& p = mPrepare.get(mips ? 1 : 0, {{"GTAO_SAMPLE_MIPS", mips ? "1" : "0"}});
+    p.program.use();
+    bind(p.depth, *resources.texture(Resource::LinearDepth), ImageAccess::Read);
+    bind(p.normals, *resources.texture(Resource::Normals));
+    bind(p.surface, surface, ImageAccess::Write);
+    dispatch(p.program, e, Barrier::ComputeRead);
+    return surface;
 }
 
-void GtaoPass::prepare(FrameResources& resources, const Texture& surface, GpuTimers* timers) {
-    const Extent e = surface.extent();
-    ScopedGpuTimer timer(timers, "gtao surface", double(e.width) * e.height * (4 + 8 + 8));
-    mPrepare.use();
-    bind(mPrepareDepth, *resources.texture(Resource::LinearDepth), ImageAccess::Read);
-    bind(mPrepareNormals, *resources.texture(Resource::Normals));
-    bind(mPrepareSurface, surface, ImageAccess::Write);
-    dispatch(mPrepare, e, Barrier::ComputeRead);
+Extent GtaoPass::surfacePyramidExtent(Extent full) noexcept {
+    // Level 0 at the origin; levels 1-4 in a column to its right, in bands of the height rounded up to 16
+    // rows (gtao_pyramid.h.glsl surfaceLevelOrigin): the last ends above the rounded height's 15/16.
+    const int band = (full.height + 15) & ~15;
+    return {full.width + ((full.width - 1) >> 1) + 1, std::max(full.height, band - (band >> kSurfaceLevels))};
 }
 
-const GtaoPass::SearchProgram& GtaoPass::searchProgram(GtaoQuality quality, int scale) {
+const GtaoPass::SearchProgram& GtaoPass::searchProgram(GtaoQuality quality, int scale, bool mips) {
     const glm::ivec2 tier = slicesAndSteps(quality);
-    return mSearch.get(std::size_t(quality) * 2 + std::size_t(scale - 1),
+    return mSearch.get((std::size_t(quality) * 2 + std::size_t(scale - 1)) * 2 + (mips ? 1 : 0),
                        {{"GTAO_SLICES", std::to_string(tier.x)},
                         {"GTAO_STEPS", std::to_string(tier.y)},
-                        {"GTAO_SCALE", std::to_string(scale)}});
+                        {"GTAO_SCALE", std::to_string(scale)},
+                        {"GTAO_SAMPLE_MIPS", mips ? "1" : "0"}});
 }
 
-void GtaoPass::search(const Texture& surface, const Texture& raw, GtaoQuality quality, int scale,
+void GtaoPass::search(const Texture& surface, const Texture& raw, GtaoQuality quality, int scale, bool mips,
                       double bytes, GpuTimers* timers) {
     ScopedGpuTimer timer(timers, "gtao", bytes);
-    const SearchProgram& program = searchProgram(quality, scale);
+    const SearchProgram& program = searchProgram(quality, scale, mips);
     program.program.use();
     bind(program.surface, surface, ImageAccess::Read);
     bind(program.raw, raw, ImageAccess::Write);

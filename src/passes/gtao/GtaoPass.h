@@ -64,24 +64,41 @@ public:
     /// Sets `p`'s texel-to-view constants from its projection and full size: a texel's view xy at linear
     /// depth z is (texel scale + bias) w + z depthScale + viewOffset, w = P[3][3] - P[2][3] z.
     static void texelToView(GtaoParameters& p) noexcept;
+    /// The coarse levels above the full-resolution surface (ssao.sampleMips; gtao_pyramid.h.glsl).
+    static constexpr int kSurfaceLevels = 4;
+    /// The surface texture's extent for a `full`-sized frame with the coarse levels: level 0 and, to its
+    /// right, levels 1-4 one below the other.
+    [[nodiscard]] static Extent surfacePyramidExtent(Extent full) noexcept;
+    /// The frame's first dispatch: binds the parameter block and packs the linear depth and the normals into
+    /// the surface texture (gtao_surface.h.glsl), with the coarse levels under ssao.sampleMips; returns it
+    /// (a pool texture of `resources`). execute() begins with it; tests call it alone.
+    const Texture& packSurface(FrameContext& ctx, FrameResources& resources);
 
 private:
-    /// Depth and normal packed into `surface` (gtao_surface.h.glsl), the horizon search into `raw` (one texel
-    /// per AO texel), then the denoise into `out`.
-    void prepare(FrameResources& resources, const Texture& surface, GpuTimers* timers);
-    void search(const Texture& surface, const Texture& raw, GtaoQuality quality, int scale, double bytes,
-                GpuTimers* timers);
+    /// The horizon search into `raw` (one texel per AO texel) from packSurface()'s surface, then the
+    /// denoise into `out`.
+    void search(const Texture& surface, const Texture& raw, GtaoQuality quality, int scale, bool mips,
+                double bytes, GpuTimers* timers);
     void denoise(const Texture& surface, const Texture& raw, const Texture& out, int scale, double bytes,
                  GpuTimers* timers);
 
-    /// The horizon search for one preset and resolution (GTAO_SLICES, GTAO_STEPS, GTAO_SCALE), and its slots.
+    /// The packing pass, with or without the coarse levels (GTAO_SAMPLE_MIPS), and its slots.
+    struct PrepareProgram : ProgramSlots {
+        using ProgramSlots::ProgramSlots;
+        ImageSlot depth = program.image("uLinearDepth");
+        SamplerSlot normals = program.sampler("uNormals");
+        ImageSlot surface = program.image("uSurfaceOut");
+    };
+
+    /// The horizon search for one preset and resolution (GTAO_SLICES, GTAO_STEPS, GTAO_SCALE) and whether
+    /// far steps read the coarse levels (GTAO_SAMPLE_MIPS), and its slots.
     struct SearchProgram : ProgramSlots {
         using ProgramSlots::ProgramSlots;
         ImageSlot surface = program.image("uSurface");
         ImageSlot raw = program.image("uRaw");
     };
     /// The search program for `quality` at `scale` (1 or 2), built on first use.
-    const SearchProgram& searchProgram(GtaoQuality quality, int scale);
+    const SearchProgram& searchProgram(GtaoQuality quality, int scale, bool mips);
 
     /// The denoiser for one resolution (GTAO_SCALE: full-resolution pixels per AO texel), and its slots.
     struct DenoiseProgram : ProgramSlots {
@@ -92,15 +109,12 @@ private:
     };
 
     Stage mStage;
-    Program mPrepare;
-    ProgramVariants<SearchProgram, 8> mSearch{
-        "passes/gtao/gtao_main.comp.glsl"}; ///< by quality x 2 + scale - 1
+    ProgramVariants<PrepareProgram, 2> mPrepare{"passes/gtao/gtao_prepare.comp.glsl"}; ///< by mips
+    ProgramVariants<SearchProgram, 16> mSearch{
+        "passes/gtao/gtao_main.comp.glsl"}; ///< by (quality x 2 + scale - 1) x 2 + mips
     DenoiseProgram mDenoiseFull;
     DenoiseProgram mDenoiseHalf;
     ParameterBlock<GtaoParameters> mParameters;
-    ImageSlot mPrepareDepth = mPrepare.image("uLinearDepth");
-    SamplerSlot mPrepareNormals = mPrepare.sampler("uNormals");
-    ImageSlot mPrepareSurface = mPrepare.image("uSurfaceOut");
 };
 
 /// ssao.apply = multiply: sceneColor *= visibility^power (before TAA and metering). It darkens direct light

@@ -56,6 +56,7 @@ struct GtaoSettings {
     GtaoQuality quality = GtaoQuality::High;
     GtaoResolution resolution = GtaoResolution::Full;
     GtaoApply apply = GtaoApply::Lighting;
+    bool sampleMips = false;
 
     template <class V>
     void visit(V& v) {
@@ -74,6 +75,10 @@ struct GtaoSettings {
         v.field("resolution", resolution, gtaoResolutionNames(),
                 "full: one horizon search per pixel; half: one per 2 x 2 pixels, upsampled by the "
                 "depth-aware denoiser");
+        v.field("sampleMips", sampleMips,
+                "the horizon search's far steps read a decimated copy of the depth and normals (levels of "
+                "2 x 2 to 16 x 16 pixels, each texel one real pixel of its block), at the level the step's "
+                "distance calls for: fewer cache lines a pixel on a GPU, at a small cost in accuracy");
         v.field("apply", apply, gtaoApplyNames(),
                 "lighting: the lighting stage hands the visibility to the host, which multiplies its "
                 "indirect light only; multiply: a post pass multiplies the scene colour by it before TAA and "

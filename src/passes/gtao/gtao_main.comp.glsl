@@ -21,6 +21,11 @@ const float kPi = 3.14159265358979;
 // the point reads as a wall; the ground seen past it, below the horizon it set, says otherwise. Partial,
 // because past the top of a solid box the samples fall below its horizon as well.
 const float kThickness = 0.3;
+#if GTAO_SAMPLE_MIPS
+// A step `offset` pixels from the centre reads level round(log2(offset) - 3.3) = floor(log2(offset * 2^-2.8))
+// of the surface pyramid.
+const float kMipScale = 0.14358729; // 2^-2.8
+#endif
 
 // Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of Duty: Advanced
 // Warfare"), shifted per frame so a temporal filter sees other slice angles each frame.
@@ -98,7 +103,18 @@ float sideHorizon(vec2 centre, vec2 omega, float sign, vec3 origin, SliceFrame f
         float offset = mix(1.0, radiusPixels, t * t);
         ivec2 texel = ivec2(floor(centre + sign * omega * offset));
         bool inside = all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, full));
+#if GTAO_SAMPLE_MIPS
+        // The level whose cells are about a tenth of the step's distance (XeGTAO's rule: log2 of the offset
+        // less 3.3, rounded; the floor of log2 read off the float's exponent), and the pixel its cell keeps:
+        // a real surface point near the sample.
+        int level = clamp((floatBitsToInt(offset * kMipScale) >> 23) - 127, 0, kSurfaceLevels);
+        ivec2 cell = clamp(texel, ivec2(0), full - 1) >> level;
+        uvec2 stored = imageLoad(uSurface, surfaceLevelOrigin(level, full) + cell).xy;
+        texel = coarseTexelPixel(stored.x, cell, level);
+        GtaoSurface hit = unpackSurface(stored);
+#else
         GtaoSurface hit = surfaceAt(clamp(texel, ivec2(0), full - 1));
+#endif
         vec3 delta = viewPositionAtTexel(texel, hit.z) - origin;
         float dist2 = dot(delta, delta);
         bool valid = inside && isSurface(hit.z) && dist2 >= 1e-12;

@@ -2,6 +2,7 @@
 // pixel here, then by every sample of the horizon search and every tap of the denoiser as one texel.
 #include "passes/gtao/gtao_common.h.glsl"
 #include "passes/gtao/gtao_normal.h.glsl"
+#include "passes/gtao/gtao_pyramid.h.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -21,5 +22,18 @@ void main() {
     // A missing or broken normal: the surface faces the camera (the search then finds the horizons the
     // depths give, clamped to the hemisphere around the view vector).
     n = len2 > 1e-12 && !isinf(len2) ? n : vec3(0.0, 0.0, 1.0);
-    imageStore(uSurfaceOut, p, uvec4(floatBitsToUint(z), packNormal10(n), 0u, 0u));
+    uvec4 texel = uvec4(floatBitsToUint(z), packNormal10(n), 0u, 0u);
+    imageStore(uSurfaceOut, p, texel);
+#if GTAO_SAMPLE_MIPS
+    // The coarse levels: this pixel's texel where it is the one its cell keeps.
+    ivec2 full = ivec2(uFullSize);
+    for (int level = 1; level <= kSurfaceLevels; ++level) {
+        ivec2 cell = p >> level;
+        ivec2 pick = surfacePick(cell, level, full);
+        if (all(equal(pick, p))) {
+            imageStore(uSurfaceOut, surfaceLevelOrigin(level, full) + cell,
+                       uvec4(coarseSurfaceTexel(texel.xy, pick - (cell << level)), 0u, 0u));
+        }
+    }
+#endif
 }

@@ -6,6 +6,7 @@
 #define PHOTOPIC_GTAO_SURFACE_H_GLSL
 
 #include "passes/gtao/gtao_normal.h.glsl"
+#include "passes/gtao/gtao_pyramid.h.glsl"
 
 layout(binding = 1, rg32ui) uniform readonly uimage2D uSurface;
 
