@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -277,135 +278,88 @@ DebugGroup::~DebugGroup() {
     glPopDebugGroup();
 }
 
-int bytesPerTexel(GLenum format) {
-    switch (format) {
-    case GL_RGBA32F:
-        return 16;
-    case GL_RGBA16F:
-    case GL_RGBA16:
-        return 8;
-    case GL_RG32F:
-    case GL_RG32UI:
-    case GL_DEPTH32F_STENCIL8:
-        return 8;
-    case GL_RGB16F:
-        return 6;
-    case GL_R32F:
-    case GL_R32UI:
-    case GL_DEPTH_COMPONENT32F:
-    case GL_DEPTH_COMPONENT24:
-    case GL_DEPTH24_STENCIL8:
-    case GL_RG16F:
-    case GL_RGBA8:
-    case GL_SRGB8_ALPHA8:
-    case GL_R11F_G11F_B10F:
-        return 4;
-    case GL_R16F:
-    case GL_RG8:
-    case GL_DEPTH_COMPONENT16:
-        return 2;
-    case GL_R8:
-        return 1;
-    default:
-        return 4;
-    }
-}
-
-std::string_view formatName(GLenum format) {
-    switch (format) {
-    case GL_RGBA32F:
-        return "RGBA32F";
-    case GL_RGBA16F:
-        return "RGBA16F";
-    case GL_RG32F:
-        return "RG32F";
-    case GL_R32F:
-        return "R32F";
-    case GL_R32UI:
-        return "R32UI";
-    case GL_RG32UI:
-        return "RG32UI";
-    case GL_RGBA8:
-        return "RGBA8";
-    case GL_RGBA16:
-        return "RGBA16";
-    case GL_SRGB8_ALPHA8:
-        return "SRGB8_ALPHA8";
-    case GL_R11F_G11F_B10F:
-        return "R11F_G11F_B10F";
-    case GL_R16F:
-        return "R16F";
-    case GL_RG16F:
-        return "RG16F";
-    case GL_RGB16F:
-        return "RGB16F";
-    case GL_DEPTH_COMPONENT16:
-        return "DEPTH_COMPONENT16";
-    case GL_DEPTH_COMPONENT24:
-        return "DEPTH_COMPONENT24";
-    case GL_DEPTH_COMPONENT32F:
-        return "DEPTH_COMPONENT32F";
-    case GL_DEPTH24_STENCIL8:
-        return "DEPTH24_STENCIL8";
-    case GL_DEPTH32F_STENCIL8:
-        return "DEPTH32F_STENCIL8";
-    case GL_R8:
-        return "R8";
-    default:
-        return "format";
-    }
-}
-
 namespace {
-struct ImageFormat {
+/// Every sized internal format the library names: its name, its bytes a texel (bandwidth estimates) and its
+/// GLSL image format qualifier (empty where no image can take it: three channels, sRGB, depth).
+struct FormatInfo {
     GLenum format;
+    std::string_view name;
+    int bytes;
     std::string_view qualifier;
 };
-constexpr ImageFormat kImageFormats[] = {
-    {GL_RGBA32F, "rgba32f"},
-    {GL_RGBA16F, "rgba16f"},
-    {GL_RG32F, "rg32f"},
-    {GL_RG16F, "rg16f"},
-    {GL_R11F_G11F_B10F, "r11f_g11f_b10f"},
-    {GL_R32F, "r32f"},
-    {GL_R16F, "r16f"},
-    {GL_RGBA32UI, "rgba32ui"},
-    {GL_RGBA16UI, "rgba16ui"},
-    {GL_RGBA8UI, "rgba8ui"},
-    {GL_RG32UI, "rg32ui"},
-    {GL_RG16UI, "rg16ui"},
-    {GL_RG8UI, "rg8ui"},
-    {GL_R32UI, "r32ui"},
-    {GL_R16UI, "r16ui"},
-    {GL_R8UI, "r8ui"},
-    {GL_RGBA16, "rgba16"},
-    {GL_RGB10_A2, "rgb10_a2"},
-    {GL_RGBA8, "rgba8"},
-    {GL_RG16, "rg16"},
-    {GL_RG8, "rg8"},
-    {GL_R16, "r16"},
-    {GL_R8, "r8"},
-    {GL_RGBA16_SNORM, "rgba16_snorm"},
-    {GL_RGBA8_SNORM, "rgba8_snorm"},
-    {GL_RG16_SNORM, "rg16_snorm"},
-    {GL_RG8_SNORM, "rg8_snorm"},
-    {GL_R16_SNORM, "r16_snorm"},
-    {GL_R8_SNORM, "r8_snorm"},
+constexpr FormatInfo kFormats[] = {
+    {GL_RGBA32F, "RGBA32F", 16, "rgba32f"},
+    {GL_RGBA16F, "RGBA16F", 8, "rgba16f"},
+    {GL_RGB32F, "RGB32F", 12, {}},
+    {GL_RGB16F, "RGB16F", 6, {}},
+    {GL_RG32F, "RG32F", 8, "rg32f"},
+    {GL_RG16F, "RG16F", 4, "rg16f"},
+    {GL_R11F_G11F_B10F, "R11F_G11F_B10F", 4, "r11f_g11f_b10f"},
+    {GL_R32F, "R32F", 4, "r32f"},
+    {GL_R16F, "R16F", 2, "r16f"},
+    {GL_RGBA32UI, "RGBA32UI", 16, "rgba32ui"},
+    {GL_RGBA16UI, "RGBA16UI", 8, "rgba16ui"},
+    {GL_RGBA8UI, "RGBA8UI", 4, "rgba8ui"},
+    {GL_RG32UI, "RG32UI", 8, "rg32ui"},
+    {GL_RG16UI, "RG16UI", 4, "rg16ui"},
+    {GL_RG8UI, "RG8UI", 2, "rg8ui"},
+    {GL_R32UI, "R32UI", 4, "r32ui"},
+    {GL_R16UI, "R16UI", 2, "r16ui"},
+    {GL_R8UI, "R8UI", 1, "r8ui"},
+    {GL_RGBA16, "RGBA16", 8, "rgba16"},
+    {GL_RGB10_A2, "RGB10_A2", 4, "rgb10_a2"},
+    {GL_RGBA8, "RGBA8", 4, "rgba8"},
+    {GL_SRGB8_ALPHA8, "SRGB8_ALPHA8", 4, {}},
+    {GL_RG16, "RG16", 4, "rg16"},
+    {GL_RG8, "RG8", 2, "rg8"},
+    {GL_R16, "R16", 2, "r16"},
+    {GL_R8, "R8", 1, "r8"},
+    {GL_RGBA16_SNORM, "RGBA16_SNORM", 8, "rgba16_snorm"},
+    {GL_RGBA8_SNORM, "RGBA8_SNORM", 4, "rgba8_snorm"},
+    {GL_RG16_SNORM, "RG16_SNORM", 4, "rg16_snorm"},
+    {GL_RG8_SNORM, "RG8_SNORM", 2, "rg8_snorm"},
+    {GL_R16_SNORM, "R16_SNORM", 2, "r16_snorm"},
+    {GL_R8_SNORM, "R8_SNORM", 1, "r8_snorm"},
+    {GL_DEPTH_COMPONENT16, "DEPTH_COMPONENT16", 2, {}},
+    {GL_DEPTH_COMPONENT24, "DEPTH_COMPONENT24", 4, {}},
+    {GL_DEPTH_COMPONENT32, "DEPTH_COMPONENT32", 4, {}},
+    {GL_DEPTH_COMPONENT32F, "DEPTH_COMPONENT32F", 4, {}},
+    {GL_DEPTH24_STENCIL8, "DEPTH24_STENCIL8", 4, {}},
+    {GL_DEPTH32F_STENCIL8, "DEPTH32F_STENCIL8", 8, {}},
 };
-} // namespace
 
-std::string_view imageFormatQualifier(GLenum format) {
-    for (const ImageFormat& f : kImageFormats) {
+const FormatInfo* findFormat(GLenum format) noexcept {
+    for (const FormatInfo& f : kFormats) {
         if (f.format == format) {
-            return f.qualifier;
+            return &f;
         }
     }
-    return {};
+    return nullptr;
+}
+} // namespace
+
+int bytesPerTexel(GLenum format) {
+    const FormatInfo* f = findFormat(format);
+    return f ? f->bytes : 4;
+}
+
+std::string formatName(GLenum format) {
+    if (const FormatInfo* f = findFormat(format)) {
+        return std::string(f->name);
+    }
+    char hex[32];
+    std::snprintf(hex, sizeof hex, "format 0x%04X", unsigned(format));
+    return hex;
+}
+
+std::string_view imageFormatQualifier(GLenum format) {
+    const FormatInfo* f = findFormat(format);
+    return f ? f->qualifier : std::string_view{};
 }
 
 GLenum imageFormatFromQualifier(std::string_view qualifier) {
-    for (const ImageFormat& f : kImageFormats) {
-        if (f.qualifier == qualifier) {
+    for (const FormatInfo& f : kFormats) {
+        if (!qualifier.empty() && f.qualifier == qualifier) {
             return f.format;
         }
     }

@@ -389,10 +389,10 @@ struct GlObjectCounts {
 /// True for GL_DEPTH_COMPONENT16/24/32F and the depth-stencil formats.
 [[nodiscard]] bool isDepthFormat(GLenum format) noexcept;
 
-/// Bytes per texel of a sized internal format (for bandwidth estimates and readbacks).
+/// Bytes per texel of a sized internal format, for bandwidth estimates (4 for one the library does not name).
 int bytesPerTexel(GLenum format);
-/// Human name of a sized internal format ("RGBA16F").
-std::string_view formatName(GLenum format);
+/// Human name of a sized internal format ("RGBA16F"); "format 0x8F97" for one the library does not name.
+std::string formatName(GLenum format);
 /// The GLSL image format qualifier of a sized internal format ("rgba16f"); empty for a format no image can
 /// take (three channels, sRGB, depth).
 std::string_view imageFormatQualifier(GLenum format);

@@ -72,7 +72,12 @@ std::string textureProblem(const char* name, const Texture& t, Extent extent,
                            t.extent().height, extent.width, extent.height);
     }
     if (!oneOf(t.format(), formats)) {
-        return fmt::format("{}: format {} is not one the pipeline reads", name, formatName(t.format()));
+        std::string accepted;
+        for (const GLenum f : formats) {
+            accepted += (accepted.empty() ? "" : ", ") + formatName(f);
+        }
+        return fmt::format("{}: format {} is not one the pipeline reads ({})", name, formatName(t.format()),
+                           accepted);
     }
     return {};
 }
@@ -84,10 +89,7 @@ std::string sunShadowProblem(const SunShadowMap& shadow) {
     if (!t.valid() || t.extent().empty()) {
         return "sunShadow.depth: not a texture (id 0) or empty";
     }
-    static constexpr GLenum kDepthFormats[] = {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24,
-                                               GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT32F,
-                                               GL_DEPTH24_STENCIL8,  GL_DEPTH32F_STENCIL8};
-    if (!oneOf(t.format(), kDepthFormats)) {
+    if (!isDepthFormat(t.format())) {
         return fmt::format("sunShadow.depth: format {} is not a depth format", formatName(t.format()));
     }
     const glm::mat4& m = shadow.worldToClip;

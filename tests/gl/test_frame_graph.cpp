@@ -332,20 +332,47 @@ TEST_F(GlTest, BadInputsAreReportedNotFatal) {
     const Texture color = makeTexture(grey(kW, kH, 0.2f), "color");
     const Texture smallDepth = r32f(8, 8, std::vector<float>(64, 1.0f));
     const Texture wrongFormat({.extent = {kW, kH}, .format = GL_RGBA8});
+    const Texture twoChannelNormals({.extent = {kW, kH}, .format = GL_RG16_SNORM});
     Camera broken = testCamera();
     broken.view[3][0] = std::numeric_limits<float>::quiet_NaN();
     const Texture& out = pipeline.execute({.color = &color,
                                            .depth = &smallDepth,
                                            .depthKind = DepthKind::LinearView,
+                                           .normals = &twoChannelNormals,
                                            .motion = &wrongFormat,
                                            .camera = &broken},
                                           {});
     EXPECT_EQ(out.extent(), (Extent{kW, kH}));
     const std::vector<std::string>& errors = pipeline.status().inputErrors;
-    ASSERT_EQ(errors.size(), 3u);
+    ASSERT_EQ(errors.size(), 4u);
     EXPECT_NE(errors[0].find("depth: 8x8 does not match"), std::string::npos) << errors[0];
-    EXPECT_NE(errors[1].find("motion: format RGBA8"), std::string::npos) << errors[1];
-    EXPECT_NE(errors[2].find("camera.view"), std::string::npos) << errors[2];
+    // Each format by its name, the ones the input takes listed.
+    EXPECT_NE(errors[1].find("normals: format RG16_SNORM is not one the pipeline reads (RGB16F, RGBA16F, "
+                             "RGB32F, RGBA32F, RGB10_A2, RGBA16_SNORM, RGBA8_SNORM)"),
+              std::string::npos)
+        << errors[1];
+    EXPECT_NE(errors[2].find("motion: format RGBA8 is not one the pipeline reads (RG16F, RG32F, RGBA16F, "
+                             "RGBA32F)"),
+              std::string::npos)
+        << errors[2];
+    EXPECT_NE(errors[3].find("camera.view"), std::string::npos) << errors[3];
+}
+
+// Every format a message can name has its name, and one the library does not know reads as its number.
+TEST(Formats, NamesBytesAndImageQualifiersComeFromOneTable) {
+    EXPECT_EQ(formatName(GL_RG8), "RG8");
+    EXPECT_EQ(formatName(GL_RG16_SNORM), "RG16_SNORM");
+    EXPECT_EQ(formatName(GL_DEPTH_COMPONENT32), "DEPTH_COMPONENT32");
+    EXPECT_EQ(formatName(GL_RGBA32UI), "RGBA32UI");
+    EXPECT_EQ(formatName(GL_RGB9_E5), "format 0x8C3D");
+    EXPECT_EQ(bytesPerTexel(GL_RGBA16UI), 8);
+    EXPECT_EQ(bytesPerTexel(GL_RGB32F), 12);
+    EXPECT_EQ(bytesPerTexel(GL_R8_SNORM), 1);
+    EXPECT_EQ(imageFormatQualifier(GL_RGB10_A2), "rgb10_a2");
+    EXPECT_EQ(imageFormatQualifier(GL_RGB16F), "");
+    EXPECT_EQ(imageFormatFromQualifier("rg16_snorm"), GLenum(GL_RG16_SNORM));
+    EXPECT_EQ(imageFormatFromQualifier(""), 0u);
+    EXPECT_EQ(imageFormatFromQualifier("rgb16f"), 0u);
 }
 
 TEST_F(GlTest, SettingsOutOfRangeAreRejectedWhenSet) {
