@@ -56,6 +56,17 @@ std::vector<float> readDepthTexture(const Texture& texture) {
     return depth;
 }
 
+std::vector<std::uint32_t> readTextureU32(const Texture& texture, int channels) {
+    static constexpr GLenum kLayouts[] = {GL_RED_INTEGER, GL_RG_INTEGER, GL_RGB_INTEGER, GL_RGBA_INTEGER};
+    const Extent e = texture.extent();
+    std::vector<std::uint32_t> words(std::size_t(e.width) * std::size_t(e.height) * std::size_t(channels));
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(texture.id(), 0, kLayouts[channels - 1], GL_UNSIGNED_INT,
+                      GLsizei(words.size() * sizeof(std::uint32_t)), words.data());
+    flipRows(words, e.width, e.height, channels);
+    return words;
+}
+
 Image8 readTexture8(const Texture& texture) {
     Image8 image;
     readTexture8(texture, image);

@@ -5,6 +5,7 @@
 #include "core/Image.h"
 #include "gl/Objects.h"
 
+#include <cstdint>
 #include <string_view>
 #include <vector>
 
@@ -18,6 +19,9 @@ ImageF readTextureF(const Texture& texture);
 /// Blocking read of level 0 of a depth texture (GL_DEPTH_COMPONENT*): width*height window depths, rows top
 /// to bottom like the images.
 std::vector<float> readDepthTexture(const Texture& texture);
+/// Blocking read of level 0 of an unsigned integer texture (R32UI, RG32UI, ...) as `channels` (1 to 4) words
+/// a texel, rows top to bottom like the images.
+std::vector<std::uint32_t> readTextureU32(const Texture& texture, int channels);
 /// Blocking read of level 0 as 8-bit RGBA.
 Image8 readTexture8(const Texture& texture);
 /// Blocking read of level 0 as 16-bit RGBA (unorm: 65535 is 1.0). Of an RGBA16 texture, the stored values; of

@@ -221,21 +221,6 @@ TEST_F(GlTest, GtaoIsStableUnderASlowOrbit) {
     }
 }
 
-namespace {
-
-/// GL's texels of an RG32UI texture, row 0 at the bottom, two words each.
-std::vector<std::uint32_t> readSurfaceTexels(const Texture& texture) {
-    const Extent e = texture.extent();
-    std::vector<std::uint32_t> words(std::size_t(e.width) * e.height * 2);
-    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureImage(texture.id(), 0, GL_RG_INTEGER, GL_UNSIGNED_INT, GLsizei(words.size() * 4),
-                      words.data());
-    return words;
-}
-
-} // namespace
-
 // The surface pyramid ssao.sampleMips reads: level 0 is the packing without it, bit for bit; each coarse
 // level's texel is the level-0 texel of a pixel of its 2^L block (within the image where the block overhangs
 // it), the pixel's place in the block in the depth's low 8 bits (the sky's bits unchanged), its normal's
@@ -277,17 +262,20 @@ TEST_F(GlTest, GtaoSurfacePyramidKeepsARealPixelOfEachBlock) {
             GtaoPass pass(GtaoPass::Stage::Lighting);
             const Texture& surface = pass.packSurface(ctx, resources);
             ASSERT_EQ(surface.extent(), mips ? GtaoPass::surfacePyramidExtent(e) : e);
-            (mips ? pyramid : plain) = readSurfaceTexels(surface);
+            glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT); // the pass's image stores, for the read below
+            (mips ? pyramid : plain) = readTextureU32(surface, 2);
             pyramidExtent = surface.extent();
         }
-        const int w = pyramidExtent.width;
-        auto word = [&](const std::vector<std::uint32_t>& t, int stride, int x, int y, int k) {
-            return t[(std::size_t(y) * stride + x) * 2 + k];
+        // Word k of GL texel (x, y) (row 0 at the bottom, as the shaders address them) of the plain surface
+        // or the pyramid, which readTextureU32 hands over rows top to bottom.
+        auto word = [&](const std::vector<std::uint32_t>& t, int x, int y, int k) {
+            const Extent size = &t == &pyramid ? pyramidExtent : e;
+            return t[(std::size_t(size.height - 1 - y) * size.width + x) * 2 + k];
         };
         for (int y = 0; y < e.height; ++y) {
             for (int x = 0; x < e.width; ++x) {
                 for (int k = 0; k < 2; ++k) {
-                    ASSERT_EQ(word(pyramid, w, x, y, k), word(plain, e.width, x, y, k)) << x << ", " << y;
+                    ASSERT_EQ(word(pyramid, x, y, k), word(plain, x, y, k)) << x << ", " << y;
                 }
             }
         }
@@ -301,8 +289,8 @@ TEST_F(GlTest, GtaoSurfacePyramidKeepsARealPixelOfEachBlock) {
             int cells = 0, interior = 0;
             for (int cy = 0; cy < lh; ++cy) {
                 for (int cx = 0; cx < lw; ++cx) {
-                    const std::uint32_t zBits = word(pyramid, w, ox + cx, oy + cy, 0);
-                    const std::uint32_t nBits = word(pyramid, w, ox + cx, oy + cy, 1);
+                    const std::uint32_t zBits = word(pyramid, ox + cx, oy + cy, 0);
+                    const std::uint32_t nBits = word(pyramid, ox + cx, oy + cy, 1);
                     float z = 0.0f;
                     std::memcpy(&z, &zBits, 4);
                     const bool sky = std::isinf(z);
@@ -315,12 +303,12 @@ TEST_F(GlTest, GtaoSurfacePyramidKeepsARealPixelOfEachBlock) {
                             if (x >= e.width || y >= e.height) {
                                 continue;
                             }
-                            const std::uint32_t z0 = word(plain, e.width, x, y, 0);
+                            const std::uint32_t z0 = word(plain, x, y, 0);
                             const bool named = sky ? z0 == zBits
                                                    : (z0 & 0xFFFFFF00u) == (zBits & 0xFFFFFF00u) &&
                                                          int(zBits & 15u) == bx &&
                                                          int((zBits >> 4) & 15u) == by;
-                            if (named && word(plain, e.width, x, y, 1) == nBits) {
+                            if (named && word(plain, x, y, 1) == nBits) {
                                 px = x;
                                 py = y;
                             }

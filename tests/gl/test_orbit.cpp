@@ -36,20 +36,6 @@ constexpr int kWidth = 160;
 constexpr int kHeight = 90;
 constexpr float kDt = 1.0f / 30.0f;
 
-/// Object ids as a float image (R), read from the R32UI target.
-std::vector<std::uint32_t> readIds(const Texture& ids) {
-    const Extent e = ids.extent();
-    std::vector<std::uint32_t> out(std::size_t(e.width) * std::size_t(e.height));
-    glGetTextureImage(ids.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(out.size() * 4), out.data());
-    // GL rows run bottom to top; flip to the top-to-bottom order of ImageF.
-    for (int y = 0; y < e.height / 2; ++y) {
-        std::swap_ranges(out.begin() + std::ptrdiff_t(y) * e.width,
-                         out.begin() + std::ptrdiff_t(y + 1) * e.width,
-                         out.begin() + std::ptrdiff_t(e.height - 1 - y) * e.width);
-    }
-    return out;
-}
-
 bool isShip(std::uint32_t id) {
     return id >= orbit::ids::kFirstShip && id < orbit::ids::kEarth;
 }
@@ -75,7 +61,7 @@ Frame renderFrame(OrbitScene& scene, Pipeline& pipeline, std::uint64_t index = 0
     std::vector<double> telemetry;
     const FrameTime time{.dt = kDt, .frameIndex = index};
     const FrameInputs in = scene.render(time, pipeline, telemetry);
-    Frame f{readTextureF(*in.color), readIds(*in.objectId), {}};
+    Frame f{readTextureF(*in.color), readTextureU32(*in.objectId, 1), {}};
     f.display = readTexture8(pipeline.execute(in, time));
     return f;
 }
@@ -459,7 +445,7 @@ TEST_F(GlTest, OrbitMotionVectorsFollowTheCameraAndTheShipsOwnSpin) {
     const FrameInputs in = scene->render(time, pipeline, telemetry);
     const ImageF motion = readTextureF(*in.motion);
     const std::vector<float> depth = readDepthTexture(*in.depth);
-    const std::vector<std::uint32_t> ids = readIds(*in.objectId);
+    const std::vector<std::uint32_t> ids = readTextureU32(*in.objectId, 1);
     const double t = scene->scriptTime(time);
     const double prev = t - 20.0 * double(kDt);
     const glm::mat4 toPrev = orbit::shipTransform(prev) * glm::inverse(orbit::shipTransform(t));

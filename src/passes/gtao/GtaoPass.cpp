@@ -58,7 +58,7 @@ void GtaoPass::texelToView(GtaoParameters& p) noexcept {
 void GtaoPass::execute(FrameContext& ctx, FrameResources& resources) {
     const GtaoSettings& s = ctx.settings.gtao;
     const Extent e = ctx.extent;
-    const int scale = s.resolution == GtaoResolution::Half ? 2 : 1;
+    const int scale = resolutionScale(s.resolution);
     const Extent rawExtent{(e.width + scale - 1) / scale, (e.height + scale - 1) / scale};
     const Texture& surface = packSurface(ctx, resources);
     TexturePool& pool = resources.pool();
@@ -88,7 +88,7 @@ const Texture& GtaoPass::packSurface(FrameContext& ctx, FrameResources& resource
                               .bias = s.bias,
                               .slices = tier.x,
                               .steps = tier.y,
-                              .scale = s.resolution == GtaoResolution::Half ? 2 : 1,
+                              .scale = resolutionScale(s.resolution),
                               .frame = std::uint32_t(ctx.time.frameIndex % 1024u),
                               .octahedral = ctx.inputs.normalEncoding == NormalEncoding::Octahedral ? 1 : 0};
     texelToView(parameters);

@@ -75,6 +75,10 @@ public:
     const Texture& packSurface(FrameContext& ctx, FrameResources& resources);
 
 private:
+    /// Full-resolution pixels per AO texel: 1, or 2 at half resolution.
+    static int resolutionScale(GtaoResolution resolution) noexcept {
+        return resolution == GtaoResolution::Half ? 2 : 1;
+    }
     /// The horizon search into `raw` (one texel per AO texel) from packSurface()'s surface, then the
     /// denoise into `out`.
     void search(const Texture& surface, const Texture& raw, GtaoQuality quality, int scale, bool mips,
