@@ -18,7 +18,9 @@ TEST(ContactShadowsSettings, DefaultsAreOffWithTheDocumentedValues) {
     EXPECT_DOUBLE_EQ(cs["distance"].get<double>(), 0.18);
     EXPECT_DOUBLE_EQ(cs["thickness"].get<double>(), 0.003);
     EXPECT_DOUBLE_EQ(cs["strength"].get<double>(), 1.1);
-    EXPECT_EQ(cs["steps"].get<int>(), 22);
+    EXPECT_EQ(cs["quality"].get<std::string>(), "high");
+    EXPECT_EQ(cs["steps"].get<int>(), 0); // the preset's: 22 at high
+    EXPECT_EQ(Settings{}.contactShadows.stepCount(), 22);
     EXPECT_TRUE(cs["mask"].is_array());
     EXPECT_TRUE(cs["mask"].empty());
 }
@@ -33,7 +35,7 @@ TEST(ContactShadowsSettings, RangesAreCheckedByJsonPath) {
         {R"({"distance": 0})", "postEffects.contactShadows.distance", SettingsIssueCode::OutOfRange},
         {R"({"thickness": -0.1})", "postEffects.contactShadows.thickness", SettingsIssueCode::OutOfRange},
         {R"({"strength": 5})", "postEffects.contactShadows.strength", SettingsIssueCode::OutOfRange},
-        {R"({"steps": 0})", "postEffects.contactShadows.steps", SettingsIssueCode::OutOfRange},
+        {R"({"steps": -1})", "postEffects.contactShadows.steps", SettingsIssueCode::OutOfRange},
         {R"({"steps": 2.5})", "postEffects.contactShadows.steps", SettingsIssueCode::WrongType},
         {R"({"mask": 3})", "postEffects.contactShadows.mask", SettingsIssueCode::WrongType},
         {R"({"mask": [1, "two"]})", "postEffects.contactShadows.mask[1]", SettingsIssueCode::WrongType},

@@ -27,7 +27,8 @@ TEST(VolumetricLightSettings, DefaultsAreOffWithTheDocumentedValues) {
     EXPECT_NEAR(v["decay"].get<double>(), 0.97, 1e-7);
     EXPECT_DOUBLE_EQ(v["weight"].get<double>(), 1.0);
     EXPECT_NEAR(v["exposure"].get<double>(), 0.005, 1e-9);
-    EXPECT_EQ(v["samples"].get<int>(), 64);
+    EXPECT_EQ(v["samples"].get<int>(), 0); // the quality preset's: 64 at high
+    EXPECT_EQ(Settings{}.volumetricLight.sampleCount(), 64);
     EXPECT_EQ(v["mode"].get<std::string>(), "auto");
     EXPECT_EQ(v["resolution"].get<std::string>(), "half");
     EXPECT_NEAR(v["scattering"].get<double>(), 0.02, 1e-7);
@@ -65,7 +66,8 @@ TEST(VolumetricLightSettings, ErrorsAreNamedByJsonPath) {
         {R"({"decay": 1.01})", "postEffects.volumetricLight.decay", SettingsIssueCode::OutOfRange},
         {R"({"weight": 17})", "postEffects.volumetricLight.weight", SettingsIssueCode::OutOfRange},
         {R"({"exposure": 2})", "postEffects.volumetricLight.exposure", SettingsIssueCode::OutOfRange},
-        {R"({"samples": 2})", "postEffects.volumetricLight.samples", SettingsIssueCode::OutOfRange},
+        {R"({"samples": 2})", "postEffects.volumetricLight.samples", SettingsIssueCode::Constraint},
+        {R"({"samples": 257})", "postEffects.volumetricLight.samples", SettingsIssueCode::OutOfRange},
         {R"({"samples": 8.5})", "postEffects.volumetricLight.samples", SettingsIssueCode::WrongType},
         {R"({"decay": "slow"})", "postEffects.volumetricLight.decay", SettingsIssueCode::WrongType},
         {R"({"enabled": 1})", "postEffects.volumetricLight.enabled", SettingsIssueCode::WrongType},

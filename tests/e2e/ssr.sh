@@ -50,7 +50,7 @@ expect 0 "a frame with reflections added (intensity 1)" -- "$PHOTOPIC" scene tes
 check "frame written" test -s "$S/on/frame_0001.exr"
 
 expect 2 "maxSteps out of range names the key" -- "$PHOTOPIC" scene testbed -o "$S/bad" --frames 1 \
-    --size 32x18 --set ssr.maxSteps=0
+    --size 32x18 --set ssr.maxSteps=-1
 check "the key is named" contains "ssr.maxSteps"
 expect 2 "an unknown resolution names the key" -- "$PHOTOPIC" scene testbed -o "$S/bad2" --frames 1 \
     --size 32x18 --set ssr.resolution=quarter

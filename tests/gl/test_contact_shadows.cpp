@@ -442,7 +442,7 @@ TEST_F(GlTest, ContactShadowsSurviveBrokenInputs) {
 }
 
 // The debug views: `contact-shadows` shows the factor, and its scene-referred (EXR) image holds the factor's
-// raw values; `contact-shadows-steps` shows the steps each march took over contactShadows.steps (0 for the
+// raw values; `contact-shadows-steps` shows the steps each march took over the step count (0 for the
 // sky, 1 for a march that found nothing and stayed on screen). After the first frames, no GL object is made.
 TEST_F(GlTest, ContactShadowsDebugViewsShowRawValues) {
     const testbed::TruthOptions options = stillOptions(0.9f);

@@ -248,7 +248,7 @@ TEST_F(SmaaTest, MirroredDiagonalEdgeGivesTheMirroredResult) {
                 }
             }
         }
-        for (SmaaQuality quality : {SmaaQuality::High, SmaaQuality::Ultra}) {
+        for (EffectQuality quality : {EffectQuality::High, EffectQuality::Ultra}) {
             Settings s = plainSettings(AntiAliasing::Smaa);
             s.smaa.quality = quality;
             const Image8 a = runImage(image, s);

@@ -26,7 +26,7 @@ enum class DebugView {
     /// The lighting stage's sun visibility (contact shadows) as grey: raw values in an EXR; needs
     /// contactShadows.enabled and a host that runs the lighting stage
     ContactShadows,
-    /// The contact-shadow ray march's steps taken per pixel over contactShadows.steps (0: none marched)
+    /// The contact-shadow ray march's steps taken per pixel over its step count (0: none marched)
     ContactShadowSteps,
     /// Depth of field's signed circle of confusion over dof.maxCocRadius: red the near field's radius, blue
     /// the far field's, black in focus (raw values in an EXR); needs dof.enabled, depth and a camera

@@ -1,8 +1,10 @@
 #pragma once
 // Quality tiers (from full quality to old hardware): how much of the frame order runs and at what resolution.
-// The tier table is in core/Quality.h.
+// The tier table is in core/Quality.h. Beside the tier, each costly effect has its own preset
+// (`ssao.quality`, `contactShadows.quality`, ...), named alike and chosen per effect.
 
 #include <array>
+#include <cstddef>
 #include <span>
 #include <string_view>
 
@@ -19,6 +21,20 @@ enum class Quality {
 inline std::span<const std::string_view> qualityNames() {
     static constexpr std::array<std::string_view, 5> kNames{"ultra", "high", "medium", "low", "legacy"};
     return kNames;
+}
+
+/// One effect's preset: how many samples, steps or slices it spends per pixel. What each preset means is
+/// the effect's own table (its settings' `quality` field says); high is every effect's default.
+enum class EffectQuality { Low, Medium, High, Ultra };
+
+inline std::span<const std::string_view> effectQualityNames() {
+    static constexpr std::array<std::string_view, 4> kNames{"low", "medium", "high", "ultra"};
+    return kNames;
+}
+
+/// The count a preset gives: `counts` holds low, medium, high and ultra's.
+[[nodiscard]] constexpr int presetCount(EffectQuality quality, const std::array<int, 4>& counts) noexcept {
+    return counts[static_cast<std::size_t>(quality)];
 }
 
 } // namespace photopic

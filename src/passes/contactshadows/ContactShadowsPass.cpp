@@ -89,7 +89,7 @@ ContactShadowParameters ContactShadowsPass::parameters(const FrameContext& ctx,
     p.distance = s.distance;
     p.thickness = s.thickness;
     p.strength = s.strength;
-    p.steps = s.steps;
+    p.steps = s.stepCount();
     p.frame = std::uint32_t(ctx.time.frameIndex % 1024u);
     p.maskCount = objectId ? int(std::min(s.mask.size(), kMaxContactShadowMaskIds)) : 0;
     for (int i = 0; i < p.maskCount; ++i) {

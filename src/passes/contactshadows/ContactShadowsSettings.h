@@ -3,6 +3,7 @@
 // the sun, for the sun's direct light only (docs/architecture.md, "Contact shadows"). They add the small,
 // sharp shadows where objects meet that a shadow map's resolution and bias lose; they are not a shadow map.
 
+#include "core/settings/QualitySettings.h"
 #include "core/settings/Reflect.h"
 
 #include <cstddef>
@@ -17,8 +18,14 @@ struct ContactShadowsSettings {
     float distance = 0.18f;
     float thickness = 0.003f;
     float strength = 1.1f;
-    int steps = 22;
+    EffectQuality quality = EffectQuality::High;
+    int steps = 0;
     IdList mask;
+
+    /// Samples along the ray: `steps`, or the preset's count when it is 0.
+    [[nodiscard]] int stepCount() const noexcept {
+        return steps > 0 ? steps : presetCount(quality, {8, 14, 22, 40});
+    }
 
     template <class V>
     void visit(V& v) {
@@ -35,8 +42,10 @@ struct ContactShadowsSettings {
                 "the occlusion (1 at a hit near the surface, faded to 0 towards the ray's end and at the "
                 "screen's edges) is multiplied by this and clamped to [0, 1]; visibility = 1 - that. Above 1 "
                 "a hit stays fully black further into the fade; below 1 no pixel goes fully black");
-        v.field("steps", steps, Range{1, 128},
-                "samples along the ray (one dithered start per pixel and frame)");
+        v.field("quality", quality, effectQualityNames(),
+                "samples along the ray: low 8, medium 14, high 22, ultra 40 (one dithered start per pixel "
+                "and frame)");
+        v.field("steps", steps, Range{0, 128}, "samples along the ray; 0: the quality preset's count");
         v.field("mask", mask, Range{1, 4294967295.0},
                 "object ids (the host's objectId input), at most 16; empty: every object. When not empty, "
                 "only the listed objects receive and cast contact shadows: other pixels keep visibility 1, "

@@ -32,15 +32,15 @@ bool GtaoPass::enabled(const FrameContext& ctx) const {
                                      : s.apply == GtaoApply::Multiply && ctx.hdr;
 }
 
-glm::ivec2 GtaoPass::slicesAndSteps(GtaoQuality quality) noexcept {
+glm::ivec2 GtaoPass::slicesAndSteps(EffectQuality quality) noexcept {
     switch (quality) {
-    case GtaoQuality::Low:
+    case EffectQuality::Low:
         return {1, 2};
-    case GtaoQuality::Medium:
+    case EffectQuality::Medium:
         return {2, 2};
-    case GtaoQuality::High:
+    case EffectQuality::High:
         return {3, 3};
-    case GtaoQuality::Ultra:
+    case EffectQuality::Ultra:
         return {9, 3};
     }
     return {3, 3};
@@ -117,7 +117,7 @@ Extent GtaoPass::surfacePyramidExtent(Extent full) noexcept {
     return {full.width + ((full.width - 1) >> 1) + 1, std::max(full.height, band - (band >> kSurfaceLevels))};
 }
 
-const GtaoPass::SearchProgram& GtaoPass::searchProgram(GtaoQuality quality, int scale, bool mips) {
+const GtaoPass::SearchProgram& GtaoPass::searchProgram(EffectQuality quality, int scale, bool mips) {
     const glm::ivec2 tier = slicesAndSteps(quality);
     return mSearch.get((std::size_t(quality) * 2 + std::size_t(scale - 1)) * 2 + (mips ? 1 : 0),
                        {{"GTAO_SLICES", std::to_string(tier.x)},
@@ -126,7 +126,7 @@ const GtaoPass::SearchProgram& GtaoPass::searchProgram(GtaoQuality quality, int 
                         {"GTAO_SAMPLE_MIPS", mips ? "1" : "0"}});
 }
 
-void GtaoPass::search(const Texture& surface, const Texture& raw, GtaoQuality quality, int scale, bool mips,
+void GtaoPass::search(const Texture& surface, const Texture& raw, EffectQuality quality, int scale, bool mips,
                       double bytes, GpuTimers* timers) {
     ScopedGpuTimer timer(timers, "gtao", bytes);
     const SearchProgram& program = searchProgram(quality, scale, mips);

@@ -60,7 +60,7 @@ public:
     void execute(FrameContext& ctx, FrameResources& resources) override;
 
     /// Slices and steps per side for a quality tier.
-    [[nodiscard]] static glm::ivec2 slicesAndSteps(GtaoQuality quality) noexcept;
+    [[nodiscard]] static glm::ivec2 slicesAndSteps(EffectQuality quality) noexcept;
     /// Sets `p`'s texel-to-view constants from its projection and full size: a texel's view xy at linear
     /// depth z is (texel scale + bias) w + z depthScale + viewOffset, w = P[3][3] - P[2][3] z.
     static void texelToView(GtaoParameters& p) noexcept;
@@ -81,7 +81,7 @@ private:
     }
     /// The horizon search into `raw` (one texel per AO texel) from packSurface()'s surface, then the
     /// denoise into `out`.
-    void search(const Texture& surface, const Texture& raw, GtaoQuality quality, int scale, bool mips,
+    void search(const Texture& surface, const Texture& raw, EffectQuality quality, int scale, bool mips,
                 double bytes, GpuTimers* timers);
     void denoise(const Texture& surface, const Texture& raw, const Texture& out, int scale, double bytes,
                  GpuTimers* timers);
@@ -102,7 +102,7 @@ private:
         ImageSlot raw = program.image("uRaw");
     };
     /// The search program for `quality` at `scale` (1 or 2), built on first use.
-    const SearchProgram& searchProgram(GtaoQuality quality, int scale, bool mips);
+    const SearchProgram& searchProgram(EffectQuality quality, int scale, bool mips);
 
     /// The denoiser for one resolution (GTAO_SCALE: full-resolution pixels per AO texel), and its slots.
     struct DenoiseProgram : ProgramSlots {

@@ -2,6 +2,7 @@
 // Screen-space ambient occlusion: ground-truth ambient occlusion (GTAO, Jimenez et al. 2016, "Practical
 // Real-Time Strategies for Accurate Indirect Occlusion") from linear depth, view normals and the camera.
 
+#include "core/settings/QualitySettings.h"
 #include "core/settings/Reflect.h"
 
 #include <array>
@@ -9,19 +10,6 @@
 #include <string_view>
 
 namespace photopic {
-
-/// Slices x steps per side of each slice.
-enum class GtaoQuality {
-    Low,    ///< 1 slice x 2 steps per side
-    Medium, ///< 2 x 2
-    High,   ///< 3 x 3
-    Ultra,  ///< 9 x 3
-};
-
-inline std::span<const std::string_view> gtaoQualityNames() {
-    static constexpr std::array<std::string_view, 4> kNames{"low", "medium", "high", "ultra"};
-    return kNames;
-}
 
 enum class GtaoResolution {
     Full, ///< one horizon search per pixel
@@ -53,7 +41,7 @@ struct GtaoSettings {
     float radius = 1.0f;
     float bias = 0.0f;
     float power = 1.0f;
-    GtaoQuality quality = GtaoQuality::High;
+    EffectQuality quality = EffectQuality::High;
     GtaoResolution resolution = GtaoResolution::Full;
     GtaoApply apply = GtaoApply::Lighting;
     bool sampleMips = false;
@@ -70,7 +58,7 @@ struct GtaoSettings {
             "power", power, Range{0.1, 8},
             "visibility^power, an artistic shaping applied after the raw visibility (the lighting stage's "
             "texture stays raw and hands the exponent to the host; the multiply pass applies it)");
-        v.field("quality", quality, gtaoQualityNames(),
+        v.field("quality", quality, effectQualityNames(),
                 "slices x steps per side of each slice: low 1 x 2, medium 2 x 2, high 3 x 3, ultra 9 x 3");
         v.field("resolution", resolution, gtaoResolutionNames(),
                 "full: one horizon search per pixel; half: one per 2 x 2 pixels, upsampled by the "

@@ -73,7 +73,7 @@ MotionBlurParameters MotionBlurPass::parameters(const FrameContext& ctx, Extent 
     p.radiusScale = 0.5f * shutterFraction(s, ctx.inputs.camera, ctx.time.dt) * s.intensity;
     p.maxBlur = s.maxBlur;
     p.tileSize = s.tileSize;
-    p.sampleCount = s.sampleCount;
+    p.sampleCount = s.gatherCount();
     p.frame = std::uint32_t(ctx.time.frameIndex % 1024u);
     p.writeTiles = writeTiles ? 1 : 0;
     p.tileCount = glm::ivec2(tiles.width, tiles.height);

@@ -5,6 +5,7 @@
 // samples by depth, so a moving foreground blurs over a still background and a still foreground keeps its
 // edge over a moving one.
 
+#include "core/settings/QualitySettings.h"
 #include "core/settings/Reflect.h"
 
 #include <array>
@@ -38,20 +39,30 @@ inline std::span<const std::string_view> motionBlurPlacementNames() {
 struct MotionBlurSettings {
     bool enabled = false;
     float intensity = 1.0f;
-    int sampleCount = 15;
+    EffectQuality quality = EffectQuality::High;
+    int sampleCount = 0;
     float shutterAngle = 180.0f;
     ShutterSource shutterSource = ShutterSource::Angle;
     float maxBlur = 20.0f;
     int tileSize = 20;
     MotionBlurPlacement placement = MotionBlurPlacement::BeforeTaa;
 
+    /// Samples of the gather: `sampleCount`, or the preset's count when it is 0.
+    [[nodiscard]] int gatherCount() const noexcept {
+        return sampleCount > 0 ? sampleCount : presetCount(quality, {7, 11, 15, 25});
+    }
+
     template <class V>
     void visit(V& v) {
         v.field("enabled", enabled, "turns motion blur on");
         v.field("intensity", intensity, Range{0, 2},
                 "scales the blur's length (1: the length the shutter gives; 0: no blur)");
-        v.field("sampleCount", sampleCount, Range{3, 64},
-                "samples of the gather along the dominant velocity");
+        v.field("quality", quality, effectQualityNames(),
+                "samples of the gather along the dominant velocity: low 7, medium 11, high 15, ultra 25");
+        v.field("sampleCount", sampleCount, Range{0, 64},
+                "samples of the gather; 0: the quality preset's count");
+        v.require(sampleCount == 0 || sampleCount >= 3, "sampleCount",
+                  "must be 0 (the preset's) or at least 3");
         v.field("shutterAngle", shutterAngle, Range{0, 360},
                 "degrees: the shutter's open time as a fraction of the frame interval (360: the whole "
                 "interval; the blur of a point moving m pixels per frame is m x angle / 360 long)");

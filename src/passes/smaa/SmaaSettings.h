@@ -2,6 +2,7 @@
 // SMAA's settings (Jimenez et al. 2012, "SMAA: Enhanced Subpixel Morphological Antialiasing"),
 // selected by aa.mode = smaa or taa+smaa.
 
+#include "core/settings/QualitySettings.h"
 #include "core/settings/Reflect.h"
 
 #include <array>
@@ -10,22 +11,15 @@
 
 namespace photopic {
 
-enum class SmaaQuality { Low, Medium, High, Ultra };
-
-inline std::span<const std::string_view> smaaQualityNames() {
-    static constexpr std::array<std::string_view, 4> kNames{"low", "medium", "high", "ultra"};
-    return kNames;
-}
-
 /// SMAA 1x (Jimenez et al. 2012) on the display-referred image.
 struct SmaaSettings {
-    SmaaQuality quality = SmaaQuality::High;
+    EffectQuality quality = EffectQuality::High;
     float subpixel = 0.33f;
 
     template <class V>
     void visit(V& v) {
         v.field(
-            "quality", quality, smaaQualityNames(),
+            "quality", quality, effectQualityNames(),
             "sMAA preset. The reference presets: luma threshold 0.15 / 0.1 / 0.1 / 0.05, orthogonal search "
             "steps 4 / 8 / 16 / 32, diagonal steps - / - / 8 / 16, corner rounding - / - / 25% / 25%");
         v.field(

@@ -186,7 +186,7 @@ SsrParameters SsrPass::parameters(const FrameContext& ctx, const FrameResources&
     p.roughnessCutoff = s.roughnessCutoff;
     p.edgeFade = s.edgeFade * float(std::min(e.width, e.height));
     p.intensity = s.intensity;
-    p.maxSteps = s.maxSteps;
+    p.maxSteps = s.stepCount();
     p.levels = depthPyramidLevels(e);
     const Extent pyramidSize = depthPyramidExtent(e);
     p.pyramidSize = glm::ivec2(pyramidSize.width, pyramidSize.height);
@@ -194,7 +194,7 @@ SsrParameters SsrPass::parameters(const FrameContext& ctx, const FrameResources&
     p.hasMaterial = resources.texture(Resource::Material) ? 1 : 0;
     p.hasHistory = history(ctx, resources) ? 1 : 0;
     p.hasMotion = resources.texture(Resource::Motion) ? 1 : 0;
-    p.half = s.resolution == SsrResolution::Half ? 1 : 0;
+    p.half = s.halfResolution() ? 1 : 0;
     return p;
 }
 
@@ -283,7 +283,7 @@ const SsrPass::ResolveProgram& SsrPass::resolveProgram(bool motion, bool history
 
 void SsrPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Extent e = ctx.extent;
-    const bool half = ctx.settings.ssr.resolution == SsrResolution::Half;
+    const bool half = ctx.settings.ssr.halfResolution();
     const Extent traceExtent = half ? Extent{(e.width + 1) / 2, (e.height + 1) / 2} : e;
     const Targets t = acquireTargets(e, half, ctx.settings.debug.view == DebugView::Ssr, resources);
     mParameters.update(parameters(ctx, resources, traceExtent));

@@ -30,7 +30,7 @@ VolumetricLightParameters parametersFor(const FrameContext& ctx, Extent half, bo
     p.logDecay = s.decay > 0.0f ? 64.0f * std::log2(s.decay) : -1e30f;
     p.scale = s.intensity * s.weight * s.exposure * sun.fade;
     p.historyWeight = VolumetricLightPass::kHistoryWeight;
-    p.samples = s.samples;
+    p.samples = s.sampleCount();
     p.frame = std::uint32_t(ctx.time.frameIndex % 1024u);
     p.hasHistory = hasHistory ? 1 : 0;
     p.hasMotion = hasMotion ? 1 : 0;
@@ -63,7 +63,7 @@ VolumetricShadowParameters shadowParametersFor(const FrameContext& ctx, Extent l
     p.historyWeight = VolumetricLightPass::kHistoryWeight;
     const float far = camera.farPlane;
     p.skyDepth = std::isinf(far) ? far : far * (1.0f - 1e-4f);
-    p.samples = s.samples;
+    p.samples = s.sampleCount();
     p.frame = std::uint32_t(ctx.time.frameIndex % 1024u);
     p.hasHistory = hasHistory ? 1 : 0;
     p.writeView = writeView ? 1 : 0;
@@ -152,7 +152,7 @@ void VolumetricLightPass::execute(FrameContext& ctx, FrameResources& resources) 
 
 void VolumetricLightPass::shadowMarch(const FrameContext& ctx, const FrameResources& resources,
                                       const Texture& shadowMap, const Texture& raw, Extent low) {
-    const int samples = ctx.settings.volumetricLight.samples;
+    const int samples = ctx.settings.volumetricLight.sampleCount();
     // One depth per texel, `samples` shadow-map lookups (a 2x2 comparison of 4-byte depths, mostly cached),
     // the light and depth out.
     ScopedGpuTimer timer(ctx.timers, "volumetric light march (shadow map)",

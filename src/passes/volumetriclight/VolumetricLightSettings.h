@@ -5,6 +5,7 @@
 // of the older settings files; `weight` and `exposure` are the paper's other two terms. With a sun shadow map
 // from the host, single scattering ray-marched along the view rays instead (`mode`).
 
+#include "core/settings/QualitySettings.h"
 #include "core/settings/Reflect.h"
 
 #include <array>
@@ -40,12 +41,18 @@ struct VolumetricLightSettings {
     float decay = 0.97f;
     float weight = 1.0f;
     float exposure = 0.005f;
-    int samples = 64;
+    EffectQuality quality = EffectQuality::High;
+    int samples = 0;
     VolumetricLightMode mode = VolumetricLightMode::Auto;
     VolumetricLightResolution resolution = VolumetricLightResolution::Half;
     float scattering = 0.02f;
     float anisotropy = 0.6f;
     float maxDistance = 100.0f;
+
+    /// Samples along each ray: `samples`, or the preset's count when it is 0.
+    [[nodiscard]] int sampleCount() const noexcept {
+        return samples > 0 ? samples : presetCount(quality, {16, 32, 64, 128});
+    }
 
     template <class V>
     void visit(V& v) {
@@ -67,9 +74,12 @@ struct VolumetricLightSettings {
                 "the final scale (the paper's `exposure`). The sun's disc dominates the sums: with the "
                 "defaults the testbed's sun (radiance about 8000) adds about 0.2 at a quarter of the image "
                 "height from it and 0.1 at half; a scene with another sun radiance scales it to taste");
-        v.field("samples", samples, Range{4, 256},
-                "samples along each ray (screen: towards the sun; shadowmap: steps along the view ray), a "
-                "dithered start per pixel and frame, accumulated over frames");
+        v.field("quality", quality, effectQualityNames(),
+                "samples along each ray (screen: towards the sun; shadowmap: steps along the view ray): low "
+                "16, medium 32, high 64, ultra 128, a dithered start per pixel and frame, accumulated over "
+                "frames");
+        v.field("samples", samples, Range{0, 256}, "samples along each ray; 0: the quality preset's count");
+        v.require(samples == 0 || samples >= 4, "samples", "must be 0 (the preset's) or at least 4");
         v.field("mode", mode, volumetricLightModeNames(),
                 "screen: radial rays from the sun on screen; shadowmap: single scattering marched along the "
                 "view rays against the host's sun shadow map, where `density` multiplies `scattering`, "
