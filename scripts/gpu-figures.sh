@@ -15,8 +15,12 @@
 #                                 motion blur, outline, volumetric light): the 3D chain's per-pass times
 #   gtao-PRESET-SIZE.*            queued, GTAO alone at each preset (low, medium, high, ultra)
 #   gtao-PRESET-mips-SIZE.*       the same with ssao.sampleMips (far steps from the surface pyramid)
-#   3d-EFFECT-SIZE.*              queued, each other 3D effect alone (contact shadows, SSR, volumetric light,
-#                                 DoF, motion blur, outline)
+#   3d-EFFECT-PRESET-SIZE.*       queued, each other 3D effect alone at each of its presets (contact shadows,
+#                                 SSR, volumetric light and motion blur: low, medium, high, ultra; DoF: low,
+#                                 medium, high; SMAA: low, high, ultra); SSR over the frame's floor (--floor),
+#                                 motion blur on a moving frame (--motion 8), DoF with every pixel far-blurred
+#   3d-outline-SIZE.*             queued, the outline alone
+#   3d-taa-FILTER-SIZE.*          queued, TAA alone with each history filter (catmull-rom, bilinear)
 #   cli.txt                       `photopic image` over a 1080p EXR sequence (AE + bloom + ACES): wall time and,
 #                                 from -v, the median milliseconds a frame spends in each stage
 # Usage: scripts/gpu-figures.sh OUT PHOTOPIC...   PHOTOPIC is the command that runs photopic (a path, or a
@@ -91,8 +95,28 @@ for size in "${sizes[@]}"; do
         bench "gtao-$preset-mips-$size" --size "$size" --queue-ahead --set ssao.enabled=true \
             --set ssao.quality="$preset" --set ssao.sampleMips=true
     done
-    for effect in contactShadows ssr volumetricLight dof motionBlur outline; do
-        bench "3d-$effect-$size" --size "$size" --queue-ahead --set "$effect.enabled=true"
+    # The frame as each effect needs it to do its work: SSR over a floor (long rays), motion blur (and TAA)
+    # on a moving frame, depth of field with every pixel far-blurred.
+    for effect in contactShadows ssr volumetricLight motionBlur; do
+        frame=()
+        [ "$effect" = ssr ] && frame=(--floor)
+        [ "$effect" = motionBlur ] && frame=(--motion 8)
+        for preset in low medium high ultra; do
+            bench "3d-$effect-$preset-$size" --size "$size" --queue-ahead "${frame[@]}" \
+                --set "$effect.enabled=true" --set "$effect.quality=$preset"
+        done
+    done
+    for preset in low medium high; do
+        bench "3d-dof-$preset-$size" --size "$size" --queue-ahead --set dof.enabled=true --set dof.quality="$preset" \
+            --set dof.mode=artistic --set dof.focalDistance=2 --set dof.bokehRadius=8
+    done
+    for preset in low high ultra; do
+        bench "3d-smaa-$preset-$size" --size "$size" --queue-ahead --set aa.mode=smaa --set smaa.quality="$preset"
+    done
+    bench "3d-outline-$size" --size "$size" --queue-ahead --set outline.enabled=true
+    for filter in catmull-rom bilinear; do
+        bench "3d-taa-$filter-$size" --size "$size" --queue-ahead --motion 8 --set aa.mode=taa \
+            --set taa.historyFilter="$filter"
     done
 done
 echo "== cli"

@@ -33,6 +33,11 @@ struct BenchOptions {
     /// hold the GPU's own work and not its waits for the CPU (QueueAhead.h).
     bool queueAhead = false;
     std::string scene; ///< "" (the pipeline on a synthetic or --input frame) or "canvas" (its shading paths)
+    /// Pixels a frame of uniform horizontal motion in the 3D frame's motion vectors (0: a still frame, on
+    /// which motion blur gathers on no tile).
+    float motion = 0.0f;
+    /// The 3D frame's lower part is a floor that meets the wall (screen-space reflections' long rays).
+    bool floor = false;
 };
 
 /// `--scene canvas`: the canvas scene's tiled shading (specular + sparkle only on tiles with material,

@@ -44,12 +44,23 @@ BenchCommand::BenchCommand(CLI::App& parent)
     cmd.add_option("--scene", o.scene,
                    "canvas (the only one): time the canvas scene's tiled and full-screen shading paths "
                    "instead (--set canvas.KEY=VALUE, e.g. canvas.occupancy=0.3, the default)");
+    cmd.add_option(
+           "--motion", o.motion,
+           "PX: the 3D frame's motion vectors move every pixel PX pixels a frame to the right (0, the "
+           "default: a still frame, on which motion blur's gather runs on no tile)")
+        ->check(CLI::Range(0.0, 256.0))
+        ->capture_default_str();
+    cmd.add_flag("--floor", o.floor,
+                 "the 3D frame's lower part is a floor meeting the wall (about a third of the image at 60 "
+                 "degrees' field of view): screen-space reflections from it cross the screen, where the "
+                 "wall's leave it within a few pixels");
     addSettingsOptions(&cmd, o.settings, "the defaults (realtime)");
     addMaxPixelsOption(&cmd, o.maxPixels);
     cmd.footer("Examples:\n"
                "  photopic bench --size 1920x1080 --frames 100\n"
                "  photopic bench --input data/Desk.exr --json timings.json\n"
                "  photopic bench --input data/GoldenGate.exr --size 3840x2160 --queue-ahead\n"
+               "  photopic bench --size 1920x1080 --motion 8 --set motionBlur.enabled=true\n"
                "  photopic bench --scene canvas --set canvas.occupancy=0.3");
 }
 
@@ -66,6 +77,9 @@ int BenchCommand::run() {
 int BenchCommand::runCanvas() const {
     if (mOptions.queueAhead) {
         throw InputError("bench --scene canvas: --queue-ahead times the pipeline's chain only");
+    }
+    if (mOptions.motion != 0.0f || mOptions.floor) {
+        throw InputError("bench --scene canvas: --motion and --floor change the pipeline's 3D frame only");
     }
     if (mOptions.scene != "canvas") {
         throw InputError(

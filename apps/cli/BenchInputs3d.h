@@ -8,9 +8,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cmath>
+
 namespace photopic::cli {
 
-/// Depth (R32F linear), view-space normals (RGBA16F, facing the camera), motion (RG16F, zero), a camera, a
+/// Depth (R32F linear), view-space normals (RGBA16F, facing the camera), motion (RG16F: zero, or a uniform
+/// motion to the right), a camera, a
 /// sun and a sun shadow map for the benchmark frame: a wall 10 units away. The shadow map (1024 texels,
 /// 32-bit float depth) is synthetic: an orthographic sun view 40 units across over the space between the
 /// camera and the wall, with square casters of 64 texels in a checkerboard halfway along the light's depth,
@@ -19,7 +22,11 @@ class BenchInputs3d {
 public:
     /// `sunInView`: the sun ahead of the camera, near the image's centre, so volumetric light marches every
     /// sample of every pixel (its worst case); else behind it (contact shadows' worst case, see frame()).
-    BenchInputs3d(int width, int height, bool sunInView)
+    /// `motionPixels`: every pixel moves this many pixels a frame to the right (0: a still frame).
+    /// `floor`: the lower part of the image is a floor kFloorDrop below the camera, its normal up, that meets
+    /// the wall: mirror rays from it run up the screen towards the wall (screen-space reflections' long
+    /// rays; the wall's rays leave the screen within a few cells).
+    BenchInputs3d(int width, int height, bool sunInView, float motionPixels = 0.0f, bool floor = false)
         : mSunDirection(sunInView ? glm::normalize(glm::vec3(0.05f, 0.03f, -1.0f))
                                   : glm::normalize(glm::vec3(0.3f, 0.5f, 0.8f)))
         , mDepth({.extent = {width, height}, .format = GL_R32F, .debugName = "bench depth"})
@@ -30,12 +37,27 @@ public:
                       .debugName = "bench sun shadow map"}) {
         const float depth = 10.0f;
         glClearTexImage(mDepth.id(), 0, GL_RED, GL_FLOAT, &depth);
-        const float zero[2] = {0.0f, 0.0f};
-        glClearTexImage(mMotion.id(), 0, GL_RG, GL_FLOAT, zero);
+        // uv_prev = uv - motion: a pixel that moved right came from the left.
+        const float motion[2] = {motionPixels / float(width), 0.0f};
+        glClearTexImage(mMotion.id(), 0, GL_RG, GL_FLOAT, motion);
         const float facing[4] = {0.0f, 0.0f, 1.0f, 0.0f};
         glClearTexImage(mNormals.id(), 0, GL_RGBA, GL_FLOAT, facing);
         mCamera.projection = perspectiveProjection(mCamera.verticalFov, float(width) / float(height),
                                                    mCamera.nearPlane, mCamera.farPlane);
+        if (floor) {
+            // Row 0 is the image's bottom. A row's view ray (per unit of depth) falls by -ndcY * tan(fov /
+            // 2); the floor is where it reaches kFloorDrop before the wall's depth.
+            const float tanHalf = std::tan(0.5f * mCamera.verticalFov);
+            const float up[4] = {0.0f, 1.0f, 0.0f, 0.0f};
+            for (int y = 0; y < height; ++y) {
+                const float fall = -((2.0f * float(y) + 1.0f) / float(height) - 1.0f) * tanHalf;
+                const float floorDepth = fall > 0.0f ? kFloorDrop / fall : depth;
+                if (floorDepth < depth) {
+                    glClearTexSubImage(mDepth.id(), 0, 0, y, 0, width, 1, 1, GL_RED, GL_FLOAT, &floorDepth);
+                    glClearTexSubImage(mNormals.id(), 0, 0, y, 0, width, 1, 1, GL_RGBA, GL_FLOAT, up);
+                }
+            }
+        }
         mCamera.prevViewProjection = mCamera.viewProjection();
         std::vector<float> casters(std::size_t(kShadowMapSize) * kShadowMapSize);
         for (int y = 0; y < kShadowMapSize; ++y) {
@@ -65,6 +87,7 @@ public:
 
 private:
     static constexpr int kShadowMapSize = 1024;
+    static constexpr float kFloorDrop = 1.5f; ///< the floor's distance below the camera, scene units
     glm::vec3 mSunDirection;
     Texture mDepth;
     Texture mNormals;

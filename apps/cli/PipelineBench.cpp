@@ -72,12 +72,12 @@ void PipelineBench::prepare() {
     mInput.emplace(
         makeTexture(mImage, "bench input", mOptions.inputFormat == "rgba16f" ? GL_RGBA16F : GL_RGBA32F));
     // 3D inputs for the passes that need them (TAA; contact shadows in the lighting stage): a wall 10 units
-    // away, still, seen by a still camera. The sequencer runs nothing on them unless such a pass is on, so
-    // the 2D chain's figures are unchanged.
-    // Volumetric light alone: its worst case. With contact shadows too, theirs (the sun behind the camera,
-    // where volumetric light does no work).
+    // away seen by a still camera, still unless --motion moves it. The sequencer runs nothing on them unless
+    // such a pass is on, so the 2D chain's figures are unchanged. Volumetric light alone: its worst case.
+    // With contact shadows too, theirs (the sun behind the camera, where volumetric light does no work).
     mInputs3d.emplace(mImage.width, mImage.height,
-                      mSettings.volumetricLight.enabled && !mSettings.contactShadows.enabled);
+                      mSettings.volumetricLight.enabled && !mSettings.contactShadows.enabled, mOptions.motion,
+                      mOptions.floor);
     mInputs = mInputs3d->frame(*mInput);
     // The line is drawn between frames, never inside a timed pass or the whole-frame pair of timestamps.
     mProgress.emplace("bench", std::size_t(mOptions.warmup) + 2 * std::size_t(mOptions.frames));
@@ -222,6 +222,8 @@ void PipelineBench::writeJson() const {
         {"frameMedianGpuMs", mWholeFrameMs},
         {"totalBytesMoved", mTable.totalBytes},
         {"sync", mOptions.sync},
+        {"motionPixels", mOptions.motion},
+        {"floor", mOptions.floor},
         {"cpuSubmitMedianMs", median(mSubmitMs)},
     };
     if (mAhead) {

@@ -23,6 +23,20 @@ for pass in "motion blur prepare" "motion blur tile max" "motion blur neighbour 
     check "bench lists '$pass'" contains "$pass"
 done
 
+# --motion moves the bench's 3D frame, so the gather has moving tiles to blur; the JSON records it.
+expect 0 "bench of a moving frame at a preset" -- "$PHOTOPIC" bench --size 128x72 --frames 2 --motion 6 \
+    --set motionBlur.enabled=true --set motionBlur.quality=low --json "$S/moving.json"
+check "the motion is in the JSON" python3 -c "import json,sys; \
+sys.exit(0 if json.load(open('$S/moving.json'))['motionPixels'] == 6 else 1)"
+expect 2 "motion out of range is refused" -- "$PHOTOPIC" bench --size 64x64 --frames 1 --motion -1
+check "the option is named" contains "--motion"
+expect 2 "the canvas bench has no 3D frame to move" -- "$PHOTOPIC" bench --scene canvas --size 64x64 --frames 1 \
+    --motion 4
+check "the refusal says why" contains "--motion and --floor change the pipeline's 3D frame only"
+expect 2 "an unknown preset names the key" -- "$PHOTOPIC" scene testbed -o "$S/bad4" --frames 1 --size 32x18 \
+    --set motionBlur.quality=extreme
+check "the key is named (quality)" contains "motionBlur.quality"
+
 expect 2 "maxBlur longer than a tile" -- "$PHOTOPIC" scene testbed -o "$S/bad" --frames 1 --size 32x18 \
     --set motionBlur.maxBlur=40
 check "the key is named" contains "motionBlur.maxBlur"
