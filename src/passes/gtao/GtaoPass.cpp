@@ -5,13 +5,23 @@
 #include <algorithm>
 
 namespace photopic {
+namespace {
+
+/// `defines` and the pyramid's level count, which every GTAO program's surface header reads (the host sizes
+/// the image by the same constant).
+ShaderDefines gtaoDefines(ShaderDefines defines) {
+    defines.push_back({"GTAO_SURFACE_LEVELS", std::to_string(GtaoPass::kSurfaceLevels)});
+    return defines;
+}
+
+} // namespace
 
 GtaoPass::GtaoPass(Stage stage)
     : mStage(stage)
-    , mDenoiseFull(
-          makeComputeProgram("passes/gtao/gtao_denoise.comp.glsl", bindingDefines({{"GTAO_SCALE", "1"}})))
-    , mDenoiseHalf(
-          makeComputeProgram("passes/gtao/gtao_denoise.comp.glsl", bindingDefines({{"GTAO_SCALE", "2"}})))
+    , mDenoiseFull(makeComputeProgram("passes/gtao/gtao_denoise.comp.glsl",
+                                      bindingDefines(gtaoDefines({{"GTAO_SCALE", "1"}}))))
+    , mDenoiseHalf(makeComputeProgram("passes/gtao/gtao_denoise.comp.glsl",
+                                      bindingDefines(gtaoDefines({{"GTAO_SCALE", "2"}}))))
     , mParameters("gtao parameters") {}
 
 std::span<const ResourceUse> GtaoPass::uses() const {
@@ -101,7 +111,8 @@ const Texture& GtaoPass::packSurface(FrameContext& ctx, FrameResources& resource
     // With the coarse levels, their texels (under a third of level 0's) are written besides.
     ScopedGpuTimer timer(ctx.timers, "gtao surface",
                          double(e.width) * e.height * (4 + 8 + 8 + (mips ? 8.0 / 3.0 : 0.0)));
-    const PrepareProgram& p = mPrepare.get(mips ? 1 : 0, {{"GTAO_SAMPLE_MIPS", mips ? "1" : "0"}});
+    const PrepareProgram& p =
+        mPrepare.get(mips ? 1 : 0, gtaoDefines({{"GTAO_SAMPLE_MIPS", mips ? "1" : "0"}}));
     p.program.use();
     bind(p.depth, *resources.texture(Resource::LinearDepth), ImageAccess::Read);
     bind(p.normals, *resources.texture(Resource::Normals));
@@ -120,10 +131,10 @@ Extent GtaoPass::surfacePyramidExtent(Extent full) noexcept {
 const GtaoPass::SearchProgram& GtaoPass::searchProgram(EffectQuality quality, int scale, bool mips) {
     const glm::ivec2 tier = slicesAndSteps(quality);
     return mSearch.get((std::size_t(quality) * 2 + std::size_t(scale - 1)) * 2 + (mips ? 1 : 0),
-                       {{"GTAO_SLICES", std::to_string(tier.x)},
-                        {"GTAO_STEPS", std::to_string(tier.y)},
-                        {"GTAO_SCALE", std::to_string(scale)},
-                        {"GTAO_SAMPLE_MIPS", mips ? "1" : "0"}});
+                       gtaoDefines({{"GTAO_SLICES", std::to_string(tier.x)},
+                                    {"GTAO_STEPS", std::to_string(tier.y)},
+                                    {"GTAO_SCALE", std::to_string(scale)},
+                                    {"GTAO_SAMPLE_MIPS", mips ? "1" : "0"}}));
 }
 
 void GtaoPass::search(const Texture& surface, const Texture& raw, EffectQuality quality, int scale, bool mips,

@@ -64,8 +64,11 @@ public:
     /// Sets `p`'s texel-to-view constants from its projection and full size: a texel's view xy at linear
     /// depth z is (texel scale + bias) w + z depthScale + viewOffset, w = P[3][3] - P[2][3] z.
     static void texelToView(GtaoParameters& p) noexcept;
-    /// The coarse levels above the full-resolution surface (ssao.sampleMips; gtao_pyramid.h.glsl).
+    /// The coarse levels above the full-resolution surface (ssao.sampleMips): sizes the image and reaches the
+    /// shaders as GTAO_SURFACE_LEVELS (gtao_pyramid.h.glsl). At most 4: a pixel's place in its block rides in
+    /// 4 bits an axis.
     static constexpr int kSurfaceLevels = 4;
+    static_assert(kSurfaceLevels >= 1 && kSurfaceLevels <= 4);
     /// The surface texture's extent for a `full`-sized frame with the coarse levels: level 0 and, to its
     /// right, levels 1-4 one below the other.
     [[nodiscard]] static Extent surfacePyramidExtent(Extent full) noexcept;

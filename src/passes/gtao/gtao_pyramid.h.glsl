@@ -11,7 +11,10 @@
 // the pixel's position without working the hash out again. The sky's texels keep their bits (+inf, not NaN).
 // The pixel is decimated, not filtered (XeGTAO averages depths): the search's tangent-plane cut needs a depth
 // and a normal of the same point.
-const int kSurfaceLevels = 4; // coarse levels above level 0
+#ifndef GTAO_SURFACE_LEVELS
+#error GTAO_SURFACE_LEVELS: the coarse levels above level 0, from the host (GtaoPass::kSurfaceLevels)
+#endif
+const int kSurfaceLevels = GTAO_SURFACE_LEVELS;
 
 ivec2 surfaceLevelOrigin(int level, ivec2 full) {
     // Bands of the height rounded up to 16 rows, halved level by level: level L starts at the band's
