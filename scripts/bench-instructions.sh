@@ -4,7 +4,7 @@
 # runs. The count is that of a 12-frame run minus that of a 2-frame run, divided by 10, after a 1-frame run that
 # fills Mesa's shader cache, so start-up and shader compilation drop out; it covers both of the bench's loops
 # (per pass and whole frame) and its copy reference, the same work for any two builds being compared.
-# Usage: scripts/bench-instructions.sh PHOTOPIC [bench options...]   (default size 480x270)
+# Usage: scripts/bench-instructions.sh PHOTOPIC [bench options...]   (default size 480x270; an --input at its own)
 # Needs valgrind (Debian package valgrind); about a minute per build at the default size.
 set -euo pipefail
 if [ $# -lt 1 ]; then
@@ -18,7 +18,7 @@ if ! command -v valgrind > /dev/null; then
     exit 2
 fi
 args=("$@")
-if [[ " $* " != *" --size "* && " $* " != *" --size="* ]]; then
+if [[ " $* " != *" --size "* && " $* " != *" --size="* && " $* " != *" --input "* ]]; then
     args=(--size 480x270 "$@")
 fi
 count() {

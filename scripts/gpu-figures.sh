@@ -21,12 +21,15 @@
 #                                 motion blur on a moving frame (--motion 8), DoF with every pixel far-blurred
 #   3d-outline-SIZE.*             queued, the outline alone
 #   3d-taa-FILTER-SIZE.*          queued, TAA alone with each history filter (catmull-rom, bilinear)
+#   cycles-EFFECT-PRESET.*        with CYCLES set (a folder scripts/bench-cycles.sh rendered: CYCLES/passes/
+#                                 frame_0003.exr and CYCLES/track.json), each 3D effect at each preset on that
+#                                 Cycles frame's own depth, normals, motion and camera
 #   cli.txt                       `photopic image` over a 1080p EXR sequence (AE + bloom + ACES): wall time and,
 #                                 from -v, the median milliseconds a frame spends in each stage
 # Usage: scripts/gpu-figures.sh OUT PHOTOPIC...   PHOTOPIC is the command that runs photopic (a path, or a
 # wrapper and its arguments). Environment: GL_TESTS (the command that runs photopic_gl_tests; unset: skipped),
 # FRAMES (timed bench frames, 200), SIZES ("1920x1080 3840x2160"), SEQ_FRAMES (48), SEQ_SIZE
-# (1920x1080), NATURAL (data/GoldenGate.exr: run from the repository's root). On a software renderer, FRAMES=3 SIZES=320x180 SEQ_FRAMES=4 SEQ_SIZE=320x180 checks
+# (1920x1080), NATURAL (data/GoldenGate.exr: run from the repository's root), CYCLES (unset: skipped). On a software renderer, FRAMES=3 SIZES=320x180 SEQ_FRAMES=4 SEQ_SIZE=320x180 checks
 # that the script runs; its figures mean nothing there.
 set -uo pipefail
 if [ $# -lt 2 ]; then
@@ -119,6 +122,14 @@ for size in "${sizes[@]}"; do
             --set taa.historyFilter="$filter"
     done
 done
+if [ -n "${CYCLES:-}" ]; then
+    for effect in ssao contactShadows ssr volumetricLight motionBlur; do
+        for preset in low medium high ultra; do
+            bench "cycles-$effect-$preset" --input "$CYCLES/passes/frame_0003.exr" --camera "$CYCLES/track.json" \
+                --queue-ahead --set "$effect.enabled=true" --set "$effect.quality=$preset"
+        done
+    done
+fi
 echo "== cli"
 seq_dir=$(mktemp -d)
 trap 'rm -rf "$seq_dir"' EXIT

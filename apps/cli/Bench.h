@@ -38,6 +38,8 @@ struct BenchOptions {
     float motion = 0.0f;
     /// The 3D frame's lower part is a floor that meets the wall (screen-space reflections' long rays).
     bool floor = false;
+    /// A camera track for an EXR --input's 3D layers (as `photopic image --camera`).
+    std::filesystem::path camera;
 };
 
 /// `--scene canvas`: the canvas scene's tiled shading (specular + sparkle only on tiles with material,

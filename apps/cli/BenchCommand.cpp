@@ -54,6 +54,10 @@ BenchCommand::BenchCommand(CLI::App& parent)
                  "the 3D frame's lower part is a floor meeting the wall (about a third of the image at 60 "
                  "degrees' field of view): screen-space reflections from it cross the screen, where the "
                  "wall's leave it within a few pixels");
+    cmd.add_option("--camera", o.camera,
+                   "camera JSON for an EXR --input whose 3D layers (depth, normals, motion) have no camera "
+                   "attributes: one camera or a track by frame number, as `photopic image --camera` takes")
+        ->check(CLI::ExistingFile);
     addSettingsOptions(&cmd, o.settings, "the defaults (realtime)");
     addMaxPixelsOption(&cmd, o.maxPixels);
     cmd.footer("Examples:\n"
@@ -61,6 +65,7 @@ BenchCommand::BenchCommand(CLI::App& parent)
                "  photopic bench --input data/Desk.exr --json timings.json\n"
                "  photopic bench --input data/GoldenGate.exr --size 3840x2160 --queue-ahead\n"
                "  photopic bench --size 1920x1080 --motion 8 --set motionBlur.enabled=true\n"
+               "  photopic bench --input render/frame_0003.exr --camera track.json --set ssao.enabled=true\n"
                "  photopic bench --scene canvas --set canvas.occupancy=0.3");
 }
 

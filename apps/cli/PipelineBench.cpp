@@ -7,6 +7,10 @@
 
 #include "PipelineBench.h"
 
+#include "CameraJson.h"
+#include "InputSequence.h"
+
+#include "core/HalfFloat.h"
 #include "gl/Capabilities.h"
 #include "gl/TextureIo.h"
 #include "io/ImageIO.h"
@@ -36,6 +40,39 @@ ImageF benchInput(const BenchOptions& options) {
     return readInput(options.input, options.maxPixels);
 }
 
+/// An EXR --input at its own size, decoded as `photopic image` decodes it (channels by the file's layout,
+/// the camera from its attributes or --camera's track): its 3D layers feed the 3D effects when it has depth
+/// and a camera. Nothing for another input, or one mirrored to --size.
+std::optional<DecodedFrame> decodeRendererFrame(const BenchOptions& o) {
+    if (o.input.empty() || o.sizeGiven || !isExr(o.input)) {
+        if (!o.camera.empty()) {
+            throw InputError(
+                "bench --camera: the camera of an EXR --input's 3D layers, which run at the file's "
+                "own size (without --size)");
+        }
+        return std::nullopt;
+    }
+    InputDecoder decoder(o.camera.empty() ? std::nullopt
+                                          : std::optional<CameraTrack>(loadCameraTrack(o.camera)),
+                         0, o.maxPixels);
+    decoder.setFrameNumbers(inputFrameNumbers({InputFile{.path = o.input, .frame = std::nullopt}}));
+    return decoder.decode(o.input);
+}
+
+/// The frame's colour as floats (an EXR of half channels decodes to halves), a copy: the frame keeps its
+/// own for the upload of its 3D layers.
+ImageF colourOf(const DecodedFrame& frame) {
+    if (!frame.halfColor()) {
+        return frame.color;
+    }
+    ImageF image;
+    image.width = frame.colorHalves.width;
+    image.height = frame.colorHalves.height;
+    image.rgba.resize(frame.colorHalves.rgba.size());
+    halfToFloat(frame.colorHalves.rgba.data(), image.rgba.data(), image.rgba.size());
+    return image;
+}
+
 } // namespace
 
 int PipelineBench::run() {
@@ -58,7 +95,19 @@ void PipelineBench::prepare() {
     if (mOptions.frames < 1) {
         throw InputError("--frames must be at least 1");
     }
-    mImage = benchInput(mOptions);
+    if (std::optional<DecodedFrame> file = decodeRendererFrame(mOptions)) {
+        mImage = colourOf(*file);
+        if (!file->depth.empty() && file->camera) {
+            if (mOptions.motion != 0.0f || mOptions.floor) {
+                throw InputError(fmt::format("bench: --motion and --floor shape the synthetic 3D frame; {} "
+                                             "brings its own depth, normals and camera",
+                                             mOptions.input.string()));
+            }
+            mFile3d = std::move(file);
+        }
+    } else {
+        mImage = benchInput(mOptions);
+    }
     mContext.emplace(commandContext());
     if (!mOptions.input.empty()) {
         requireTextureFits(mOptions.input, mImage.width, mImage.height);
@@ -75,10 +124,19 @@ void PipelineBench::prepare() {
     // away seen by a still camera, still unless --motion moves it. The sequencer runs nothing on them unless
     // such a pass is on, so the 2D chain's figures are unchanged. Volumetric light alone: its worst case.
     // With contact shadows too, theirs (the sun behind the camera, where volumetric light does no work).
-    mInputs3d.emplace(mImage.width, mImage.height,
-                      mSettings.volumetricLight.enabled && !mSettings.contactShadows.enabled, mOptions.motion,
-                      mOptions.floor);
-    mInputs = mInputs3d->frame(*mInput);
+    if (mFile3d) {
+        // A renderer's frame: its depth, normals, motion, camera and sun (no shadow map), the colour as the
+        // bench uploaded it.
+        mFileTextures.emplace();
+        mInputs = mFileTextures->upload(*mFile3d);
+        mInputs.color = &*mInput;
+        mFile3d.reset();
+    } else {
+        mInputs3d.emplace(mImage.width, mImage.height,
+                          mSettings.volumetricLight.enabled && !mSettings.contactShadows.enabled,
+                          mOptions.motion, mOptions.floor);
+        mInputs = mInputs3d->frame(*mInput);
+    }
     // The line is drawn between frames, never inside a timed pass or the whole-frame pair of timestamps.
     mProgress.emplace("bench", std::size_t(mOptions.warmup) + 2 * std::size_t(mOptions.frames));
 }
@@ -137,6 +195,14 @@ void PipelineBench::printSetup() const {
                 mImage.height, imageFormatName(mInput->format()).c_str(), inputName().c_str(),
                 mirrored() ? ", mirrored to this size" : "", mOptions.frames, mOptions.warmup,
                 info.renderer.c_str());
+    if (mFileTextures) {
+        std::printf("3D inputs: the file's (depth%s%s, camera%s)\n", mInputs.normals ? ", normals" : "",
+                    mInputs.motion ? ", motion" : "", mInputs.sunDirection ? ", sun" : "; no sun");
+    } else {
+        std::printf("3D inputs: synthetic (a wall%s, %s)\n", mOptions.floor ? " and a floor" : "",
+                    mOptions.motion != 0.0f ? fmt::format("moving {} px a frame", mOptions.motion).c_str()
+                                            : "still");
+    }
     std::printf("colour path: %s (%s), quality %s, bloom levels %d\n",
                 t.path == ColorPath::Hdr ? "HDR" : "LDR", t.pathReason.c_str(),
                 std::string(qualityNames()[std::size_t(t.quality)]).c_str(), t.bloomLevels);
@@ -224,6 +290,7 @@ void PipelineBench::writeJson() const {
         {"sync", mOptions.sync},
         {"motionPixels", mOptions.motion},
         {"floor", mOptions.floor},
+        {"inputs3d", inputs3dName()},
         {"cpuSubmitMedianMs", median(mSubmitMs)},
     };
     if (mAhead) {

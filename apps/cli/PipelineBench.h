@@ -6,6 +6,7 @@
 #include "Bench.h"
 #include "BenchInputs3d.h"
 #include "CopyReference.h"
+#include "ImageInputs.h"
 #include "PassTable.h"
 #include "Progress.h"
 #include "QueueAhead.h"
@@ -49,6 +50,8 @@ private:
     /// "synthetic", or the --input file (mirrored to the frame's size when --size was given).
     [[nodiscard]] std::string inputName() const;
     [[nodiscard]] bool mirrored() const { return !mOptions.input.empty() && mOptions.sizeGiven; }
+    /// "file" (an EXR --input's depth, normals, motion and camera) or "synthetic" (BenchInputs3d).
+    [[nodiscard]] const char* inputs3dName() const { return mFileTextures ? "file" : "synthetic"; }
 
     const BenchOptions& mOptions;
     Settings mSettings;
@@ -57,6 +60,8 @@ private:
     std::unique_ptr<Pipeline> mPipeline;
     std::optional<Texture> mInput;
     std::optional<BenchInputs3d> mInputs3d;
+    std::optional<DecodedFrame> mFile3d;        ///< an EXR --input with depth and a camera, until uploaded
+    std::optional<InputTextures> mFileTextures; ///< its 3D layers on the GPU
     FrameInputs mInputs;
     std::uint64_t mFrame = 0;
     std::optional<Progress> mProgress;

@@ -68,6 +68,25 @@ sys.exit(0 if json.load(open('$S/default.json'))['input'] == 'synthetic' else 1)
 expect 2 "a bad size with an image is bad input" -- "$PHOTOPIC" bench --input "$DATA/GoldenGate.exr" --size 2x2
 check "the size is named" contains "size '2x2'"
 expect 2 "an input format the bench does not make is refused" -- "$PHOTOPIC" bench --size 64x64 --input-format rgb9e5
+# A renderer's EXR at its own size brings its own 3D layers: Cycles' depth, normals and motion of the committed
+# Blender render, its camera from the exported track.
+BLENDER="$(cd "$(dirname "$0")/../data/blender" && pwd)"
+expect 0 "bench on a Cycles frame's own 3D layers" -- "$PHOTOPIC" bench --input "$BLENDER/passes/frame_0003.exr" \
+    --camera "$BLENDER/track.json" --frames 1 --warmup 0 --set ssao.enabled=true --set contactShadows.enabled=true \
+    --json "$S/cycles.json"
+check "the file's layers are named" contains "3D inputs: the file's (depth, normals, motion, camera, sun)"
+check "the JSON says the 3D inputs are the file's, at its size, and GTAO ran on them" python3 -c "import json,sys; \
+d=json.load(open('$S/cycles.json')); n=[p['name'] for p in d['passes']]; \
+sys.exit(0 if d['inputs3d'] == 'file' and (d['width'], d['height']) == (320, 180) and 'gtao' in n \
+and 'contact shadows' in n else 1)"
+check "the synthetic frame says so" python3 -c "import json,sys; \
+sys.exit(0 if json.load(open('$S/default.json'))['inputs3d'] == 'synthetic' else 1)"
+expect 2 "--camera with a colour mirrored to --size is refused" -- "$PHOTOPIC" bench \
+    --input "$BLENDER/passes/frame_0003.exr" --camera "$BLENDER/track.json" --size 640x360 --frames 1
+check "the refusal names --camera" contains "bench --camera"
+expect 2 "--floor on a frame with its own 3D layers is refused" -- "$PHOTOPIC" bench \
+    --input "$BLENDER/passes/frame_0003.exr" --camera "$BLENDER/track.json" --floor --frames 1
+check "the refusal names the file" contains "frame_0003.exr brings its own depth, normals and camera"
 # --queue-ahead: untimed busy work before each timed frame and reference (the frames, both copies, the
 # reduction, the whole frame); the report says on how many the GPU was still on it when the frame had been
 # submitted (none on llvmpipe, which runs a dispatch when it is issued).

@@ -3,7 +3,10 @@
 Run (Blender 3.4, factory settings so that no user preference leaks in):
 
     blender -b --factory-startup --python tests/interop/blender/scene.py -- \
-        --out DIR [--variant passes|dof|mblur|all] [--frames A-B]
+        --out DIR [--variant passes|dof|mblur|all] [--frames A-B] [--size WxH] [--samples N]
+
+(--size and --samples, 320x180 and 128 by default, let scripts/bench-cycles.sh render the same scene as
+benchmark input at a frame's real size; the tests keep the defaults.)
 
 What it makes (Blender's Z-up world, metres):
 
@@ -71,7 +74,17 @@ def parse_args():
     p.add_argument("--out", required=True, help="output folder")
     p.add_argument("--variant", default="all", choices=("passes", "dof", "mblur", "all"))
     p.add_argument("--frames", default="2-3", help="frame range A-B for 'passes' (default 2-3)")
+    p.add_argument("--size", default="%dx%d" % (RES_X, RES_Y), help="WxH (default %dx%d)" % (RES_X, RES_Y))
+    p.add_argument("--samples", type=int, default=SAMPLES, help="Cycles samples (default %d)" % SAMPLES)
     args = p.parse_args(argv)
+    try:
+        args.width, args.height = (int(x) for x in args.size.split("x"))
+        if args.width < 1 or args.height < 1:
+            raise ValueError
+    except ValueError:
+        p.error("--size must be WxH with positive integers, not %r" % args.size)
+    if args.samples < 1:
+        p.error("--samples must be at least 1, not %d" % args.samples)
     try:
         a, b = (int(x) for x in args.frames.split("-"))
         if a > b:
@@ -195,17 +208,17 @@ def build_lighting():
     bpy.context.scene.world = world
 
 
-def configure_render(scene):
+def configure_render(scene, width=RES_X, height=RES_Y, samples=SAMPLES):
     r = scene.render
     r.engine = "CYCLES"
-    r.resolution_x, r.resolution_y, r.resolution_percentage = RES_X, RES_Y, 100
+    r.resolution_x, r.resolution_y, r.resolution_percentage = width, height, 100
     r.fps, r.fps_base = FPS, 1.0
     r.film_transparent = False
     r.use_motion_blur = False
     r.motion_blur_shutter = 0.5
     c = scene.cycles
     c.device = "CPU"
-    c.samples = SAMPLES
+    c.samples = samples
     c.use_adaptive_sampling = False
     c.use_denoising = False
     c.seed = SEED
@@ -260,7 +273,7 @@ def main():
     build_mover()
     build_camera(focus)
     build_lighting()
-    configure_render(scene)
+    configure_render(scene, args.width, args.height, args.samples)
     scene.frame_set(args.first)
     bpy.ops.wm.save_as_mainfile(filepath=os.path.join(out_dir, "scene.blend"))
 
