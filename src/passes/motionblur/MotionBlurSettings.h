@@ -60,7 +60,7 @@ struct MotionBlurSettings {
         v.field("quality", quality, effectQualityNames(),
                 "samples of the gather along the dominant velocity: low 7, medium 11, high 15, ultra 25");
         v.field("sampleCount", sampleCount, Range{0, 64},
-                "samples of the gather; 0: the quality preset's count");
+                "samples of the gather (at least 3); 0: the quality preset's count");
         v.require(sampleCount == 0 || sampleCount >= 3, "sampleCount",
                   "must be 0 (the preset's) or at least 3");
         v.field("shutterAngle", shutterAngle, Range{0, 360},

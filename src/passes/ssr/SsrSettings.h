@@ -71,7 +71,8 @@ struct SsrSettings {
                 "the reflected object is partly off screen");
         v.field("resolution", resolution, ssrResolutionNames(),
                 "the trace's resolution (the resolve and composite run at full resolution): full, half (one "
-                "ray per 2 x 2 pixels, shared by the four), or preset: the quality preset's");
+                "ray per 2 x 2 pixels; the block's other pixels refine their hits from the blocks' hits), or "
+                "preset: the quality preset's");
     }
 };
 

@@ -78,7 +78,8 @@ struct VolumetricLightSettings {
                 "samples along each ray (screen: towards the sun; shadowmap: steps along the view ray): low "
                 "16, medium 32, high 64, ultra 128, a dithered start per pixel and frame, accumulated over "
                 "frames");
-        v.field("samples", samples, Range{0, 256}, "samples along each ray; 0: the quality preset's count");
+        v.field("samples", samples, Range{0, 256},
+                "samples along each ray (at least 4); 0: the quality preset's count");
         v.require(samples == 0 || samples >= 4, "samples", "must be 0 (the preset's) or at least 4");
         v.field("mode", mode, volumetricLightModeNames(),
                 "screen: radial rays from the sun on screen; shadowmap: single scattering marched along the "
