@@ -24,13 +24,12 @@ if [ ! -f "$out/render/passes/frame_0003.exr" ] || [ ! -f "$out/render/track.jso
     blender -b "$out/render/scene.blend" --python "$root/tools/blender/photopic_camera.py" -- \
         -o "$out/render/track.json"
 fi
-frame=("$out/render/passes/frame_0003.exr" --camera "$out/render/track.json")
 
-run() { # NAME -- bench settings...
+run() { # NAME bench-settings...
     local name=$1
     shift
-    "$photopic" bench --input "${frame[0]}" "${frame[@]:1}" --frames "$frames" --warmup 3 "${bench_args[@]}" \
-        --json "$out/$name.json" "$@" > /dev/null
+    "$photopic" bench --input "$out/render/passes/frame_0003.exr" --camera "$out/render/track.json" \
+        --frames "$frames" --warmup 3 "${bench_args[@]}" --json "$out/$name.json" "$@" > /dev/null
 }
 for round in $(seq 1 "$rounds"); do
     for effect in ssao contactShadows ssr volumetricLight motionBlur; do

@@ -95,6 +95,8 @@ void PipelineBench::prepare() {
     if (mOptions.frames < 1) {
         throw InputError("--frames must be at least 1");
     }
+    // An EXR --input with depth and a camera, whose 3D layers are uploaded once the context exists.
+    std::optional<DecodedFrame> file3d;
     if (std::optional<DecodedFrame> file = decodeRendererFrame(mOptions)) {
         mImage = colourOf(*file);
         if (!file->depth.empty() && file->camera) {
@@ -103,7 +105,7 @@ void PipelineBench::prepare() {
                                              "brings its own depth, normals and camera",
                                              mOptions.input.string()));
             }
-            mFile3d = std::move(file);
+            file3d = std::move(file);
         }
     } else {
         mImage = benchInput(mOptions);
@@ -124,13 +126,12 @@ void PipelineBench::prepare() {
     // away seen by a still camera, still unless --motion moves it. The sequencer runs nothing on them unless
     // such a pass is on, so the 2D chain's figures are unchanged. Volumetric light alone: its worst case.
     // With contact shadows too, theirs (the sun behind the camera, where volumetric light does no work).
-    if (mFile3d) {
+    if (file3d) {
         // A renderer's frame: its depth, normals, motion, camera and sun (no shadow map), the colour as the
         // bench uploaded it.
         mFileTextures.emplace();
-        mInputs = mFileTextures->upload(*mFile3d);
+        mInputs = mFileTextures->upload(*file3d);
         mInputs.color = &*mInput;
-        mFile3d.reset();
     } else {
         mInputs3d.emplace(mImage.width, mImage.height,
                           mSettings.volumetricLight.enabled && !mSettings.contactShadows.enabled,

@@ -60,8 +60,7 @@ private:
     std::unique_ptr<Pipeline> mPipeline;
     std::optional<Texture> mInput;
     std::optional<BenchInputs3d> mInputs3d;
-    std::optional<DecodedFrame> mFile3d;        ///< an EXR --input with depth and a camera, until uploaded
-    std::optional<InputTextures> mFileTextures; ///< its 3D layers on the GPU
+    std::optional<InputTextures> mFileTextures; ///< an EXR --input's 3D layers on the GPU
     FrameInputs mInputs;
     std::uint64_t mFrame = 0;
     std::optional<Progress> mProgress;

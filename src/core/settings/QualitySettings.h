@@ -32,9 +32,11 @@ inline std::span<const std::string_view> effectQualityNames() {
     return kNames;
 }
 
-/// The count a preset gives: `counts` holds low, medium, high and ultra's.
-[[nodiscard]] constexpr int presetCount(EffectQuality quality, const std::array<int, 4>& counts) noexcept {
-    return counts[static_cast<std::size_t>(quality)];
+/// The count an effect runs with: `count` where it is set (> 0), else its preset's from `counts` (low,
+/// medium, high and ultra's). An effect's count key defaults to 0, the preset's.
+[[nodiscard]] constexpr int countOrPreset(int count, EffectQuality quality,
+                                          const std::array<int, 4>& counts) noexcept {
+    return count > 0 ? count : counts[static_cast<std::size_t>(quality)];
 }
 
 } // namespace photopic

@@ -23,9 +23,7 @@ struct ContactShadowsSettings {
     IdList mask;
 
     /// Samples along the ray: `steps`, or the preset's count when it is 0.
-    [[nodiscard]] int stepCount() const noexcept {
-        return steps > 0 ? steps : presetCount(quality, {8, 14, 22, 40});
-    }
+    [[nodiscard]] int stepCount() const noexcept { return countOrPreset(steps, quality, {8, 14, 22, 40}); }
 
     template <class V>
     void visit(V& v) {

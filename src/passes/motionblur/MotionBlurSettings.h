@@ -49,7 +49,7 @@ struct MotionBlurSettings {
 
     /// Samples of the gather: `sampleCount`, or the preset's count when it is 0.
     [[nodiscard]] int gatherCount() const noexcept {
-        return sampleCount > 0 ? sampleCount : presetCount(quality, {7, 11, 15, 25});
+        return countOrPreset(sampleCount, quality, {7, 11, 15, 25});
     }
 
     template <class V>

@@ -38,7 +38,7 @@ struct SsrSettings {
 
     /// The march's budget of cells a ray: `maxSteps`, or the preset's when it is 0.
     [[nodiscard]] int stepCount() const noexcept {
-        return maxSteps > 0 ? maxSteps : presetCount(quality, {48, 96, 200, 400});
+        return countOrPreset(maxSteps, quality, {48, 96, 200, 400});
     }
     /// The trace runs at half resolution: `resolution`, or the preset's (low and medium) when it is preset.
     [[nodiscard]] bool halfResolution() const noexcept {

@@ -51,7 +51,7 @@ struct VolumetricLightSettings {
 
     /// Samples along each ray: `samples`, or the preset's count when it is 0.
     [[nodiscard]] int sampleCount() const noexcept {
-        return samples > 0 ? samples : presetCount(quality, {16, 32, 64, 128});
+        return countOrPreset(samples, quality, {16, 32, 64, 128});
     }
 
     template <class V>
