@@ -5,7 +5,8 @@
 # under the blender preset, the normals and motion against the depth and the exported track, depth of field and
 # motion blur against Cycles' own thin-lens and motion-blurred renders (at most half the error of no effect), and
 # GTAO's visibility against Cycles' AO pass (mean absolute error and bias printed, by Cycles' value and by place;
-# |bias| held to 0.04: at the high preset's 3 steps a side GTAO misses part of the creases, docs/interop.md).
+# |bias| held to 0.04: at the high preset's 3 steps a side GTAO misses part of the creases, docs/interop.md; on
+# open surfaces the 9x9 means within 0.023 of Cycles': no bands on the ground near objects).
 source "$(dirname "$0")/lib.bash"
 S="$SCRATCH"
 FIX="${PHOTOPIC_BLENDER_FIXTURE:?the test sets PHOTOPIC_BLENDER_FIXTURE to the fixture program}"
@@ -50,7 +51,7 @@ check_renders() {
     expect 0 "$name: GTAO's raw visibility at Cycles' AO distance" -- "$PHOTOPIC" image \
         "$dir/passes/frame_0003.exr" --camera "$track" -o "$out/ao.exr" "${PLAIN[@]}" --set ssao.enabled=true \
         --set ssao.radius=0.5 --debug ao
-    expect 0 "$name: GTAO against Cycles' AO pass" -- "$FIX" ao "$out/ao.exr" "$dir/passes/frame_0003.exr" 0.04
+    expect 0 "$name: GTAO against Cycles' AO pass" -- "$FIX" ao "$out/ao.exr" "$dir/passes/frame_0003.exr" 0.04 0.023
     echo "$OUTPUT"
 }
 
