@@ -35,38 +35,13 @@ float interleavedGradientNoise(vec2 p, uint frame) {
     return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
 }
 
-// The step positions' noise, independent of the slice angles': pixel p's place along a Hilbert curve over
-// 64 x 64 tiles, taken as an index into a low-discrepancy sequence (the second coordinate of R2: Roberts 2018,
-// "The Unreasonable Effectiveness of Quasirandom Sequences"). Neighbours along the curve are neighbours on
-// screen and take well-spread values, and the curve's turns leave no direction along which the values repeat.
-// Interleaved gradient noise at an offset would move in lockstep with the slice angle (nearly a constant
-// difference, modulo 1): a pixel's slices and steps would land on an occluder together or miss it together,
-// and open ground near objects would show hard-edged bands.
-uint hilbertIndex(uvec2 p) {
-    uint x = p.x & 63u;
-    uint y = p.y & 63u;
-    uint index = 0u;
-    // Six levels, each without a branch (SIMD implementations that run both sides of a branch under a mask
-    // pay for selects only): the quadrant's number along the curve (0 to 3), then the quadrant turned into
-    // the curve of the level below: the first and the last quadrant (ry = 0) transposed, the last one
-    // reflected first (63 - v, which on six bits is v ^ 63).
-    for (uint s = 32u; s > 0u; s >>= 1u) {
-        uint rx = (x & s) != 0u ? 1u : 0u;
-        uint ry = (y & s) != 0u ? 1u : 0u;
-        index += s * s * ((3u * rx) ^ ry);
-        uint mirror = ry == 0u && rx == 1u ? 63u : 0u;
-        uint fx = x ^ mirror;
-        uint fy = y ^ mirror;
-        x = ry == 0u ? fy : fx;
-        y = ry == 0u ? fx : fy;
-    }
-    return index;
-}
-
-float stepNoiseAt(ivec2 p, uint frame) {
-    float index = float(hilbertIndex(uvec2(p)) + 288u * (frame % 64u));
-    return fract(0.5 + index * 0.56984029099805327);
-}
+// The step positions' noise from the slice angle's u: 4u modulo 1. Over a 3 x 3 neighbourhood u takes values
+// near k/9 + c (k = 0..8), so the nine (slice, step) pairs lie near the rank-1 lattice (k/9, 4k/9) modulo 1,
+// spread over the whole square, one in each ninth of either axis. Step noise that differs from u by about a
+// constant (interleaved gradient noise at an offset) puts the nine pairs on one line instead: a neighbourhood's
+// slices and steps land on an occluder together or miss it together, and open ground near objects shows
+// hard-edged bands.
+float stepNoiseFrom(float sliceNoise) { return fract(4.0 * sliceNoise + 0.5); }
 
 // Coordinates within a slice: the slice plane holds the view vector v and the screen direction; e is that
 // direction made perpendicular to v. A point x relative to the origin is (dot(x, e), dot(x, v)), and its
@@ -209,7 +184,7 @@ void main() {
     }
 
     float sliceNoise = interleavedGradientNoise(vec2(p), uFrame);
-    float stepNoise = stepNoiseAt(p, uFrame);
+    float stepNoise = stepNoiseFrom(sliceNoise);
     float visibility = 0.0;
     for (int slice = 0; slice < kSlices; ++slice) {
         float phi = (float(slice) + sliceNoise) * kPi / float(kSlices);
