@@ -156,20 +156,26 @@ void main() {
     if (any(greaterThanEqual(p, size))) {
         return;
     }
+    // The centre, read once: its raw colour (a frame without history is exactly it), and its working colour,
+    // motion and depth from the tile or from one load each.
     vec3 current = imageLoad(uCurrent, p).rgb;
-    float depth = kHasDepth ? imageLoad(uDepth, p).r : 0.0;
+    Neighbour centre = kSharedTile ? neighbour(p, ivec2(0), size, exposure)
+                                   : Neighbour(rgbToYCoCg(toWorking(current, exposure)),
+                                               finiteMotion(imageLoad(uMotion, p).rg),
+                                               kHasDepth ? imageLoad(uDepth, p).r : 0.0);
+    float depth = centre.depth;
 
     // Neighbourhood statistics in working YCoCg, and the closest surface for the motion of edges.
     vec3 m1 = vec3(0.0), m2 = vec3(0.0);
     vec3 lo = vec3(1e9), hi = vec3(-1e9);
     float closestDepth = depth;
-    vec2 closestMotion = finiteMotion(imageLoad(uMotion, p).rg);
+    vec2 closestMotion = centre.motion;
     float farthestDepth = depth; // for next frame's disocclusion test; NaN counts as the sky
     const float kInfinity = uintBitsToFloat(0x7f800000u);
     float fastest2 = 0.0; // the longest motion of the 3x3, in pixels, squared
     for (int y = -1; y <= 1; ++y) {
         for (int x = -1; x <= 1; ++x) {
-            Neighbour n = neighbour(p, ivec2(x, y), size, exposure);
+            Neighbour n = (x == 0 && y == 0) ? centre : neighbour(p, ivec2(x, y), size, exposure);
             vec3 c = n.colour;
             m1 += c;
             m2 += c * c;
@@ -201,6 +207,9 @@ void main() {
     // Disocclusion: the surface seen now was not where the history was, e.g. it was behind an object that
     // moved away. With depth and the camera, the point's depth last frame is predicted and compared with the
     // depth the history stored.
+    // Last frame's farthest depth and stability where the history is read, one load.
+    ivec2 hp = clamp(ivec2(prevUv * vec2(size)), ivec2(0), size - 1);
+    vec2 previousAux = history ? imageLoad(uHistoryAux, hp).rg : vec2(0.0);
     bool disoccluded = false;
     if (history && kHasDepth && kHasCamera && !isinf(depth)) {
         vec4 near = uInvProjection * vec4(uv * 2.0 - 1.0, -1.0, 1.0);
@@ -211,8 +220,7 @@ void main() {
         // a pixel holds either surface from frame to frame), hence the 3x3 neighbourhood, whose farthest
         // depth the history keeps (one fetch here); a history that is farther than the point (a thin feature
         // this frame's sample hit) is not disocclusion.
-        ivec2 hp = clamp(ivec2(prevUv * vec2(size)), ivec2(0), size - 1);
-        disoccluded = imageLoad(uHistoryAux, hp).r < 0.9 * predicted;
+        disoccluded = previousAux.r < 0.9 * predicted;
     }
 
     vec4 result;
@@ -226,7 +234,7 @@ void main() {
         vec3 fetched = kBilinearHistory ? textureLod(uHistory, prevUv, 0.0).rgb
                                              : sampleHistoryCatmullRom(prevUv, vec2(size));
         vec3 h = rgbToYCoCg(toWorking(sanitize(fetched), exposure));
-        vec3 c = rgbToYCoCg(toWorking(current, exposure));
+        vec3 c = centre.colour;
         // The variance box can exclude the centre sample itself (a thin dark pole among bright neighbours):
         // keep it inside, or a history equal to this frame would be pulled away from it.
         boxMin = min(boxMin, c);
@@ -237,8 +245,7 @@ void main() {
         // moving object uncovers, its edges) the clip is full until the pixel has been still for
         // kStableFrames, so a ghost left in the history is clipped away first. Without depth there is no
         // disocclusion test to fall back on, so the clip stays full everywhere.
-        ivec2 hp = clamp(ivec2(prevUv * vec2(size)), ivec2(0), size - 1);
-        float previousStability = imageLoad(uHistoryAux, hp).g;
+        float previousStability = previousAux.g;
         stability = fastest < uStillPixels ? min(previousStability + 1.0 / kStableFrames, 1.0) : 0.0;
         float clipStrength = (kHasDepth && kHasCamera) ? 1.0 - previousStability : 1.0;
         h = mix(h, clipToBox(boxMin, boxMax, h), clipStrength);
