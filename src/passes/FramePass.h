@@ -54,8 +54,8 @@ enum class Resource : std::uint8_t {
     ContactShadowSteps,
     DofCoc,       ///< R16F: depth of field's signed circle of confusion in pixels (< 0 near, > 0 far)
     Material,     ///< host: RGB specular weight (Fresnel F0), A roughness, for screen-space reflections
-    DepthPyramid, ///< R32F min-depth pyramid of linearDepth (nearest surface per cell), level 0 padded, every
-                  ///< level side by side in one single-level atlas (passes/ssr/ssr_pyramid.h.glsl)
+    DepthPyramid, ///< RG32F min-max pyramid of linearDepth (nearest and farthest surface per cell), level 0
+                  ///< padded, every level side by side in one single-level atlas (passes/ssr/ssr_pyramid.h.glsl)
     Reflections,  ///< RGBA16F: reflected radiance (RGB) and its confidence (A)
     /// motion blur's neighbourhood maximum velocity per pixel, when the velocity-tiles debug view shows it
     VelocityTiles,

@@ -17,6 +17,10 @@
 //                                                          error and bias (ours - Cycles'), and the error of
 //                                                          9 x 9 means over open surfaces; exit 0 when |bias|
 //                                                          <= MAXBIAS and that error <= MAXOPEN
+//   photopic_blender_fixture reflections OURS AMPLE MINSHARE   pixels with a reflection (confidence above 0)
+//                                                          in SSR's view (--debug ssr EXR) at a step budget
+//                                                          and at an ample one; exit 0 when OURS has at
+//                                                          least MINSHARE of AMPLE's
 
 #include "CameraJson.h"
 #include "InputError.h"
@@ -338,6 +342,26 @@ int ambientOcclusion(const fs::path& ours, const fs::path& passes, double maxBia
     return std::abs(bias) <= maxBias && open > 0 && openError <= maxOpenError ? 0 : 1;
 }
 
+/// Pixels with a reflection in an `ssr` view: alpha (the confidence) above 0.
+std::size_t reflectedPixels(const fs::path& view) {
+    const ImageF image = readExrFrame(view).color;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < image.pixelCount(); ++i) {
+        n += image.rgba[i * 4 + 3] > 0.0f ? 1 : 0;
+    }
+    return n;
+}
+
+int reflections(const fs::path& ours, const fs::path& ample, double minShare) {
+    const std::size_t found = reflectedPixels(ours);
+    const std::size_t all = reflectedPixels(ample);
+    const double share = all > 0 ? double(found) / double(all) : 0.0;
+    std::printf(
+        "  pixels with a reflection: %zu within the budget, %zu with an ample one: %.4f (at least %.4f)\n",
+        found, all, share, minShare);
+    return all > 0 && share >= minShare ? 0 : 1;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -367,13 +391,15 @@ int main(int argc, char** argv) {
         }
         if (argc == 6 && std::strcmp(argv[1], "ao") == 0)
             return ambientOcclusion(argv[2], argv[3], std::atof(argv[4]), std::atof(argv[5]));
+        if (argc == 5 && std::strcmp(argv[1], "reflections") == 0)
+            return reflections(argv[2], argv[3], std::atof(argv[4]));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;
     }
     std::fprintf(stderr,
                  "usage: %s geometry TRACK AUXDIR N... | effect NAME OURS NONE TRUTH MAX | ao OURS PASSES "
-                 "MAXBIAS MAXOPEN\n",
+                 "MAXBIAS MAXOPEN | reflections OURS AMPLE MINSHARE\n",
                  argv[0]);
     return 2;
 }

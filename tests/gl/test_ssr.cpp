@@ -472,11 +472,12 @@ TEST_F(GlTest, SsrHistoryIsTheSanitisedSceneAndItsBoxMeans) {
 }
 
 // The depth pyramid the march climbs: level 0 the linear depth with broken depths (NaN, zero, negative,
-// infinite) and the padding as the sky, each further level the nearest of the 2 x 2 cells below, every level
-// at its place in the atlas; on sizes whose tiles overhang the image and the pyramid (150 x 70: seven
-// levels; 20 x 9: four, a 64 x 64 tile over a 24 x 16 level 0) and on one pixel, built in one dispatch
-// through shared memory (a GPU's build) and a dispatch a level (a software renderer's).
-TEST_F(GlTest, SsrDepthPyramidIsTheNearestDepthOfEachCell) {
+// infinite) and the padding as the sky, each further level the nearest (R) and the farthest (G) of the 2 x 2
+// cells below, the sky having no farthest depth (0), every level at its place in the atlas; on sizes whose
+// tiles overhang the image and the pyramid (150 x 70: seven levels; 20 x 9: four, a 64 x 64 tile over a
+// 24 x 16 level 0) and on one pixel, built in one dispatch through shared memory (a GPU's build) and a
+// dispatch a level (a software renderer's).
+TEST_F(GlTest, SsrDepthPyramidIsTheNearestAndFarthestDepthOfEachCell) {
     const Extent sizes[] = {{150, 70}, {20, 9}, {1, 1}};
     const float inf = std::numeric_limits<float>::infinity();
     for (const Extent e : sizes) {
@@ -515,16 +516,17 @@ TEST_F(GlTest, SsrDepthPyramidIsTheNearestDepthOfEachCell) {
         for (const ImageF& atlas : atlases) {
             const int levels = depthPyramidLevels(e);
             const Extent size0 = depthPyramidExtent(e);
-            auto atlasAt = [&](int x, int y) {
-                return atlas.at(x, atlas.height - 1 - y)[0];
+            auto atlasAt = [&](int x, int y, int channel = 0) {
+                return atlas.at(x, atlas.height - 1 - y)[channel];
             }; // GL texel (x, y)
 
-            // Level by level, in GL's texel order (row 0 at the bottom).
-            std::vector<float> level(std::size_t(size0.width) * size0.height);
+            // Level by level, in GL's texel order (row 0 at the bottom): (nearest, farthest).
+            std::vector<std::pair<float, float>> level(std::size_t(size0.width) * size0.height);
             for (int y = 0; y < size0.height; ++y) {
                 for (int x = 0; x < size0.width; ++x) {
                     const float z = x < e.width && y < e.height ? stored.at(x, e.height - 1 - y)[0] : inf;
-                    level[std::size_t(y) * size0.width + x] = std::isfinite(z) && z > 0.0f ? z : inf;
+                    const bool surface = std::isfinite(z) && z > 0.0f;
+                    level[std::size_t(y) * size0.width + x] = {surface ? z : inf, surface ? z : 0.0f};
                 }
             }
             int mismatches = 0;
@@ -533,26 +535,30 @@ TEST_F(GlTest, SsrDepthPyramidIsTheNearestDepthOfEachCell) {
                 const int ox = l == 0 ? 0 : size0.width,
                           oy = l == 0 ? 0 : size0.height - (size0.height >> (l - 1));
                 if (l > 0) {
-                    std::vector<float> next(std::size_t(lw) * lh);
+                    std::vector<std::pair<float, float>> next(std::size_t(lw) * lh);
                     const int pw = size0.width >> (l - 1);
                     for (int y = 0; y < lh; ++y) {
                         for (int x = 0; x < lw; ++x) {
                             auto below = [&](int dx, int dy) {
                                 return level[std::size_t(2 * y + dy) * pw + std::size_t(2 * x + dx)];
                             };
-                            next[std::size_t(y) * lw + x] = std::min(std::min(below(0, 0), below(1, 0)),
-                                                                     std::min(below(0, 1), below(1, 1)));
+                            const auto a = below(0, 0), b = below(1, 0), c = below(0, 1), d = below(1, 1);
+                            next[std::size_t(y) * lw + x] = {
+                                std::min(std::min(a.first, b.first), std::min(c.first, d.first)),
+                                std::max(std::max(a.second, b.second), std::max(c.second, d.second))};
                         }
                     }
                     level = std::move(next);
                 }
                 for (int y = 0; y < lh; ++y) {
                     for (int x = 0; x < lw; ++x) {
-                        const float expected = level[std::size_t(y) * lw + x];
-                        const float got = atlasAt(ox + x, oy + y);
-                        if (got != expected && mismatches++ < 5) {
+                        const auto [nearest, farthest] = level[std::size_t(y) * lw + x];
+                        const float gotNearest = atlasAt(ox + x, oy + y, 0);
+                        const float gotFarthest = atlasAt(ox + x, oy + y, 1);
+                        if ((gotNearest != nearest || gotFarthest != farthest) && mismatches++ < 5) {
                             ADD_FAILURE() << e.width << " x " << e.height << " level " << l << " cell (" << x
-                                          << ", " << y << "): " << got << ", expected " << expected;
+                                          << ", " << y << "): (" << gotNearest << ", " << gotFarthest
+                                          << "), expected (" << nearest << ", " << farthest << ")";
                         }
                     }
                 }
@@ -563,6 +569,18 @@ TEST_F(GlTest, SsrDepthPyramidIsTheNearestDepthOfEachCell) {
                 // Image pixel (7, 2) is GL texel (7, height - 3); level 1 sits at x = size0.width, y = 0.
                 EXPECT_EQ(atlasAt(size0.width + 3, (e.height - 3) / 2), 0.01f)
                     << "level 1 keeps the nearest depth";
+                // Its 2 x 2 cell: the sky at image pixel (6, 2) leaves the farthest to the other three.
+                const int cellRow = (e.height - 3) / 2; // GL rows 2 cellRow and 2 cellRow + 1
+                float farthest = 0.0f;
+                for (const int row : {e.height - 1 - 2 * cellRow, e.height - 2 - 2 * cellRow}) {
+                    for (const int x : {6, 7}) {
+                        const float z = stored.at(x, row)[0];
+                        farthest = std::isfinite(z) && z > 0.0f ? std::max(farthest, z) : farthest;
+                    }
+                }
+                EXPECT_GT(farthest, 0.01f);
+                EXPECT_EQ(atlasAt(size0.width + 3, cellRow, 1), farthest)
+                    << "level 1's farthest depth leaves the sky out";
             }
         }
     }

@@ -49,10 +49,11 @@ void DepthPyramidPass::execute(FrameContext& ctx, FrameResources& resources) {
     const Extent size0 = depthPyramidExtent(ctx.extent);
     // One level holding them all (ssr_pyramid.h.glsl): every read of it is an image load at level 0.
     const Texture& pyramid =
-        resources.pool().acquireNearest(depthPyramidAtlasExtent(ctx.extent), GL_R32F, "ssr depth pyramid");
-    // Level 0 reads a depth and writes one; the rest of the chain is a third of that again.
+        resources.pool().acquireNearest(depthPyramidAtlasExtent(ctx.extent), GL_RG32F, "ssr depth pyramid");
+    // Level 0 reads a depth and writes its pair (nearest, farthest); the rest of the chain writes a third of
+    // level 0's pairs again.
     ScopedGpuTimer timer(ctx.timers, "ssr depth pyramid",
-                         double(size0.width) * size0.height * (8.0 + 8.0 / 3.0));
+                         double(size0.width) * size0.height * (4.0 + 8.0 + 8.0 / 3.0));
     mProgram.use();
     glProgramUniform2i(mProgram.id(), 1, size0.width, size0.height);
     if (mOneDispatch) {
@@ -224,10 +225,10 @@ void SsrPass::trace(const FrameContext& ctx, const FrameResources& resources, co
     const double pixels = double(e.width) * e.height;
     const double tracePixels = double(traceExtent.width) * traceExtent.height;
     const bool half = t.blockHits != nullptr;
-    // Depth, normal and material at the origin, the pyramid (4/3 of a full-resolution R32F) read once from
+    // Depth, normal and material at the origin, the pyramid (4/3 of a full-resolution RG32F) read once from
     // memory, the hit written; at half resolution the blocks' hits also written and read.
     const double inputs = pixels * (4.0 + (resources.texture(Resource::Normals) ? 8.0 : 0.0) +
-                                    (resources.texture(Resource::Material) ? 8.0 : 0.0) + 4.0 * 4.0 / 3.0);
+                                    (resources.texture(Resource::Material) ? 8.0 : 0.0) + 8.0 * 4.0 / 3.0);
     ScopedGpuTimer timer(ctx.timers, "ssr trace",
                          inputs + pixels * 16.0 + (half ? 2.0 * tracePixels * 16.0 : 0.0));
     const int normals = normalsSource(ctx, resources);

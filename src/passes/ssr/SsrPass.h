@@ -1,7 +1,7 @@
 #pragma once
 // Screen-space reflections (docs/architecture.md, "Screen-space reflections"), in the post stage's HDR
 // domain after AO and before TAA. Three passes:
-//   - DepthPyramidPass: linearDepth -> depthPyramid, the min-depth chain the march climbs (its levels side
+//   - DepthPyramidPass: linearDepth -> depthPyramid, the min-max depth chain the march climbs (its levels side
 //     by side in one single-level texture: ssr_pyramid.h.glsl);
 //   - SsrPass: the hierarchical-Z trace (full resolution; or half, each pixel then finding its own hit near
 //     those of the 2 x 2 blocks around it), then the resolve, which reads the

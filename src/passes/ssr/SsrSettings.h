@@ -1,6 +1,6 @@
 #pragma once
 // Screen-space reflections (docs/architecture.md, "Screen-space reflections"): a hierarchical-Z ray march
-// through a min-depth pyramid of the frame, the reflected radiance taken from the previous frame's image,
+// through a min-max depth pyramid of the frame, the reflected radiance taken from the previous frame's image,
 // composited onto the specular term in HDR before bloom and exposure.
 
 #include "core/settings/QualitySettings.h"

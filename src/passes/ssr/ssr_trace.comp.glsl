@@ -1,17 +1,18 @@
-// Screen-space reflection rays, marched through the min-depth pyramid (hierarchical Z: Uludag, "Hi-Z
+// Screen-space reflection rays, marched through the min-max depth pyramid (hierarchical Z: Uludag, "Hi-Z
 // Screen-Space Cone-Traced Reflections", GPU Pro 5, 2014; the segment set-up and its clipping follow McGuire
 // & Mara, "Efficient GPU Screen-Space Ray Tracing", JCGT 2014).
 //
 // The mirror ray from each pixel's point is clipped to maxDistance and the near plane, projected, and walked
 // in window space with t in [0, 1] along the projected segment. 1/w and (view depth)/w are affine in t, so
 // the ray's linear depth at any t is exact. A cell of level L (2^L pixels a side) whose nearest depth lies
-// behind the ray's span over the cell cannot be hit there: the ray skips the cell and climbs a level;
-// otherwise it moves to where it reaches that depth and descends. At level 0 the ray hits the pixel's
-// surface when its span over the pixel overlaps [depth, depth + thickness], the surface faces it (a surface
-// seen from behind, the reflector itself among them, is passed) and, where the surface ends at that pixel
-// (a silhouette), the ray meets it within a quarter pixel of the pixel's centre. Out: the hit's window
-// position, its confidence (0: no hit; faded at the image's border, for surfaces seen edge-on and towards
-// the roughness cut-off) and the radius in pixels of the glossy cone at the hit.
+// behind the ray's span over the cell, or whose farthest depth lies in front of it by more than the
+// thickness (the ray passes behind every surface there), cannot be hit there: the ray skips the cell and
+// climbs a level; otherwise it moves to where it reaches the nearest depth and descends. At level 0 the ray
+// hits the pixel's surface when its span over the pixel overlaps [depth, depth + thickness], the surface
+// faces it (a surface seen from behind, the reflector itself among them, is passed) and, where the surface
+// ends at that pixel (a silhouette), the ray meets it within a quarter pixel of the pixel's centre. Out: the
+// hit's window position, its confidence (0: no hit; faded at the image's border, for surfaces seen edge-on
+// and towards the roughness cut-off) and the radius in pixels of the glossy cone at the hit.
 //
 // What it leaves to no implementation's choice: every texel read is at lod 0 and in range; no value is
 // divided by zero or by a component that may be a denormal; the march steps from a cell to its neighbour
@@ -28,7 +29,8 @@ layout(binding = 1) uniform sampler2D uNormalTexture;
 layout(binding = 2) uniform sampler2D uMaterial; // RGB F0, A roughness, when uHasMaterial != 0
 // Read texel by texel as images (a load skips the sampler's level and filtering logic).
 layout(binding = 3, r32f) uniform readonly image2D uLinearDepth; // +inf: sky
-layout(binding = 1, r32f) uniform readonly image2D uPyramid; // min depth, every level in one (ssr_pyramid.h.glsl)
+// Nearest and farthest depth a cell, every level in one (ssr_pyramid.h.glsl).
+layout(binding = 1, rg32f) uniform readonly image2D uPyramid;
 layout(binding = 2, rgba32f) uniform readonly image2D uBlockHits; // REFINE: the blocks' hits (half resolution)
 layout(binding = 0, rgba32f) uniform writeonly image2D uHits;
 
@@ -220,7 +222,7 @@ bool mirrorRay(ivec2 p, out Mirror m) {
 }
 
 // Where a march is: the cell (of level `level`) the ray is in from t, where it leaves it (tExit, across
-// `sides`), the cell's nearest depth, and the steps taken.
+// `sides`), the cell's nearest depth (at level 0 the pixel's), and the steps taken.
 struct Walk {
     ivec2 cell;
     int level;
@@ -243,9 +245,14 @@ bool nextCandidate(Mirror m, inout Walk w, float tStop, int maxLevel) {
         // An exit a rounding error behind t (a cell the ray only grazes) is taken as t: never backwards,
         // and t <= tExit for the clamps (GLSL leaves clamp undefined for min > max).
         w.tExit = min(max(cellExit(ray, w.cell, float(1 << w.level), w.sides), w.t), tStop);
-        w.zCell = imageLoad(uPyramid, pyramidLevelOrigin(uPyramidSize, w.level) + w.cell).r;
+        vec2 bounds = imageLoad(uPyramid, pyramidLevelOrigin(uPyramidSize, w.level) + w.cell).rg;
+        w.zCell = bounds.x;
         bool frontA = inFront(ray, w.t, w.zCell);
-        if (frontA && inFront(ray, w.tExit, w.zCell)) { // in front of every surface in the cell (the sky too)
+        // In front of every surface in the cell (the sky too), or behind every one by more than the thickness
+        // (passing behind an object: without the farthest depth the walk would go on pixel by pixel there).
+        float zBehind = bounds.y + uThickness;
+        if ((frontA && inFront(ray, w.tExit, w.zCell)) ||
+            (!reaches(ray, w.t, zBehind) && !reaches(ray, w.tExit, zBehind))) {
             w.t = w.tExit;
             w.cell += ivec2(w.sides) * m.towards;
             if (w.level < maxLevel) {
@@ -268,14 +275,14 @@ bool nextCandidate(Mirror m, inout Walk w, float tStop, int maxLevel) {
             w.cell = clamp(ivec2(floor(s / float(1 << w.level))), 2 * w.cell, 2 * w.cell + 1);
             continue;
         }
-        // Level 0: a pixel of the image (the padding is sky, passed above).
-        float zBack = w.zCell + uThickness;
-        bool within = reaches(ray, w.t, zBack) || reaches(ray, w.tExit, zBack);
-        if (within && all(lessThan(w.cell, ivec2(uFullSize)))) {
+        // Level 0: a pixel of the image (the padding is sky, passed above) whose span of the ray overlaps
+        // [depth, depth + thickness]: neither in front of the depth at both ends nor behind depth + thickness
+        // at both (both passed above).
+        if (all(lessThan(w.cell, ivec2(uFullSize)))) {
             ++w.steps;
             return true;
         }
-        w.t = w.tExit; // behind the surface by more than its thickness: go on behind it
+        w.t = w.tExit;
         w.cell += ivec2(w.sides) * m.towards;
     }
     return false;
