@@ -21,6 +21,13 @@
 //                                                          in SSR's view (--debug ssr EXR) at a step budget
 //                                                          and at an ample one; exit 0 when OURS has at
 //                                                          least MINSHARE of AMPLE's
+//   photopic_blender_fixture mirror OURS MIRROR MINCOVERED MINWITHIN MAXFALSE   SSR's view (--debug ssr
+//                                                          EXR of the mirror variant's frame) against
+//                                                          Cycles' reflected radiance on the mirror ground:
+//                                                          the share of the ground reflecting an object that
+//                                                          SSR covers, of that the share within 10%, and the
+//                                                          share of the ground reflecting the sky that SSR
+//                                                          gives a reflection
 
 #include "CameraJson.h"
 #include "InputError.h"
@@ -362,6 +369,77 @@ int reflections(const fs::path& ours, const fs::path& ample, double minShare) {
     return all > 0 && share >= minShare ? 0 : 1;
 }
 
+/// One RGB pass of a Blender file (`ViewLayer.<name>.R G B`) read as the colour.
+ImageF blenderPass(const fs::path& file, const std::string& name) {
+    AovRequest request;
+    request.overrides.push_back(parseAovOverride("color=" + name));
+    return readExrFrame(file, {}, request).color;
+}
+
+double luminance(const float* c) {
+    return 0.2126 * double(c[0]) + 0.7152 * double(c[1]) + 0.0722 * double(c[2]);
+}
+
+/// SSR's reflected radiance against the mirror variant's ground, where Cycles' reflected radiance is
+/// (GlossDir + GlossInd) / GlossCol. The ground is where the file's normal is straight up. Ground pixels
+/// whose truth is the world's constant colour reflect the sky, the others an object: of those, the share SSR
+/// covers (confidence above 0) and, of what it covers, the share within 10% in luminance; of the sky's, the
+/// share SSR gives a reflection (a false hit).
+int mirror(const fs::path& ours, const fs::path& passes, double minCovered, double minWithin,
+           double maxFalse) {
+    const ImageF view = readExrFrame(ours).color;
+    const ImageF direct = blenderPass(passes, "GlossDir");
+    const ImageF indirect = blenderPass(passes, "GlossInd");
+    const ImageF weight = blenderPass(passes, "GlossCol");
+    const std::vector<float> normals = readExrFrame(passes).normals; // world space, Y up
+    const std::size_t pixels = view.pixelCount();
+    if (direct.pixelCount() != pixels || indirect.pixelCount() != pixels || weight.pixelCount() != pixels ||
+        normals.size() != pixels * 3) {
+        std::fprintf(stderr, "the mirror passes and the ssr view differ in size\n");
+        return 1;
+    }
+    constexpr float kSky[3] = {0.35f, 0.45f, 0.6f}; // the scene's world colour, strength 1
+    std::size_t objects = 0, covered = 0, within = 0, sky = 0, falseHits = 0;
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const float* w = &weight.rgba[i * 4];
+        if (normals[i * 3 + 1] < 0.999f || std::min({w[0], w[1], w[2]}) <= 0.0f) {
+            continue; // not the ground (or a pixel without glossy weight)
+        }
+        float truth[3];
+        bool isSky = true;
+        for (int c = 0; c < 3; ++c) {
+            truth[c] = (direct.rgba[i * 4 + std::size_t(c)] + indirect.rgba[i * 4 + std::size_t(c)]) / w[c];
+            isSky = isSky && std::abs(truth[c] - kSky[c]) < 0.01f;
+        }
+        const float* v = &view.rgba[i * 4];
+        const bool reflected = v[3] > 0.0f;
+        if (isSky) {
+            ++sky;
+            falseHits += reflected ? 1 : 0;
+            continue;
+        }
+        ++objects;
+        if (reflected) {
+            ++covered;
+            const double t = luminance(truth);
+            within += std::abs(luminance(v) - t) <= 0.1 * t ? 1 : 0;
+        }
+    }
+    const double coveredShare = objects ? double(covered) / double(objects) : 0.0;
+    const double withinShare = covered ? double(within) / double(covered) : 0.0;
+    const double falseShare = sky ? double(falseHits) / double(sky) : 1.0;
+    std::printf(
+        "  mirror ground reflecting an object: %zu px, covered %.4f (at least %.4f), within 10%% of Cycles' "
+        "%.4f (at least %.4f)\n",
+        objects, coveredShare, minCovered, withinShare, minWithin);
+    std::printf("  mirror ground reflecting the sky: %zu px, with a reflection %.4f (at most %.4f)\n", sky,
+                falseShare, maxFalse);
+    return objects > 0 && sky > 0 && coveredShare >= minCovered && withinShare >= minWithin &&
+                   falseShare <= maxFalse
+               ? 0
+               : 1;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -393,13 +471,17 @@ int main(int argc, char** argv) {
             return ambientOcclusion(argv[2], argv[3], std::atof(argv[4]), std::atof(argv[5]));
         if (argc == 5 && std::strcmp(argv[1], "reflections") == 0)
             return reflections(argv[2], argv[3], std::atof(argv[4]));
+        if (argc == 7 && std::strcmp(argv[1], "mirror") == 0)
+            return mirror(argv[2], argv[3], std::atof(argv[4]), std::atof(argv[5]), std::atof(argv[6]));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;
     }
-    std::fprintf(stderr,
-                 "usage: %s geometry TRACK AUXDIR N... | effect NAME OURS NONE TRUTH MAX | ao OURS PASSES "
-                 "MAXBIAS MAXOPEN | reflections OURS AMPLE MINSHARE\n",
-                 argv[0]);
+    std::fprintf(
+        stderr,
+        "usage: %s geometry TRACK AUXDIR N... | effect NAME OURS NONE TRUTH MAX | ao OURS PASSES "
+        "MAXBIAS MAXOPEN | reflections OURS AMPLE MINSHARE | mirror OURS MIRROR MINCOVERED MINWITHIN "
+        "MAXFALSE\n",
+        argv[0]);
     return 2;
 }

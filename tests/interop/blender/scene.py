@@ -3,7 +3,7 @@
 Run (Blender 3.4, factory settings so that no user preference leaks in):
 
     blender -b --factory-startup --python tests/interop/blender/scene.py -- \
-        --out DIR [--variant passes|dof|mblur|all] [--frames A-B] [--size WxH] [--samples N]
+        --out DIR [--variant passes|dof|mblur|mirror|all] [--frames A-B] [--size WxH] [--samples N]
 
 (--size and --samples, 320x180 and 128 by default, let scripts/bench-cycles.sh render the same scene as
 benchmark input at a frame's real size; the tests keep the defaults.)
@@ -38,7 +38,12 @@ multilayer OpenEXR files (32-bit float, ZIP):
 * dof:    DoF on, motion blur off, Combined only -> DIR/dof/frame_0003.exr;
 * mblur:  DoF off, motion blur on (shutter 0.5 frames = 180 degrees), Combined only ->
   DIR/mblur/frame_0003.exr;
-* all:    the three.
+* mirror: the ground made a perfect mirror (metallic 1, roughness 0, white), DoF and motion
+  blur off, at most 6 bounces (diffuse 3, glossy 3) so that an object seen in the mirror
+  keeps the indirect light it has seen directly; Combined, Depth, Normal and the Glossy
+  Direct, Indirect and Colour passes -> DIR/mirror/frame_0003.exr. The ground's reflected
+  radiance is (GlossDir + GlossInd) / GlossCol: the truth for screen-space reflections;
+* all:    the four.
 
 The time each variant took to render is printed as "render <variant>: N.N s".
 """
@@ -72,7 +77,7 @@ def parse_args():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     p = argparse.ArgumentParser(prog="scene.py", description=__doc__.splitlines()[0])
     p.add_argument("--out", required=True, help="output folder")
-    p.add_argument("--variant", default="all", choices=("passes", "dof", "mblur", "all"))
+    p.add_argument("--variant", default="all", choices=("passes", "dof", "mblur", "mirror", "all"))
     p.add_argument("--frames", default="2-3", help="frame range A-B for 'passes' (default 2-3)")
     p.add_argument("--size", default="%dx%d" % (RES_X, RES_Y), help="WxH (default %dx%d)" % (RES_X, RES_Y))
     p.add_argument("--samples", type=int, default=SAMPLES, help="Cycles samples (default %d)" % SAMPLES)
@@ -241,19 +246,35 @@ def configure_render(scene, width=RES_X, height=RES_Y, samples=SAMPLES):
     im.exr_codec = "ZIP"
 
 
-def set_passes(view_layer, extra):
+def set_passes(view_layer, extra, glossy=False):
     view_layer.use_pass_combined = True
-    view_layer.use_pass_z = extra
-    view_layer.use_pass_normal = extra
+    view_layer.use_pass_z = extra or glossy
+    view_layer.use_pass_normal = extra or glossy
     view_layer.use_pass_vector = extra
     view_layer.use_pass_ambient_occlusion = extra
+    view_layer.use_pass_glossy_direct = glossy
+    view_layer.use_pass_glossy_indirect = glossy
+    view_layer.use_pass_glossy_color = glossy
 
 
-def render(scene, out_dir, variant, first, last, dof, mblur, passes):
+def make_ground_a_mirror(scene):
+    """The mirror variant: a perfect white metal mirror for the ground, and bounces enough that the
+    objects it reflects keep the indirect light the camera sees on them directly."""
+    bsdf = bpy.data.materials["Ground"].node_tree.nodes["Principled BSDF"]
+    bsdf.inputs["Base Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+    bsdf.inputs["Metallic"].default_value = 1.0
+    bsdf.inputs["Roughness"].default_value = 0.0
+    c = scene.cycles
+    c.max_bounces = 6
+    c.diffuse_bounces = 3
+    c.glossy_bounces = 3
+
+
+def render(scene, out_dir, variant, first, last, dof, mblur, passes, glossy=False):
     """Render frames first..last of one variant into out_dir/variant/frame_####.exr."""
     scene.camera.data.dof.use_dof = dof
     scene.render.use_motion_blur = mblur
-    set_passes(bpy.context.view_layer, passes)
+    set_passes(bpy.context.view_layer, passes, glossy)
     keep = scene.frame_start, scene.frame_end
     scene.frame_start, scene.frame_end = first, last
     scene.render.filepath = os.path.join(out_dir, variant, "frame_####")
@@ -284,6 +305,9 @@ def main():
         render(scene, out_dir, "dof", mid, mid, dof=True, mblur=False, passes=False)
     if args.variant in ("mblur", "all"):
         render(scene, out_dir, "mblur", mid, mid, dof=False, mblur=True, passes=False)
+    if args.variant in ("mirror", "all"):  # last: it changes the ground's material
+        make_ground_a_mirror(scene)
+        render(scene, out_dir, "mirror", mid, mid, dof=False, mblur=False, passes=False, glossy=True)
 
 
 if __name__ == "__main__":
