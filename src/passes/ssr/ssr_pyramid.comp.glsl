@@ -21,7 +21,7 @@ layout(location = 1) uniform ivec2 uSize0; // level 0's extent
 // A pixel's (nearest, farthest): its depth twice, or the sky's (+inf, 0) for NaN, zero, negative and +inf.
 vec2 sanitized(float z) { return validDepth(z) ? vec2(z) : vec2(infinity(), 0.0); }
 
-
+// The pair of two cells together.
 vec2 merged(vec2 a, vec2 b) { return vec2(min(a.x, b.x), max(a.y, b.y)); }
 
 #if PYRAMID_ONE_DISPATCH

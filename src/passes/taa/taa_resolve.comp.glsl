@@ -204,12 +204,13 @@ void main() {
     vec2 prevUv = uv - motion;
     bool history = uHasHistory != 0 && all(greaterThanEqual(prevUv, vec2(0.0))) && all(lessThanEqual(prevUv, vec2(1.0)));
 
-    // Disocclusion: the surface seen now was not where the history was, e.g. it was behind an object that
-    // moved away. With depth and the camera, the point's depth last frame is predicted and compared with the
-    // depth the history stored.
     // Last frame's farthest depth and stability where the history is read, one load.
     ivec2 hp = clamp(ivec2(prevUv * vec2(size)), ivec2(0), size - 1);
     vec2 previousAux = history ? imageLoad(uHistoryAux, hp).rg : vec2(0.0);
+
+    // Disocclusion: the surface seen now was not where the history was, e.g. it was behind an object that
+    // moved away. With depth and the camera, the point's depth last frame is predicted and compared with the
+    // depth the history stored.
     bool disoccluded = false;
     if (history && kHasDepth && kHasCamera && !isinf(depth)) {
         vec4 near = uInvProjection * vec4(uv * 2.0 - 1.0, -1.0, 1.0);
